@@ -1,0 +1,18 @@
+// The fivebar CLI's subcommands. Each takes the arguments after its name, reads stdin and writes
+// stdout/stderr, and returns the process exit code (0 ok, 1 failure, 2 usage error).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace fivebar::cli {
+
+using Args = std::vector<std::string>;
+
+int runIk(const Args& args);             // cmd_kinematics.cpp
+int runFk(const Args& args);             // cmd_kinematics.cpp
+int runWorkspace(const Args& args);      // cmd_workspace.cpp
+int runProfile(const Args& args);        // cmd_profile.cpp
+// Further commands are declared here as they land (plan, grbl-settings, stream, send).
+
+}  // namespace fivebar::cli

@@ -1,0 +1,50 @@
+// fivebar: the command-line tool on the FiveBar Studio core.
+#include <cstring>
+#include <exception>
+#include <iostream>
+#include <string_view>
+
+#include "commands.hpp"
+
+namespace {
+
+struct Command {
+  std::string_view name;
+  std::string_view summary;
+  int (*run)(const fivebar::cli::Args&);
+};
+
+constexpr Command kCommands[] = {
+    {"ik", "inverse kinematics: x,y lines on stdin -> theta1,theta2 (deg)", fivebar::cli::runIk},
+    {"fk", "forward kinematics: theta1,theta2 lines on stdin -> x,y (mm)", fivebar::cli::runFk},
+    {"workspace", "workspace areas, inscribed rectangle, overlay image", fivebar::cli::runWorkspace},
+    {"profile", "machine profiles: check FILE", fivebar::cli::runProfile},
+};
+
+void usage(std::ostream& out) {
+  out << "usage: fivebar COMMAND [OPTIONS]\n\ncommands:\n";
+  for (const Command& c : kCommands) out << "  " << c.name << "\t" << c.summary << "\n";
+  out << "\nRun 'fivebar COMMAND --help' for a command's options.\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
+    usage(argc < 2 ? std::cerr : std::cout);
+    return argc < 2 ? 2 : 0;
+  }
+  const fivebar::cli::Args args(argv + 2, argv + argc);
+  for (const Command& c : kCommands) {
+    if (c.name != argv[1]) continue;
+    try {
+      return c.run(args);
+    } catch (const std::exception& e) {
+      std::cerr << "fivebar " << c.name << ": " << e.what() << "\n";
+      return 1;
+    }
+  }
+  std::cerr << "fivebar: unknown command '" << argv[1] << "'\n\n";
+  usage(std::cerr);
+  return 2;
+}

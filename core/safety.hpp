@@ -1,0 +1,47 @@
+// The safety rule: no move reaches the machine that leaves the workspace, breaks a joint limit,
+// or passes through or near a type II singularity. Every joint-linear move, travel and jog
+// included, is checked here before a byte goes to the port.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kinematics.hpp"
+#include "profile.hpp"
+
+namespace fivebar {
+
+enum class MoveStatus {
+  Ok = 0,
+  NearTypeII = 1,        // within the profile's type II margin
+  NearTypeI = 2,         // a leg within its type I margin of full stretch / fold
+  BeyondJointLimit = -1,
+  CannotClose = -2,      // the loop does not close somewhere along the move (out of reach)
+  AssemblyChange = -3,   // the move would pass through a type II singularity (assembly flips)
+};
+
+struct MoveCheck {
+  MoveStatus status = MoveStatus::Ok;
+  double atFraction = 0.0;     // where along the move (0..1) the first problem is
+  Vec2 where = Vec2::Zero();   // machine-frame point of the first problem (mm)
+  double minTypeIIMarginRad = 0.0;  // smallest type II margin along the move
+  bool ok() const { return status == MoveStatus::Ok; }
+};
+
+// Checks one joint-linear move from `from` to `to` (continuous angles, rad) in the profile's
+// assembly mode, by sampling it finely enough that no excursion between samples is missed.
+MoveCheck checkJointMove(const MachineProfile& profile, const JointAngles& from,
+                         const JointAngles& to);
+
+// A safe travel (pen up) from `from` to `to` as a sequence of joint-space waypoints (excluding
+// `from`, ending at `to`), each leg passing checkJointMove. A straight joint move when it is safe,
+// a detour otherwise; nullopt when no safe travel exists.
+std::optional<std::vector<JointAngles>> planSafeTravel(const MachineProfile& profile,
+                                                       const JointAngles& from,
+                                                       const JointAngles& to);
+
+// Human-readable reason, e.g. "passes within 4.2 deg of a type II singularity".
+std::string describe(const MoveCheck& check);
+
+}  // namespace fivebar
