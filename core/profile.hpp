@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geometry.hpp"
+#include "kinematics.hpp"
 #include "modes.hpp"
 
 namespace fivebar {

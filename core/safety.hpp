@@ -3,8 +3,10 @@
 // included, is checked here before a byte goes to the port.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "kinematics.hpp"
@@ -40,6 +42,31 @@ MoveCheck checkJointMove(const MachineProfile& profile, const JointAngles& from,
 std::optional<std::vector<JointAngles>> planSafeTravel(const MachineProfile& profile,
                                                        const JointAngles& from,
                                                        const JointAngles& to);
+
+// One failing move of a joint path: move i runs from poses[i] to poses[i + 1].
+struct PathProblem {
+  std::size_t move = 0;
+  MoveCheck check;
+};
+struct PathCheck {
+  std::vector<PathProblem> problems;  // the first problem of each failing move, in path order
+  double minTypeIIMarginRad = 0.0;    // smallest type II margin along the whole path
+  bool ok() const { return problems.empty(); }
+};
+
+// Checks the chain of joint-linear moves through `poses` (continuous angles) as checkJointMove
+// checks each move, evaluating every shared pose once (the fast path of job preflight). A bad
+// pose is reported once: as the end (atFraction 1) of the move reaching it, or for poses[0] as
+// move 0 at atFraction 0. A path of one pose is checked as that pose.
+PathCheck checkJointPath(const MachineProfile& profile, const std::vector<JointAngles>& poses);
+
+// Checks a single pose (continuous angles) exactly as checkJointMove checks each sample:
+// joint limits, loop closure, type II (assembly ambiguity and margin), type I margin.
+MoveCheck checkPose(const MachineProfile& profile, const JointAngles& q);
+
+// Short name: "ok", "near type II", "near type I", "beyond joint limit", "cannot close",
+// "assembly change".
+std::string_view toString(MoveStatus status);
 
 // Human-readable reason, e.g. "passes within 4.2 deg of a type II singularity".
 std::string describe(const MoveCheck& check);

@@ -13,6 +13,10 @@ int runIk(const Args& args);             // cmd_kinematics.cpp
 int runFk(const Args& args);             // cmd_kinematics.cpp
 int runWorkspace(const Args& args);      // cmd_workspace.cpp
 int runProfile(const Args& args);        // cmd_profile.cpp
+int runPlan(const Args& args);           // cmd_plan.cpp
+int runGrblSettings(const Args& args);   // cmd_plan.cpp
+int runStream(const Args& args);         // cmd_machine.cpp (Qt builds only)
+int runSend(const Args& args);           // cmd_machine.cpp (Qt builds only)
 // Further commands are declared here as they land (plan, grbl-settings, stream, send).
 
 }  // namespace fivebar::cli

@@ -19,6 +19,12 @@ constexpr Command kCommands[] = {
     {"fk", "forward kinematics: theta1,theta2 lines on stdin -> x,y (mm)", fivebar::cli::runFk},
     {"workspace", "workspace areas, inscribed rectangle, overlay image", fivebar::cli::runWorkspace},
     {"profile", "machine profiles: check FILE", fivebar::cli::runProfile},
+    {"plan", "SVG drawing -> GRBL G-code job and report", fivebar::cli::runPlan},
+    {"grbl-settings", "the GRBL $ settings a machine profile expects", fivebar::cli::runGrblSettings},
+#ifdef FIVEBAR_HAVE_DRIVERS
+    {"stream", "stream a G-code job to a GRBL board (character counting, resume)", fivebar::cli::runStream},
+    {"send", "send one-off lines or settings to a GRBL board", fivebar::cli::runSend},
+#endif
 };
 
 void usage(std::ostream& out) {

@@ -1,0 +1,205 @@
+// fivebar plan: SVG drawing -> GRBL G-code (+ REPORT.json) for a five-bar machine.
+// fivebar grbl-settings: the $ lines a profile expects.
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+
+#include "commands.hpp"
+#include "core/gcode.hpp"
+#include "core/planner.hpp"
+#include "machine_arg.hpp"
+#include "options.hpp"
+
+#ifdef FIVEBAR_HAVE_IMPORT
+#include <QCoreApplication>
+
+#include "core/import/svg_import.hpp"
+#endif
+
+namespace fivebar::cli {
+namespace {
+
+constexpr const char* kPlanHelp =
+    "usage: fivebar plan DRAWING.svg --machine PRESET|FILE -o JOB.gcode [options]\n"
+    "  --mode auto|++|+-|-+|--   working mode (auto: the feasible one with the best margin)\n"
+    "  --at X,Y                  put the drawing's bbox centre at machine point X,Y (mm), true\n"
+    "                            size times --scale; without --at the drawing is fitted into\n"
+    "                            the mode's largest singularity-free rectangle\n"
+    "  --scale S                 scale factor with --at (default 1)\n"
+    "  --rotate DEG              rotate the drawing counter-clockwise (default 0)\n"
+    "  --fit                     fit into the singularity-free rectangle even with --at\n"
+    "  --tolerance MM            max distance of the drawn line from the drawing (default 0.1)\n"
+    "  --no-optimise             keep the drawing's stroke order and direction\n"
+    "  -o, --output JOB.gcode    G-code output file\n"
+    "  --report REPORT.json      planning report (also written when the job is infeasible)\n"
+    "Exits 1 when the job is infeasible, naming the first offending path and the reason.\n";
+
+constexpr const char* kSettingsHelp =
+    "usage: fivebar grbl-settings --machine PRESET|FILE\n"
+    "Prints the GRBL $ settings the profile expects, one per line (send them once).\n";
+
+double parseNumber(const std::string& text, const std::string& option) {
+  size_t used = 0;
+  double v = 0.0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !std::isfinite(v))
+    throw UsageError(option + " needs a number, got '" + text + "'");
+  return v;
+}
+
+bool writeFile(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << text;
+  out.flush();
+  if (!out) {
+    std::cerr << "fivebar plan: cannot write '" << path << "'\n";
+    return false;
+  }
+  return true;
+}
+
+PlanOptions planOptionsFrom(const Options& o) {
+  PlanOptions p;
+  const std::string mode = o.value("--mode").value_or("auto");
+  if (mode != "auto") {
+    p.mode = parseWorkingMode(mode);
+    if (!p.mode) throw UsageError("--mode must be auto, ++, +-, -+ or --, got '" + mode + "'");
+  }
+  if (const auto at = o.value("--at")) {
+    const auto pair = parseNumberPair(*at);
+    if (!pair) throw UsageError("--at needs X,Y in mm, got '" + *at + "'");
+    p.atMm = Vec2(pair->first, pair->second);
+  }
+  if (const auto s = o.value("--scale")) p.scale = parseNumber(*s, "--scale");
+  if (!(p.scale > 0.0)) throw UsageError("--scale must be positive");
+  if (const auto r = o.value("--rotate")) p.rotationRad = radFromDeg(parseNumber(*r, "--rotate"));
+  if (const auto t = o.value("--tolerance")) p.toleranceMm = parseNumber(*t, "--tolerance");
+  if (!(p.toleranceMm > 0.0)) throw UsageError("--tolerance must be positive");
+  p.fit = o.flag("--fit");
+  p.optimise = !o.flag("--no-optimise");
+  return p;
+}
+
+void printProblems(const std::string& file, const PlanResult& r) {
+  std::cerr << "fivebar plan: " << file << ": " << r.message << "\n";
+  size_t shown = 0;
+  for (const PlanProblem& p : r.report.problems) {
+    if (++shown > 10) break;
+    std::cerr << "  " << p.path << " at (" << fixed9(p.whereMm.x()) << ", "
+              << fixed9(p.whereMm.y()) << ") mm: " << p.why << "\n";
+    for (const std::string& fix : p.fixes) std::cerr << "    fix: " << fix << "\n";
+  }
+}
+
+// The SVG in the work frame, flattened within toleranceMm; errors go to stderr.
+std::optional<Drawing> importDrawing(const std::string& file, double toleranceMm) {
+#ifdef FIVEBAR_HAVE_IMPORT
+  svg::ImportOptions io;
+  io.toleranceMm = toleranceMm;
+  const svg::ImportResult r = svg::importSvgFile(QString::fromStdString(file), io);
+  if (!r.ok()) {
+    std::cerr << "fivebar plan: " << r.message << "\n";
+    return std::nullopt;
+  }
+  return r.drawing;
+#else
+  (void)toleranceMm;
+  std::cerr << "fivebar plan: " << file << ": this build has no SVG import (configured with "
+               "FIVEBAR_BUILD_GUI=OFF)\n";
+  return std::nullopt;
+#endif
+}
+
+int plan(const Options& o) {
+  if (o.positional().size() != 1) throw UsageError("plan needs exactly one DRAWING.svg");
+  const std::string file = o.positional()[0];
+  const std::string output = o.required("--output");
+  const auto machine = loadMachine(o.required("--machine"), "plan", std::cerr);
+  if (!machine) return 1;
+  PlanOptions opt = planOptionsFrom(o);
+#ifdef FIVEBAR_HAVE_IMPORT
+  int argc = 1;
+  char name[] = "fivebar";
+  char* argv[] = {name, nullptr};
+  std::optional<QCoreApplication> app;  // the import's worker process needs one
+  if (!QCoreApplication::instance()) app.emplace(argc, argv);
+#endif
+  const auto start = std::chrono::steady_clock::now();
+  // Flatten with the tolerance's share, in work-frame mm (the placement scales it).
+  const double share = kFlatteningShare * opt.toleranceMm;
+  double importTol = share / (opt.atMm && !opt.fit ? opt.scale : 1.0);
+  auto drawing = importDrawing(file, importTol);
+  if (!drawing) return 1;
+  opt.flatteningToleranceMm = importTol;
+  PlanResult r = planJob(*drawing, *machine, opt);
+  if (r.placementScale * importTol > share * 1.000001) {  // fitted larger: flatten finer
+    importTol = share / r.placementScale;
+    drawing = importDrawing(file, importTol);
+    if (!drawing) return 1;
+    opt.flatteningToleranceMm = importTol;
+    r = planJob(*drawing, *machine, opt);
+  }
+  if (const auto report = o.value("--report"); report && !writeFile(*report, reportToJson(r.report)))
+    return 1;
+  if (!r.ok()) {
+    printProblems(file, r);
+    return 1;
+  }
+  if (!writeFile(output, writeGcode(r.job, *machine))) return 1;
+  const double wallS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const PlanReport& rep = r.report;
+  std::cout << output << ": mode " << toString(rep.mode) << ", " << rep.segments << " segments, "
+            << "pen down " << std::lround(rep.penDownMm) << " mm, travel "
+            << std::lround(rep.travelMm) << " mm, estimated " << std::lround(rep.estimatedTimeS)
+            << " s, max deviation " << fixed9(rep.maxDeviationMm).substr(0, 6) << " mm, margin "
+            << fixed9(rep.minSingularityMarginDeg).substr(0, 5) << " deg (planned in "
+            << std::lround(wallS * 1000) << " ms)\n";
+  return 0;
+}
+
+}  // namespace
+
+int runPlan(const Args& args) {
+  try {
+    Args normalized = args;
+    for (std::string& a : normalized)
+      if (a == "-o") a = "--output";
+    const Options o(normalized,
+                    {"--machine", "--mode", "--at", "--scale", "--rotate", "--tolerance",
+                     "--output", "--report"},
+                    {"--fit", "--no-optimise", "--help"});
+    if (o.flag("--help")) {
+      std::cout << kPlanHelp;
+      return 0;
+    }
+    return plan(o);
+  } catch (const UsageError& e) {
+    std::cerr << "fivebar plan: " << e.what() << "\n\n" << kPlanHelp;
+    return 2;
+  }
+}
+
+int runGrblSettings(const Args& args) {
+  try {
+    const Options o(args, {"--machine"}, {"--help"});
+    if (o.flag("--help")) {
+      std::cout << kSettingsHelp;
+      return 0;
+    }
+    if (!o.positional().empty()) throw UsageError("unexpected argument " + o.positional()[0]);
+    const auto machine = loadMachine(o.required("--machine"), "grbl-settings", std::cerr);
+    if (!machine) return 1;
+    std::cout << grblSettings(*machine);
+    return 0;
+  } catch (const UsageError& e) {
+    std::cerr << "fivebar grbl-settings: " << e.what() << "\n\n" << kSettingsHelp;
+    return 2;
+  }
+}
+
+}  // namespace fivebar::cli

@@ -1,0 +1,130 @@
+// fivebar-sim: the simulated GRBL 1.1 five-bar controller on a pseudo-terminal, so that
+// QSerialPort (the studio, `fivebar stream`) or any other sender opens it like a real board.
+//
+//   fivebar-sim --pty PATH [--machine PRESET|FILE] [--speedup N] [--instant]
+//               [--fault drop-after=N|reset-after=N|error-on=N|alarm-after=N] [--record FILE]
+//
+// PATH becomes a symlink to the pty's slave device. --record writes the pen-down joint path
+// and counters as JSON on exit (SIGTERM / SIGINT) and when an injected drop closes the link.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QSocketNotifier>
+#include <QTimer>
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include "core/profile.hpp"
+#include "pty.hpp"
+#include "record.hpp"
+#include "drivers/sim_machine.hpp"
+
+namespace {
+
+std::atomic<bool> gQuit{false};
+void onSignal(int) { gQuit = true; }
+
+struct Args {
+  std::string ptyPath;
+  std::string machine = "maker-plotter";
+  double speedup = 1.0;
+  bool instant = false;
+  fivebar::sim::Fault fault;
+  std::string recordPath;
+};
+
+int usage(const std::string& problem) {
+  std::cerr << "fivebar-sim: " << problem << "\n"
+            << "usage: fivebar-sim --pty PATH [--machine PRESET|FILE] [--speedup N] [--instant]\n"
+            << "                   [--fault drop-after=N|reset-after=N|error-on=N|alarm-after=N]\n"
+            << "                   [--record FILE]\n";
+  return 2;
+}
+
+// Returns an error message, or "" when the arguments are complete.
+std::string parseArgs(int argc, char** argv, Args& a) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string opt = argv[i];
+    if (opt == "--instant") { a.instant = true; continue; }
+    if (i + 1 >= argc) return "option " + opt + " needs a value";
+    const std::string value = argv[++i];
+    if (opt == "--pty") a.ptyPath = value;
+    else if (opt == "--machine") a.machine = value;
+    else if (opt == "--record") a.recordPath = value;
+    else if (opt == "--speedup") {
+      try { a.speedup = std::stod(value); } catch (...) { a.speedup = -1; }
+      if (!(a.speedup > 0)) return "--speedup needs a positive number, got '" + value + "'";
+    } else if (opt == "--fault") {
+      const auto f = fivebar::sim::parseFault(value);
+      if (!f) return "--fault '" + value + "' is not drop-after=N, reset-after=N, error-on=N or alarm-after=N";
+      a.fault = *f;
+    } else {
+      return "unknown option " + opt;
+    }
+  }
+  return a.ptyPath.empty() ? "--pty PATH is required" : "";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  QCoreApplication app(argc, argv);
+  Args args;
+  if (const std::string problem = parseArgs(argc, argv, args); !problem.empty()) return usage(problem);
+  const fivebar::ProfileLoad load = fivebar::resolveMachine(args.machine);
+  if (!load.profile) {
+    std::cerr << "fivebar-sim: --machine " << args.machine << ": "
+              << (load.issues.empty() ? "unknown" : load.issues.front().field + ": " + load.issues.front().message)
+              << "\n";
+    return 1;
+  }
+  std::string error;
+  fivebar::simapp::Pty pty;
+  if (!pty.open(args.ptyPath, &error)) {
+    std::cerr << "fivebar-sim: " << error << "\n";
+    return 1;
+  }
+  fivebar::sim::SimMachine machine({*load.profile, args.fault, args.instant});
+  std::signal(SIGTERM, onSignal);
+  std::signal(SIGINT, onSignal);
+
+  const auto finish = [&](int code) {
+    if (!args.recordPath.empty()) {
+      const std::string err = fivebar::simapp::writeRecord(machine, args.recordPath);
+      if (!err.empty()) std::cerr << "fivebar-sim: " << err << "\n";
+    }
+    pty.close();
+    app.exit(code);
+  };
+  const auto pump = [&] {
+    pty.write(machine.takeOutput());
+    if (machine.linkDropped()) finish(0);
+  };
+  QSocketNotifier notifier(pty.masterFd(), QSocketNotifier::Read);
+  QObject::connect(&notifier, &QSocketNotifier::activated, [&] {
+    const std::string bytes = pty.read();
+    if (!bytes.empty()) machine.receive(bytes);
+    pump();
+  });
+  QElapsedTimer clock;
+  clock.start();
+  qint64 lastNs = 0;
+  QTimer timer;
+  QObject::connect(&timer, &QTimer::timeout, [&] {
+    if (gQuit) { finish(0); return; }
+    const qint64 now = clock.nsecsElapsed();
+    machine.advance(double(now - lastNs) * 1e-9 * args.speedup);
+    lastNs = now;
+    pump();
+  });
+  timer.start(1);
+  std::cerr << "fivebar-sim: " << load.profile->name << " on " << args.ptyPath << " -> "
+            << pty.slavePath() << (args.instant ? " (instant)" : "") << "\n";
+  pump();
+  return app.exec();
+}

@@ -1,0 +1,91 @@
+// fivebar-studio: the desktop application. Composition and start-up only:
+//   fivebar-studio [--demo] [--machine PRESET|FILE] [--lang LANG] [--screenshot FILE.png] [FILE.svg]
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QDir>
+#include <QFile>
+#include <QIcon>
+#include <QLibraryInfo>
+#include <QLocale>
+#include <QTimer>
+#include <QTranslator>
+#include <cstdio>
+
+#include "app/studio/main_window.hpp"
+#include "app/studio/startup.hpp"
+#include "widgets/import_controller.hpp"
+
+using fivebar::studio::MainWindow;
+
+int main(int argc, char** argv) {
+  QApplication app(argc, argv);
+  QApplication::setOrganizationName(QStringLiteral("FiveBar"));
+  QApplication::setApplicationName(QStringLiteral("FiveBar Studio"));
+  QApplication::setApplicationVersion(QStringLiteral(FIVEBAR_VERSION));
+  QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/fivebar-studio.svg")));
+  QApplication::setDesktopFileName(QStringLiteral("fivebar-studio"));
+
+  QCommandLineParser parser;
+  parser.setApplicationDescription(
+      QApplication::translate("main", "Plan and simulate drawings for five-bar robots."));
+  parser.addHelpOption();
+  parser.addVersionOption();
+  const QCommandLineOption demo(QStringLiteral("demo"),
+                                QApplication::translate("main", "Open the demo drawing on the "
+                                                                "default maker plotter."));
+  const QCommandLineOption machine(
+      QStringLiteral("machine"),
+      QApplication::translate("main", "Machine profile: a preset name or a profile JSON file."),
+      QStringLiteral("PRESET|FILE"), QStringLiteral("maker-plotter"));
+  const QCommandLineOption lang(
+      QStringLiteral("lang"),
+      QApplication::translate("main", "User interface language (e.g. de, en); default: system."),
+      QStringLiteral("LANG"));
+  const QCommandLineOption screenshot(
+      QStringLiteral("screenshot"),
+      QApplication::translate("main", "Save a picture of the window once the job is planned, "
+                                      "then quit."),
+      QStringLiteral("FILE.png"));
+  parser.addOptions({demo, machine, lang, screenshot});
+  parser.addPositionalArgument(QStringLiteral("drawing"),
+                               QApplication::translate("main", "SVG drawing to open."),
+                               QStringLiteral("[FILE.svg]"));
+  parser.process(app);
+
+  QTranslator translator;
+  const QLocale locale = parser.isSet(lang) ? QLocale(parser.value(lang)) : QLocale::system();
+  if (translator.load(locale, QStringLiteral("fivebar"), QStringLiteral("_"),
+                      QStringLiteral(":/i18n"))) {
+    QApplication::installTranslator(&translator);
+  }
+  QTranslator qtTranslator;
+  if (qtTranslator.load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
+                        QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
+    QApplication::installTranslator(&qtTranslator);
+  }
+
+  std::string error;
+  const auto profile = fivebar::studio::resolveProfile(parser.value(machine).toStdString(), error);
+  if (!profile) {
+    std::fprintf(stderr, "fivebar-studio: %s\n", error.c_str());
+    return 2;
+  }
+  MainWindow window(*profile);
+  window.show();
+
+  const QStringList files = parser.positionalArguments();
+  if (!files.isEmpty()) {
+    window.importer().openFile(files.front());
+  } else if (parser.isSet(demo)) {
+    QFile demoFile(QStringLiteral(":/demo/fivebar-demo.svg"));
+    if (demoFile.open(QIODevice::ReadOnly)) {
+      window.importer().openData(demoFile.readAll(), QStringLiteral("fivebar-demo.svg"));
+    }
+  }
+  if (parser.isSet(screenshot)) {
+    window.importer().setInteractive(false);
+    fivebar::studio::screenshotWhenReady(window, parser.value(screenshot), !files.isEmpty() ||
+                                                                               parser.isSet(demo));
+  }
+  return QApplication::exec();
+}

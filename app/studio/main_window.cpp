@@ -1,0 +1,275 @@
+#include "app/studio/main_window.hpp"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QScrollArea>
+#include <QSettings>
+#include <QStatusBar>
+#include <QToolBar>
+#include <QUndoStack>
+
+#include "widgets/canvas_view.hpp"
+#include "widgets/import_controller.hpp"
+#include "widgets/job_layer.hpp"
+#include "widgets/layers_panel.hpp"
+#include "widgets/machine_layer.hpp"
+#include "widgets/mode_panel.hpp"
+#include "widgets/placement_panel.hpp"
+#include "widgets/placement_tool.hpp"
+#include "widgets/preview_controller.hpp"
+#include "widgets/preview_panel.hpp"
+#include "widgets/simulation_controller.hpp"
+#include "widgets/simulation_panel.hpp"
+#include "widgets/studio_document.hpp"
+#include "widgets/workspace_cache.hpp"
+#include "widgets/workspace_layer.hpp"
+
+namespace fivebar::studio {
+
+using namespace fivebar::widgets;
+
+namespace {
+const char* const kGeometryKey = "window/geometry";
+const char* const kStateKey = "window/state";
+constexpr int kStateVersion = 1;
+}  // namespace
+
+MainWindow::MainWindow(const MachineProfile& profile, QWidget* parent) : QMainWindow(parent) {
+  setObjectName(QStringLiteral("FiveBarStudioMainWindow"));
+  setWindowTitle(tr("FiveBar Studio"));
+  setAcceptDrops(true);
+  doc_ = new StudioDocument(profile, this);
+  workspace_ = new WorkspaceCache(*doc_, this);
+  preview_ = new PreviewController(*doc_, this);
+  simulation_ = new SimulationController(this);
+  importer_ = new ImportController(*doc_, *workspace_, this, this);
+  connect(preview_, &PreviewController::resultChanged, this,
+          [this] { simulation_->setTrajectory(preview_->result().trajectory); });
+  createCanvas();
+  createDocks();
+  createMenus();
+  cursorLabel_ = new QLabel(this);
+  statusBar()->addPermanentWidget(cursorLabel_);
+  connect(canvas_, &CanvasView::cursorMoved, this, [this](QPointF mm) {
+    cursorLabel_->setText(tr("x %1 mm, y %2 mm").arg(mm.x(), 0, 'f', 1).arg(mm.y(), 0, 'f', 1));
+  });
+  connect(preview_, &PreviewController::planningStarted, this,
+          [this] { statusBar()->showMessage(tr("Planning...")); });
+  connect(preview_, &PreviewController::resultChanged, this,
+          [this] { statusBar()->showMessage(preview_->result().message, 8000); });
+  connect(importer_, &ImportController::finished, this, [this](bool ok, const QString& message) {
+    if (ok) {
+      setWindowFilePath(doc_->fileName());
+      fitView();
+      preview_->replanNow();
+    } else {
+      statusBar()->showMessage(message, 10000);
+    }
+  });
+  connect(workspace_, &WorkspaceCache::ready, this, [this] {
+    if (!doc_->hasDrawing()) fitView();
+  });
+  restoreLayout();
+}
+
+MainWindow::~MainWindow() {
+  // The canvas keeps raw pointers to the layers and the tool: detach them before they go.
+  canvas_->setTool(nullptr);
+}
+
+void MainWindow::createCanvas() {
+  canvas_ = new CanvasView(this);
+  canvas_->setObjectName(QStringLiteral("canvas"));
+  setCentralWidget(canvas_);
+  workspaceLayer_ = new WorkspaceLayer(*doc_, *workspace_, this);
+  jobLayer_ = new JobLayer(*doc_, *preview_, *simulation_, this);
+  machineLayer_ = new MachineLayer(*doc_, *simulation_, this);
+  placementTool_ = new PlacementTool(*doc_, this);
+  canvas_->addLayer(workspaceLayer_);
+  canvas_->addLayer(jobLayer_);
+  canvas_->addLayer(machineLayer_);
+  canvas_->setTool(placementTool_);
+  const auto repaint = [this] { canvas_->update(); };
+  connect(workspaceLayer_, &WorkspaceLayer::changed, this, repaint);
+  connect(jobLayer_, &JobLayer::changed, this, repaint);
+  connect(machineLayer_, &MachineLayer::changed, this, repaint);
+  connect(doc_, &StudioDocument::placementChanged, this, repaint);
+}
+
+QDockWidget* MainWindow::addDock(QWidget* panel, const QString& title, const QString& objectName,
+                                 Qt::DockWidgetArea area) {
+  auto* dock = new QDockWidget(title, this);
+  dock->setObjectName(objectName);
+  auto* scroll = new QScrollArea(dock);
+  scroll->setWidget(panel);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  dock->setWidget(scroll);
+  addDockWidget(area, dock);
+  return dock;
+}
+
+QDockWidget* MainWindow::addMachinePanel(QWidget* panel, const QString& title,
+                                         const QString& objectName, Qt::DockWidgetArea area) {
+  QDockWidget* dock = addDock(panel, title, objectName, area);
+  machineMenu_->addAction(dock->toggleViewAction());
+  // Re-apply the remembered layout so the new dock lands where the user left it.
+  restoreState(QSettings().value(kStateKey).toByteArray(), kStateVersion);
+  return dock;
+}
+
+void MainWindow::createDocks() {
+  auto* mode = addDock(new ModePanel(*doc_, *workspaceLayer_, *preview_, this),
+                       tr("Workspace"), QStringLiteral("dockWorkspace"), Qt::LeftDockWidgetArea);
+  auto* placement = addDock(new PlacementPanel(*doc_, *workspace_, this), tr("Placement"),
+                            QStringLiteral("dockPlacement"), Qt::LeftDockWidgetArea);
+  auto* layers = addDock(new LayersPanel(*doc_, this), tr("Layers"), QStringLiteral("dockLayers"),
+                         Qt::LeftDockWidgetArea);
+  auto* previewPanel = new PreviewPanel(*preview_, *jobLayer_, this);
+  connect(previewPanel, &PreviewPanel::showLocation, canvas_, &CanvasView::centerOn);
+  auto* preview = addDock(previewPanel, tr("Job preview"), QStringLiteral("dockPreview"),
+                          Qt::RightDockWidgetArea);
+  auto* sim = addDock(new SimulationPanel(*simulation_, *doc_, this), tr("Simulation"),
+                      QStringLiteral("dockSimulation"), Qt::RightDockWidgetArea);
+  tabifyDockWidget(placement, layers);
+  placement->raise();
+  resizeDocks({mode, preview}, {300, 330}, Qt::Horizontal);
+  (void)sim;
+}
+
+void MainWindow::createMenus() {
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  QAction* open = file->addAction(tr("&Open drawing..."), importer_,
+                                  &ImportController::showOpenDialog);
+  open->setShortcut(QKeySequence::Open);
+  recentMenu_ = file->addMenu(tr("Open &recent"));
+  connect(importer_, &ImportController::recentFilesChanged, this, &MainWindow::rebuildRecentMenu);
+  rebuildRecentMenu();
+  file->addSeparator();
+  QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+  quit->setShortcut(QKeySequence::Quit);
+
+  QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+  QAction* undo = doc_->undoStack()->createUndoAction(this, tr("&Undo"));
+  undo->setShortcut(QKeySequence::Undo);
+  QAction* redo = doc_->undoStack()->createRedoAction(this, tr("&Redo"));
+  redo->setShortcut(QKeySequence::Redo);
+  edit->addAction(undo);
+  edit->addAction(redo);
+  edit->addSeparator();
+  QAction* fit = edit->addAction(tr("&Fit drawing to workspace"), this, [this] {
+    if (auto* panel = findChild<PlacementPanel*>()) panel->fitToWorkspace();
+  });
+  fit->setShortcut(QKeySequence(tr("Ctrl+F")));
+
+  viewMenu_ = menuBar()->addMenu(tr("&View"));
+  QAction* zoomIn = viewMenu_->addAction(tr("Zoom &in"), canvas_, &CanvasView::zoomIn);
+  zoomIn->setShortcuts({QKeySequence::ZoomIn, QKeySequence(tr("Ctrl+="))});
+  QAction* zoomOut = viewMenu_->addAction(tr("Zoom &out"), canvas_, &CanvasView::zoomOut);
+  zoomOut->setShortcut(QKeySequence::ZoomOut);
+  QAction* zoomFit = viewMenu_->addAction(tr("Zoom to &fit"), this, &MainWindow::fitView);
+  zoomFit->setShortcut(QKeySequence(tr("Ctrl+0")));
+  viewMenu_->addSeparator();
+  for (QDockWidget* dock : findChildren<QDockWidget*>()) {
+    viewMenu_->addAction(dock->toggleViewAction());
+  }
+
+  QMenu* simulate = menuBar()->addMenu(tr("&Simulation"));
+  QAction* play = simulate->addAction(tr("&Play / pause"), simulation_,
+                                      &SimulationController::togglePlay);
+  play->setShortcut(QKeySequence(tr("F5")));
+  simulate->addAction(tr("Step &forward"), simulation_, &SimulationController::stepForward)
+      ->setShortcut(QKeySequence(tr("F6")));
+  simulate->addAction(tr("Step &back"), simulation_, &SimulationController::stepBackward)
+      ->setShortcut(QKeySequence(tr("Shift+F6")));
+
+  machineMenu_ = menuBar()->addMenu(tr("&Machine"));
+
+  QMenu* help = menuBar()->addMenu(tr("&Help"));
+  help->addAction(tr("&About FiveBar Studio"), this, [this] {
+    QMessageBox::about(this, tr("About FiveBar Studio"),
+                       tr("<b>FiveBar Studio %1</b><p>Plans and simulates drawings for five-bar "
+                          "linkage robots: workspace and singularity analysis, safe job "
+                          "planning, GRBL output.</p>")
+                           .arg(QApplication::applicationVersion()));
+  });
+
+  QToolBar* bar = addToolBar(tr("Main"));
+  bar->setObjectName(QStringLiteral("toolbarMain"));
+  bar->addAction(open);
+  bar->addAction(undo);
+  bar->addAction(redo);
+  bar->addSeparator();
+  bar->addAction(zoomIn);
+  bar->addAction(zoomOut);
+  bar->addAction(zoomFit);
+  bar->addSeparator();
+  bar->addAction(play);
+  bar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+}
+
+void MainWindow::rebuildRecentMenu() {
+  recentMenu_->clear();
+  const QStringList files = importer_->recentFiles();
+  for (const QString& path : files) {
+    recentMenu_->addAction(QFileInfo(path).fileName(), importer_,
+                           [this, path] { importer_->openFile(path); })
+        ->setToolTip(path);
+  }
+  if (!files.isEmpty()) recentMenu_->addSeparator();
+  QAction* clear = recentMenu_->addAction(tr("Clear list"), importer_,
+                                          &ImportController::clearRecentFiles);
+  clear->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::fitView() {
+  if (doc_->hasDrawing()) {
+    if (const auto corners = placementTool_->cornersMm()) {
+      QRectF r;
+      for (const QPointF& c : *corners) r = r.isNull() ? QRectF(c, QSizeF(1e-6, 1e-6)) : r.united(QRectF(c, QSizeF(1e-6, 1e-6)));
+      // Keep the motors in view too, so the drawing is seen in relation to the machine.
+      const Geometry& g = doc_->profile().geometry;
+      r = r.united(QRectF(QPointF(-g.w / 2.0 - 20.0, -20.0), QPointF(g.w / 2.0 + 20.0, 0.0)));
+      canvas_->fitRect(r.adjusted(-15.0, -15.0, 15.0, 15.0));
+      return;
+    }
+  }
+  const Geometry& g = doc_->profile().geometry;
+  const double reach = std::max(g.a1 + g.b1, g.a2 + g.b2);
+  canvas_->fitRect(QRectF(QPointF(-g.w / 2.0 - reach * 0.8, -30.0),
+                          QPointF(g.w / 2.0 + reach * 0.8, reach + 10.0)));
+}
+
+void MainWindow::restoreLayout() {
+  QSettings settings;
+  if (!restoreGeometry(settings.value(kGeometryKey).toByteArray())) resize(1500, 940);
+  restoreState(settings.value(kStateKey).toByteArray(), kStateVersion);
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  QSettings settings;
+  settings.setValue(kGeometryKey, saveGeometry());
+  settings.setValue(kStateKey, saveState(kStateVersion));
+  event->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+  if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+  const auto urls = event->mimeData()->urls();
+  if (!urls.isEmpty() && urls.front().isLocalFile()) {
+    importer_->openFile(urls.front().toLocalFile());
+    event->acceptProposedAction();
+  }
+}
+
+}  // namespace fivebar::studio

@@ -1,0 +1,59 @@
+#include "app/studio/startup.hpp"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QPixmap>
+#include <QTimer>
+#include <cstdio>
+#include <memory>
+
+#include "app/studio/main_window.hpp"
+#include "widgets/import_controller.hpp"
+#include "widgets/preview_controller.hpp"
+#include "widgets/studio_document.hpp"
+#include "widgets/workspace_cache.hpp"
+
+namespace fivebar::studio {
+namespace {
+constexpr int kPollMs = 100;
+constexpr int kSettleMs = 400;       // let the last repaint land after the plan arrives
+constexpr qint64 kGiveUpMs = 120000;
+}  // namespace
+
+std::optional<MachineProfile> resolveProfile(const std::string& presetOrPath, std::string& error) {
+  ProfileLoad load = resolveMachine(presetOrPath);
+  if (load.profile) return load.profile;
+  error.clear();
+  for (const ValidationIssue& issue : load.issues) {
+    if (!error.empty()) error += "\n";
+    error += presetOrPath + ": " + issue.field + ": " + issue.message;
+  }
+  if (error.empty()) error = presetOrPath + ": cannot load the machine profile";
+  return std::nullopt;
+}
+
+void screenshotWhenReady(MainWindow& window, const QString& path, bool expectDrawing) {
+  auto* poll = new QTimer(&window);
+  auto clock = std::make_shared<QElapsedTimer>();
+  clock->start();
+  auto planned = std::make_shared<bool>(!expectDrawing);
+  QObject::connect(&window.preview(), &widgets::PreviewController::resultChanged, &window,
+                   [&window, planned] {
+                     if (window.document().hasDrawing()) *planned = true;
+                   });
+  QObject::connect(poll, &QTimer::timeout, &window, [&window, poll, clock, planned, path] {
+    const bool ready = window.workspace().current() != nullptr && !window.importer().busy() &&
+                       *planned && !window.preview().busy();
+    if (!ready && clock->elapsed() < kGiveUpMs) return;
+    poll->stop();
+    QTimer::singleShot(kSettleMs, &window, [&window, path, ready] {
+      const bool saved = window.grab().save(path, "PNG");
+      if (!saved) std::fprintf(stderr, "fivebar-studio: cannot write %s\n", qPrintable(path));
+      if (!ready) std::fprintf(stderr, "fivebar-studio: gave up waiting for the plan\n");
+      QApplication::exit(saved && ready ? 0 : 1);
+    });
+  });
+  poll->start(kPollMs);
+}
+
+}  // namespace fivebar::studio

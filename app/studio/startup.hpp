@@ -1,0 +1,23 @@
+// Start-up helpers of fivebar-studio: resolving the machine profile argument and the
+// --screenshot mode (wait until the window shows a planned job, grab it, quit).
+#pragma once
+
+#include <QString>
+#include <optional>
+#include <string>
+
+#include "core/profile.hpp"
+
+namespace fivebar::studio {
+
+class MainWindow;
+
+// A preset name or a profile file; on failure `error` says why (field names included).
+std::optional<MachineProfile> resolveProfile(const std::string& presetOrPath, std::string& error);
+
+// Once the workspace is computed, the import (if `expectDrawing`) has finished and the first
+// plan is done, grabs the window into `path` (PNG) and quits the application with 0, or with 1
+// when saving fails or nothing got ready within the time limit.
+void screenshotWhenReady(MainWindow& window, const QString& path, bool expectDrawing);
+
+}  // namespace fivebar::studio

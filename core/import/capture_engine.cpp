@@ -1,0 +1,278 @@
+#include "capture_engine.hpp"
+
+#include <QGradient>
+#include <QPainter>
+
+#include <algorithm>
+#include <cmath>
+
+#include "flatten.hpp"
+
+namespace fivebar::svg {
+namespace {
+
+enum Kind { kPath = 1, kPolygon, kPolyline, kRects, kEllipse };
+
+Vec2 mapped(const QTransform& t, double x, double y) {
+  const QPointF p = t.map(QPointF(x, y));
+  return {p.x(), p.y()};
+}
+
+// Drops consecutive duplicates; marks the polyline closed when it ends where it started.
+void finishPolyline(Polyline& line, bool closed, std::vector<Polyline>& out) {
+  auto& pts = line.points;
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  if (pts.size() > 2 && pts.front() == pts.back()) {
+    pts.pop_back();
+    closed = true;
+  }
+  if (pts.size() < 2) return;
+  line.closed = closed && pts.size() > 2;
+  out.push_back(std::move(line));
+}
+
+std::uint32_t rgbOf(const QBrush& brush) {
+  QColor colour = brush.color();
+  if (const QGradient* g = brush.gradient(); g && !g->stops().isEmpty())
+    colour = g->stops().front().second;
+  return static_cast<std::uint32_t>(colour.rgb() & 0xFFFFFFu);
+}
+
+bool visible(const QBrush& brush) {
+  if (brush.style() == Qt::NoBrush) return false;
+  if (brush.gradient()) return true;
+  return brush.color().alpha() > 0;
+}
+
+}  // namespace
+
+void appendFlattenedPath(const QPainterPath& path, const QTransform& transform,
+                         double toleranceMm, std::vector<Polyline>& out) {
+  // Points gather in a reused scratch buffer; each polyline then gets one exact allocation.
+  thread_local std::vector<Vec2> scratch;
+  scratch.clear();
+  auto finish = [&] {
+    Polyline line;
+    line.points.assign(scratch.begin(), scratch.end());
+    finishPolyline(line, false, out);
+    scratch.clear();
+  };
+  const int n = path.elementCount();
+  for (int i = 0; i < n; ++i) {
+    const QPainterPath::Element& e = path.elementAt(i);
+    if (e.type == QPainterPath::MoveToElement) {
+      finish();
+      scratch.push_back(mapped(transform, e.x, e.y));
+    } else if (e.type == QPainterPath::LineToElement) {
+      scratch.push_back(mapped(transform, e.x, e.y));
+    } else if (e.type == QPainterPath::CurveToElement && i + 2 < n) {
+      if (scratch.empty()) scratch.push_back(mapped(transform, 0, 0));
+      const QPainterPath::Element& c2 = path.elementAt(i + 1);
+      const QPainterPath::Element& p3 = path.elementAt(i + 2);
+      const Vec2 start = scratch.back();
+      flattenCubic(start, mapped(transform, e.x, e.y), mapped(transform, c2.x, c2.y),
+                   mapped(transform, p3.x, p3.y), toleranceMm, scratch);
+      i += 2;
+    }
+  }
+  finish();
+}
+
+bool CaptureEngine::Signature::operator==(const Signature& other) const {
+  if (kind != other.kind || transform != other.transform) return false;
+  switch (kind) {
+    case kPath: return path == other.path;
+    case kEllipse: return rect == other.rect;
+    default: return data == other.data && count == other.count;
+  }
+}
+
+CaptureEngine::CaptureEngine(CaptureSettings settings)
+    : QPaintEngine(QPaintEngine::AllFeatures), settings_(std::move(settings)) {}
+
+bool CaptureEngine::end() {
+  flushPending();
+  return true;
+}
+
+CaptureEngine::Paint CaptureEngine::currentPaint() const {
+  const QPainter* p = painter();
+  Paint paint;
+  if (p->opacity() <= 0.0) return paint;
+  const QPen& pen = p->pen();
+  paint.stroke = pen.style() != Qt::NoPen && visible(pen.brush());
+  paint.fill = visible(p->brush());
+  if (paint.stroke) paint.rgb = rgbOf(pen.brush());
+  else if (paint.fill) paint.rgb = rgbOf(p->brush());
+  return paint;
+}
+
+void CaptureEngine::record(std::vector<Polyline>&& lines, std::uint32_t rgb) {
+  if (lines.empty()) return;
+  if (runs_.empty() || runs_.back().topIndex != topIndex_ || runs_.back().rgb != rgb)
+    runs_.push_back(CapturedRun{topIndex_, rgb, {}});
+  auto& paths = runs_.back().paths;
+  for (Polyline& line : lines) paths.push_back(std::move(line));
+}
+
+void CaptureEngine::flushPending() {
+  if (!hasPending_) return;
+  hasPending_ = false;
+  if (settings_.outlineFills) record(std::move(pendingLines_), pendingRgb_);
+  pendingLines_.clear();
+  pendingSignature_ = Signature{};
+}
+
+bool CaptureEngine::admit(const Signature& signature, const Paint& paint,
+                          std::vector<Polyline>&& lines) {
+  ++shapes_;
+  if (settings_.onShape && (shapes_ & 255) == 0) settings_.onShape(shapes_);
+  if (paint.stroke) {
+    // The stroke pass of a filled shape replaces its fill pass.
+    if (hasPending_ && pendingSignature_ == signature) {
+      hasPending_ = false;
+      pendingLines_.clear();
+    }
+    flushPending();
+    record(std::move(lines), paint.rgb);
+    return true;
+  }
+  flushPending();
+  if (!paint.fill) return false;
+  hasPending_ = true;
+  pendingSignature_ = signature;
+  pendingLines_ = std::move(lines);
+  pendingRgb_ = paint.rgb;
+  return true;
+}
+
+void CaptureEngine::drawPath(const QPainterPath& path) {
+  const Paint paint = currentPaint();
+  if (cancelled() || (!paint.stroke && !paint.fill)) return flushPending();
+  const QTransform t = painter()->combinedTransform();
+  std::vector<Polyline> lines;
+  appendFlattenedPath(path, t, settings_.toleranceMm, lines);
+  Signature s;
+  s.kind = kPath;
+  s.path = path;
+  s.transform = t;
+  admit(s, paint, std::move(lines));
+}
+
+void CaptureEngine::drawPolygon(const QPointF* points, int count, PolygonDrawMode mode) {
+  const Paint paint = currentPaint();
+  if (cancelled() || (!paint.stroke && !paint.fill) || count < 2) return flushPending();
+  const QTransform t = painter()->combinedTransform();
+  Polyline line;
+  line.points.reserve(static_cast<std::size_t>(count));
+  for (int i = 0; i < count; ++i) line.points.push_back(mapped(t, points[i].x(), points[i].y()));
+  std::vector<Polyline> lines;
+  finishPolyline(line, mode != PolylineMode, lines);
+  Signature s;
+  s.kind = mode == PolylineMode ? kPolyline : kPolygon;
+  s.data = points;
+  s.count = count;
+  s.transform = t;
+  admit(s, paint, std::move(lines));
+}
+
+void CaptureEngine::drawLines(const QLineF* lines, int count) {
+  const QPainter* p = painter();
+  const QPen& pen = p->pen();
+  if (count == 1 && pen.widthF() == kSentinelPenWidth) {
+    flushPending();
+    topIndex_ = static_cast<int>(rgbOf(pen.brush())) - 1;  // sentinel colour = index + 1
+    return;
+  }
+  const Paint paint = currentPaint();
+  if (cancelled() || !paint.stroke) return flushPending();
+  const QTransform t = p->combinedTransform();
+  std::vector<Polyline> out;
+  for (int i = 0; i < count; ++i) {
+    Polyline line;
+    line.points = {mapped(t, lines[i].x1(), lines[i].y1()), mapped(t, lines[i].x2(), lines[i].y2())};
+    finishPolyline(line, false, out);
+  }
+  Signature s;
+  s.kind = kPolyline;
+  s.data = lines;
+  s.count = count;
+  s.transform = t;
+  admit(s, paint, std::move(out));
+}
+
+void CaptureEngine::drawRects(const QRectF* rects, int count) {
+  const Paint paint = currentPaint();
+  if (cancelled() || (!paint.stroke && !paint.fill)) return flushPending();
+  const QTransform t = painter()->combinedTransform();
+  std::vector<Polyline> out;
+  for (int i = 0; i < count; ++i) {
+    const QRectF& r = rects[i];
+    Polyline line;
+    line.points = {mapped(t, r.left(), r.top()), mapped(t, r.right(), r.top()),
+                   mapped(t, r.right(), r.bottom()), mapped(t, r.left(), r.bottom())};
+    finishPolyline(line, true, out);
+  }
+  Signature s;
+  s.kind = kRects;
+  s.data = rects;
+  s.count = count;
+  s.transform = t;
+  admit(s, paint, std::move(out));
+}
+
+void CaptureEngine::drawEllipse(const QRectF& rect) {
+  const Paint paint = currentPaint();
+  if (cancelled() || (!paint.stroke && !paint.fill)) return flushPending();
+  const QTransform t = painter()->combinedTransform();
+  const QPointF c = rect.center();
+  const Vec2 centre = mapped(t, c.x(), c.y());
+  const Vec2 u = mapped(t, c.x() + 0.5 * rect.width(), c.y()) - centre;
+  const Vec2 v = mapped(t, c.x(), c.y() + 0.5 * rect.height()) - centre;
+  Polyline line;
+  flattenEllipse(centre, u, v, settings_.toleranceMm, line.points);
+  std::vector<Polyline> out;
+  finishPolyline(line, true, out);
+  Signature s;
+  s.kind = kEllipse;
+  s.rect = rect;
+  s.transform = t;
+  admit(s, paint, std::move(out));
+}
+
+void CaptureEngine::drawTextItem(const QPointF& p, const QTextItem& textItem) {
+  // The base class turns the glyphs into outlines and fills them through drawPath.
+  QPaintEngine::drawTextItem(p, textItem);
+}
+
+std::vector<CapturedRun> CaptureEngine::takeRuns() {
+  flushPending();
+  return std::move(runs_);
+}
+
+CaptureDevice::CaptureDevice(double widthMm, double heightMm, CaptureSettings settings)
+    : width_(std::clamp(static_cast<int>(std::ceil(widthMm)), 1, 1 << 20)),
+      height_(std::clamp(static_cast<int>(std::ceil(heightMm)), 1, 1 << 20)),
+      engine_(std::make_unique<CaptureEngine>(std::move(settings))) {}
+
+CaptureDevice::~CaptureDevice() = default;
+
+int CaptureDevice::metric(PaintDeviceMetric metric) const {
+  switch (metric) {
+    case PdmWidth: return width_;
+    case PdmHeight: return height_;
+    case PdmWidthMM: return width_;
+    case PdmHeightMM: return height_;
+    case PdmNumColors: return 0x7FFFFFFF;
+    case PdmDepth: return 32;
+    case PdmDpiX:
+    case PdmDpiY:
+    case PdmPhysicalDpiX:
+    case PdmPhysicalDpiY: return 96;
+    case PdmDevicePixelRatio: return 1;
+    case PdmDevicePixelRatioScaled: return static_cast<int>(devicePixelRatioFScale());
+    default: return 0;
+  }
+}
+
+}  // namespace fivebar::svg

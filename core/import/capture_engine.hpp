@@ -1,0 +1,123 @@
+// A QPaintDevice/QPaintEngine pair that records what QSvgRenderer paints as polylines instead of
+// pixels: every path, polygon, line, rectangle, ellipse and text outline, mapped by the painter's
+// current transform into the page frame (mm, y down) and flattened within the tolerance.
+//
+// Layer tracking: the sanitiser inserts, before each top-level element k, a sentinel
+// <line> whose stroke width is kSentinelPenWidth and whose stroke colour is k + 1. Drawing it
+// switches the engine's current top-level index; it is never recorded.
+//
+// Qt SVG paints a filled and stroked shape twice (a fill pass with no pen, then a stroke pass
+// with the same geometry); the engine keeps the stroke pass only. A fill-only shape is recorded
+// as its outline (colour = fill colour) when outlineFills is set.
+#pragma once
+
+#include <QPaintDevice>
+#include <QPaintEngine>
+#include <QPainterPath>
+#include <QTransform>
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "core/drawing.hpp"
+
+namespace fivebar::svg {
+
+inline constexpr double kSentinelPenWidth = 0.0009765625;  // 2^-10: exact in text and binary
+
+// Consecutive polylines painted by one top-level element in one colour.
+struct CapturedRun {
+  int topIndex = -1;        // index into the sanitiser's top-level list; -1 = before any
+  std::uint32_t rgb = 0;    // 0xRRGGBB of the stroke (or of the fill for outlined fills)
+  std::vector<Polyline> paths;  // page frame: mm, y down
+};
+
+struct CaptureSettings {
+  double toleranceMm = 0.05;
+  bool outlineFills = true;
+  std::function<void(long long shapesPainted)> onShape;  // progress hook, may be empty
+  const std::atomic<bool>* cancel = nullptr;             // when raised, further shapes are ignored
+};
+
+class CaptureEngine final : public QPaintEngine {
+ public:
+  explicit CaptureEngine(CaptureSettings settings);
+
+  bool begin(QPaintDevice*) override { return true; }
+  bool end() override;
+  void updateState(const QPaintEngineState&) override {}
+  Type type() const override { return QPaintEngine::User; }
+
+  using QPaintEngine::drawEllipse;
+  using QPaintEngine::drawLines;
+  using QPaintEngine::drawPolygon;
+  using QPaintEngine::drawRects;
+  void drawPath(const QPainterPath& path) override;
+  void drawPolygon(const QPointF* points, int count, PolygonDrawMode mode) override;
+  void drawLines(const QLineF* lines, int count) override;
+  void drawRects(const QRectF* rects, int count) override;
+  void drawEllipse(const QRectF& rect) override;
+  void drawTextItem(const QPointF& p, const QTextItem& textItem) override;
+  void drawPixmap(const QRectF&, const QPixmap&, const QRectF&) override {}
+
+  std::vector<CapturedRun> takeRuns();
+
+ private:
+  struct Paint {
+    bool stroke = false;
+    bool fill = false;
+    std::uint32_t rgb = 0;  // stroke colour when stroke, else fill colour
+  };
+  // What one draw call painted; two calls with equal signatures paint the same geometry.
+  struct Signature {
+    int kind = 0;
+    const void* data = nullptr;
+    int count = 0;
+    QRectF rect;
+    QPainterPath path;
+    QTransform transform;
+    bool operator==(const Signature& other) const;
+  };
+
+  Paint currentPaint() const;
+  // Decides what to keep for a draw call; returns false when nothing is to be recorded now.
+  bool admit(const Signature& signature, const Paint& paint, std::vector<Polyline>&& lines);
+  void record(std::vector<Polyline>&& lines, std::uint32_t rgb);
+  void flushPending();
+  bool cancelled() const { return settings_.cancel && settings_.cancel->load(); }
+
+  CaptureSettings settings_;
+  std::vector<CapturedRun> runs_;
+  int topIndex_ = -1;
+  long long shapes_ = 0;
+  bool hasPending_ = false;
+  Signature pendingSignature_;
+  std::vector<Polyline> pendingLines_;
+  std::uint32_t pendingRgb_ = 0;
+};
+
+// The paint device handed to QPainter; size in device units (= mm after the render mapping).
+class CaptureDevice final : public QPaintDevice {
+ public:
+  CaptureDevice(double widthMm, double heightMm, CaptureSettings settings);
+  ~CaptureDevice() override;
+  QPaintEngine* paintEngine() const override { return engine_.get(); }
+  CaptureEngine& engine() { return *engine_; }
+
+ protected:
+  int metric(PaintDeviceMetric metric) const override;
+
+ private:
+  int width_;
+  int height_;
+  std::unique_ptr<CaptureEngine> engine_;
+};
+
+// Flattening helpers, exposed for tests. Points are mapped by `transform` before flattening.
+void appendFlattenedPath(const QPainterPath& path, const QTransform& transform,
+                         double toleranceMm, std::vector<Polyline>& out);
+
+}  // namespace fivebar::svg

@@ -1,0 +1,70 @@
+#include "flatten.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace fivebar::svg {
+namespace {
+
+constexpr int kMaxDepth = 30;       // 2^30 pieces: far beyond any sane curve
+constexpr int kMaxEllipseSteps = 1 << 20;
+
+struct Cubic {
+  Vec2 p0, c1, c2, p3;
+  int depth = 0;
+};
+
+bool flatEnough(const Cubic& c, double toleranceMm) {
+  const Vec2 u = 3.0 * c.c1 - 2.0 * c.p0 - c.p3;
+  const Vec2 v = 3.0 * c.c2 - c.p0 - 2.0 * c.p3;
+  const double bound2 = std::max(u.x() * u.x(), v.x() * v.x()) +
+                        std::max(u.y() * u.y(), v.y() * v.y());
+  return bound2 <= 16.0 * toleranceMm * toleranceMm;
+}
+
+}  // namespace
+
+void flattenCubic(const Vec2& p0, const Vec2& c1, const Vec2& c2, const Vec2& p3,
+                  double toleranceMm, std::vector<Vec2>& out) {
+  // Explicit stack, right half pushed first so pieces come out in order.
+  Cubic stack[kMaxDepth + 2];
+  int top = 0;
+  stack[top++] = Cubic{p0, c1, c2, p3, 0};
+  while (top > 0) {
+    const Cubic c = stack[--top];
+    if (c.depth >= kMaxDepth || flatEnough(c, toleranceMm)) {
+      out.push_back(c.p3);
+      continue;
+    }
+    const Vec2 ab = 0.5 * (c.p0 + c.c1);
+    const Vec2 bc = 0.5 * (c.c1 + c.c2);
+    const Vec2 cd = 0.5 * (c.c2 + c.p3);
+    const Vec2 abc = 0.5 * (ab + bc);
+    const Vec2 bcd = 0.5 * (bc + cd);
+    const Vec2 mid = 0.5 * (abc + bcd);
+    stack[top++] = Cubic{mid, bcd, cd, c.p3, c.depth + 1};
+    stack[top++] = Cubic{c.p0, ab, abc, mid, c.depth + 1};
+  }
+}
+
+void flattenEllipse(const Vec2& centre, const Vec2& u, const Vec2& v, double toleranceMm,
+                    std::vector<Vec2>& out) {
+  // Largest singular value of the 2x2 matrix [u v].
+  const double a = u.squaredNorm() + v.squaredNorm();
+  const double det = cross(u, v);
+  const double sigmaMax = std::sqrt(0.5 * (a + std::sqrt(std::max(0.0, a * a - 4.0 * det * det))));
+  const double twoPi = 2.0 * std::numbers::pi;
+  int steps = 4;
+  if (sigmaMax > 0.0) {
+    const double h = std::sqrt(8.0 * toleranceMm / sigmaMax);
+    steps = std::clamp(static_cast<int>(std::ceil(twoPi / h)), 4, kMaxEllipseSteps);
+  }
+  out.reserve(out.size() + static_cast<std::size_t>(steps));
+  for (int i = 0; i < steps; ++i) {
+    const double t = twoPi * i / steps;
+    out.push_back(centre + u * std::cos(t) + v * std::sin(t));
+  }
+}
+
+}  // namespace fivebar::svg

@@ -1,0 +1,27 @@
+// Tolerance-bounded flattening of curves into polyline points (no Qt). Coordinates and the
+// tolerance share one unit (mm in practice). Guarantee: every point of the true curve lies
+// within toleranceMm of the emitted polyline.
+#pragma once
+
+#include <vector>
+
+#include "core/geometry.hpp"
+
+namespace fivebar::svg {
+
+// Appends the points after p0 of cubic Bezier (p0, c1, c2, p3), ending exactly at p3. Adaptive
+// de Casteljau subdivision at t = 1/2 until the Hain/Willcocks flatness bound
+//   max |B(t) - L(t)| <= 1/4 sqrt(max(ux^2, vx^2) + max(uy^2, vy^2)),
+//   u = 3 c1 - 2 p0 - p3, v = 3 c2 - p0 - 2 p3,
+// is within the tolerance (L = the chord parametrised linearly). Depth is capped at 30.
+void flattenCubic(const Vec2& p0, const Vec2& c1, const Vec2& c2, const Vec2& p3,
+                  double toleranceMm, std::vector<Vec2>& out);
+
+// Points of the closed ellipse centre + u cos t + v sin t (u, v: conjugate semi-axes after any
+// affine map), starting at t = 0, without repeating the first point. The step h satisfies
+// h^2 / 8 * max|P''| <= tolerance (linear interpolation error bound), max|P''| = the largest
+// singular value of [u v].
+void flattenEllipse(const Vec2& centre, const Vec2& u, const Vec2& v, double toleranceMm,
+                    std::vector<Vec2>& out);
+
+}  // namespace fivebar::svg

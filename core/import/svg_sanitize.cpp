@@ -1,0 +1,384 @@
+#include "svg_sanitize.hpp"
+
+#include <QBuffer>
+#include <QSet>
+#include <QXmlStreamReader>
+#include <QRegularExpression>
+#include <QXmlStreamWriter>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "path_data.hpp"
+
+namespace fivebar::svg {
+namespace {
+
+const QString kXlinkNs = QStringLiteral("http://www.w3.org/1999/xlink");
+const QString kInkscapeNs = QStringLiteral("http://www.inkscape.org/namespaces/inkscape");
+
+bool isDropped(QStringView tag) {
+  static const QSet<QStringView> dropped{u"image", u"script", u"foreignObject", u"video", u"audio",
+                                     u"iframe", u"canvas", u"feImage", u"handler"};
+  return dropped.contains(tag);
+}
+
+bool isRendering(QStringView tag) {
+  static const QSet<QStringView> rendering{u"g", u"path", u"rect", u"circle", u"ellipse", u"line",
+                                       u"polyline", u"polygon", u"text", u"use", u"svg", u"a",
+                                       u"switch", u"textArea"};
+  return rendering.contains(tag);
+}
+
+bool isShape(QStringView tag) {
+  static const QSet<QStringView> shapes{u"path", u"rect", u"circle", u"ellipse", u"line", u"polyline",
+                                    u"polygon", u"text", u"use", u"textArea"};
+  return shapes.contains(tag);
+}
+
+bool isGeometryAttribute(QStringView name) {
+  static const QSet<QStringView> geometry{u"d", u"points", u"x", u"y", u"x1", u"y1", u"x2", u"y2", u"cx",
+                                      u"cy", u"r", u"rx", u"ry", u"width", u"height", u"transform",
+                                      u"viewBox"};
+  return geometry.contains(name);
+}
+
+// True when the text holds "nan", "inf" or an exponent that overflows a double.
+bool hasNonFiniteNumber(QStringView value) {
+  const qsizetype n = value.size();
+  for (qsizetype i = 0; i < n; ++i) {
+    const char16_t c = value[i].unicode() | 0x20;  // ASCII lower case
+    if (i + 2 < n && (c == u'n' || c == u'i')) {
+      const char16_t c1 = value[i + 1].unicode() | 0x20, c2 = value[i + 2].unicode() | 0x20;
+      if ((c == u'n' && c1 == u'a' && c2 == u'n') || (c == u'i' && c1 == u'n' && c2 == u'f'))
+        return true;
+    }
+    if (c == u'e' && i > 0 && value[i - 1].isDigit()) {
+      qsizetype j = i + 1;
+      bool negative = false;
+      if (j < n && (value[j] == u'+' || value[j] == u'-')) negative = value[j++] == u'-';
+      int exponent = 0;
+      while (j < n && value[j].isDigit() && exponent < 100000)
+        exponent = exponent * 10 + (value[j++].unicode() - u'0');
+      if (!negative && exponent > 300) return true;
+    }
+  }
+  return false;
+}
+
+class Sanitizer {
+ public:
+  Sanitizer(QIODevice& input, double dpi, const std::function<bool(double)>& progress)
+      : input_(input), dpi_(dpi), progress_(progress), reader_(&input), writer_(&result_.svg) {
+    // The output is about as long as the input: reserve once instead of growing 50 MB by steps.
+    result_.svg.reserve(static_cast<qsizetype>(std::min<qint64>(input.size() + 65536, qint64{1} << 30)));
+    writer_.setAutoFormatting(false);
+  }
+
+  SanitizeResult run();
+
+ private:
+  void startElement();
+  void endElement();
+  void characters();
+  QXmlStreamAttributes cleanAttributes(QStringView tag);
+  bool checkNumbers(QStringView tag, const QXmlStreamAttributes& attributes);
+  bool writeSplitPath(const QXmlStreamAttributes& attributes);
+  void writeSentinel(int index);
+  void recordRoot(const QXmlStreamAttributes& attributes);
+  void writeNamespaces();
+  void writeNestedSvgAsGroup(const QXmlStreamAttributes& attributes);
+  void warn(const std::string& what);
+  void fail(ImportStatus status, const std::string& message);
+  std::string where() const;
+
+  QIODevice& input_;
+  double dpi_;
+  const std::function<bool(double)>& progress_;
+  QXmlStreamReader reader_;
+  SanitizeResult result_;   // before writer_, which writes into result_.svg
+  QXmlStreamWriter writer_;
+  int depth_ = 0;
+  int skipDepth_ = 0;  // > 0 while inside a dropped element: its depth
+  bool inStyle_ = false;
+  bool sawRoot_ = false;
+  QString svgNamespace_;
+  std::map<std::string, std::pair<int, qint64>> warnings_;  // what -> (count, first line)
+};
+
+std::string Sanitizer::where() const {
+  return "line " + std::to_string(reader_.lineNumber()) + ": <" +
+         reader_.name().toString().toStdString() + ">";
+}
+
+void Sanitizer::warn(const std::string& what) {
+  auto [it, inserted] = warnings_.try_emplace(what, 0, reader_.lineNumber());
+  ++it->second.first;
+}
+
+void Sanitizer::fail(ImportStatus status, const std::string& message) {
+  if (result_.status == ImportStatus::Ok) {
+    result_.status = status;
+    result_.error = message;
+  }
+}
+
+SanitizeResult Sanitizer::run() {
+  const qint64 total = std::max<qint64>(1, input_.size());
+  long long tokens = 0;
+  writer_.writeStartDocument(QStringLiteral("1.0"));
+  while (!reader_.atEnd() && result_.status == ImportStatus::Ok) {
+    const QXmlStreamReader::TokenType token = reader_.readNext();
+    if (progress_ && (++tokens & 4095) == 0 &&
+        !progress_(static_cast<double>(input_.pos()) / static_cast<double>(total))) {
+      fail(ImportStatus::Cancelled, "import cancelled");
+      break;
+    }
+    switch (token) {
+      case QXmlStreamReader::StartElement: startElement(); break;
+      case QXmlStreamReader::EndElement: endElement(); break;
+      case QXmlStreamReader::Characters: characters(); break;
+      case QXmlStreamReader::DTD:
+        if (!reader_.entityDeclarations().isEmpty())
+          warn("DOCTYPE with entity declarations removed (internal entities were expanded)");
+        break;
+      case QXmlStreamReader::EntityReference:
+        warn("unresolved entity reference dropped");
+        break;
+      case QXmlStreamReader::ProcessingInstruction:
+        if (reader_.processingInstructionTarget() == u"xml-stylesheet")
+          warn("external style sheet (xml-stylesheet) ignored");
+        break;
+      default: break;  // comments, StartDocument, EndDocument
+    }
+  }
+  if (reader_.hasError() && result_.status == ImportStatus::Ok) {
+    fail(ImportStatus::MalformedXml, "line " + std::to_string(reader_.lineNumber()) +
+                                         ", column " + std::to_string(reader_.columnNumber()) +
+                                         ": " + reader_.errorString().toStdString());
+  }
+  if (result_.status == ImportStatus::Ok && !sawRoot_)
+    fail(ImportStatus::InvalidDocument, "no <svg> element found");
+  writer_.writeEndDocument();
+  for (const auto& [what, countLine] : warnings_) {
+    result_.warnings.push_back(what + " (" + std::to_string(countLine.first) + "x, first at line " +
+                               std::to_string(countLine.second) + ")");
+  }
+  return std::move(result_);
+}
+
+void Sanitizer::recordRoot(const QXmlStreamAttributes& attributes) {
+  RootAttributes& root = result_.root;
+  root.line = reader_.lineNumber();
+  root.hasWidth = attributes.hasAttribute(QStringLiteral("width"));
+  root.hasHeight = attributes.hasAttribute(QStringLiteral("height"));
+  root.hasViewBox = attributes.hasAttribute(QStringLiteral("viewBox"));
+  root.width = attributes.value(QStringLiteral("width")).toString();
+  root.height = attributes.value(QStringLiteral("height")).toString();
+  root.viewBox = attributes.value(QStringLiteral("viewBox")).toString();
+  root.preserveAspectRatio = attributes.value(QStringLiteral("preserveAspectRatio")).toString();
+}
+
+bool Sanitizer::checkNumbers(QStringView tag, const QXmlStreamAttributes& attributes) {
+  for (const QXmlStreamAttribute& a : attributes) {
+    if (!a.namespaceUri().isEmpty() || !isGeometryAttribute(a.name())) continue;
+    if (hasNonFiniteNumber(a.value())) {
+      const QString id = attributes.value(QStringLiteral("id")).toString();
+      fail(ImportStatus::InvalidNumber,
+           "line " + std::to_string(reader_.lineNumber()) + ": <" + tag.toString().toStdString() +
+               (id.isEmpty() ? "" : " id=\"" + id.toStdString() + "\"") + "> attribute " +
+               a.name().toString().toStdString() +
+               " contains a non-finite number (NaN or infinity)");
+      return false;
+    }
+  }
+  return true;
+}
+
+QXmlStreamAttributes Sanitizer::cleanAttributes(QStringView tag) {
+  QXmlStreamAttributes out;
+  out.reserve(reader_.attributes().size());
+  // SVG 2: a plain href wins over xlink:href; keep only one of them.
+  const bool plainHref = reader_.attributes().hasAttribute(QStringLiteral("href"));
+  for (const QXmlStreamAttribute& a : reader_.attributes()) {
+    if (plainHref && a.name() == u"href" && a.namespaceUri() == kXlinkNs) continue;
+    const QStringView name = a.name();
+    if (name.startsWith(u"on") && a.namespaceUri().isEmpty()) {
+      warn("event attribute (on...) removed");
+      continue;
+    }
+    if (name == u"href" && (a.namespaceUri() == kXlinkNs || a.namespaceUri().isEmpty())) {
+      if (!a.value().startsWith(u'#')) {
+        warn("external reference removed from <" + tag.toString().toStdString() + ">");
+        continue;
+      }
+      if (a.namespaceUri().isEmpty()) {
+        out.append(kXlinkNs, QStringLiteral("href"), a.value().toString());
+        continue;
+      }
+    }
+    out.append(a);
+  }
+  return out;
+}
+
+void Sanitizer::writeSentinel(int index) {
+  const int code = index + 1;
+  writer_.writeStartElement(svgNamespace_, QStringLiteral("line"));
+  writer_.writeAttribute(QStringLiteral("x1"), QStringLiteral("0"));
+  writer_.writeAttribute(QStringLiteral("y1"), QStringLiteral("0"));
+  writer_.writeAttribute(QStringLiteral("x2"), QStringLiteral("1"));
+  writer_.writeAttribute(QStringLiteral("y2"), QStringLiteral("0"));
+  writer_.writeAttribute(QStringLiteral("stroke"),
+                         QStringLiteral("#%1").arg(code, 6, 16, QLatin1Char('0')));
+  writer_.writeAttribute(QStringLiteral("stroke-width"), QStringLiteral("0.0009765625"));
+  writer_.writeAttribute(QStringLiteral("stroke-opacity"), QStringLiteral("1"));
+  writer_.writeAttribute(QStringLiteral("opacity"), QStringLiteral("1"));
+  writer_.writeAttribute(QStringLiteral("display"), QStringLiteral("inline"));
+  writer_.writeAttribute(QStringLiteral("visibility"), QStringLiteral("visible"));
+  writer_.writeEndElement();
+}
+
+bool Sanitizer::writeSplitPath(const QXmlStreamAttributes& attributes) {
+  const QStringView d = attributes.value(QStringLiteral("d"));
+  if (d.size() <= kPathScanChars) return false;
+  const ParsedPath parsed = parsePathData(d);
+  long long estimate = 0;
+  for (const PathCommand& c : parsed.commands) estimate += qtElementEstimate(c);
+  if (estimate <= kMaxPathElements) return false;
+  const std::vector<QString> parts = splitPathData(parsed.commands, kMaxPathElements);
+  warn("long <path> split into " + std::to_string(parts.size()) +
+       " parts to avoid Qt SVG's 32,767-element truncation");
+  if (parsed.error)
+    warn("path data error at character " + std::to_string(parsed.errorOffset) +
+         ": rest of the path ignored");
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    if (i > 0) writer_.writeStartElement(reader_.namespaceUri().toString(), QStringLiteral("path"));
+    for (const QXmlStreamAttribute& a : attributes) {
+      if (a.name() == u"d" && a.namespaceUri().isEmpty()) continue;
+      if (i > 0 && a.name() == u"id") continue;  // ids must stay unique
+      writer_.writeAttribute(a);
+    }
+    writer_.writeAttribute(QStringLiteral("d"), parts[i]);
+    if (i + 1 < parts.size()) writer_.writeEndElement();
+  }
+  return true;
+}
+
+// Declares the element's namespaces (before its start tag, so that the writer uses the
+// document's own prefixes); the root also gets xlink, which "href" conversion relies on.
+void Sanitizer::writeNamespaces() {
+  bool hasXlink = depth_ > 1;
+  for (const QXmlStreamNamespaceDeclaration& ns : reader_.namespaceDeclarations()) {
+    if (ns.prefix().isEmpty()) {
+      writer_.writeDefaultNamespace(ns.namespaceUri().toString());
+    } else if (ns.prefix() == u"xlink") {
+      if (depth_ == 1) writer_.writeNamespace(kXlinkNs, QStringLiteral("xlink"));
+      hasXlink = true;
+    } else {
+      writer_.writeNamespace(ns.namespaceUri().toString(), ns.prefix().toString());
+    }
+  }
+  if (!hasXlink) writer_.writeNamespace(kXlinkNs, QStringLiteral("xlink"));
+}
+
+// Qt SVG 6.4 ignores a nested <svg>'s position and viewBox: write it as a <g> with the
+// equivalent transform.
+void Sanitizer::writeNestedSvgAsGroup(const QXmlStreamAttributes& attributes) {
+  NestedViewport nested;
+  QXmlStreamAttributes kept;
+  for (const QXmlStreamAttribute& a : attributes) {
+    const QStringView n = a.name();
+    const QString v = a.value().toString();
+    if (!a.namespaceUri().isEmpty()) kept.append(a);
+    else if (n == u"x") nested.x = v;
+    else if (n == u"y") nested.y = v;
+    else if (n == u"width") nested.width = v;
+    else if (n == u"height") nested.height = v;
+    else if (n == u"viewBox") nested.viewBox = v;
+    else if (n == u"preserveAspectRatio") nested.preserveAspectRatio = v;
+    else if (n != u"transform") kept.append(a);
+  }
+  writer_.writeStartElement(reader_.namespaceUri().toString(), QStringLiteral("g"));
+  writer_.writeAttributes(kept);
+  writer_.writeAttribute(QStringLiteral("transform"), nestedViewportTransform(nested, result_.root, dpi_));
+}
+
+void Sanitizer::startElement() {
+  ++depth_;
+  if (skipDepth_ > 0) return;
+  const QString tag = reader_.name().toString();
+  if (depth_ > kMaxDepth) {
+    fail(ImportStatus::InvalidDocument, where() + " nesting deeper than " +
+                                            std::to_string(kMaxDepth) + " elements");
+    return;
+  }
+  if (isDropped(tag)) {
+    warn("<" + tag.toStdString() + "> element removed");
+    skipDepth_ = depth_;
+    return;
+  }
+  if (depth_ == 1) {
+    if (tag != u"svg") {
+      fail(ImportStatus::InvalidDocument, where() + " the root element is not <svg>");
+      return;
+    }
+    sawRoot_ = true;
+    svgNamespace_ = reader_.namespaceUri().toString();
+    recordRoot(reader_.attributes());
+  }
+  const QXmlStreamAttributes attributes = cleanAttributes(tag);
+  if (!checkNumbers(tag, attributes)) return;
+  if (depth_ == 2 && isRendering(tag)) {
+    const int index = static_cast<int>(result_.topLevel.size());
+    TopLevelElement top;
+    top.tag = tag;
+    top.id = attributes.value(QStringLiteral("id")).toString();
+    top.label = attributes.value(kInkscapeNs, QStringLiteral("label")).toString();
+    top.inkscapeLayer = tag == u"g" &&
+                        attributes.value(kInkscapeNs, QStringLiteral("groupmode")) == u"layer";
+    result_.topLevel.push_back(top);
+    writeSentinel(index);
+  }
+  if (isShape(tag)) ++result_.shapeCount;
+  inStyle_ = tag == u"style";
+  writeNamespaces();
+  if (depth_ > 1 && tag == u"svg") return writeNestedSvgAsGroup(attributes);
+  writer_.writeStartElement(reader_.namespaceUri().toString(), tag);
+  if (tag == u"path" && writeSplitPath(attributes)) return;
+  writer_.writeAttributes(attributes);
+}
+
+void Sanitizer::endElement() {
+  if (skipDepth_ > 0) {
+    if (depth_ == skipDepth_) skipDepth_ = 0;
+    --depth_;
+    return;
+  }
+  --depth_;
+  inStyle_ = false;
+  if (result_.status == ImportStatus::Ok) writer_.writeEndElement();
+}
+
+void Sanitizer::characters() {
+  if (skipDepth_ > 0 || depth_ == 0) return;
+  QString text = reader_.text().toString();
+  if (inStyle_ && text.contains(QStringLiteral("@import"))) {
+    static const QRegularExpression import(QStringLiteral("@import[^;]*;?"));
+    text.remove(import);
+    warn("CSS @import removed");
+  }
+  if (reader_.isCDATA()) writer_.writeCDATA(text);
+  else writer_.writeCharacters(text);
+}
+
+}  // namespace
+
+SanitizeResult sanitizeSvg(QIODevice& input, double dpi,
+                           const std::function<bool(double)>& progress) {
+  Sanitizer sanitizer(input, dpi, progress);
+  return sanitizer.run();
+}
+
+}  // namespace fivebar::svg

@@ -1,0 +1,66 @@
+// fivebar-svg-worker: imports one SVG in its own process so that a crash or hang of Qt SVG on a
+// hostile file cannot take the caller down (svg_import.hpp, importSvgFile).
+// Usage: fivebar-svg-worker [options] -- FILE   (options: wire_format.cpp, workerArguments)
+// stdout: the ImportResult in the binary wire format; stderr: "progress <fraction>" lines.
+// Exit code 0 whenever a result was written (whatever its status), 2 for a bad command line.
+#include <QGuiApplication>
+
+#include <cstdio>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "svg_import.hpp"
+#include "wire_format.hpp"
+
+namespace {
+
+std::vector<std::string>& qtMessages() {
+  static std::vector<std::string> messages;
+  return messages;
+}
+
+// Keeps Qt's own diagnostics out of stderr (which carries progress) and reports the distinct
+// ones as import warnings.
+void collectMessage(QtMsgType, const QMessageLogContext& context, const QString& text) {
+  constexpr std::size_t kMaxMessages = 20;
+  if (text.startsWith(u"QStandardPaths")) return;  // environment noise, not about the file
+  auto& messages = qtMessages();
+  const std::string category = context.category ? context.category : "qt";
+  std::string line = "Qt (" + category + "): " + text.toStdString();
+  for (const std::string& m : messages)
+    if (m == line) return;
+  if (messages.size() < kMaxMessages) messages.push_back(std::move(line));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+  qInstallMessageHandler(collectMessage);
+  QGuiApplication app(argc, argv);
+  QString path;
+  fivebar::svg::ImportOptions options;
+  const QString error = fivebar::svg::parseWorkerArguments(app.arguments().mid(1), path, options);
+  if (!error.isEmpty()) {
+    std::fprintf(stderr, "fivebar-svg-worker: %s\n", qPrintable(error));
+    return 2;
+  }
+  options.isolation = fivebar::svg::Isolation::InProcess;
+  int lastPercent = -1;
+  auto progress = [&](double fraction) {
+    const int percent = static_cast<int>(fraction * 100.0);
+    if (percent == lastPercent) return;
+    lastPercent = percent;
+    std::fprintf(stderr, "%s%.2f\n", fivebar::svg::kProgressPrefix, fraction);
+    std::fflush(stderr);
+  };
+  fivebar::svg::ImportResult result = fivebar::svg::importSvgInProcess(path, options, progress);
+  if (result.ok()) {
+    for (const std::string& m : qtMessages()) result.warnings.push_back(m);
+  } else if (result.status == fivebar::svg::ImportStatus::RenderFailed && !qtMessages().empty()) {
+    result.message += " (" + qtMessages().front() + ")";
+  }
+  fivebar::svg::writeResult(result, stdout);
+  return 0;
+}

@@ -1,0 +1,286 @@
+// planStrokes: placed strokes -> PlannedJob (segmentation, feeds, travel, tool commands, timing).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "feeds.hpp"
+#include "planner.hpp"
+#include "safety.hpp"
+#include "segmentation.hpp"
+#include "singularity.hpp"
+#include "time_estimate.hpp"
+
+namespace fivebar {
+namespace {
+
+// FK samples per travel move for its XY length.
+constexpr int kTravelLengthSamples = 16;
+// Lever arm factor for the G-code rounding share of the tolerance (docs/planning.md): a joint
+// rounding error moves P by at most |J| * dtheta; with the type II margin kept, |J| stays below
+// a few times the longest leg.
+constexpr double kRoundingLeverFactor = 4.0;
+constexpr int kGcodeAngleDecimals = 4;
+
+std::string layerLabel(const std::vector<Layer>& layers, int layerIndex) {
+  if (layerIndex >= 0 && static_cast<size_t>(layerIndex) < layers.size()) {
+    const Layer& l = layers[static_cast<size_t>(layerIndex)];
+    return "layer '" + (l.name.empty() ? l.id : l.name) + "'";
+  }
+  return "layer " + std::to_string(layerIndex);
+}
+
+class MotionPlanner {
+ public:
+  MotionPlanner(const std::vector<Stroke>& strokes, const std::vector<Layer>& layers,
+                const MachineProfile& profile, WorkingMode mode, const PlanOptions& options,
+                PlanResult& out)
+      : strokes_(strokes), layers_(layers), p_(profile), g_(profile.geometry), mode_(mode),
+        opt_(options), out_(out), job_(out.job) {
+    limits_ = feedLimitsOf(profile);
+    limits_.minSegmentDurationS = options.minSegmentDurationS;
+  }
+
+  void run(double jointBudgetMm) {
+    segOpt_.deviationBudgetMm = jointBudgetMm;
+    job_.profileName = p_.name;
+    job_.mode = mode_;
+    job_.assembly = p_.assembly;
+    if (!startPose()) return;
+    job_.strokes.resize(strokes_.size());
+    for (size_t k = 0; k < strokes_.size(); ++k) drawStroke(k);
+    if (penDown_) penUp();
+    travelTo(job_.start, -1, -1, "travel back to the start pose");
+  }
+
+ private:
+  bool startPose() {
+    job_.start = p_.homeAngles;
+    const FkResult fk = forward(g_, job_.start, p_.assembly);
+    if (!fk.ok()) {
+      problem("start pose", Vec2::Zero(), "the profile's home pose does not close the linkage",
+              {"set a reachable home pose in the profile"});
+      return false;
+    }
+    job_.startXY = fk.p;
+    at_ = job_.start;
+    atXY_ = fk.p;
+    return true;
+  }
+
+  void drawStroke(size_t k) {
+    const Stroke& s = strokes_[k];
+    PlannedStroke& ps = job_.strokes[k];
+    ps.layerIndex = s.layerIndex;
+    ps.pathIndex = s.pathIndex;
+    ps.reversed = s.reversed;
+    if (s.points.empty()) return;
+    const SegmentedStroke seg = segmentStroke(g_, mode_, p_.assembly, s.points, at_, segOpt_);
+    if (!seg.ok()) {
+      problem(pathLabel(s), seg.failedAt,
+              seg.status == SegmentStatus::OutOfReach
+                  ? "a point is out of reach in working mode " + std::string(toString(mode_))
+                  : "the drawn curve cannot follow the stroke here (singular region)",
+              {"move or shrink the drawing (--at, --scale, --fit)", "try another --mode"});
+      return;
+    }
+    const int layer = s.layerIndex;
+    const bool newLayer = layer != lastLayer_;
+    lastLayer_ = layer;
+    if (penDown_) penUp();
+    if (newLayer && k > 0 && layerTool(layer).pauseBefore) push(JobMoveKind::Pause, -1, layer);
+    if (!travelTo(seg.waypoints[0].q, static_cast<int>(k), layer, "travel to " + pathLabel(s)))
+      return;
+    penDown(static_cast<int>(k), layer);
+    ps.firstMove = static_cast<int>(job_.moves.size());
+    draw(seg, static_cast<int>(k), layer);
+    ps.moveCount = static_cast<int>(job_.moves.size()) - ps.firstMove;
+    for (const JointWaypoint& w : seg.waypoints) ps.lengthMm += w.pathLengthMm;
+    job_.summary.penDownMm += ps.lengthMm;
+  }
+
+  void draw(const SegmentedStroke& seg, int stroke, int layer) {
+    const std::vector<SegmentFeed> feeds =
+        planFeeds(g_, p_.assembly, seg.waypoints, drawSpeed(layer), limits_);
+    for (size_t i = 0; i < feeds.size(); ++i) {
+      const JointWaypoint& w = seg.waypoints[i + 1];
+      JobMove& m = push(JobMoveKind::Draw, stroke, layer);
+      m.target = w.q;
+      m.targetXY = w.p;
+      m.feedMmPerS = feeds[i].feedMmPerS;
+      m.jointFeedRadPerS = feeds[i].jointFeedRadPerS;
+      m.feedLimited = feeds[i].limited();
+      m.maxDeviationMm = w.deviationMm;
+      m.toolValue = toolDownValue(layer);
+      moved(w.q, w.p);
+      job_.summary.segments += 1;
+      job_.summary.feedLimitedSegments += m.feedLimited ? 1 : 0;
+      job_.summary.maxDeviationMm = std::max(job_.summary.maxDeviationMm, w.deviationMm);
+    }
+  }
+
+  bool travelTo(const JointAngles& target, int stroke, int layer, const std::string& what) {
+    if (std::abs(target.theta1 - at_.theta1) < 1e-12 && std::abs(target.theta2 - at_.theta2) < 1e-12)
+      return true;
+    const auto path = planSafeTravel(p_, at_, target);
+    if (!path) {
+      const FkResult fk = forward(g_, target, p_.assembly);
+      problem(what, fk.ok() ? fk.p : atXY_, "no safe pen-up travel reaches it",
+              {"move the drawing away from singular regions (--at)", "try another --mode"});
+      return false;
+    }
+    std::vector<JointWaypoint> chain{{at_, atXY_, 0.0, 0.0}};
+    for (const JointAngles& q : *path) {
+      const auto [length, end] = travelLength(chain.back().q, q);
+      chain.push_back({q, end, 0.0, length});
+    }
+    const std::vector<SegmentFeed> feeds =
+        planFeeds(g_, p_.assembly, chain, p_.travelSpeedMmPerS, limits_);
+    for (size_t i = 0; i < feeds.size(); ++i) {
+      JobMove& m = push(JobMoveKind::Travel, stroke, layer);
+      m.target = chain[i + 1].q;
+      m.targetXY = chain[i + 1].p;
+      m.feedMmPerS = feeds[i].feedMmPerS;
+      m.jointFeedRadPerS = feeds[i].jointFeedRadPerS;
+      m.feedLimited = feeds[i].limited();
+      moved(m.target, m.targetXY);
+      job_.summary.travelMm += chain[i + 1].pathLengthMm;
+      job_.summary.travelMoves += 1;
+    }
+    return true;
+  }
+
+  // XY length (mm) of the joint-linear move a -> b by FK samples, and where it ends.
+  std::pair<double, Vec2> travelLength(const JointAngles& a, const JointAngles& b) const {
+    double length = 0.0;
+    Vec2 prev = forward(g_, a, p_.assembly).p;
+    for (int k = 1; k <= kTravelLengthSamples; ++k) {
+      const double u = static_cast<double>(k) / kTravelLengthSamples;
+      const FkResult fk = forward(g_, {a.theta1 + u * (b.theta1 - a.theta1),
+                                       a.theta2 + u * (b.theta2 - a.theta2)}, p_.assembly);
+      if (!fk.ok()) continue;
+      length += (fk.p - prev).norm();
+      prev = fk.p;
+    }
+    return {length, prev};
+  }
+
+  void penDown(int stroke, int layer) {
+    JobMove& m = push(JobMoveKind::PenDown, stroke, layer);
+    m.toolValue = toolDownValue(layer);
+    m.dwellS = p_.tool.kind == ToolKind::PenServo ? p_.tool.penDownDelayS : 0.0;
+    penDown_ = true;
+  }
+
+  void penUp() {
+    JobMove& m = push(JobMoveKind::PenUp, -1, lastLayer_);
+    m.toolValue = p_.tool.kind == ToolKind::ZAxis ? p_.tool.zUpMm
+                  : p_.tool.kind == ToolKind::Laser ? 0.0 : p_.tool.penUpS;
+    m.dwellS = p_.tool.kind == ToolKind::PenServo ? p_.tool.penUpDelayS : 0.0;
+    penDown_ = false;
+  }
+
+  JobMove& push(JobMoveKind kind, int stroke, int layer) {
+    JobMove& m = job_.moves.emplace_back();
+    m.kind = kind;
+    m.target = at_;
+    m.targetXY = atXY_;
+    m.strokeIndex = stroke;
+    m.layerIndex = layer;
+    return m;
+  }
+
+  void moved(const JointAngles& q, const Vec2& p) {
+    at_ = q;
+    atXY_ = p;
+    const double margin = singularityMargins(g_, makePose(g_, q, p)).typeII;
+    minMargin_ = std::min(minMargin_, margin);
+    job_.summary.minTypeIIMarginRad = minMargin_;
+  }
+
+  LayerToolSettings layerTool(int layer) const {
+    if (layer >= 0 && static_cast<size_t>(layer) < layers_.size())
+      return layers_[static_cast<size_t>(layer)].tool;
+    return {};
+  }
+  double drawSpeed(int layer) const {
+    const double v = layerTool(layer).drawSpeedMmPerS;
+    return v > 0.0 ? v : p_.drawSpeedMmPerS;
+  }
+  double toolDownValue(int layer) const {
+    const double power = layerTool(layer).power;
+    switch (p_.tool.kind) {
+      case ToolKind::PenServo: return power >= 0.0 ? power : p_.tool.penDownS;
+      case ToolKind::Laser: return power >= 0.0 ? power : p_.tool.laserPowerS;
+      case ToolKind::ZAxis: return p_.tool.zDownMm;
+    }
+    return 0.0;
+  }
+
+  std::string pathLabel(const Stroke& s) const {
+    return layerLabel(layers_, s.layerIndex) + " path " + std::to_string(s.pathIndex);
+  }
+
+  void problem(std::string path, const Vec2& where, std::string why, std::vector<std::string> fixes) {
+    out_.report.problems.push_back({std::move(path), where, std::move(why), std::move(fixes)});
+  }
+
+  const std::vector<Stroke>& strokes_;
+  const std::vector<Layer>& layers_;
+  const MachineProfile& p_;
+  const Geometry& g_;
+  WorkingMode mode_;
+  const PlanOptions& opt_;
+  PlanResult& out_;
+  PlannedJob& job_;
+  FeedLimits limits_;
+  SegmentationOptions segOpt_;
+  JointAngles at_;
+  Vec2 atXY_ = Vec2::Zero();
+  bool penDown_ = false;
+  int lastLayer_ = std::numeric_limits<int>::min();
+  double minMargin_ = kPi / 2.0;
+};
+
+}  // namespace
+
+// Tolerance left for the joint-linear deviation once flattening and G-code rounding are paid.
+double jointDeviationBudgetMm(const MachineProfile& profile, const PlanOptions& options) {
+  const Geometry& g = profile.geometry;
+  const double lever = std::max(g.a1 + g.b1, g.a2 + g.b2);
+  const double roundingRad = radFromDeg(0.5 * std::pow(10.0, -kGcodeAngleDecimals));
+  return options.toleranceMm - options.flatteningToleranceMm -
+         kRoundingLeverFactor * lever * roundingRad;
+}
+
+PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Layer>& layers,
+                       const MachineProfile& profile, WorkingMode mode,
+                       const PlanOptions& options) {
+  PlanResult out;
+  out.report.mode = mode;
+  out.report.toleranceMm = options.toleranceMm;
+  const double budget = jointDeviationBudgetMm(profile, options);
+  if (!(budget > 0.0) || !(options.toleranceMm > 0.0)) {
+    out.status = PlanStatus::BadOptions;
+    out.message = "tolerance " + std::to_string(options.toleranceMm) +
+                  " mm leaves nothing for the moves after flattening (" +
+                  std::to_string(options.flatteningToleranceMm) + " mm) and G-code rounding";
+    return out;
+  }
+  MotionPlanner(strokes, layers, profile, mode, options, out).run(budget);
+  estimateJobTime(out.job, profile);
+  PlanReport& r = out.report;
+  const JobSummary& s = out.job.summary;
+  r.feasible = r.problems.empty();
+  r.estimatedTimeS = s.estimatedTimeS;
+  r.penDownMm = s.penDownMm;
+  r.travelMm = s.travelMm;
+  r.segments = s.segments;
+  r.maxDeviationMm = s.maxDeviationMm;
+  r.minSingularityMarginDeg = degFromRad(s.minTypeIIMarginRad);
+  r.feedLimitedSegments = s.feedLimitedSegments;
+  out.status = r.feasible ? PlanStatus::Ok : PlanStatus::Infeasible;
+  if (!r.feasible) out.message = r.problems.front().path + ": " + r.problems.front().why;
+  return out;
+}
+
+}  // namespace fivebar

@@ -1,0 +1,166 @@
+// Largest axis-aligned rectangle in the singularity-free region: maximal rectangle in the binary
+// grid of safe cells (histogram and stack, O(nx ny)), then refined side by side against the exact
+// point evaluation.
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "workspace.hpp"
+
+namespace fivebar {
+namespace {
+
+// A rectangle of whole cells: columns [ix0, ix1], rows [iy0, iy1], inclusive.
+struct CellRect {
+  int ix0 = 0, iy0 = 0, ix1 = -1, iy1 = -1;
+};
+
+// Area (cells^2) of the best rectangle of the wanted aspect ratio inside a W x H cell block.
+double score(int W, int H, double aspect) {
+  if (aspect <= 0.0) return static_cast<double>(W) * H;
+  const double h = std::min<double>(H, W / aspect);
+  return aspect * h * h;
+}
+
+// Every maximal all-safe block is met as (row, popped bar); the best-scoring one wins.
+CellRect largestBlock(const WorkspaceMap& map, double aspect) {
+  const GridSpec& g = map.grid;
+  std::vector<int> height(static_cast<std::size_t>(g.nx) + 1, 0);  // sentinel 0 at nx
+  std::vector<int> stack;
+  stack.reserve(height.size());
+  double best = 0.0;
+  CellRect bestRect;
+  for (int iy = 0; iy < g.ny; ++iy) {
+    for (int ix = 0; ix < g.nx; ++ix) height[ix] = map.safe(g.index(ix, iy)) ? height[ix] + 1 : 0;
+    stack.clear();
+    for (int ix = 0; ix <= g.nx; ++ix) {
+      while (!stack.empty() && height[stack.back()] >= height[ix]) {
+        const int H = height[stack.back()];
+        stack.pop_back();
+        const int left = stack.empty() ? 0 : stack.back() + 1;
+        const int W = ix - left;
+        const double s = H > 0 ? score(W, H, aspect) : 0.0;
+        if (s > best) {
+          best = s;
+          bestRect = {left, iy - H + 1, ix - 1, iy};
+        }
+      }
+      stack.push_back(ix);
+    }
+  }
+  return bestRect;
+}
+
+bool isSafe(const Geometry& g, const WorkspaceSettings& s, WorkingMode mode, const Vec2& p) {
+  const PointSample x = evaluatePoint(g, s, mode, p);
+  return x.reachable && x.typeIIMarginRad >= s.typeIIMarginRad &&
+         x.typeIMarginRad >= s.typeIMarginRad;
+}
+
+// Checks `outer` minus `inner` (inner inside outer), as up to four strips.
+bool ringIsSafe(const Geometry& g, const WorkspaceSettings& s, WorkingMode mode, const Rect& inner,
+                const Rect& outer, double spacingMm) {
+  const Rect strips[4] = {{outer.xMin, outer.yMin, inner.xMin, outer.yMax},
+                          {inner.xMax, outer.yMin, outer.xMax, outer.yMax},
+                          {inner.xMin, outer.yMin, inner.xMax, inner.yMin},
+                          {inner.xMin, inner.yMax, inner.xMax, outer.yMax}};
+  for (const Rect& r : strips) {
+    if (r.width() <= 0.0 || r.height() <= 0.0) continue;
+    if (!rectangleIsSafe(g, s, mode, r, spacingMm)) return false;
+  }
+  return true;
+}
+
+// Rect `r` with one side (0 left, 1 right, 2 bottom, 3 top) moved outward by `d`.
+Rect moved(Rect r, int side, double d) {
+  switch (side) {
+    case 0: r.xMin -= d; break;
+    case 1: r.xMax += d; break;
+    case 2: r.yMin -= d; break;
+    default: r.yMax += d; break;
+  }
+  return r;
+}
+
+// How far side `side` of r may move outward and stay on the analysed grid.
+double roomToGridEdge(const GridSpec& grid, const Rect& r, int side) {
+  switch (side) {
+    case 0: return r.xMin - grid.x0;
+    case 1: return grid.x0 + grid.nx * grid.cellMm - r.xMax;
+    case 2: return r.yMin - grid.y0;
+    default: return grid.y0 + grid.ny * grid.cellMm - r.yMax;
+  }
+}
+
+Rect scaledAboutCentre(const Rect& r, double f) {
+  const double cx = 0.5 * (r.xMin + r.xMax), cy = 0.5 * (r.yMin + r.yMax);
+  const double hw = 0.5 * r.width() * f, hh = 0.5 * r.height() * f;
+  return {cx - hw, cy - hh, cx + hw, cy + hh};
+}
+
+// Largest growth in [0, maxGrowth] for which grow(t) stays safe, by bisection.
+template <typename Grow>
+double bisectGrowth(const Geometry& g, const WorkspaceSettings& s, WorkingMode mode, const Rect& r,
+                    double maxGrowth, double spacingMm, Grow grow) {
+  double lo = 0.0, hi = maxGrowth;
+  for (int k = 0; k < 12; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (ringIsSafe(g, s, mode, r, grow(mid), spacingMm) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+}  // namespace
+
+bool rectangleIsSafe(const Geometry& g, const WorkspaceSettings& s, WorkingMode mode,
+                     const Rect& r, double spacingMm) {
+  const int nx = std::max(1, static_cast<int>(std::ceil(r.width() / spacingMm)));
+  const int ny = std::max(1, static_cast<int>(std::ceil(r.height() / spacingMm)));
+  for (int j = 0; j <= ny; ++j) {
+    const double y = r.yMin + r.height() * j / ny;
+    for (int i = 0; i <= nx; ++i)
+      if (!isSafe(g, s, mode, Vec2(r.xMin + r.width() * i / nx, y))) return false;
+  }
+  return true;
+}
+
+std::optional<Rect> largestSafeRectangle(const WorkspaceMap& map, const Geometry& g,
+                                         const WorkspaceSettings& s, double aspectRatio) {
+  const CellRect block = largestBlock(map, aspectRatio);
+  if (block.ix1 < block.ix0) return std::nullopt;
+  const GridSpec& grid = map.grid;
+  const double c = grid.cellMm, spacing = 0.5 * c;
+  // Start from the safe cell centres (a zero-size rectangle for a single cell).
+  Rect r{grid.xCenter(block.ix0), grid.yCenter(block.iy0), grid.xCenter(block.ix1),
+         grid.yCenter(block.iy1)};
+  if (aspectRatio > 0.0) {  // the wanted shape, centred in the block
+    const double h = std::min(r.height(), r.width() / aspectRatio);
+    const double cx = 0.5 * (r.xMin + r.xMax), cy = 0.5 * (r.yMin + r.yMax);
+    r = {cx - 0.5 * aspectRatio * h, cy - 0.5 * h, cx + 0.5 * aspectRatio * h, cy + 0.5 * h};
+  }
+  // The samples between cell centres may leave the region where it is not convex: shrink.
+  for (int k = 0; k < 8 && !rectangleIsSafe(g, s, map.mode, r, spacing); ++k)
+    r = {r.xMin + 0.25 * c, r.yMin + 0.25 * c, r.xMax - 0.25 * c, r.yMax - 0.25 * c};
+  if (r.width() < 0.0 || r.height() < 0.0 || !rectangleIsSafe(g, s, map.mode, r, spacing))
+    return std::nullopt;
+  // Grow towards the true boundary, to a small fraction of a cell.
+  if (aspectRatio > 0.0) {
+    const double base = std::max(r.width(), 1e-9);
+    double room = 2.0 * c;
+    for (int side = 0; side < 4; ++side) room = std::min(room, 2.0 * roomToGridEdge(grid, r, side));
+    const double f = bisectGrowth(g, s, map.mode, r, std::max(0.0, room) / base, spacing,
+                                  [&](double t) { return scaledAboutCentre(r, 1.0 + t); });
+    return scaledAboutCentre(r, 1.0 + f);
+  }
+  for (int pass = 0; pass < 2; ++pass) {
+    for (int side = 0; side < 4; ++side) {
+      const double room = std::max(0.0, std::min(c, roomToGridEdge(grid, r, side)));
+      const double d = bisectGrowth(g, s, map.mode, r, room, spacing,
+                                    [&](double t) { return moved(r, side, t); });
+      r = moved(r, side, d);
+    }
+  }
+  return r;
+}
+
+}  // namespace fivebar

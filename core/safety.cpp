@@ -1,0 +1,407 @@
+// Move checks and safe travel planning. Contract: safety.hpp. Derivation of the step bound:
+// docs/kinematics.md (passive-angle rates); summarised next to nextStepRad below.
+#include "safety.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <queue>
+
+#include "singularity.hpp"
+
+namespace fivebar {
+namespace {
+
+// Largest joint step (max over motors) between two samples of a move, rad.
+constexpr double kMaxJointStepRad = radFromDeg(0.1);
+// Smallest step the adaptive rule may take, so a move always ends, rad.
+constexpr double kMinJointStepRad = 1e-5;
+// Type II margin below which the forward-kinematics branch is ambiguous: a move that gets this
+// close may leave in the other assembly mode, rad.
+constexpr double kAssemblyFlipMarginRad = radFromDeg(0.05);
+const double kSinAssemblyFlipMargin = std::sin(kAssemblyFlipMarginRad);
+// Joint-space grid pitch of the detour search, rad, and the cap on cells per motor.
+constexpr double kDetourGridStepRad = radFromDeg(3.0);
+constexpr int kDetourMaxCellsPerMotor = 140;
+
+struct Sample {
+  MoveStatus status = MoveStatus::Ok;
+  Vec2 p = Vec2::Zero();  // end-effector (or best estimate when the loop does not close), mm
+  double sinTypeII = 0.0;  // sin of the type II margin (the margin is asin of it, <= pi/2)
+  double sinTypeI = 0.0;   // sin of the smaller type I margin
+  double typeIIRad() const { return std::asin(sinTypeII); }
+  bool closes = false;
+};
+
+// sin of a threshold angle, memoised (two slots: the type II and type I margins alternate).
+double sinOfThreshold(double angleRad) {
+  thread_local double angle[2] = {0.0, 0.0}, sine[2] = {0.0, 0.0};
+  for (int i = 0; i < 2; ++i)
+    if (angle[i] == angleRad) return sine[i];
+  angle[1] = angle[0], sine[1] = sine[0];
+  angle[0] = angleRad, sine[0] = std::sin(angleRad);
+  return sine[0];
+}
+
+bool withinLimits(const JointLimits& l, const JointAngles& q) {
+  return q.theta1 >= l.theta1Min && q.theta1 <= l.theta1Max && q.theta2 >= l.theta2Min &&
+         q.theta2 <= l.theta2Max;
+}
+
+// Forward kinematics from the elbows, as forward() in kinematics.cpp (product form of the
+// half-chord); nullopt when the floating links cannot close.
+std::optional<Vec2> closeLoop(const Geometry& g, const Vec2& R1, const Vec2& R2, AssemblyMode m) {
+  const Vec2 r = R2 - R1;
+  const double d = r.norm();
+  if (d < 1e-12 || d > g.b1 + g.b2 + kReachToleranceMm ||
+      d < std::abs(g.b1 - g.b2) - kReachToleranceMm)
+    return std::nullopt;
+  const Vec2 u = r / d;
+  const double along = (g.b1 * g.b1 - g.b2 * g.b2 + d * d) / (2.0 * d);
+  const double sum = g.b1 + g.b2, diff = g.b1 - g.b2;
+  const double h2 = (sum - d) * (sum + d) * (d - diff) * (d + diff) / (4.0 * d * d);
+  const double h = std::sqrt(std::max(0.0, h2)) * (m == AssemblyMode::Plus ? 1.0 : -1.0);
+  return Vec2(R1 + along * u + h * Vec2(-u.y(), u.x()));
+}
+
+// Evaluates one pose: limits, closure (in profile.assembly), margins from
+// sin(typeII) = |cross(P-R1, P-R2)| / (b1 b2), sin(typeIi) = |cross(Ri-Mi, P-Ri)| / (ai bi).
+Sample evaluate(const MachineProfile& pr, const JointAngles& q) {
+  const Geometry& g = pr.geometry;
+  Sample s;
+  const Vec2 R1 = elbow1(g, q.theta1), R2 = elbow2(g, q.theta2);
+  const auto p = closeLoop(g, R1, R2, pr.assembly);
+  if (!p) {
+    s.p = 0.5 * (R1 + R2);
+    s.status = withinLimits(pr.limits, q) ? MoveStatus::CannotClose : MoveStatus::BeyondJointLimit;
+    return s;
+  }
+  s.closes = true;
+  s.p = *p;
+  const Vec2 d1 = s.p - R1, d2 = s.p - R2;
+  s.sinTypeII = std::min(1.0, std::abs(cross(d1, d2)) / (g.b1 * g.b2));
+  s.sinTypeI = std::min(std::abs(cross(R1 - g.motor1(), d1)) / (g.a1 * g.b1),
+                        std::abs(cross(R2 - g.motor2(), d2)) / (g.a2 * g.b2));
+  if (!withinLimits(pr.limits, q))
+    s.status = MoveStatus::BeyondJointLimit;
+  else if (s.sinTypeII < kSinAssemblyFlipMargin)
+    s.status = MoveStatus::AssemblyChange;
+  else if (s.sinTypeII < sinOfThreshold(pr.typeIIMarginRad))
+    s.status = MoveStatus::NearTypeII;
+  else if (s.sinTypeI < sinOfThreshold(pr.typeIMarginRad))
+    s.status = MoveStatus::NearTypeI;
+  return s;
+}
+
+// Next joint step (max over motors, rad) from a safe sample. With mu the angle between the
+// floating links, the passive link rates obey |phi_i'| <= (a1 + a2) delta' / (b_i sin mu), so
+// the type II margin changes at most L2 = (a1 + a2)(1/b1 + 1/b2) / sin(mu) per radian of joint
+// step and the type I margin at most L1 = 1 + (a1 + a2) / (min b sin mu). Taking half of the
+// remaining distance to each threshold, evaluated with the margin the step can at worst reach,
+// keeps every excursion between two samples above the thresholds. Distances are taken in
+// sines, which never exceed the distances in angles (d asin / dx >= 1); the worst margin is
+// the one whose sine is midway, below the angle midway since asin is convex.
+double nextStepRad(const MachineProfile& pr, const Sample& s) {
+  const Geometry& g = pr.geometry;
+  const double sinThrII = std::max(sinOfThreshold(pr.typeIIMarginRad), kSinAssemblyFlipMargin);
+  const double gapII = s.sinTypeII - sinThrII;
+  const double sinWorst = std::max(sinThrII + 0.5 * gapII, 1e-9);
+  const double reach = g.a1 + g.a2;
+  const double rateII = reach * (1.0 / g.b1 + 1.0 / g.b2) / sinWorst;
+  double step = std::min(kMaxJointStepRad, 0.5 * gapII / rateII);
+  if (pr.typeIMarginRad > 0.0) {
+    const double rateI = 1.0 + reach / (std::min(g.b1, g.b2) * sinWorst);
+    step = std::min(step, 0.5 * (s.sinTypeI - sinOfThreshold(pr.typeIMarginRad)) / rateI);
+  }
+  return std::max(step, kMinJointStepRad);
+}
+
+JointAngles lerp(const JointAngles& a, const JointAngles& b, double t) {
+  return {a.theta1 + t * (b.theta1 - a.theta1), a.theta2 + t * (b.theta2 - a.theta2)};
+}
+
+// Motor time of a continuous joint move, s (used as the detour search cost).
+double moveTimeS(const MachineProfile& pr, const JointAngles& a, const JointAngles& b) {
+  return std::max(std::abs(b.theta1 - a.theta1) / pr.motors.maxSpeedRadPerS1,
+                  std::abs(b.theta2 - a.theta2) / pr.motors.maxSpeedRadPerS2);
+}
+
+WorkingMode modeAt(const MachineProfile& pr, const JointAngles& q, const Vec2& p) {
+  return workingModeOf(pr.geometry, makePose(pr.geometry, q, p));
+}
+
+// At a sample within kAssemblyFlipMarginRad of a type II singularity: looks ahead with fine
+// steps. The move either leaves the closable region (CannotClose: the loop breaks) or passes the
+// singular locus and continues (AssemblyChange: the branch may flip there).
+MoveStatus throughOrOut(const MachineProfile& pr, const JointAngles& from, const JointAngles& to,
+                        double t, double span) {
+  constexpr int kLookAheadSteps = 4000;
+  const double dt = span > 0.0 ? kMinJointStepRad / span : 1.0;
+  for (int i = 1; i <= kLookAheadSteps && t < 1.0; ++i) {
+    t = std::min(1.0, t + dt);
+    const Sample s = evaluate(pr, lerp(from, to, t));
+    if (s.status == MoveStatus::CannotClose) return MoveStatus::CannotClose;
+    if (s.closes && s.sinTypeII >= kSinAssemblyFlipMargin) break;
+  }
+  return MoveStatus::AssemblyChange;
+}
+
+}  // namespace
+
+MoveCheck checkPose(const MachineProfile& profile, const JointAngles& q) {
+  const Sample s = evaluate(profile, q);
+  MoveCheck out;
+  out.status = s.status;
+  out.where = s.p;
+  out.minTypeIIMarginRad = s.typeIIRad();
+  return out;
+}
+
+namespace {
+
+// Walks one move from an evaluated start sample to an evaluated end sample; `out` gets the
+// first problem after the start (the start itself is the caller's business) and the margins.
+void walk(const MachineProfile& pr, const JointAngles& from, const JointAngles& to,
+          const Sample& start, const Sample& end, MoveCheck& out) {
+  const double span = std::max(std::abs(to.theta1 - from.theta1), std::abs(to.theta2 - from.theta2));
+  double t = 0.0;
+  Sample s = start;
+  double minSin = start.sinTypeII;
+  while (t < 1.0) {
+    t = span > 0.0 ? std::min(1.0, t + nextStepRad(pr, s) / span) : 1.0;
+    s = t < 1.0 ? evaluate(pr, lerp(from, to, t)) : end;
+    minSin = std::min(minSin, s.sinTypeII);
+    if (s.status != MoveStatus::Ok) {
+      out.minTypeIIMarginRad = std::min(out.minTypeIIMarginRad, std::asin(minSin));
+      out.status = s.status == MoveStatus::AssemblyChange ? throughOrOut(pr, from, to, t, span)
+                                                          : s.status;
+      out.atFraction = t;
+      out.where = s.p;
+      return;
+    }
+  }
+  out.minTypeIIMarginRad = std::min(out.minTypeIIMarginRad, std::asin(minSin));
+  out.atFraction = 1.0;
+  out.where = end.p;
+}
+
+MoveCheck startCheck(const Sample& s) {
+  MoveCheck c;
+  c.status = s.status;
+  c.where = s.p;
+  c.minTypeIIMarginRad = s.typeIIRad();
+  return c;
+}
+
+}  // namespace
+
+MoveCheck checkJointMove(const MachineProfile& profile, const JointAngles& from,
+                         const JointAngles& to) {
+  const Sample start = evaluate(profile, from);
+  MoveCheck out = startCheck(start);
+  if (!out.ok()) return out;
+  walk(profile, from, to, start, evaluate(profile, to), out);
+  return out;
+}
+
+PathCheck checkJointPath(const MachineProfile& profile, const std::vector<JointAngles>& poses) {
+  PathCheck path;
+  path.minTypeIIMarginRad = std::numeric_limits<double>::infinity();
+  if (poses.empty()) return path;
+  Sample prev = evaluate(profile, poses[0]);
+  path.minTypeIIMarginRad = prev.typeIIRad();
+  if (prev.status != MoveStatus::Ok) path.problems.push_back({0, startCheck(prev)});
+  for (std::size_t i = 0; i + 1 < poses.size(); ++i) {
+    const Sample end = evaluate(profile, poses[i + 1]);
+    MoveCheck c = startCheck(prev);
+    if (prev.status == MoveStatus::Ok) {
+      walk(profile, poses[i], poses[i + 1], prev, end, c);
+      if (!c.ok()) path.problems.push_back({i, c});
+    } else if (end.status != MoveStatus::Ok) {  // starts at a reported pose: only its end counts
+      c = startCheck(end);
+      c.atFraction = 1.0;
+      path.problems.push_back({i, c});
+    }
+    path.minTypeIIMarginRad = std::min(path.minTypeIIMarginRad, c.minTypeIIMarginRad);
+    prev = end;
+  }
+  return path;
+}
+
+std::string_view toString(MoveStatus status) {
+  switch (status) {
+    case MoveStatus::Ok: return "ok";
+    case MoveStatus::NearTypeII: return "near type II";
+    case MoveStatus::NearTypeI: return "near type I";
+    case MoveStatus::BeyondJointLimit: return "beyond joint limit";
+    case MoveStatus::CannotClose: return "cannot close";
+    case MoveStatus::AssemblyChange: return "assembly change";
+  }
+  return "unknown";
+}
+
+std::string describe(const MoveCheck& check) {
+  char where[96];
+  std::snprintf(where, sizeof where, " at (%.1f, %.1f) mm, %.0f%% along the move",
+                check.where.x(), check.where.y(), 100.0 * check.atFraction);
+  char margin[64];
+  std::snprintf(margin, sizeof margin, "%.1f deg", degFromRad(check.minTypeIIMarginRad));
+  switch (check.status) {
+    case MoveStatus::Ok:
+      return std::string("safe; closest approach to a type II singularity ") + margin;
+    case MoveStatus::NearTypeII:
+      return std::string("passes within ") + margin + " of a type II singularity" + where;
+    case MoveStatus::NearTypeI:
+      return std::string("a leg comes too close to full stretch or fold (type I)") + where;
+    case MoveStatus::BeyondJointLimit:
+      return std::string("goes beyond a motor's joint limit") + where;
+    case MoveStatus::CannotClose:
+      return std::string("leaves the reachable workspace (the linkage cannot close)") + where;
+    case MoveStatus::AssemblyChange:
+      return std::string("passes through a type II singularity, where the assembly mode "
+                         "can flip") + where;
+  }
+  return "unknown move status";
+}
+
+namespace {
+
+// Lazily evaluated joint-space grid for the detour search: a node is usable when its pose
+// passes checkPose and lies in the working mode of the travel's start.
+class DetourGrid {
+ public:
+  DetourGrid(const MachineProfile& pr, const JointAngles& from, const JointAngles& to,
+             WorkingMode mode)
+      : pr_(pr), mode_(mode) {
+    const double pad = kPi;
+    lo1_ = std::max(pr.limits.theta1Min, std::min(from.theta1, to.theta1) - pad);
+    lo2_ = std::max(pr.limits.theta2Min, std::min(from.theta2, to.theta2) - pad);
+    const double hi1 = std::min(pr.limits.theta1Max, std::max(from.theta1, to.theta1) + pad);
+    const double hi2 = std::min(pr.limits.theta2Max, std::max(from.theta2, to.theta2) + pad);
+    n1_ = std::clamp(static_cast<int>(std::ceil((hi1 - lo1_) / kDetourGridStepRad)) + 1, 2,
+                     kDetourMaxCellsPerMotor);
+    n2_ = std::clamp(static_cast<int>(std::ceil((hi2 - lo2_) / kDetourGridStepRad)) + 1, 2,
+                     kDetourMaxCellsPerMotor);
+    h1_ = (hi1 - lo1_) / (n1_ - 1);
+    h2_ = (hi2 - lo2_) / (n2_ - 1);
+    state_.assign(static_cast<std::size_t>(n1_) * n2_, 0);
+  }
+  int size() const { return n1_ * n2_; }
+  JointAngles at(int node) const { return {lo1_ + (node % n1_) * h1_, lo2_ + (node / n1_) * h2_}; }
+  bool usable(int node) {
+    auto& st = state_[node];
+    if (st == 0) {
+      const JointAngles q = at(node);
+      const Sample s = evaluate(pr_, q);
+      st = (s.status == MoveStatus::Ok && modeAt(pr_, q, s.p) == mode_) ? 1 : 2;
+    }
+    return st == 1;
+  }
+  // Usable nodes within `radius` cells of q.
+  std::vector<int> near(const JointAngles& q, int radius) {
+    const int c1 = static_cast<int>(std::lround((q.theta1 - lo1_) / h1_));
+    const int c2 = static_cast<int>(std::lround((q.theta2 - lo2_) / h2_));
+    std::vector<int> out;
+    for (int j = c2 - radius; j <= c2 + radius; ++j)
+      for (int i = c1 - radius; i <= c1 + radius; ++i)
+        if (i >= 0 && j >= 0 && i < n1_ && j < n2_ && usable(j * n1_ + i)) out.push_back(j * n1_ + i);
+    return out;
+  }
+  std::vector<int> neighbours(int node) {
+    const int i = node % n1_, j = node / n1_;
+    std::vector<int> out;
+    for (int dj = -1; dj <= 1; ++dj)
+      for (int di = -1; di <= 1; ++di) {
+        const int a = i + di, b = j + dj;
+        if ((di || dj) && a >= 0 && b >= 0 && a < n1_ && b < n2_ && usable(b * n1_ + a))
+          out.push_back(b * n1_ + a);
+      }
+    return out;
+  }
+
+ private:
+  const MachineProfile& pr_;
+  WorkingMode mode_;
+  double lo1_, lo2_, h1_, h2_;
+  int n1_, n2_;
+  std::vector<unsigned char> state_;  // 0 unknown, 1 usable, 2 unusable
+};
+
+// A* over the grid from `from` to `to` with lazily checked edges; returns the waypoint poses
+// (grid nodes) between them, or nullopt.
+std::optional<std::vector<JointAngles>> searchDetour(const MachineProfile& pr,
+                                                     const JointAngles& from,
+                                                     const JointAngles& to, DetourGrid& grid) {
+  const int start = grid.size(), goal = grid.size() + 1;
+  auto pose = [&](int n) { return n == start ? from : n == goal ? to : grid.at(n); };
+  std::vector<double> cost(grid.size() + 2, std::numeric_limits<double>::infinity());
+  std::vector<int> parent(grid.size() + 2, -1);
+  std::vector<char> closed(grid.size() + 2, 0);
+  const std::vector<int> goalSide = grid.near(to, 2);
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
+  cost[start] = 0.0;
+  open.push({moveTimeS(pr, from, to), start});
+  while (!open.empty()) {
+    const int n = open.top().second;
+    open.pop();
+    if (closed[n]) continue;
+    closed[n] = 1;
+    if (n == goal) break;
+    std::vector<int> next = n == start ? grid.near(from, 2) : grid.neighbours(n);
+    if (n != start && std::find(goalSide.begin(), goalSide.end(), n) != goalSide.end())
+      next.push_back(goal);
+    for (int m : next) {
+      if (closed[m]) continue;
+      const double c = cost[n] + moveTimeS(pr, pose(n), pose(m));
+      if (c >= cost[m] || !checkJointMove(pr, pose(n), pose(m)).ok()) continue;
+      cost[m] = c;
+      parent[m] = n;
+      open.push({c + moveTimeS(pr, pose(m), to), m});
+    }
+  }
+  if (parent[goal] < 0) return std::nullopt;
+  std::vector<JointAngles> path;
+  for (int n = goal; n != start; n = parent[n]) path.push_back(pose(n));
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+// Drops waypoints whose neighbours can be joined by a safe straight move.
+std::vector<JointAngles> shortcut(const MachineProfile& pr, const JointAngles& from,
+                                  const std::vector<JointAngles>& path) {
+  std::vector<JointAngles> out;
+  JointAngles here = from;
+  std::size_t i = 0;
+  while (i < path.size()) {
+    std::size_t best = i;
+    for (std::size_t j = path.size() - 1; j > i; --j)
+      if (checkJointMove(pr, here, path[j]).ok()) {
+        best = j;
+        break;
+      }
+    out.push_back(path[best]);
+    here = path[best];
+    i = best + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::optional<std::vector<JointAngles>> planSafeTravel(const MachineProfile& profile,
+                                                       const JointAngles& from,
+                                                       const JointAngles& to) {
+  if (checkJointMove(profile, from, to).ok()) return std::vector<JointAngles>{to};
+  const Sample a = evaluate(profile, from), b = evaluate(profile, to);
+  if (a.status != MoveStatus::Ok || b.status != MoveStatus::Ok) return std::nullopt;
+  const WorkingMode mode = modeAt(profile, from, a.p);
+  if (modeAt(profile, to, b.p) != mode) return std::nullopt;  // needs a type I crossing
+  DetourGrid grid(profile, from, to, mode);
+  const auto path = searchDetour(profile, from, to, grid);
+  if (!path) return std::nullopt;
+  return shortcut(profile, from, *path);
+}
+
+}  // namespace fivebar

@@ -1,0 +1,209 @@
+#include "grbl_protocol.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+#include "core/units.hpp"
+
+namespace fivebar::grbl {
+namespace {
+
+// How long a '?' may stay unanswered before the host assumes the byte was lost on the wire and
+// polls again. GRBL always answers '?', so this only matters on a broken link.
+constexpr double kStatusLostAfterS = 3.0;
+
+std::string upperNoSpaces(std::string_view s) {
+  std::string out;
+  for (char c : s)
+    if (c != ' ') out.push_back(char(std::toupper(static_cast<unsigned char>(c))));
+  return out;
+}
+
+}  // namespace
+
+std::string describe(EnqueueStatus status) {
+  switch (status) {
+    case EnqueueStatus::Queued: return "queued";
+    case EnqueueStatus::TooLong:
+      return "line longer than GRBL's " + std::to_string(kMaxLineChars) + " characters";
+    case EnqueueStatus::Empty: return "empty line";
+    case EnqueueStatus::ForbiddenCharacter:
+      return "line contains a real-time character (? ! ~ or a byte >= 0x80) or a line break";
+  }
+  return "unknown";
+}
+
+bool isExclusiveLine(std::string_view line) {
+  const std::string u = upperNoSpaces(line);
+  if (u.rfind("$J=", 0) == 0) return false;
+  if (!u.empty() && u[0] == '$') return true;
+  return u.find("G10L2") != std::string::npos || u.find("G10L20") != std::string::npos ||
+         u.find("L2G10") != std::string::npos || u.find("L20G10") != std::string::npos ||
+         u.find("G28.1") != std::string::npos || u.find("G30.1") != std::string::npos;
+}
+
+GrblProtocol::GrblProtocol(Writer write, int rxBufferBytes)
+    : write_(std::move(write)), rxBufferBytes_(rxBufferBytes) {}
+
+void GrblProtocol::addListener(ProtocolListener* listener) { listeners_.push_back(listener); }
+void GrblProtocol::removeListener(ProtocolListener* listener) {
+  listeners_.erase(std::remove(listeners_.begin(), listeners_.end(), listener), listeners_.end());
+}
+
+EnqueueResult GrblProtocol::enqueue(std::string line) {
+  while (!line.empty() && (line.back() == ' ' || line.back() == '\r')) line.pop_back();
+  if (line.empty()) return {EnqueueStatus::Empty, 0};
+  if (int(line.size()) > kMaxLineChars) return {EnqueueStatus::TooLong, 0};
+  for (char c : line)
+    if (realtime::isRealtime(c) || c == '\n' || c == '\r')
+      return {EnqueueStatus::ForbiddenCharacter, 0};
+  const std::uint64_t id = nextId_++;
+  const bool exclusive = isExclusiveLine(line);
+  queue_.push_back({id, std::move(line), exclusive});
+  pump();
+  return {EnqueueStatus::Queued, id};
+}
+
+void GrblProtocol::pump() {
+  if (!connected_) return;
+  std::string out;
+  while (!queue_.empty()) {
+    const Line& next = queue_.front();
+    const int cost = int(next.text.size()) + 1;
+    if (!inFlight_.empty() && (inFlight_.back().exclusive || next.exclusive)) break;
+    if (bytesInFlight_ + cost > rxBufferBytes_) break;
+    out += next.text;
+    out += '\n';
+    bytesInFlight_ += cost;
+    inFlight_.push_back(next);
+    queue_.pop_front();
+  }
+  if (!out.empty()) write_(out);
+}
+
+void GrblProtocol::sendRealtime(char byte) {
+  if (!connected_) return;
+  if (byte == realtime::kStatus) {
+    statusOutstanding_ = true;
+    lastPollS_ = nowS_;
+  }
+  write_(std::string_view(&byte, 1));
+}
+
+std::vector<std::uint64_t> GrblProtocol::dropQueued() {
+  std::vector<std::uint64_t> ids;
+  for (const Line& l : queue_) ids.push_back(l.id);
+  queue_.clear();
+  return ids;
+}
+
+void GrblProtocol::receive(std::string_view bytes) {
+  for (char c : bytes) {
+    if (c == '\n') {
+      handleLine(rxPartial_);
+      rxPartial_.clear();
+    } else if (c != '\r') {
+      rxPartial_.push_back(c);
+      // A board that never sends a line end must not grow this without bound.
+      if (rxPartial_.size() > 4096) rxPartial_.erase(0, rxPartial_.size() - 256);
+    }
+  }
+}
+
+void GrblProtocol::handleLine(std::string_view raw) {
+  const ParsedLine p = parseLine(raw);
+  if (p.kind == LineKind::Empty) return;
+  for (auto* l : listeners_) l->onLine(p);
+  switch (p.kind) {
+    case LineKind::Ok:
+    case LineKind::Error: {
+      if (inFlight_.empty()) return;  // stray answer after a reset or alarm: nothing to release
+      Ack ack{inFlight_.front().id, std::move(inFlight_.front().text),
+              p.kind == LineKind::Error ? p.code : 0};
+      bytesInFlight_ -= int(ack.line.size()) + 1;
+      inFlight_.pop_front();
+      for (auto* l : listeners_) l->onAck(ack);
+      pump();
+      return;
+    }
+    case LineKind::Alarm: {
+      std::vector<std::uint64_t> lost;
+      resetCounters(&lost, nullptr);
+      lastStatus_.state = MachineState::Alarm;
+      for (auto* l : listeners_) l->onAlarm(p.code, lost);
+      return;
+    }
+    case LineKind::Banner: {
+      std::vector<std::uint64_t> lost, dropped;
+      resetCounters(&lost, &dropped);
+      statusOutstanding_ = false;
+      version_ = p.text;
+      for (auto* l : listeners_) l->onReset(version_, lost, dropped);
+      return;
+    }
+    case LineKind::Version: version_ = p.text.substr(0, p.text.find(':')); return;
+    case LineKind::Status: handleStatus(p.status); return;
+    default: return;
+  }
+}
+
+void GrblProtocol::handleStatus(const StatusReport& r) {
+  statusOutstanding_ = false;
+  ++statusReports_;
+  if (r.wco) wco_ = r.wco;
+  lastStatus_ = r;
+  for (auto* l : listeners_) l->onStatus(r);
+}
+
+void GrblProtocol::resetCounters(std::vector<std::uint64_t>* lost,
+                                 std::vector<std::uint64_t>* dropped) {
+  for (const Line& l : inFlight_)
+    if (lost) lost->push_back(l.id);
+  inFlight_.clear();
+  bytesInFlight_ = 0;
+  if (dropped) *dropped = dropQueued();
+}
+
+void GrblProtocol::tick(double nowS) {
+  nowS_ = nowS;
+  if (!connected_ || pollIntervalS_ <= 0.0) return;
+  if (statusOutstanding_ && nowS - lastPollS_ < kStatusLostAfterS) return;
+  if (nowS - lastPollS_ < pollIntervalS_) return;
+  sendRealtime(realtime::kStatus);
+}
+
+void GrblProtocol::setPollInterval(double intervalS) {
+  pollIntervalS_ = intervalS <= 0.0 ? 0.0 : std::max(intervalS, kMinPollIntervalS);
+}
+
+void GrblProtocol::disconnected(const std::string& reason) {
+  if (!connected_) return;
+  connected_ = false;
+  resetCounters(nullptr, nullptr);
+  queue_.clear();
+  statusOutstanding_ = false;
+  for (auto* l : listeners_) l->onDisconnected(reason);
+}
+
+std::optional<JointAngles> GrblProtocol::motorAngles() const {
+  std::optional<Axes> w = lastStatus_.wpos;
+  if (!w && lastStatus_.mpos) {
+    w = lastStatus_.mpos;
+    if (wco_)
+      for (int i = 0; i < 3; ++i) w->v[size_t(i)] -= wco_->v[size_t(i)];
+  }
+  if (!w) return std::nullopt;
+  return JointAngles{radFromDeg(w->x()), radFromDeg(w->y())};
+}
+
+std::optional<Axes> GrblProtocol::machinePositionDeg() const {
+  if (lastStatus_.mpos) return lastStatus_.mpos;
+  if (lastStatus_.wpos && wco_) {
+    Axes m = *lastStatus_.wpos;
+    for (int i = 0; i < 3; ++i) m.v[size_t(i)] += wco_->v[size_t(i)];
+    return m;
+  }
+  return std::nullopt;
+}
+
+}  // namespace fivebar::grbl

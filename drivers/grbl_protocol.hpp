@@ -1,0 +1,153 @@
+// GrblProtocol: the host side of the GRBL 1.1 serial protocol as a pure state machine. No I/O:
+// bytes to send go out through a write function, received bytes come in through receive(), time
+// comes in through tick(nowS). It owns
+//  - line framing of received bytes and dispatch of parsed lines to listeners;
+//  - character-counting streaming: at most rxBufferBytes (128) unacknowledged bytes, counting
+//    line.size() + 1 per line, released on each ok / error:N;
+//  - the rule that "$" system commands and settings writes ($N=V, also G10 L2/L20, G28.1,
+//    G30.1 which write EEPROM) go one at a time: sent only when nothing is in flight, and
+//    nothing else is sent until they are answered;
+//  - real-time bytes (? ! ~ 0x18 0x85 0x90-0x9D), which bypass the budget;
+//  - status polling at a configurable rate (at most 5 Hz), never two '?' outstanding;
+//  - the reset rule: a banner or an ALARM invalidates every counter; lines in flight are lost.
+// Positions: the board's X/Y are theta1/theta2 in degrees (conventions.md).
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/kinematics.hpp"
+#include "grbl_parser.hpp"
+
+namespace fivebar::grbl {
+
+inline constexpr int kRxBufferBytes = 128;  // GRBL 1.1 serial receive buffer
+inline constexpr int kMaxLineChars = 80;    // longest line accepted (without the '\n')
+inline constexpr int kPlannerBlocks = 15;   // usable planner blocks (Bf reports 15 when empty)
+inline constexpr double kMinPollIntervalS = 0.2;  // 5 Hz: polling never faster than this
+
+namespace realtime {
+inline constexpr char kStatus = '?';
+inline constexpr char kFeedHold = '!';
+inline constexpr char kCycleStart = '~';
+inline constexpr char kSoftReset = 0x18;
+inline constexpr char kJogCancel = char(0x85);
+inline constexpr char kFeed100 = char(0x90);  // feed override reset; 0x91-0x94 +-10 / +-1 %
+inline constexpr char kRapid100 = char(0x95); // rapid override 100 / 50 / 25 % (0x95-0x97)
+inline constexpr char kSpindle100 = char(0x99);  // spindle override 0x99-0x9D
+// True for every byte GRBL intercepts as a real-time command.
+constexpr bool isRealtime(char c) {
+  const auto u = static_cast<unsigned char>(c);
+  return c == kStatus || c == kFeedHold || c == kCycleStart || c == kSoftReset || u >= 0x80;
+}
+}  // namespace realtime
+
+// Answer to one line: errorCode 0 for "ok", N for "error:N".
+struct Ack {
+  std::uint64_t id = 0;
+  std::string line;
+  int errorCode = 0;
+  bool ok() const { return errorCode == 0; }
+};
+
+// Receives protocol events. Every method has an empty default.
+class ProtocolListener {
+ public:
+  virtual ~ProtocolListener() = default;
+  virtual void onAck(const Ack& /*ack*/) {}
+  virtual void onStatus(const StatusReport& /*report*/) {}
+  virtual void onAlarm(int /*code*/, const std::vector<std::uint64_t>& /*lostIds*/) {}
+  // The board reset (banner seen). lostIds: lines sent but never answered, now discarded;
+  // lines queued but not sent are discarded too (dropped lists them).
+  virtual void onReset(const std::string& /*version*/, const std::vector<std::uint64_t>& /*lostIds*/,
+                       const std::vector<std::uint64_t>& /*dropped*/) {}
+  virtual void onLine(const ParsedLine& /*line*/) {}
+  virtual void onDisconnected(const std::string& /*reason*/) {}
+};
+
+enum class EnqueueStatus { Queued, TooLong, Empty, ForbiddenCharacter };
+struct EnqueueResult {
+  EnqueueStatus status = EnqueueStatus::Queued;
+  std::uint64_t id = 0;  // valid when Queued
+  bool ok() const { return status == EnqueueStatus::Queued; }
+};
+std::string describe(EnqueueStatus status);
+
+// True for lines that must go one at a time: "$" commands except "$J=", and G10 L2/L20,
+// G28.1, G30.1 (EEPROM writes).
+bool isExclusiveLine(std::string_view line);
+
+class GrblProtocol {
+ public:
+  using Writer = std::function<void(std::string_view bytes)>;
+  explicit GrblProtocol(Writer write, int rxBufferBytes = kRxBufferBytes);
+
+  void addListener(ProtocolListener* listener);
+  void removeListener(ProtocolListener* listener);
+
+  // Queues a line (without '\n') for counted streaming and sends what the budget allows.
+  EnqueueResult enqueue(std::string line);
+  // Sends one real-time byte at once (never counted).
+  void sendRealtime(char byte);
+  // Drops the lines queued but not yet sent; returns their ids. Lines in flight stay counted.
+  std::vector<std::uint64_t> dropQueued();
+
+  // Bytes from the board, in any fragmentation.
+  void receive(std::string_view bytes);
+  // Advances the poll clock (seconds, monotonic); sends '?' when due and none is outstanding.
+  void tick(double nowS);
+  void setPollInterval(double intervalS);  // clamped to >= kMinPollIntervalS; <= 0 disables
+  // The transport is gone: every counter resets, listeners hear onDisconnected once.
+  void disconnected(const std::string& reason);
+
+  int bytesInFlight() const { return bytesInFlight_; }
+  std::size_t linesInFlight() const { return inFlight_.size(); }
+  std::size_t linesQueued() const { return queue_.size(); }
+  bool idleLink() const { return inFlight_.empty() && queue_.empty(); }
+  bool statusOutstanding() const { return statusOutstanding_; }
+  const StatusReport& lastStatus() const { return lastStatus_; }
+  MachineState state() const { return lastStatus_.state; }
+  const std::string& version() const { return version_; }
+  std::uint64_t statusReportsSeen() const { return statusReports_; }
+  // Motor angles (rad) from the last report's work position (WPos, or MPos - WCO): the frame in
+  // which the G-code's X/Y are theta1/theta2. nullopt before the first report.
+  std::optional<JointAngles> motorAngles() const;
+  // Raw machine position (MPos) in degrees, when known.
+  std::optional<Axes> machinePositionDeg() const;
+
+ private:
+  struct Line {
+    std::uint64_t id;
+    std::string text;
+    bool exclusive;
+  };
+  void pump();
+  void handleLine(std::string_view raw);
+  void handleStatus(const StatusReport& r);
+  void resetCounters(std::vector<std::uint64_t>* lost, std::vector<std::uint64_t>* dropped);
+
+  Writer write_;
+  int rxBufferBytes_;
+  std::vector<ProtocolListener*> listeners_;
+  std::deque<Line> queue_;
+  std::deque<Line> inFlight_;
+  int bytesInFlight_ = 0;
+  std::uint64_t nextId_ = 1;
+  std::string rxPartial_;
+  double pollIntervalS_ = kMinPollIntervalS;
+  double lastPollS_ = -1e300;
+  double nowS_ = 0.0;
+  bool statusOutstanding_ = false;
+  StatusReport lastStatus_;
+  std::optional<Axes> wco_;
+  std::string version_;
+  std::uint64_t statusReports_ = 0;
+  bool connected_ = true;
+};
+
+}  // namespace fivebar::grbl

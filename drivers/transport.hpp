@@ -1,0 +1,30 @@
+// The transport seam under the protocol: something bytes can be written to and that reports
+// bytes received and, once, that it went away. Implementations: SerialTransport (a real or
+// pseudo serial port), SimulatedTransport (the in-process simulated machine), test fakes.
+#pragma once
+
+#include <QByteArray>
+#include <QObject>
+#include <QString>
+
+namespace fivebar {
+
+class Transport : public QObject {
+  Q_OBJECT
+ public:
+  using QObject::QObject;
+  ~Transport() override = default;
+  // Opens the link; on failure returns false and sets *error to a sentence naming the port.
+  virtual bool open(QString* error) = 0;
+  virtual void close() = 0;
+  virtual bool isOpen() const = 0;
+  virtual void write(const QByteArray& bytes) = 0;
+  virtual QString name() const = 0;
+
+ signals:
+  void bytesReceived(const QByteArray& bytes);
+  // Emitted at most once per open(): the link is gone (cable pulled, port vanished, peer closed).
+  void disconnected(const QString& reason);
+};
+
+}  // namespace fivebar

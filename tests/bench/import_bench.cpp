@@ -1,0 +1,166 @@
+// SVG import speed (docs/performance/import.md). Each benchmark reports "vs_baseline": its time
+// per iteration divided by a baseline measured in the same process:
+//   baseline = Qt SVG load + render into a paint engine that flattens with
+//              QPainterPath::toSubpathPolygons (Qt's fixed-threshold flattener), no sanitising.
+// Run: build/<dir>/tests/bench/fivebar_bench_import
+#include <benchmark/benchmark.h>
+
+#include <QFile>
+#include <QGuiApplication>
+#include <QPaintDevice>
+#include <QPaintEngine>
+#include <QPainter>
+#include <QPainterPath>
+#include <QSvgRenderer>
+#include <QTemporaryDir>
+
+#include <sys/resource.h>
+
+#include <chrono>
+#include <random>
+
+#include "core/import/svg_import.hpp"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+const QString k7kLines = QStringLiteral(FIVEBAR_SHARED_DIR "/corpus/svg/vpype-plotter/benchmark/7k_lines.svg");
+
+// The naive importer: Qt flattens every path with its own fixed threshold.
+class NaiveEngine final : public QPaintEngine {
+ public:
+  NaiveEngine() : QPaintEngine(QPaintEngine::AllFeatures) {}
+  bool begin(QPaintDevice*) override { return true; }
+  bool end() override { return true; }
+  void updateState(const QPaintEngineState&) override {}
+  Type type() const override { return QPaintEngine::User; }
+  void drawPath(const QPainterPath& path) override {
+    for (const QPolygonF& p : path.toSubpathPolygons(painter()->combinedTransform())) points += p.size();
+  }
+  void drawPolygon(const QPointF*, int count, PolygonDrawMode) override { points += count; }
+  void drawPixmap(const QRectF&, const QPixmap&, const QRectF&) override {}
+  long long points = 0;
+};
+
+class NaiveDevice final : public QPaintDevice {
+ public:
+  QPaintEngine* paintEngine() const override { return &engine; }
+  int metric(PaintDeviceMetric m) const override {
+    return m == PdmDpiX || m == PdmDpiY || m == PdmPhysicalDpiX || m == PdmPhysicalDpiY ? 96
+           : m == PdmDevicePixelRatio || m == PdmDevicePixelRatioScaled ? 1 : 1000;
+  }
+  mutable NaiveEngine engine;
+};
+
+long long naiveImport(const QByteArray& svg) {
+  QSvgRenderer renderer(svg);
+  NaiveDevice device;
+  QPainter painter(&device);
+  renderer.render(&painter);
+  painter.end();
+  return device.engine.points;
+}
+
+// A plotter-style SVG of about `megabytes` MB: random polylines and cubic curves, seeded.
+QByteArray generatedSvg(int megabytes) {
+  std::mt19937_64 rng(20261122);
+  std::uniform_real_distribution<double> coord(0.0, 200.0);
+  QByteArray out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"200mm\" height=\"200mm\" "
+                   "viewBox=\"0 0 200 200\"><g stroke=\"black\" fill=\"none\">\n";
+  const qsizetype target = qsizetype{megabytes} << 20;
+  auto n = [&] { return QByteArray::number(coord(rng), 'f', 3); };
+  while (out.size() < target) {
+    QByteArray d = "<path d=\"M" + n() + " " + n();
+    for (int i = 0; i < 6; ++i) d += " L" + n() + " " + n();
+    d += " C" + n() + " " + n() + " " + n() + " " + n() + " " + n() + " " + n() + "\"/>\n";
+    out += d;
+  }
+  return out + "</g></svg>\n";
+}
+
+QByteArray readFile(const QString& path) {
+  QFile f(path);
+  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+double baselineSeconds(const QByteArray& svg) {
+  double best = 1e9;
+  for (int i = 0; i < 3; ++i) {
+    const auto start = Clock::now();
+    benchmark::DoNotOptimize(naiveImport(svg));
+    best = std::min(best, std::chrono::duration<double>(Clock::now() - start).count());
+  }
+  return best;
+}
+
+template <typename Fn>
+void runAgainstBaseline(benchmark::State& state, const QByteArray& svg, Fn&& importOnce) {
+  const double baseline = baselineSeconds(svg);
+  double total = 0.0;
+  long long points = 0;
+  for (auto _ : state) {
+    const auto start = Clock::now();
+    const fivebar::svg::ImportResult r = importOnce();
+    total += std::chrono::duration<double>(Clock::now() - start).count();
+    if (!r.ok()) {
+      state.SkipWithError(r.message.c_str());
+      return;
+    }
+    points = 0;
+    for (const auto& layer : r.drawing.layers)
+      for (const auto& line : layer.paths) points += static_cast<long long>(line.points.size());
+  }
+  state.counters["points"] = static_cast<double>(points);
+  state.counters["MB"] = static_cast<double>(svg.size()) / (1 << 20);
+  state.counters["baseline_s"] = baseline;
+  state.counters["vs_baseline"] = total / static_cast<double>(state.iterations()) / baseline;
+}
+
+void BM_Import7kLinesInProcess(benchmark::State& state) {
+  const QByteArray svg = readFile(k7kLines);
+  if (svg.isEmpty()) return state.SkipWithError("corpus absent");
+  runAgainstBaseline(state, svg, [&] { return fivebar::svg::importSvgInProcess(k7kLines); });
+}
+
+void BM_Import7kLinesWorker(benchmark::State& state) {
+  const QByteArray svg = readFile(k7kLines);
+  if (svg.isEmpty()) return state.SkipWithError("corpus absent");
+  runAgainstBaseline(state, svg, [&] { return fivebar::svg::importSvgFile(k7kLines); });
+}
+
+void BM_ImportGenerated10MbInProcess(benchmark::State& state) {
+  static const QByteArray svg = generatedSvg(10);
+  runAgainstBaseline(state, svg, [&] {
+    return fivebar::svg::importSvgData(svg, QStringLiteral("generated-10MB.svg"));
+  });
+}
+
+void BM_ImportGeneratedWorker(benchmark::State& state) {
+  const QByteArray svg = generatedSvg(static_cast<int>(state.range(0)));
+  QTemporaryDir dir;
+  const QString path = dir.filePath(QStringLiteral("generated.svg"));
+  QFile f(path);
+  if (!f.open(QIODevice::WriteOnly) || f.write(svg) != svg.size()) return state.SkipWithError("write failed");
+  f.close();
+  runAgainstBaseline(state, svg, [&] { return fivebar::svg::importSvgFile(path); });
+  rusage usage{};
+  getrusage(RUSAGE_CHILDREN, &usage);
+  state.counters["worker_peak_MB"] = static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+BENCHMARK(BM_Import7kLinesInProcess)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Import7kLinesWorker)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ImportGenerated10MbInProcess)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK(BM_ImportGeneratedWorker)->Arg(10)->Arg(50)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  qputenv("QT_QPA_PLATFORM", "offscreen");
+  QGuiApplication app(argc, argv);
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,121 @@
+// GRBL code tables and the line parser.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "drivers/grbl_codes.hpp"
+#include "drivers/grbl_parser.hpp"
+
+namespace fivebar::grbl {
+namespace {
+
+TEST(GrblCodes, EveryGrbl11ErrorCodeHasAnExplanationAndAnAction) {
+  std::set<int> codes;
+  for (const CodeInfo& c : errorCodes()) {
+    codes.insert(c.code);
+    EXPECT_FALSE(c.name.empty()) << c.code;
+    EXPECT_GT(c.meaning.size(), 15u) << c.code;
+    EXPECT_GT(c.action.size(), 10u) << c.code;
+  }
+  for (int code = 1; code <= 38; ++code) {
+    if (code == 18 || code == 19) {
+      EXPECT_EQ(codes.count(code), 0u) << "GRBL 1.1 defines no error " << code;
+      continue;
+    }
+    EXPECT_EQ(codes.count(code), 1u) << "error " << code << " missing";
+  }
+}
+
+TEST(GrblCodes, EveryAlarmCodeHasAnExplanation) {
+  for (int code = 1; code <= 9; ++code) {
+    const CodeInfo* info = findAlarm(code);
+    ASSERT_NE(info, nullptr) << code;
+    EXPECT_GT(info->meaning.size(), 15u);
+  }
+  EXPECT_EQ(findAlarm(10), nullptr);
+}
+
+TEST(GrblCodes, DescriptionsNameTheCodeAndSayWhatToDo) {
+  const std::string e9 = describeError(9);
+  EXPECT_NE(e9.find("error:9"), std::string::npos) << e9;
+  EXPECT_NE(e9.find("$X"), std::string::npos) << e9;
+  const std::string a2 = describeAlarm(2);
+  EXPECT_NE(a2.find("ALARM:2"), std::string::npos) << a2;
+  EXPECT_NE(a2.find("Soft limit"), std::string::npos) << a2;
+  EXPECT_NE(describeError(99).find("not a GRBL 1.1 code"), std::string::npos);
+}
+
+TEST(GrblParser, SimpleLines) {
+  struct Case {
+    const char* text;
+    LineKind kind;
+    int code;
+  };
+  const Case cases[] = {
+      {"ok", LineKind::Ok, 0},          {"ok\r", LineKind::Ok, 0},
+      {"error:22", LineKind::Error, 22}, {"ALARM:3", LineKind::Alarm, 3},
+      {"error:x", LineKind::Unknown, 0}, {"", LineKind::Empty, 0},
+      {"[MSG:Reset to continue]", LineKind::Message, 0},
+      {"[GC:G0 G54 G17 G21 G90 G94 M5 M9 T0 F0 S0]", LineKind::GcodeState, 0},
+      {"[VER:1.1h.20190830:]", LineKind::Version, 0},
+      {"[OPT:V,15,128]", LineKind::Option, 0},
+      {"[G54:0.000,0.000,0.000]", LineKind::Feedback, 0},
+      {">G54:ok", LineKind::StartupEcho, 0},
+      {"garbage", LineKind::Unknown, 0},
+  };
+  for (const Case& c : cases) {
+    const ParsedLine p = parseLine(c.text);
+    EXPECT_EQ(p.kind, c.kind) << c.text;
+    EXPECT_EQ(p.code, c.code) << c.text;
+  }
+  EXPECT_EQ(parseLine("[MSG:Reset to continue]").text, "Reset to continue");
+}
+
+TEST(GrblParser, BannerGivesTheVersion) {
+  const ParsedLine p = parseLine("Grbl 1.1h ['$' for help]");
+  EXPECT_EQ(p.kind, LineKind::Banner);
+  EXPECT_EQ(p.text, "1.1h");
+}
+
+TEST(GrblParser, Settings) {
+  const ParsedLine p = parseLine("$100=35.556");
+  ASSERT_EQ(p.kind, LineKind::Setting);
+  EXPECT_EQ(p.settingId, 100);
+  EXPECT_DOUBLE_EQ(p.settingValue, 35.556);
+  EXPECT_EQ(parseLine("$100=abc").kind, LineKind::Unknown);
+}
+
+TEST(GrblParser, FullStatusReport) {
+  const ParsedLine p = parseLine(
+      "<Hold:0|MPos:12.500,-3.250,0.000|Bf:15,128|FS:0,0|WCO:1.000,2.000,0.000|Ov:100,90,110|Pn:XZ>");
+  ASSERT_EQ(p.kind, LineKind::Status);
+  const StatusReport& r = p.status;
+  EXPECT_EQ(r.state, MachineState::Hold);
+  EXPECT_EQ(r.subState, 0);
+  ASSERT_TRUE(r.mpos);
+  EXPECT_DOUBLE_EQ(r.mpos->x(), 12.5);
+  EXPECT_DOUBLE_EQ(r.mpos->y(), -3.25);
+  EXPECT_EQ(r.mpos->count, 3);
+  EXPECT_EQ(r.plannerBlocksFree, 15);
+  EXPECT_EQ(r.rxBytesFree, 128);
+  ASSERT_TRUE(r.wco);
+  EXPECT_DOUBLE_EQ(r.wco->y(), 2.0);
+  ASSERT_TRUE(r.overrides);
+  EXPECT_EQ((*r.overrides)[1], 90);
+  EXPECT_EQ(r.pins, "XZ");
+  EXPECT_FALSE(r.wpos);
+}
+
+TEST(GrblParser, StatusReportVariants) {
+  const auto run = parseLine("<Run|WPos:1.0,2.0|F:500>");
+  ASSERT_EQ(run.kind, LineKind::Status);
+  EXPECT_EQ(run.status.state, MachineState::Run);
+  ASSERT_TRUE(run.status.wpos);
+  EXPECT_EQ(run.status.wpos->count, 2);
+  EXPECT_DOUBLE_EQ(*run.status.feed, 500.0);
+  for (const char* bad : {"<Flying|MPos:0,0,0>", "<Idle|MPos:0,x,0>", "<Idle|Bf:15>", "<Idle|MPos>"})
+    EXPECT_EQ(parseLine(bad).kind, LineKind::Unknown) << bad;
+}
+
+}  // namespace
+}  // namespace fivebar::grbl

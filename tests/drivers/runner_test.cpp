@@ -1,0 +1,158 @@
+// JobRunner on the in-process simulated machine: completion, hold/resume, and every injected
+// fault ending in a clean, resumable state whose resume completes the drawing.
+#include <gtest/gtest.h>
+
+#include "drivers/job_runner.hpp"
+#include "drivers/resume.hpp"
+#include "sim_harness.hpp"
+
+namespace fivebar::test {
+namespace {
+
+using job::RunState;
+
+struct RunnerFixture {
+  MachineProfile p = testProfile();
+  Strokes strokes;
+  job::GcodeJob job;
+  RunnerFixture() {
+    auto rng = fivebar::test::rng();
+    strokes = randomStrokes(p, rng, 6, 15, 30.0);
+    job = job::parseJob(jobText(p, strokes, 3000.0), job::rulesFor(p));
+    EXPECT_TRUE(job.issues.empty());
+  }
+  double tol() const { return 1.01 / p.motors.stepsPerDeg1; }
+};
+
+bool runTo(SimLink& link, job::JobRunner& r, std::initializer_list<RunState> states, double maxS) {
+  return link.runUntil([&] {
+    r.tick(link.nowS);
+    for (RunState s : states)
+      if (r.state() == s) return true;
+    return false;
+  }, maxS);
+}
+
+// Resumes `job` on `link` from the runner's snapshot and runs it to the end.
+void resumeToEnd(SimLink& link, const RunnerFixture& f, const job::RunSnapshot& snap) {
+  link.runUntil([&] { return link.protocol.motorAngles().has_value(); }, 1.0);
+  const auto here = link.protocol.motorAngles();
+  ASSERT_TRUE(here);
+  const job::ResumePlan plan = job::planResume(f.job, snap.lastPenDownPoint, f.p, *here);
+  ASSERT_TRUE(plan.ok()) << plan.message;
+  job::JobRunner again(link.protocol, f.job);
+  again.start(plan.continueFrom, plan.preamble, link.nowS);
+  ASSERT_TRUE(runTo(link, again, {RunState::Finished, RunState::Paused}, 300.0));
+  ASSERT_EQ(again.state(), RunState::Finished) << again.problem();
+}
+
+TEST(JobRunner, StreamsToCompletion) {
+  RunnerFixture f;
+  SimLink link(f.p);
+  job::JobRunner r(link.protocol, f.job);
+  r.start(0, {}, 0.0);
+  ASSERT_TRUE(runTo(link, r, {RunState::Finished, RunState::Paused}, 300.0));
+  ASSERT_EQ(r.state(), RunState::Finished) << r.problem();
+  const auto s = r.snapshot();
+  EXPECT_EQ(s.linesAcked, f.job.lines.size());
+  EXPECT_EQ(s.lastCompleted, s.lastAcked);
+  expectStrokesCover(f.strokes, link.sim.strokes(), f.tol());
+}
+
+TEST(JobRunner, ExecutedProgressTrailsAcknowledgedProgress) {
+  RunnerFixture f;
+  SimLink link(f.p);
+  job::JobRunner r(link.protocol, f.job);
+  r.start(0, {}, 0.0);
+  bool sawGap = false;
+  link.runUntil([&] {
+    r.tick(link.nowS);
+    const auto s = r.snapshot();
+    EXPECT_LE(s.linesCompleted, s.linesAcked);
+    if (s.linesAcked > s.linesCompleted + 5) sawGap = true;
+    if (s.linesCompleted > 10 && r.state() == RunState::Running) EXPECT_GE(s.etaS, 0.0);
+    return r.state() == RunState::Finished;
+  }, 300.0);
+  EXPECT_TRUE(sawGap) << "the planner holds acknowledged lines not yet executed";
+}
+
+TEST(JobRunner, HoldAndResume) {
+  RunnerFixture f;
+  SimLink link(f.p);
+  job::JobRunner r(link.protocol, f.job);
+  r.start(0, {}, 0.0);
+  link.runUntil([] { return false; }, 1.0);
+  r.hold();
+  ASSERT_TRUE(runTo(link, r, {RunState::Held}, 5.0));
+  const auto at = link.sim.machinePosition();
+  link.runUntil([] { return false; }, 1.0);
+  EXPECT_EQ(link.sim.machinePosition(), at) << "nothing moves while held";
+  r.resume();
+  ASSERT_TRUE(runTo(link, r, {RunState::Finished}, 300.0));
+  expectStrokesCover(f.strokes, link.sim.strokes(), f.tol());
+}
+
+TEST(JobRunner, StopLeavesACleanMachineAndResumeCompletes) {
+  RunnerFixture f;
+  SimLink link(f.p);
+  job::JobRunner r(link.protocol, f.job);
+  r.start(0, {}, 0.0);
+  link.runUntil([] { return false; }, 2.0);
+  r.stop(link.nowS);
+  ASSERT_TRUE(runTo(link, r, {RunState::Stopped}, 30.0));
+  EXPECT_EQ(link.sim.state(), grbl::MachineState::Idle) << "hold before reset keeps the position";
+  resumeToEnd(link, f, r.snapshot());
+  expectStrokesCover(f.strokes, link.sim.strokes(), f.tol());
+}
+
+struct FaultCase {
+  sim::FaultKind kind;
+  const char* expectInProblem;
+};
+
+class JobRunnerFault : public ::testing::TestWithParam<FaultCase> {};
+
+TEST_P(JobRunnerFault, EndsCleanAndResumeDrawsTheRest) {
+  RunnerFixture f;
+  const long atLine = long(f.job.lines.size() / 2);
+  SimLink link(f.p, {GetParam().kind, atLine});
+  job::JobRunner r(link.protocol, f.job);
+  r.start(0, {}, 0.0);
+  ASSERT_TRUE(runTo(link, r, {RunState::Paused, RunState::Finished}, 300.0));
+  ASSERT_EQ(r.state(), RunState::Paused);
+  EXPECT_NE(r.problem().find(GetParam().expectInProblem), std::string::npos) << r.problem();
+  r.stop(link.nowS);
+  ASSERT_TRUE(runTo(link, r, {RunState::Stopped}, 30.0));
+  const job::RunSnapshot snap = r.snapshot();
+  ASSERT_LT(snap.linesCompleted, f.job.lines.size());
+  Strokes drawn = link.sim.strokes();
+  if (GetParam().kind == sim::FaultKind::DropAfter) {
+    EXPECT_TRUE(r.disconnected());
+    SimLink fresh(f.p);  // the board after a power cycle
+    resumeToEnd(fresh, f, snap);
+    drawn.insert(drawn.end(), fresh.sim.strokes().begin(), fresh.sim.strokes().end());
+  } else {
+    EXPECT_EQ(link.sim.state(), grbl::MachineState::Idle) << "stop unlocks after an alarm";
+    resumeToEnd(link, f, snap);
+    drawn = link.sim.strokes();
+  }
+  expectStrokesCover(f.strokes, drawn, f.tol());
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Faults, JobRunnerFault,
+    ::testing::Values(FaultCase{sim::FaultKind::ResetAfter, "reset"},
+                      FaultCase{sim::FaultKind::AlarmAfter, "ALARM:1"},
+                      FaultCase{sim::FaultKind::ErrorOn, "error:20"},
+                      FaultCase{sim::FaultKind::DropAfter, "Connection lost"}),
+    [](const auto& info) {
+      switch (info.param.kind) {
+        case sim::FaultKind::ResetAfter: return std::string("Reset");
+        case sim::FaultKind::AlarmAfter: return std::string("Alarm");
+        case sim::FaultKind::ErrorOn: return std::string("Error");
+        default: return std::string("Drop");
+      }
+    });
+
+}  // namespace
+}  // namespace fivebar::test

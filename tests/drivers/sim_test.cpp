@@ -1,0 +1,193 @@
+// The simulated machine, driven through GrblProtocol with a stepped clock.
+#include <gtest/gtest.h>
+
+#include "drivers/gcode_job.hpp"
+#include "sim_harness.hpp"
+
+namespace fivebar::test {
+namespace {
+
+using grbl::MachineState;
+
+struct LineLog : grbl::ProtocolListener {
+  std::vector<grbl::ParsedLine> lines;
+  void onLine(const grbl::ParsedLine& l) override { lines.push_back(l); }
+  bool saw(grbl::LineKind kind, int code = -1) const {
+    for (const auto& l : lines)
+      if (l.kind == kind && (code < 0 || l.code == code)) return true;
+    return false;
+  }
+  bool sawText(const std::string& text) const {
+    for (const auto& l : lines)
+      if (l.text.find(text) != std::string::npos) return true;
+    return false;
+  }
+};
+
+double stepDeg(const MachineProfile& p) { return 1.0 / p.motors.stepsPerDeg1; }
+
+TEST(SimMachine, StreamsAJobAndDrawsExactlyItsStrokes) {
+  const MachineProfile p = testProfile();
+  auto rng = fivebar::test::rng();
+  const Strokes strokes = randomStrokes(p, rng, 4, 12, 30.0);
+  const std::string text = jobText(p, strokes, 3000.0);
+  const job::GcodeJob job = job::parseJob(text, job::rulesFor(p));
+  ASSERT_TRUE(job.issues.empty());
+  SimLink link(p);
+  for (const auto& l : job.lines) ASSERT_TRUE(link.protocol.enqueue(l.text).ok());
+  ASSERT_TRUE(link.runUntil([&] { return link.protocol.idleLink() && link.sim.state() == MachineState::Idle; }, 120.0));
+  const auto end = link.sim.workPosition();
+  EXPECT_NEAR(end[0], strokes.back().back()[0], stepDeg(p));
+  EXPECT_NEAR(end[1], strokes.back().back()[1], stepDeg(p));
+  EXPECT_EQ(link.sim.rxOverflowBytes(), 0);
+  ASSERT_EQ(link.sim.strokes().size(), strokes.size());
+  expectStrokesCover(strokes, link.sim.strokes(), 1.01 * stepDeg(p));
+  expectStrokesCover(job::strokesOf(job, job::rulesFor(p)), link.sim.strokes(), 1.01 * stepDeg(p));
+}
+
+TEST(SimMachine, TrapezoidalTimingOfOneMove) {
+  MachineProfile p = testProfile();
+  SimLink link(p);
+  const double feedDegPerMin = 3000.0, distDeg = 40.0;
+  const double v = feedDegPerMin / 60.0;
+  const double a = degFromRad(p.motors.maxAccelRadPerS2_1) * std::sqrt(2.0);  // 45 deg: both axes
+  const double start1 = degFromRad(p.homeAngles.theta1), start2 = degFromRad(p.homeAngles.theta2);
+  const double dx = distDeg / std::sqrt(2.0);
+  link.protocol.enqueue("G1X" + fmt(start1 + dx) + "Y" + fmt(start2 - dx) + "F" + fmt(feedDegPerMin));
+  link.step(0.001);
+  const double t0 = link.nowS;
+  ASSERT_TRUE(link.runUntil([&] { return link.sim.state() == MachineState::Idle && link.sim.plannerBlocks() == 0; }, 30.0, 0.001));
+  const double expected = distDeg / v + v / a;  // cruise plus the accel/decel ramps
+  EXPECT_NEAR(link.nowS - t0, expected, 0.02 * expected + 0.005);
+}
+
+TEST(SimMachine, SoftLimitAlarmLocksUntilResetAndUnlock) {
+  const MachineProfile p = testProfile();
+  SimLink link(p);
+  LineLog log;
+  link.protocol.addListener(&log);
+  const double beyond = degFromRad(p.limits.theta1Max) + 5.0;
+  link.protocol.enqueue("G1X" + fmt(beyond) + "F1000");
+  link.runUntil([&] { return log.saw(grbl::LineKind::Alarm); }, 1.0);
+  EXPECT_TRUE(log.saw(grbl::LineKind::Alarm, 2));
+  EXPECT_TRUE(log.sawText("Reset to continue"));
+  link.protocol.enqueue("G1X0");  // ignored until the reset
+  link.runUntil([] { return false; }, 0.2);
+  EXPECT_FALSE(log.saw(grbl::LineKind::Ok));
+  link.protocol.sendRealtime(grbl::realtime::kSoftReset);
+  link.runUntil([&] { return log.saw(grbl::LineKind::Banner); }, 1.0);
+  EXPECT_EQ(link.sim.state(), MachineState::Alarm);
+  link.protocol.enqueue("G1X1F100");
+  link.runUntil([&] { return log.saw(grbl::LineKind::Error, 9); }, 1.0);
+  EXPECT_TRUE(log.saw(grbl::LineKind::Error, 9)) << "G-code is locked in alarm";
+  link.protocol.enqueue("$X");
+  link.runUntil([&] { return log.sawText("Unlocked"); }, 1.0);
+  EXPECT_EQ(link.sim.state(), MachineState::Idle);
+}
+
+TEST(SimMachine, ResetDuringMotionRaisesAlarm3ButNotAfterACompletedHold) {
+  const MachineProfile p = testProfile();
+  for (const bool holdFirst : {false, true}) {
+    SimLink link(p);
+    LineLog log;
+    link.protocol.addListener(&log);
+    link.protocol.enqueue("G1X" + fmt(degFromRad(p.homeAngles.theta1) + 30.0) + "F600");
+    link.runUntil([] { return false; }, 0.3);
+    ASSERT_EQ(link.sim.state(), MachineState::Run);
+    if (holdFirst) {
+      link.protocol.sendRealtime(grbl::realtime::kFeedHold);
+      ASSERT_TRUE(link.runUntil([&] { return link.protocol.lastStatus().state == MachineState::Hold &&
+                                             link.protocol.lastStatus().subState == 0; }, 3.0));
+    }
+    link.protocol.sendRealtime(grbl::realtime::kSoftReset);
+    link.runUntil([&] { return log.saw(grbl::LineKind::Banner); }, 1.0);
+    EXPECT_EQ(log.saw(grbl::LineKind::Alarm, 3), !holdFirst);
+    EXPECT_EQ(link.sim.state(), holdFirst ? MachineState::Idle : MachineState::Alarm);
+  }
+}
+
+TEST(SimMachine, BadLinesGetErrorCodes) {
+  const MachineProfile p = testProfile();
+  SimLink link(p);
+  std::vector<int> codes;
+  struct Acks : grbl::ProtocolListener {
+    std::vector<int>* out;
+    void onAck(const grbl::Ack& a) override { out->push_back(a.errorCode); }
+  } acks;
+  acks.out = &codes;
+  link.protocol.addListener(&acks);
+  for (const char* line : {"G1X1", "G2X1Y1I1", "G1X1..2F100", "$999=1", "Q5", "$J=X1", "G4"})
+    link.protocol.enqueue(line);
+  link.runUntil([&] { return codes.size() == 7; }, 2.0);
+  EXPECT_EQ(codes, (std::vector<int>{22, 20, 2, 3, 20, 22, 28}));
+}
+
+TEST(SimMachine, JogMovesAndCancelStopsItShort) {
+  const MachineProfile p = testProfile();
+  SimLink link(p);
+  const double start = link.sim.workPosition()[0];
+  link.protocol.enqueue("$J=G91X20F600");
+  link.runUntil([] { return false; }, 0.5);
+  EXPECT_EQ(link.sim.state(), MachineState::Jog);
+  link.protocol.sendRealtime(grbl::realtime::kJogCancel);
+  ASSERT_TRUE(link.runUntil([&] { return link.sim.state() == MachineState::Idle; }, 2.0));
+  const double moved = link.sim.workPosition()[0] - start;
+  EXPECT_GT(moved, 1.0);
+  EXPECT_LT(moved, 19.0);
+  std::vector<int> codes;
+  struct Acks : grbl::ProtocolListener {
+    std::vector<int>* out;
+    void onAck(const grbl::Ack& a) override { out->push_back(a.errorCode); }
+  } acks;
+  acks.out = &codes;
+  link.protocol.addListener(&acks);
+  link.protocol.enqueue("$J=G90X" + fmt(degFromRad(p.limits.theta1Max) + 10.0) + "F600");
+  link.runUntil([&] { return !codes.empty(); }, 1.0);
+  EXPECT_EQ(codes, std::vector<int>{15}) << "a jog beyond the soft limits is refused, not an alarm";
+  EXPECT_EQ(link.sim.state(), MachineState::Idle);
+}
+
+TEST(SimMachine, SettingsReadAndWrite) {
+  const MachineProfile p = testProfile();
+  SimLink link(p);
+  LineLog log;
+  link.protocol.addListener(&log);
+  link.protocol.enqueue("$$");
+  link.protocol.enqueue("$100=50");
+  link.protocol.enqueue("$$");
+  link.runUntil([&] { return link.protocol.idleLink(); }, 1.0);
+  std::vector<double> s100;
+  for (const auto& l : log.lines)
+    if (l.kind == grbl::LineKind::Setting && l.settingId == 100) s100.push_back(l.settingValue);
+  ASSERT_EQ(s100.size(), 2u);
+  EXPECT_NEAR(s100[0], p.motors.stepsPerDeg1, 1e-3);
+  EXPECT_DOUBLE_EQ(s100[1], 50.0);
+}
+
+TEST(SimMachine, RealSpeedStreamingNeverStarvesThePlannerInAStroke) {
+  const MachineProfile p = testProfile();
+  auto rng = fivebar::test::rng();
+  // One long stroke of short segments (about 0.5 deg each): the planner must stay fed.
+  Strokes strokes = randomStrokes(p, rng, 1, 2, 20.0);
+  std::vector<Point2> fine;
+  const Point2 a = strokes[0][0], b = strokes[0][1];
+  for (int i = 0; i <= 200; ++i) {
+    const double t = i / 200.0;
+    fine.push_back({a[0] + t * (b[0] - a[0]) + 0.3 * std::sin(i * 0.7), a[1] + t * (b[1] - a[1])});
+  }
+  const std::string text = jobText(p, {fine}, 2400.0);
+  const job::GcodeJob job = job::parseJob(text, job::rulesFor(p));
+  SimLink link(p);
+  size_t next = 0;
+  // Host side as a real sender behaves: keep the protocol's queue topped up.
+  ASSERT_TRUE(link.runUntil([&] {
+    while (next < job.lines.size() && link.protocol.linesQueued() < 4)
+      link.protocol.enqueue(job.lines[next++].text);
+    return next == job.lines.size() && link.protocol.idleLink() && link.sim.state() == MachineState::Idle;
+  }, 120.0, 0.001));
+  EXPECT_EQ(link.sim.plannerStarvationsInStroke(), 0);
+  EXPECT_EQ(link.sim.strokes().size(), 1u);
+}
+
+}  // namespace
+}  // namespace fivebar::test

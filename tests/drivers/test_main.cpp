@@ -1,0 +1,26 @@
+#include <gtest/gtest.h>
+
+#include <QCoreApplication>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+#include "test_support.hpp"
+
+namespace fivebar::test {
+std::uint64_t seed() {
+  static const std::uint64_t s = [] {
+    const char* env = std::getenv("FIVEBAR_TEST_SEED");
+    return env ? std::stoull(env) : std::uint64_t{20261122};
+  }();
+  return s;
+}
+}  // namespace fivebar::test
+
+int main(int argc, char** argv) {
+  qputenv("QT_QPA_PLATFORM", "offscreen");
+  QCoreApplication app(argc, argv);
+  ::testing::InitGoogleTest(&argc, argv);
+  std::cout << "random seed " << fivebar::test::seed() << " (set FIVEBAR_TEST_SEED to change)\n";
+  return RUN_ALL_TESTS();
+}

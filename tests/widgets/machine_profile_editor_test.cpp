@@ -1,0 +1,103 @@
+// The machine profile editor: inline validation messages from core validate(), live updates of
+// the document (undoable), presets, and JSON export / import.
+#include <gtest/gtest.h>
+
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QLabel>
+#include <QTemporaryDir>
+
+#include "core/profile.hpp"
+#include "machine_test_support.hpp"
+#include "widgets/profile_editor.hpp"
+
+namespace fivebar {
+namespace {
+
+// The message validate() gives for this profile's field, as the editor must show it.
+QString expectedMessage(const MachineProfile& p, const std::string& field) {
+  for (const ValidationIssue& issue : validate(p))
+    if (issue.field == field) return QString::fromStdString(issue.message);
+  return {};
+}
+
+TEST(ProfileEditor, BadValueShowsTheValidationMessageNextToTheField) {
+  widgets::StudioDocument doc(test::makerPlotter());
+  widgets::ProfileEditor editor(doc);
+  QDoubleSpinBox* a1 = editor.numberField("geometry.a1");
+  ASSERT_NE(a1, nullptr);
+  QLabel* message = editor.messageFor("geometry.a1");
+  ASSERT_NE(message, nullptr);
+  EXPECT_TRUE(message->isHidden());
+  const double before = doc.profile().geometry.a1;
+  a1->setValue(0.0);
+  EXPECT_FALSE(message->isHidden());
+  MachineProfile bad = doc.profile();
+  bad.geometry.a1 = 0.0;
+  const QString expected = expectedMessage(bad, "geometry.a1");
+  ASSERT_FALSE(expected.isEmpty());
+  EXPECT_TRUE(message->text().contains(expected)) << message->text().toStdString();
+  EXPECT_FALSE(editor.valid());
+  // The invalid value never reaches the document.
+  EXPECT_DOUBLE_EQ(doc.profile().geometry.a1, before);
+  // Fixing it hides the message and applies the profile.
+  a1->setValue(before + 5.0);
+  EXPECT_TRUE(message->isHidden());
+  EXPECT_DOUBLE_EQ(doc.profile().geometry.a1, before + 5.0);
+}
+
+TEST(ProfileEditor, ValidEditsUpdateTheDocumentAndUndoRestoresTheField) {
+  widgets::StudioDocument doc(test::makerPlotter());
+  widgets::ProfileEditor editor(doc);
+  int changes = 0;
+  QObject::connect(&doc, &widgets::StudioDocument::profileChanged, [&] { ++changes; });
+  const double w = doc.profile().geometry.w;
+  editor.numberField("geometry.w")->setValue(w + 10.0);
+  EXPECT_EQ(changes, 1);
+  EXPECT_DOUBLE_EQ(doc.profile().geometry.w, w + 10.0);
+  doc.undoStack()->undo();
+  EXPECT_DOUBLE_EQ(doc.profile().geometry.w, w);
+  EXPECT_DOUBLE_EQ(editor.numberField("geometry.w")->value(), w);
+}
+
+TEST(ProfileEditor, CrossFieldProblemIsShownAtTheLimitField) {
+  widgets::StudioDocument doc(test::makerPlotter());
+  widgets::ProfileEditor editor(doc);
+  QDoubleSpinBox* lo = editor.numberField("limits.theta1MinDeg");
+  QDoubleSpinBox* hi = editor.numberField("limits.theta1MaxDeg");
+  ASSERT_TRUE(lo->isEnabled());  // the preset has joint limits
+  lo->setValue(hi->value() + 10.0);
+  QLabel* message = editor.messageFor("limits.theta1MinDeg");
+  EXPECT_FALSE(message->isHidden());
+  EXPECT_TRUE(message->text().contains(QStringLiteral("must be below"))) << message->text().toStdString();
+}
+
+TEST(ProfileEditor, ExportThenImportRoundTripsAndBadFilesAreNamed) {
+  QTemporaryDir dir;
+  widgets::StudioDocument doc(test::makerPlotter());
+  widgets::ProfileEditor editor(doc);
+  editor.numberField("geometry.b2")->setValue(185.0);
+  const QString path = dir.filePath(QStringLiteral("machine.json"));
+  QString error;
+  ASSERT_TRUE(editor.exportTo(path, &error)) << error.toStdString();
+  const ProfileLoad loaded = loadProfile(path.toStdString());
+  ASSERT_TRUE(loaded.profile.has_value());
+  EXPECT_DOUBLE_EQ(loaded.profile->geometry.b2, 185.0);
+
+  editor.loadPreset(QStringLiteral("hoang2015"));
+  EXPECT_DOUBLE_EQ(doc.profile().geometry.w, preset("hoang2015")->geometry.w);
+  ASSERT_TRUE(editor.importFrom(path, &error)) << error.toStdString();
+  EXPECT_DOUBLE_EQ(doc.profile().geometry.b2, 185.0);
+  EXPECT_DOUBLE_EQ(editor.numberField("geometry.b2")->value(), 185.0);
+
+  const QString broken = dir.filePath(QStringLiteral("broken.json"));
+  QFile f(broken);
+  ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+  f.write("{ \"geometry\": ");
+  f.close();
+  EXPECT_FALSE(editor.importFrom(broken, &error));
+  EXPECT_TRUE(error.contains(broken)) << error.toStdString();
+}
+
+}  // namespace
+}  // namespace fivebar

@@ -1,0 +1,141 @@
+// Running a planned job on the simulated machine through the run panel: to completion with the
+// executed part coloured on the canvas, and resuming after the link drops (also from a fresh
+// controller, as after a restart of the studio).
+#include <gtest/gtest.h>
+
+#include <QFile>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTemporaryDir>
+#include <cmath>
+
+#include "core/units.hpp"
+#include "drivers/job_progress.hpp"
+#include "drivers/simulated_transport.hpp"
+#include "machine_test_support.hpp"
+#include "widgets/preview_controller.hpp"
+#include "widgets/run_controller.hpp"
+#include "widgets/run_layer.hpp"
+#include "widgets/run_panel.hpp"
+
+namespace fivebar {
+namespace {
+
+using test::MachineRig;
+using test::waitUntil;
+
+// A small drawing: a 30 mm square and a triangle, work frame.
+Drawing testDrawing() {
+  Drawing d;
+  d.source = "machine-run-test";
+  d.widthMm = d.heightMm = 40.0;
+  Layer layer;
+  layer.id = layer.name = "ink";
+  Polyline square;
+  square.points = {Vec2(0, 0), Vec2(30, 0), Vec2(30, 30), Vec2(0, 30)};
+  square.closed = true;
+  Polyline triangle;
+  triangle.points = {Vec2(5, 5), Vec2(25, 5), Vec2(15, 22)};
+  triangle.closed = true;
+  layer.paths = {square, triangle};
+  d.layers.push_back(layer);
+  return d;
+}
+
+struct RunRig : MachineRig {
+  RunRig() : preview(doc), run(doc, preview, session) {
+    run.setJobDirectory(dir.path());
+    Placement placement;
+    placement.centerMm = Vec2(0.0, 170.0);
+    doc.replaceDrawing(testDrawing(), QStringLiteral("square.svg"), placement);
+    preview.replanNow();
+  }
+  bool planned() {
+    return waitUntil([this] { return !preview.busy() &&
+                                     preview.result().status == widgets::PreviewStatus::Planned; },
+                     30000);
+  }
+  QTemporaryDir dir;
+  widgets::PreviewController preview;
+  widgets::RunController run;
+};
+
+TEST(RunPanel, RunsThePlannedJobToCompletionAndColoursWhatIsDone) {
+  RunRig rig;
+  ASSERT_TRUE(rig.planned()) << rig.preview.result().message.toStdString();
+  ASSERT_TRUE(rig.connect(25.0));
+  ASSERT_TRUE(rig.waitIdle());
+  widgets::RunPanel panel(rig.run, rig.session);
+  widgets::RunLayer layer(rig.run, rig.session);
+  ASSERT_TRUE(panel.startButton()->isEnabled());
+  panel.startButton()->click();
+  ASSERT_TRUE(rig.run.running()) << rig.run.lastMessage().toStdString();
+  EXPECT_TRUE(rig.session.jobActive());
+  EXPECT_TRUE(panel.holdButton()->isEnabled());
+  EXPECT_FALSE(panel.startButton()->isEnabled());
+  ASSERT_GT(layer.totalSegments(), 0u);
+  // Half-way the canvas shows part of the job as done, not all of it.
+  ASSERT_TRUE(waitUntil([&] { return layer.doneSegments() > 0; }, 30000));
+  bool finished = false, ok = false;
+  QObject::connect(&rig.run, &widgets::RunController::finished, [&](bool success, const QString&) {
+    finished = true;
+    ok = success;
+  });
+  ASSERT_TRUE(waitUntil([&] { return finished; }, 45000));
+  EXPECT_TRUE(ok) << rig.run.lastMessage().toStdString();
+  EXPECT_EQ(rig.run.state(), job::RunState::Finished);
+  EXPECT_EQ(panel.progressBar()->value(), panel.progressBar()->maximum());
+  EXPECT_EQ(layer.doneSegments(), layer.totalSegments());
+  EXPECT_FALSE(rig.session.jobActive());
+  // The machine ends at the job's last target, within a step; the job file stays, the progress
+  // file is gone.
+  const job::JobLine& last = rig.run.job()->lines.back();
+  const JointAngles q = *rig.session.motorAngles();
+  EXPECT_NEAR(degFromRad(q.theta1), last.endDeg[0], 1.0 / rig.doc.profile().motors.stepsPerDeg1);
+  EXPECT_NEAR(degFromRad(q.theta2), last.endDeg[1], 1.0 / rig.doc.profile().motors.stepsPerDeg2);
+  EXPECT_TRUE(QFile::exists(rig.run.jobPath()));
+  EXPECT_FALSE(rig.run.savedProgress().has_value());
+  // The simulated machine drew strokes.
+  ASSERT_NE(rig.session.simulatedTransport(), nullptr);
+  EXPECT_GE(rig.session.simulatedTransport()->machine().strokes().size(), 2u);
+}
+
+TEST(RunPanel, ResumesAfterTheLinkDropsAlsoAfterARestart) {
+  RunRig rig;
+  ASSERT_TRUE(rig.planned()) << rig.preview.result().message.toStdString();
+  // The link drops after 40 lines: the run ends, its progress is saved beside the job.
+  ASSERT_TRUE(rig.connect(25.0, sim::Fault{sim::FaultKind::DropAfter, 40}));
+  ASSERT_TRUE(rig.waitIdle());
+  ASSERT_TRUE(rig.run.start());
+  ASSERT_TRUE(waitUntil([&] { return !rig.run.running(); }, 45000));
+  EXPECT_NE(rig.run.state(), job::RunState::Finished);
+  ASSERT_TRUE(waitUntil([&] { return !rig.session.isConnected(); }, 5000));
+  const auto saved = rig.run.savedProgress();
+  ASSERT_TRUE(saved.has_value());
+  EXPECT_GT(saved->lastAckedLine, 0);
+  EXPECT_LT(saved->lastCompletedLine, saved->totalLines + 100);
+
+  // "Restart": a new controller and panel on the same job folder offer the resume.
+  widgets::RunController restarted(rig.doc, rig.preview, rig.session);
+  restarted.setJobDirectory(rig.dir.path());
+  widgets::RunPanel panel(restarted, rig.session);
+  ASSERT_TRUE(restarted.savedProgress().has_value());
+  EXPECT_FALSE(panel.resumeButton()->isHidden());
+  EXPECT_FALSE(panel.resumeButton()->isEnabled());  // not connected yet
+  ASSERT_TRUE(rig.connect(25.0));
+  ASSERT_TRUE(rig.waitIdle());
+  ASSERT_TRUE(waitUntil([&] { return panel.resumeButton()->isEnabled(); }, 3000));
+  panel.resumeButton()->click();
+  ASSERT_TRUE(restarted.running()) << restarted.lastMessage().toStdString();
+  ASSERT_TRUE(waitUntil([&] { return !restarted.running(); }, 45000));
+  EXPECT_EQ(restarted.state(), job::RunState::Finished) << restarted.lastMessage().toStdString();
+  EXPECT_FALSE(restarted.savedProgress().has_value());
+  const job::JobLine& last = restarted.job()->lines.back();
+  const JointAngles q = *rig.session.motorAngles();
+  EXPECT_NEAR(degFromRad(q.theta1), last.endDeg[0], 1.0 / rig.doc.profile().motors.stepsPerDeg1);
+  EXPECT_NEAR(degFromRad(q.theta2), last.endDeg[1], 1.0 / rig.doc.profile().motors.stepsPerDeg2);
+}
+
+}  // namespace
+}  // namespace fivebar

@@ -1,0 +1,28 @@
+// Test main of the machine panels' tests: offscreen Qt (so discovery works without a display),
+// a QApplication for the widgets, and the printed, settable random seed.
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+#include "test_support.hpp"
+
+namespace fivebar::test {
+std::uint64_t seed() {
+  static const std::uint64_t s = [] {
+    const char* env = std::getenv("FIVEBAR_TEST_SEED");
+    return env ? std::stoull(env) : std::uint64_t{20261122};
+  }();
+  return s;
+}
+}  // namespace fivebar::test
+
+int main(int argc, char** argv) {
+  qputenv("QT_QPA_PLATFORM", "offscreen");
+  QApplication app(argc, argv);
+  ::testing::InitGoogleTest(&argc, argv);
+  std::cout << "random seed " << fivebar::test::seed() << " (set FIVEBAR_TEST_SEED to change)\n";
+  return RUN_ALL_TESTS();
+}

@@ -1,0 +1,49 @@
+// Helpers for the machine panels' tests: a document on a preset profile, a session connected to
+// the in-process simulated machine, and waiting on the event loop with a deadline.
+#pragma once
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QThread>
+#include <functional>
+#include <memory>
+
+#include "core/profile.hpp"
+#include "widgets/machine_session.hpp"
+#include "widgets/studio_document.hpp"
+
+namespace fivebar::test {
+
+// Processes events until pred() holds or timeoutMs passes; returns pred().
+inline bool waitUntil(const std::function<bool()>& pred, int timeoutMs) {
+  QElapsedTimer clock;
+  clock.start();
+  while (!pred()) {
+    if (clock.elapsed() > timeoutMs) return false;
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+    QThread::msleep(1);
+  }
+  return true;
+}
+
+inline MachineProfile makerPlotter() { return *preset("maker-plotter"); }
+
+// A document and a session; connect() opens the simulated machine and waits for it to report.
+struct MachineRig {
+  explicit MachineRig(MachineProfile profile = makerPlotter())
+      : doc(std::move(profile)), session(doc) {}
+  bool connect(double speedup, sim::Fault fault = {}) {
+    QString error;
+    if (!session.connectSimulated(speedup, fault, &error)) return false;
+    return waitUntil([this] { return session.lastStatus() != nullptr &&
+                                     session.state() != grbl::MachineState::Unknown; }, 5000);
+  }
+  bool waitIdle(int timeoutMs = 10000) {
+    return waitUntil([this] { return session.state() == grbl::MachineState::Idle && session.jogSettled(); },
+                     timeoutMs);
+  }
+  widgets::StudioDocument doc;
+  widgets::MachineSession session;
+};
+
+}  // namespace fivebar::test

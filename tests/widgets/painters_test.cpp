@@ -1,0 +1,151 @@
+// Painting functions into QImages: the view transform, the machine, the grid, map legends and
+// the placement delta. Pixels are checked where the geometry says they must be.
+#include <gtest/gtest.h>
+
+#include <QImage>
+#include <QPainter>
+#include <cmath>
+#include <random>
+
+#include "core/placement.hpp"
+#include "test_support.hpp"
+#include "widgets/job_layer.hpp"
+#include "widgets/machine_painter.hpp"
+#include "widgets/map_painter.hpp"
+#include "widgets/studio_palette.hpp"
+#include "widgets/view_transform.hpp"
+
+namespace fivebar::widgets {
+namespace {
+
+QImage blank(int w, int h) {
+  QImage image(w, h, QImage::Format_ARGB32_Premultiplied);
+  image.fill(Qt::white);
+  return image;
+}
+
+bool differsFrom(const QImage& image, QPoint p, QColor c, int tolerance = 12) {
+  const QColor got = image.pixelColor(p);
+  return std::abs(got.red() - c.red()) > tolerance || std::abs(got.green() - c.green()) > tolerance ||
+         std::abs(got.blue() - c.blue()) > tolerance;
+}
+
+TEST(ViewTransform, RoundTripAndYFlip) {
+  const ViewTransform view(QPointF(10.0, 50.0), 3.0, QSizeF(400.0, 300.0));
+  EXPECT_EQ(view.widgetFromMachine(QPointF(10.0, 50.0)), QPointF(200.0, 150.0));
+  // y up in the machine frame is y down on screen.
+  EXPECT_LT(view.widgetFromMachine(QPointF(10.0, 60.0)).y(), 150.0);
+  auto rng = test::rng();
+  std::uniform_real_distribution<double> u(-500.0, 500.0);
+  for (int i = 0; i < 100; ++i) {
+    const QPointF m(u(rng), u(rng));
+    const QPointF back = view.machineFromWidget(view.widgetFromMachine(m));
+    EXPECT_NEAR(back.x(), m.x(), 1e-9);
+    EXPECT_NEAR(back.y(), m.y(), 1e-9);
+  }
+}
+
+TEST(ViewTransform, ZoomKeepsTheAnchorAndFitContains) {
+  ViewTransform view(QPointF(0.0, 100.0), 2.0, QSizeF(800.0, 600.0));
+  const QPointF anchor(613.0, 97.0);
+  const QPointF before = view.machineFromWidget(anchor);
+  view.zoomAround(anchor, 1.7);
+  EXPECT_DOUBLE_EQ(view.pxPerMm(), 3.4);
+  const QPointF after = view.machineFromWidget(anchor);
+  EXPECT_NEAR(after.x(), before.x(), 1e-9);
+  EXPECT_NEAR(after.y(), before.y(), 1e-9);
+  const QRectF target(-120.0, 30.0, 240.0, 90.0);
+  view.fit(target, 10.0);
+  EXPECT_TRUE(view.visibleMachineRect().contains(target));
+  view.panByPx(QPointF(100.0, 0.0));  // content follows the drag to the right
+  EXPECT_LT(view.centerMm().x(), target.center().x());
+}
+
+TEST(MachinePainter, DrawsLinksAtThePose) {
+  const auto profile = preset("maker-plotter");
+  ASSERT_TRUE(profile);
+  const Geometry& g = profile->geometry;
+  const Vec2 p(0.0, 0.6 * (g.a1 + g.b1));
+  const IkResult ik = inverse(g, p, WorkingMode::PlusPlus);
+  ASSERT_TRUE(ik.ok());
+  const Pose pose = makePose(g, ik.angles, p);
+  QImage image = blank(600, 500);
+  const ViewTransform view(QPointF(0.0, p.y() / 2.0), 1.5, QSizeF(600.0, 500.0));
+  {
+    QPainter painter(&image);
+    paintMachine(painter, view.widgetFromMachine(), g, pose);
+  }
+  const auto at = [&](const Vec2& v) {
+    return view.widgetFromMachine(QPointF(v.x(), v.y())).toPoint();
+  };
+  // Motors, the middle of each link and the pen are painted; a far corner is not.
+  EXPECT_TRUE(differsFrom(image, at(g.motor1()), Qt::white));
+  EXPECT_TRUE(differsFrom(image, at(g.motor2()), Qt::white));
+  EXPECT_TRUE(differsFrom(image, at(0.5 * (g.motor1() + pose.R1)), Qt::white));
+  EXPECT_TRUE(differsFrom(image, at(0.5 * (pose.R2 + pose.P)), Qt::white));
+  EXPECT_TRUE(differsFrom(image, at(pose.P), Qt::white));
+  EXPECT_FALSE(differsFrom(image, QPoint(3, 3), Qt::white));
+}
+
+TEST(MachinePainter, GridFillsTheBackgroundAndDrawsAxes) {
+  QImage image = blank(300, 200);
+  const ViewTransform view(QPointF(0.0, 0.0), 2.0, QSizeF(300.0, 200.0));
+  {
+    QPainter painter(&image);
+    paintGrid(painter, view);
+  }
+  // Origin is at the centre: the dashed axes cross there; elsewhere the background colour.
+  EXPECT_TRUE(differsFrom(image, QPoint(150, 100), palette::background(), 8));
+  int background = 0;
+  for (int x = 0; x < 300; ++x) background += !differsFrom(image, QPoint(x, 57), palette::background(), 2);
+  EXPECT_GT(background, 150);
+}
+
+TEST(MapPainter, ColourBarShowsTheScale) {
+  MapScale scale{0.0, 180.0, true, false, QStringLiteral("angle"), 0};
+  // Diverging: both ends alike (bad), the middle different (good).
+  const QColor low = mapColour(scale, 0.0), high = mapColour(scale, 180.0);
+  const QColor mid = mapColour(scale, 90.0);
+  EXPECT_EQ(low, high);
+  EXPECT_NE(low, mid);
+  QImage image = blank(300, 80);
+  {
+    QPainter painter(&image);
+    paintColourBar(painter, QRectF(5, 5, 260, 60), scale);
+  }
+  // The bar's left end has the low colour.
+  const QColor got = image.pixelColor(17, 5 + 6 + 20 + 6);
+  EXPECT_LE(std::abs(got.red() - low.red()), 20);
+  EXPECT_LE(std::abs(got.green() - low.green()), 20);
+}
+
+TEST(PlacementDelta, MatchesCoreTransforms) {
+  Drawing d;
+  Layer l;
+  Polyline p;
+  p.points = {Vec2(3.0, 4.0), Vec2(40.0, 9.0), Vec2(17.0, 33.0)};
+  l.paths.push_back(p);
+  d.layers.push_back(l);
+  auto rng = test::rng();
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i = 0; i < 20; ++i) {
+    Placement a, b;
+    a.centerMm = Vec2(100.0 * u(rng), 150.0 + 50.0 * u(rng));
+    a.rotationRad = 3.0 * u(rng);
+    a.scale = 1.5 + u(rng);
+    b.centerMm = Vec2(100.0 * u(rng), 150.0 + 50.0 * u(rng));
+    b.rotationRad = 3.0 * u(rng);
+    b.scale = 1.5 + u(rng);
+    const QTransform delta = placementDelta(a, b);
+    const auto ta = machineFromWork(d, a), tb = machineFromWork(d, b);
+    for (const Vec2& w : p.points) {
+      const Vec2 ma = ta * w, mb = tb * w;
+      const QPointF got = delta.map(QPointF(ma.x(), ma.y()));
+      EXPECT_NEAR(got.x(), mb.x(), 1e-9);
+      EXPECT_NEAR(got.y(), mb.y(), 1e-9);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace fivebar::widgets

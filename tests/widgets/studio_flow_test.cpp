@@ -1,0 +1,240 @@
+// The studio's flows end to end, offscreen: import a drawing (through the isolated worker),
+// placement fitted into the workspace, mode choice, the planned preview, the simulation running
+// to the end, and the main window painting a planned job.
+#include <gtest/gtest.h>
+
+#include <QDir>
+#include <QFile>
+#include <QImage>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "app/studio/main_window.hpp"
+#include "widgets/canvas_view.hpp"
+#include "widgets/import_controller.hpp"
+#include "widgets/job_layer.hpp"
+#include "widgets/machine_layer.hpp"
+#include "widgets/preview_controller.hpp"
+#include "widgets/simulation_controller.hpp"
+#include "widgets/studio_document.hpp"
+#include "widgets/studio_palette.hpp"
+#include "widgets/workspace_cache.hpp"
+
+namespace fivebar::widgets {
+namespace {
+
+constexpr int kWaitMs = 30000;
+
+MachineProfile makerPlotter() {
+  auto p = preset("maker-plotter");
+  EXPECT_TRUE(p.has_value());
+  return p.value_or(MachineProfile{});
+}
+
+// A 40 x 30 mm drawing with two colours (two layers).
+QString writeDrawing(const QTemporaryDir& dir) {
+  const QString path = dir.filePath(QStringLiteral("two-colours.svg"));
+  QFile f(path);
+  EXPECT_TRUE(f.open(QIODevice::WriteOnly));
+  f.write(R"(<svg xmlns="http://www.w3.org/2000/svg" width="40mm" height="30mm" viewBox="0 0 40 30">
+  <rect x="2" y="2" width="36" height="26" fill="none" stroke="#ff0000" stroke-width="0.3"/>
+  <circle cx="20" cy="15" r="10" fill="none" stroke="#0000ff" stroke-width="0.3"/>
+</svg>)");
+  return path;
+}
+
+struct Studio {
+  StudioDocument doc{makerPlotter()};
+  WorkspaceCache workspace{doc};
+  PreviewController preview{doc};
+  SimulationController sim;
+  ImportController importer{doc, workspace, nullptr};
+  Studio() { importer.setInteractive(false); }
+};
+
+bool importAndWait(Studio& s, const QString& path, QString* message = nullptr) {
+  QSignalSpy done(&s.importer, &ImportController::finished);
+  s.importer.openFile(path);
+  if (!done.wait(kWaitMs)) return false;
+  if (message) *message = done.front().at(1).toString();
+  return done.front().at(0).toBool();
+}
+
+PreviewResult planAndWait(Studio& s) {
+  QSignalSpy ready(&s.preview, &PreviewController::resultChanged);
+  s.preview.replanNow();
+  EXPECT_TRUE(ready.wait(kWaitMs));
+  return s.preview.result();
+}
+
+TEST(StudioFlow, ImportPlacesTheDrawingInsideTheSafeRectangle) {
+  QTemporaryDir dir;
+  Studio s;
+  ASSERT_TRUE(importAndWait(s, writeDrawing(dir)));
+  EXPECT_EQ(s.doc.drawing().layers.size(), 2u);
+  const auto rect = s.workspace.fitRectangle(s.doc.effectiveMode());
+  ASSERT_TRUE(rect);
+  const auto strokes = placeDrawing(s.doc.drawing(), s.doc.placement());
+  const auto bounds = strokeBounds(strokes);
+  ASSERT_TRUE(bounds);
+  EXPECT_GE(bounds->x0, rect->x0 - 1e-6);
+  EXPECT_LE(bounds->x1, rect->x1 + 1e-6);
+  EXPECT_GE(bounds->y0, rect->y0 - 1e-6);
+  EXPECT_LE(bounds->y1, rect->y1 + 1e-6);
+  // Fitted: one side touches the rectangle minus the margin.
+  const double fill = std::max(bounds->width() / (rect->width() - 2.0 * ImportController::kFitMarginMm),
+                               bounds->height() / (rect->height() - 2.0 * ImportController::kFitMarginMm));
+  EXPECT_NEAR(fill, 1.0, 0.02);
+  // Undo removes the import; redo restores it with its placement.
+  const Placement placed = s.doc.placement();
+  s.doc.undoStack()->undo();
+  EXPECT_FALSE(s.doc.hasDrawing());
+  s.doc.undoStack()->redo();
+  EXPECT_EQ(s.doc.placement().centerMm, placed.centerMm);
+}
+
+TEST(StudioFlow, ImportErrorsNameTheFile) {
+  QTemporaryDir dir;
+  const QString path = dir.filePath(QStringLiteral("broken.svg"));
+  QFile f(path);
+  ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+  f.write("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"10mm\" height=\"10mm\"><path d=");
+  f.close();
+  Studio s;
+  QString message;
+  EXPECT_FALSE(importAndWait(s, path, &message));
+  EXPECT_TRUE(message.contains(QStringLiteral("broken.svg"))) << message.toStdString();
+  EXPECT_FALSE(s.doc.hasDrawing());
+  EXPECT_FALSE(importAndWait(s, dir.filePath(QStringLiteral("missing.svg")), &message));
+  EXPECT_TRUE(message.contains(QStringLiteral("missing.svg"))) << message.toStdString();
+}
+
+TEST(StudioFlow, PreviewPlansTheJobAndModesSwitch) {
+  QTemporaryDir dir;
+  Studio s;
+  ASSERT_TRUE(importAndWait(s, writeDrawing(dir)));
+  PreviewResult r = planAndWait(s);
+  ASSERT_EQ(r.status, PreviewStatus::Planned) << r.message.toStdString();
+  ASSERT_TRUE(r.job && r.trajectory && r.jobScene);
+  EXPECT_GT(r.job->summary.segments, 10);
+  EXPECT_GT(r.job->summary.penDownMm, 100.0);  // rectangle + circle of the fitted drawing
+  EXPECT_GT(r.jobScene->segmentCount(), 10u);
+  EXPECT_TRUE(r.problems.empty());
+  ASSERT_TRUE(r.mode);
+  EXPECT_EQ(s.doc.effectiveMode(), *r.mode);  // Auto shows the planner's pick
+  // Choosing a mode is instant for the overlays (cached maps) and replans the job in it.
+  s.doc.setModeSelection(WorkingMode::PlusPlus);
+  EXPECT_EQ(s.doc.effectiveMode(), WorkingMode::PlusPlus);
+  r = planAndWait(s);
+  ASSERT_TRUE(r.mode);
+  EXPECT_EQ(*r.mode, WorkingMode::PlusPlus);
+  // A drawing moved far out of reach is infeasible, with problems that say where.
+  Placement far = s.doc.placement();
+  far.centerMm = Vec2(0.0, 2000.0);
+  s.doc.setPlacement(far);
+  r = planAndWait(s);
+  EXPECT_EQ(r.status, PreviewStatus::Infeasible);
+  ASSERT_FALSE(r.problems.empty());
+  EXPECT_GT(r.problems.front().whereMm.y(), 1000.0);
+  s.doc.undoStack()->undo();
+  r = planAndWait(s);
+  EXPECT_EQ(r.status, PreviewStatus::Planned);
+}
+
+TEST(StudioFlow, HiddenLayersAreNotPlanned) {
+  QTemporaryDir dir;
+  Studio s;
+  ASSERT_TRUE(importAndWait(s, writeDrawing(dir)));
+  const double both = planAndWait(s).job->summary.penDownMm;
+  s.doc.setLayerVisible(0, false);
+  const PreviewResult one = planAndWait(s);
+  ASSERT_EQ(one.status, PreviewStatus::Planned);
+  EXPECT_LT(one.job->summary.penDownMm, both - 10.0);
+  s.doc.undoStack()->undo();
+  EXPECT_NEAR(planAndWait(s).job->summary.penDownMm, both, 1e-6);
+}
+
+TEST(StudioFlow, SimulationReachesTheEndAndLeavesTheTrace) {
+  QTemporaryDir dir;
+  Studio s;
+  ASSERT_TRUE(importAndWait(s, writeDrawing(dir)));
+  const PreviewResult r = planAndWait(s);
+  ASSERT_EQ(r.status, PreviewStatus::Planned);
+  s.sim.setTrajectory(r.trajectory);
+  MachineLayer machine(s.doc, s.sim);
+  QSignalSpy finished(&s.sim, &SimulationController::finished);
+  s.sim.setSpeed(50.0);
+  EXPECT_DOUBLE_EQ(s.sim.speed(), 50.0);
+  s.sim.setSpeed(500.0);
+  EXPECT_DOUBLE_EQ(s.sim.speed(), SimulationController::kMaxSpeed);
+  s.sim.play();
+  ASSERT_TRUE(s.sim.playing());
+  // Drive the clock deterministically instead of waiting in real time.
+  double lastT = 0.0;
+  int steps = 0;
+  while (!s.sim.atEnd() && steps < 100000) {
+    s.sim.advance(0.05);
+    EXPECT_GE(s.sim.timeS(), lastT);
+    lastT = s.sim.timeS();
+    ++steps;
+  }
+  EXPECT_TRUE(s.sim.atEnd());
+  EXPECT_EQ(finished.count(), 1);
+  EXPECT_FALSE(s.sim.playing());
+  EXPECT_EQ(s.sim.completedMoves(), static_cast<int>(r.job->moves.size()));
+  // The machine is drawn at the trajectory's final pose.
+  ASSERT_TRUE(machine.pose());
+  const TrajectorySample end = r.trajectory->at(r.trajectory->durationS());
+  EXPECT_NEAR((machine.pose()->P - end.p).norm(), 0.0, 1e-9);
+  // Stepping moves between move starts.
+  s.sim.setTimeS(0.0);
+  s.sim.stepForward();
+  EXPECT_GT(s.sim.timeS(), 0.0);
+  const double t1 = s.sim.timeS();
+  s.sim.stepForward();
+  EXPECT_GT(s.sim.timeS(), t1);
+  s.sim.stepBackward();
+  EXPECT_DOUBLE_EQ(s.sim.timeS(), t1);
+}
+
+TEST(StudioFlow, MainWindowShowsTheDemoJob) {
+  QFile demo(QStringLiteral(FIVEBAR_DEMO_SVG));
+  ASSERT_TRUE(demo.open(QIODevice::ReadOnly));
+  studio::MainWindow window(makerPlotter());
+  window.resize(1400, 900);
+  window.show();
+  window.importer().setInteractive(false);
+  QSignalSpy imported(&window.importer(), &ImportController::finished);
+  window.importer().openData(demo.readAll(), QStringLiteral("fivebar-demo.svg"));
+  ASSERT_TRUE(imported.wait(kWaitMs));
+  ASSERT_TRUE(imported.front().at(0).toBool()) << imported.front().at(1).toString().toStdString();
+  QSignalSpy planned(&window.preview(), &PreviewController::resultChanged);
+  ASSERT_TRUE(planned.wait(kWaitMs));
+  while (window.preview().busy()) ASSERT_TRUE(planned.wait(kWaitMs));
+  ASSERT_EQ(window.preview().result().status, PreviewStatus::Planned)
+      << window.preview().result().message.toStdString();
+  EXPECT_EQ(window.document().drawing().layers.size(), 3u);
+  // The canvas shows the job: pixels in the job colours appear inside the drawing's area.
+  CanvasView& canvas = window.canvas();
+  QImage image(canvas.size(), QImage::Format_ARGB32_Premultiplied);
+  {
+    QPainter painter(&image);
+    canvas.render(painter);
+  }
+  const QPointF c = canvas.view().widgetFromMachine(
+      QPointF(window.document().placement().centerMm.x(), window.document().placement().centerMm.y()));
+  int coloured = 0;
+  for (int y = static_cast<int>(c.y()) - 60; y < c.y() + 60; ++y) {
+    for (int x = static_cast<int>(c.x()) - 60; x < c.x() + 60; ++x) {
+      const QColor px = image.pixelColor(x, y);
+      coloured += px.saturation() > 120 && px.value() > 60;
+    }
+  }
+  EXPECT_GT(coloured, 200);
+  // The simulation was handed the trajectory.
+  EXPECT_NE(window.simulation().trajectory(), nullptr);
+}
+
+}  // namespace
+}  // namespace fivebar::widgets

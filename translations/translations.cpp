@@ -1,0 +1,5 @@
+// Anchor of the fivebar_translations library, whose content is the embedded .qm resources.
+namespace fivebar::translations {
+// The resource directory the studio loads translations from.
+const char* resourcePrefix() { return ":/i18n"; }
+}  // namespace fivebar::translations

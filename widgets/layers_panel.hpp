@@ -1,0 +1,41 @@
+// The layers of the drawing: visibility (check box), plotting order (up/down) and the tool
+// settings of the selected layer (draw speed, power, pause for a pen change). Every change is an
+// undoable document edit; the list mirrors the document.
+#pragma once
+
+#include <QWidget>
+
+class QCheckBox;
+class QDoubleSpinBox;
+class QListWidget;
+class QListWidgetItem;
+class QToolButton;
+
+namespace fivebar::widgets {
+
+class StudioDocument;
+
+class LayersPanel : public QWidget {
+  Q_OBJECT
+ public:
+  explicit LayersPanel(StudioDocument& doc, QWidget* parent = nullptr);
+
+  QListWidget* list() const { return list_; }
+
+ private:
+  void showDocument();
+  void showSelectedTool();
+  void commitTool();
+  void onItemChanged(QListWidgetItem* item);
+  void moveSelected(int delta);
+
+  StudioDocument& doc_;
+  QListWidget* list_ = nullptr;
+  QToolButton* up_ = nullptr;
+  QToolButton* down_ = nullptr;
+  QDoubleSpinBox* speed_ = nullptr;
+  QDoubleSpinBox* power_ = nullptr;
+  QCheckBox* pause_ = nullptr;
+};
+
+}  // namespace fivebar::widgets

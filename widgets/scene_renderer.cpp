@@ -1,0 +1,64 @@
+#include "widgets/scene_renderer.hpp"
+
+namespace fivebar::widgets {
+namespace {
+// The cached image extends this share of the viewport beyond each edge.
+constexpr double kMarginShare = 0.5;
+}  // namespace
+
+bool SceneRenderer::covers(const ViewTransform& view) const {
+  if (image_.isNull() || view.pxPerMm() != imageView_.pxPerMm()) return false;
+  return imageView_.visibleMachineRect().contains(view.visibleMachineRect());
+}
+
+void SceneRenderer::renderFull(const ViewTransform& view, const ScenePaintOptions& options) {
+  const QSizeF vp = view.viewportPx();
+  const QSize size(static_cast<int>(vp.width() * (1.0 + 2.0 * kMarginShare)) + 1,
+                   static_cast<int>(vp.height() * (1.0 + 2.0 * kMarginShare)) + 1);
+  imageView_ = ViewTransform(view.centerMm(), view.pxPerMm(), QSizeF(size));
+  if (image_.size() != size) image_ = QImage(size, QImage::Format_ARGB32_Premultiplied);
+  image_.fill(Qt::transparent);
+  QPainter p(&image_);
+  ScenePaintOptions o = options;
+  o.opacity = 1.0;  // applied when blitting, so incremental additions match
+  scene_->paint(p, imageView_, o);
+  ++fullRenders_;
+}
+
+void SceneRenderer::paint(QPainter& painter, const ViewTransform& view,
+                          const std::shared_ptr<const PathScene>& scene,
+                          const ScenePaintOptions& options, quint64 optionsKey) {
+  if (!scene || scene->empty()) return;
+  const bool sameBase = scene == scene_ && optionsKey == optionsKey_ &&
+                        options.orderBegin == orderBegin_ && covers(view);
+  const bool grows = sameBase && orderLimit_ >= 0 &&
+                     (options.orderLimit < 0 || options.orderLimit >= orderLimit_);
+  if (sameBase && options.orderLimit == orderLimit_) {
+    // Pure pan: reuse as is.
+  } else if (grows) {
+    QPainter p(&image_);
+    ScenePaintOptions o = options;
+    o.opacity = 1.0;
+    o.orderBegin = orderLimit_;
+    scene->paint(p, imageView_, o);
+    ++incrementalRenders_;
+  } else {
+    scene_ = scene;
+    optionsKey_ = optionsKey;
+    orderBegin_ = options.orderBegin;
+    renderFull(view, options);
+  }
+  orderLimit_ = options.orderLimit;
+  opacity_ = options.opacity;
+  // Blit the visible part: the image's view centre sits at this widget position.
+  const QPointF centerPx = view.widgetFromMachine(imageView_.centerMm());
+  const QPointF topLeft = centerPx - QPointF(image_.width() / 2.0, image_.height() / 2.0);
+  const QRectF target(QPointF(0, 0), view.viewportPx());
+  const QRectF source = target.translated(-topLeft);
+  painter.save();
+  painter.setOpacity(painter.opacity() * opacity_);
+  painter.drawImage(target, image_, source);
+  painter.restore();
+}
+
+}  // namespace fivebar::widgets

@@ -1,0 +1,44 @@
+// Frame-budget painting of a PathScene: renders it into an offscreen image that covers the
+// viewport plus a margin, then blits. While only the pan changes the image is reused; while the
+// order limit only grows (a running simulation's trace) just the new segments are added. Zoom,
+// options or scene changes re-render (level of detail keeps that bounded).
+#pragma once
+
+#include <QImage>
+#include <QPainter>
+#include <memory>
+
+#include "widgets/path_scene.hpp"
+#include "widgets/view_transform.hpp"
+
+namespace fivebar::widgets {
+
+class SceneRenderer {
+ public:
+  // `optionsKey` identifies every option except the order limit (callers bump it when colours,
+  // travel visibility or the scene transform change).
+  void paint(QPainter& painter, const ViewTransform& view,
+             const std::shared_ptr<const PathScene>& scene, const ScenePaintOptions& options,
+             quint64 optionsKey);
+  void invalidate() { scene_.reset(); }
+
+  // Counters for tests and the benchmark.
+  int fullRenders() const { return fullRenders_; }
+  int incrementalRenders() const { return incrementalRenders_; }
+
+ private:
+  bool covers(const ViewTransform& view) const;
+  void renderFull(const ViewTransform& view, const ScenePaintOptions& options);
+
+  std::shared_ptr<const PathScene> scene_;
+  QImage image_;
+  ViewTransform imageView_;  // the view the image was rendered with (expanded viewport)
+  quint64 optionsKey_ = 0;
+  int orderBegin_ = 0;
+  int orderLimit_ = -1;
+  double opacity_ = 1.0;
+  int fullRenders_ = 0;
+  int incrementalRenders_ = 0;
+};
+
+}  // namespace fivebar::widgets
