@@ -31,7 +31,7 @@ class EndpointHash {
  public:
   explicit EndpointHash(double toleranceMm) : cell_(std::max(2.0 * toleranceMm, 1e-9)) {}
   void insert(const Vec2& p, int id) {
-    entries_.push_back({key(cellOf(p.x()), cellOf(p.y())), id});
+    if (p.allFinite()) entries_.push_back({key(cellOf(p.x()), cellOf(p.y())), id});
   }
   void finish() {
     std::sort(entries_.begin(), entries_.end());
@@ -48,6 +48,7 @@ class EndpointHash {
   }
   template <class F>
   void forEachNear(const Vec2& p, F&& f) const {
+    if (!p.allFinite()) return;
     const double fx = p.x() / cell_, fy = p.y() / cell_;
     const std::int64_t cx = static_cast<std::int64_t>(std::floor(fx));
     const std::int64_t cy = static_cast<std::int64_t>(std::floor(fy));
@@ -167,8 +168,10 @@ Ends scaledEnds(const std::vector<Stroke>& run, const MachineProfile& pr, Workin
     for (int k = 0; k < 2; ++k) {
       const JointAngles q =
           endAngles(pr.geometry, k == 0 ? run[i].points.front() : run[i].points.back(), mode);
-      e.node[2 * i + k] = Vec2(unwrapNear(q.theta1, reference.theta1) / v1,
-                               unwrapNear(q.theta2, reference.theta2) / v2);
+      const Vec2 node(unwrapNear(q.theta1, reference.theta1) / v1,
+                      unwrapNear(q.theta2, reference.theta2) / v2);
+      // A non-finite point (bad input, reported by preflight) must not poison the grid.
+      e.node[2 * i + k] = node.allFinite() ? node : Vec2(reference.theta1 / v1, reference.theta2 / v2);
     }
   return e;
 }
@@ -257,7 +260,8 @@ OptimiseResult optimise(std::vector<Stroke> strokes, const MachineProfile& profi
     if (options.simplifyToleranceMm > 0.0)
       for (Stroke& s : run) s.points = simplifyPolyline(s.points, options.simplifyToleranceMm);
     if (options.reorder && run.size() > 1) {
-      const JointAngles ref = at ? *at : endAngles(profile.geometry, run.front().points.front(), mode);
+      JointAngles ref = at ? *at : endAngles(profile.geometry, run.front().points.front(), mode);
+      if (!std::isfinite(ref.theta1) || !std::isfinite(ref.theta2)) ref = {};
       const Ends ends = scaledEnds(run, profile, mode, ref);
       std::optional<Vec2> start;
       if (at) start = Vec2(ref.theta1 / profile.motors.maxSpeedRadPerS1, ref.theta2 / profile.motors.maxSpeedRadPerS2);

@@ -98,6 +98,12 @@ class Segmenter {
 
   void run() {
     while (i_ + 1 < pts_.size()) {
+      // Inside a long segment already being split: the last piece's length predicts the next
+      // one, so skip testing the whole remainder (which would cost O(pieces^2) samples).
+      if ((pts_[i_ + 1] - cur_).norm() > 2.0 * hintMm_) {
+        if (!splitSegment()) return;
+        continue;
+      }
       const double first = deviationTo(i_ + 1);
       const bool advanced = first <= opt_.deviationBudgetMm ? mergeFrom(first) : splitSegment();
       if (!advanced) return;
@@ -134,14 +140,17 @@ class Segmenter {
     for (size_t k = i_ + 1; k < lo; ++k) length += (pts_[k + 1] - pts_[k]).norm();
     push(qs_[lo], pts_[lo], loDev, length);
     i_ = lo;
+    hintMm_ = kInfinity;
     return true;
   }
 
-  // Even the next vertex is too far: the longest prefix of this straight segment that fits.
+  // Even the next vertex is too far: the longest prefix of this straight segment that fits
+  // (within 1/8 of the bracket), starting from the previous piece's length when there is one.
   bool splitSegment() {
     const Vec2 a = cur_, b = pts_[i_ + 1];
     const double length = (b - a).norm();
-    double t = 1.0, good = 0.0, goodDev = 0.0;
+    double t = std::isfinite(hintMm_) ? std::min(1.0, 2.0 * hintMm_ / length) : 1.0;
+    double good = 0.0, goodDev = 0.0, hi = t;
     JointAngles goodQ;
     auto tryAt = [&](double u, JointAngles& q) {
       const Vec2 x = a + u * (b - a);
@@ -151,7 +160,14 @@ class Segmenter {
       const Vec2 piece[2] = {a, x};
       return jointMoveDeviation(g_, assembly_, qcur_, q, piece);
     };
+    if (std::isfinite(hintMm_)) {  // try the predicted piece first
+      JointAngles q;
+      t *= 0.5;
+      const double d = tryAt(t, q);
+      if (d <= opt_.deviationBudgetMm) { good = t; goodDev = d; goodQ = q; }
+    }
     while (good == 0.0) {
+      hi = t;
       t *= 0.5;
       if (t * length < opt_.minPieceMm) {
         out_.status = SegmentStatus::CannotFollow;
@@ -162,14 +178,15 @@ class Segmenter {
       const double d = tryAt(t, q);
       if (d <= opt_.deviationBudgetMm) { good = t; goodDev = d; goodQ = q; }
     }
-    double lo = good, hi = 2.0 * good;
-    for (int k = 0; k < kRefineSteps; ++k) {
+    double lo = good;
+    for (int k = 0; k < kRefineSteps && hi > lo; ++k) {
       const double mid = 0.5 * (lo + hi);
       JointAngles q;
       const double d = tryAt(mid, q);
       if (d <= opt_.deviationBudgetMm) { lo = mid; goodDev = d; goodQ = q; } else { hi = mid; }
     }
     push(goodQ, a + lo * (b - a), goodDev, lo * length);
+    hintMm_ = lo * length;
     return true;
   }
 
@@ -191,6 +208,7 @@ class Segmenter {
   Vec2 cur_;
   JointAngles qcur_;
   std::vector<Vec2> chain_;
+  double hintMm_ = kInfinity;  // length of the last split piece (mm), infinite after a vertex
 };
 
 }  // namespace

@@ -71,7 +71,8 @@ void GrblProtocol::pump() {
     const Line& next = queue_.front();
     const int cost = int(next.text.size()) + 1;
     if (!inFlight_.empty() && (inFlight_.back().exclusive || next.exclusive)) break;
-    if (bytesInFlight_ + cost > rxBufferBytes_) break;
+    // An empty buffer always takes one line (rxBufferBytes = 1 gives send-response streaming).
+    if (!inFlight_.empty() && bytesInFlight_ + cost > rxBufferBytes_) break;
     out += next.text;
     out += '\n';
     bytesInFlight_ += cost;

@@ -19,12 +19,12 @@ void GoToTool::pick(QPointF machineMm) {
     emit repaintNeeded();
     return;
   }
-  pending_ = planGoTo(session_.profile(), *start, Vec2(machineMm.x(), machineMm.y()), speedMmPerS_);
+  pending_ = planGoTo(session_.profile(), *start, Vec2(machineMm.x(), machineMm.y()));
   if (pending_->ok()) {
     emit picked(true, tr("Go to %1, %2 mm? The dashed path is the pen's travel (%3 checked moves).")
                           .arg(machineMm.x(), 0, 'f', 1)
                           .arg(machineMm.y(), 0, 'f', 1)
-                          .arg(pending_->moves.size()));
+                          .arg(pending_->targets.size()));
   } else {
     emit picked(false, tr("Cannot go there: %1").arg(QString::fromStdString(pending_->reason)));
   }

@@ -1,5 +1,5 @@
 // Canvas tool for "go to": a click on the canvas plans a checked move of the pen to that point
-// (jog_planner planGoTo: a safe travel, every leg checked) and draws the path the pen will take;
+// (jog_planner planGoTo: pen up and a safe travel at rapid rate, every leg checked) and draws the path the pen will take;
 // nothing moves until the move is confirmed (confirm(), Enter in the jog panel). A refused target
 // is drawn in red with the reason.
 #pragma once
@@ -18,7 +18,6 @@ class GoToTool : public QObject, public CanvasTool {
  public:
   explicit GoToTool(MachineSession& session, QObject* parent = nullptr);
 
-  void setSpeedMmPerS(double speed) { speedMmPerS_ = speed; }
   // Plans a go-to to a machine-frame point (what a click does).
   void pick(QPointF machineMm);
   const std::optional<JogPlan>& pending() const { return pending_; }
@@ -43,7 +42,6 @@ class GoToTool : public QObject, public CanvasTool {
 
  private:
   MachineSession& session_;
-  double speedMmPerS_ = 40.0;
   std::optional<QPointF> target_;
   std::optional<JogPlan> pending_;
   std::optional<QPointF> hoverMm_;

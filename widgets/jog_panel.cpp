@@ -84,7 +84,7 @@ JogPanel::JogPanel(MachineSession& session, QWidget* parent)
   speed_->setDecimals(0);
   speed_->setSuffix(tr(" mm/s"));
   speed_->setValue(kDefaultSpeedMmPerS);
-  speed_->setToolTip(tr("Speed of XY jogs and go-to moves"));
+  speed_->setToolTip(tr("Speed of XY jogs"));
   stepRow->addWidget(speed_);
 
   home_ = new QPushButton(this);
@@ -129,12 +129,8 @@ JogPanel::JogPanel(MachineSession& session, QWidget* parent)
   moveWidgets_.insert(moveWidgets_.end(), {goToButton_, home_, penUp_, penDown_, speed_});
   connect(steps_, &QButtonGroup::idClicked, this, [this](int id) { controller_.setStep(kSteps[id]); });
   controller_.setStep(kSteps[1]);
-  connect(speed_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
-    controller_.setSpeedMmPerS(v);
-    goTo_.setSpeedMmPerS(v);
-  });
+  connect(speed_, &QDoubleSpinBox::valueChanged, this, [this](double v) { controller_.setSpeedMmPerS(v); });
   controller_.setSpeedMmPerS(kDefaultSpeedMmPerS);
-  goTo_.setSpeedMmPerS(kDefaultSpeedMmPerS);
   connect(home_, &QPushButton::clicked, &session_, &MachineSession::home);
   connect(penUp_, &QPushButton::clicked, &session_, &MachineSession::penUp);
   connect(penDown_, &QPushButton::clicked, &session_, &MachineSession::penDown);

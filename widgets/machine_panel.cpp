@@ -38,20 +38,19 @@ QString colourOfState(grbl::MachineState s) {
 
 QString stateName(grbl::MachineState state) {
   using grbl::MachineState;
-  const char* context = "MachinePanel";
   switch (state) {
-    case MachineState::Idle: return QCoreApplication::translate(context, "Idle");
-    case MachineState::Run: return QCoreApplication::translate(context, "Running");
-    case MachineState::Hold: return QCoreApplication::translate(context, "On hold");
-    case MachineState::Jog: return QCoreApplication::translate(context, "Jogging");
-    case MachineState::Alarm: return QCoreApplication::translate(context, "Alarm");
-    case MachineState::Door: return QCoreApplication::translate(context, "Door open");
-    case MachineState::Check: return QCoreApplication::translate(context, "Check mode");
-    case MachineState::Home: return QCoreApplication::translate(context, "Homing");
-    case MachineState::Sleep: return QCoreApplication::translate(context, "Sleeping");
+    case MachineState::Idle: return QCoreApplication::translate("fivebar::widgets::MachinePanel", "Idle");
+    case MachineState::Run: return QCoreApplication::translate("fivebar::widgets::MachinePanel", "Running");
+    case MachineState::Hold: return QCoreApplication::translate("fivebar::widgets::MachinePanel", "On hold");
+    case MachineState::Jog: return QCoreApplication::translate("fivebar::widgets::MachinePanel", "Jogging");
+    case MachineState::Alarm: return QCoreApplication::translate("fivebar::widgets::MachinePanel", "Alarm");
+    case MachineState::Door: return QCoreApplication::translate("fivebar::widgets::MachinePanel", "Door open");
+    case MachineState::Check: return QCoreApplication::translate("fivebar::widgets::MachinePanel", "Check mode");
+    case MachineState::Home: return QCoreApplication::translate("fivebar::widgets::MachinePanel", "Homing");
+    case MachineState::Sleep: return QCoreApplication::translate("fivebar::widgets::MachinePanel", "Sleeping");
     case MachineState::Unknown: break;
   }
-  return QCoreApplication::translate(context, "Unknown");
+  return QCoreApplication::translate("fivebar::widgets::MachinePanel", "Unknown");
 }
 
 MachinePanel::MachinePanel(MachineSession& session, QWidget* parent)

@@ -1,11 +1,11 @@
 #include "widgets/machine_session.hpp"
 
 #include <QTimer>
-#include <cstdio>
 
 #include "core/units.hpp"
 #include "drivers/gcode_job.hpp"
 #include "drivers/grbl_codes.hpp"
+#include "drivers/jog.hpp"
 #include "drivers/serial_transport.hpp"
 #include "drivers/simulated_transport.hpp"
 
@@ -141,7 +141,6 @@ bool MachineSession::enqueueUserLine(const std::string& line, bool log) {
   }
   userLines_.insert(r.id);
   if (log) emit consoleLine(fromStd(line), ConsoleKind::Sent);
-  if (line.rfind("$J=", 0) == 0) jogLines_.insert(r.id);
   return true;
 }
 
@@ -161,15 +160,17 @@ bool MachineSession::sendJog(const JogPlan& plan) {
                      ConsoleKind::Problem);
     return false;
   }
-  if (plan.moves.empty()) return false;
-  for (const JogTarget& move : plan.moves) {
-    if (!enqueueUserLine(jogLine(move), plan.moves.size() == 1)) return false;
-    jogEnd_ = move.q;
+  if (!plan.ok()) return false;
+  const bool logEach = plan.lines.size() <= 3;
+  for (const std::string& line : plan.lines) {
+    if (!enqueueUserLine(line, logEach)) return false;
+    jogLines_.insert(*userLines_.rbegin());
   }
-  if (plan.moves.size() > 1)
+  if (!plan.targets.empty()) jogEnd_ = plan.targets.back();
+  if (!logEach)
     emit consoleLine(tr("%1 (jog in %2 checked moves)")
-                         .arg(fromStd(jogLine(plan.moves.back())))
-                         .arg(plan.moves.size()),
+                         .arg(QString::fromStdString(plan.lines.back()))
+                         .arg(plan.lines.size()),
                      ConsoleKind::Sent);
   settleReports_ = kReportsToSettle;
   return true;
@@ -201,11 +202,7 @@ void MachineSession::home() {
 }
 
 void MachineSession::setReferencePose() {
-  const JointAngles& home = doc_.profile().homeAngles;
-  char line[80];
-  std::snprintf(line, sizeof line, "G10L20P0X%.3fY%.3f", degFromRad(home.theta1),
-                degFromRad(home.theta2));
-  if (enqueueUserLine(line, true)) {
+  if (enqueueUserLine(jog::referencePoseCommand(doc_.profile()), true)) {
     referenceLine_ = *userLines_.rbegin();
     awaitWco_ = true;
     jogEnd_.reset();

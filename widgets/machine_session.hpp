@@ -117,7 +117,7 @@ class MachineSession : public QObject, private grbl::ProtocolListener {
   std::unique_ptr<MachineLink> link_;
   SimulatedTransport* simulated_ = nullptr;
   std::set<std::uint64_t> userLines_;  // ids of lines sent by the user (errors go to the banner)
-  std::set<std::uint64_t> jogLines_;
+  std::set<std::uint64_t> jogLines_;  // lines of jog / go-to plans not yet answered
   std::optional<JointAngles> jogEnd_;  // end of the jog that may still be running
   int settleReports_ = 0;     // quiet reports still needed before jogEnd_ is forgotten
   bool settleBlocked_ = false;  // after a cancel / new reference: no jog until settled

@@ -13,6 +13,7 @@
 #include <QPushButton>
 #include <QScrollArea>
 #include <QVBoxLayout>
+#include <cmath>
 
 #include "core/profile.hpp"
 #include "core/units.hpp"
@@ -114,7 +115,7 @@ void ProfileEditor::buildFields(QFormLayout* geometry, QFormLayout* limits, QFor
   limited_ = new QCheckBox(tr("Limit the motor angles"), this);
   limits->addRow(limited_);
   auto limit = [&](const char* path, const QString& label, double JointLimits::*member) {
-    addNumber(limits, path, label, deg, -3600.0, 3600.0, 1,
+    addNumber(limits, path, label, deg, -3600.0, 3600.0, 3,
               [member](const MachineProfile& p) { return degFromRad(p.limits.*member); },
               [member](MachineProfile& p, double v) { p.limits.*member = radFromDeg(v); });
   };
@@ -196,9 +197,9 @@ void ProfileEditor::buildFields(QFormLayout* geometry, QFormLayout* limits, QFor
             [](const MachineProfile& p) { return p.travelSpeedMmPerS; },
             [](MachineProfile& p, double v) { p.travelSpeedMmPerS = v; });
   const auto [getII, setII] = degrees(&MachineProfile::typeIIMarginRad);
-  addNumber(motion, "safety.typeIIMarginDeg", tr("Type II singularity margin"), deg, -180, 180, 1, getII, setII);
+  addNumber(motion, "safety.typeIIMarginDeg", tr("Type II singularity margin"), deg, -180, 180, 2, getII, setII);
   const auto [getI, setI] = degrees(&MachineProfile::typeIMarginRad);
-  addNumber(motion, "safety.typeIMarginDeg", tr("Type I singularity margin"), deg, -180, 180, 1, getI, setI);
+  addNumber(motion, "safety.typeIMarginDeg", tr("Type I singularity margin"), deg, -180, 180, 2, getI, setI);
 
   addNumber(home, "connection.baudRate", tr("Baud rate"), QString(), -1e7, 1e7, 0,
             [](const MachineProfile& p) { return double(p.baudRate); },
@@ -206,10 +207,10 @@ void ProfileEditor::buildFields(QFormLayout* geometry, QFormLayout* limits, QFor
   homing_ = new QCheckBox(tr("The machine has homing switches ($H)"), this);
   home->addRow(homing_);
   connect(homing_, &QCheckBox::toggled, this, &ProfileEditor::onEdited);
-  addNumber(home, "home.theta1Deg", tr("Home θ1"), deg, -3600, 3600, 2,
+  addNumber(home, "home.theta1Deg", tr("Home θ1"), deg, -3600, 3600, 4,
             [](const MachineProfile& p) { return degFromRad(p.homeAngles.theta1); },
             [](MachineProfile& p, double v) { p.homeAngles.theta1 = radFromDeg(v); });
-  addNumber(home, "home.theta2Deg", tr("Home θ2"), deg, -3600, 3600, 2,
+  addNumber(home, "home.theta2Deg", tr("Home θ2"), deg, -3600, 3600, 4,
             [](const MachineProfile& p) { return degFromRad(p.homeAngles.theta2); },
             [](MachineProfile& p, double v) { p.homeAngles.theta2 = radFromDeg(v); });
 }

@@ -15,16 +15,15 @@ namespace fivebar::widgets {
 namespace {
 
 QString runStateName(job::RunState s) {
-  const char* c = "RunPanel";
   switch (s) {
-    case job::RunState::Ready: return QCoreApplication::translate(c, "Ready");
-    case job::RunState::Running: return QCoreApplication::translate(c, "Running");
-    case job::RunState::Holding: return QCoreApplication::translate(c, "Holding…");
-    case job::RunState::Held: return QCoreApplication::translate(c, "On hold");
-    case job::RunState::Paused: return QCoreApplication::translate(c, "Paused by a problem");
-    case job::RunState::Stopping: return QCoreApplication::translate(c, "Stopping…");
-    case job::RunState::Stopped: return QCoreApplication::translate(c, "Stopped");
-    case job::RunState::Finished: return QCoreApplication::translate(c, "Finished");
+    case job::RunState::Ready: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Ready");
+    case job::RunState::Running: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Running");
+    case job::RunState::Holding: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Holding…");
+    case job::RunState::Held: return QCoreApplication::translate("fivebar::widgets::RunPanel", "On hold");
+    case job::RunState::Paused: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Paused by a problem");
+    case job::RunState::Stopping: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Stopping…");
+    case job::RunState::Stopped: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Stopped");
+    case job::RunState::Finished: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Finished");
   }
   return {};
 }
@@ -32,14 +31,13 @@ QString runStateName(job::RunState s) {
 }  // namespace
 
 QString formatDuration(double seconds) {
-  const char* c = "RunPanel";
   if (!(seconds >= 0.0)) return QStringLiteral("–");
   const long s = std::lround(seconds);
   if (s >= 3600)
-    return QCoreApplication::translate(c, "%1 h %2 min").arg(s / 3600).arg((s / 60) % 60, 2, 10, QLatin1Char('0'));
+    return QCoreApplication::translate("fivebar::widgets::RunPanel", "%1 h %2 min").arg(s / 3600).arg((s / 60) % 60, 2, 10, QLatin1Char('0'));
   if (s >= 60)
-    return QCoreApplication::translate(c, "%1 min %2 s").arg(s / 60).arg(s % 60, 2, 10, QLatin1Char('0'));
-  return QCoreApplication::translate(c, "%1 s").arg(s);
+    return QCoreApplication::translate("fivebar::widgets::RunPanel", "%1 min %2 s").arg(s / 60).arg(s % 60, 2, 10, QLatin1Char('0'));
+  return QCoreApplication::translate("fivebar::widgets::RunPanel", "%1 s").arg(s);
 }
 
 RunPanel::RunPanel(RunController& run, MachineSession& session, QWidget* parent)

@@ -14,6 +14,7 @@
 #include "app/studio/main_window.hpp"
 #include "app/studio/startup.hpp"
 #include "widgets/import_controller.hpp"
+#include "widgets/machine_ui.hpp"
 
 using fivebar::studio::MainWindow;
 
@@ -81,6 +82,8 @@ int main(int argc, char** argv) {
     if (demoFile.open(QIODevice::ReadOnly)) {
       window.importer().openData(demoFile.readAll(), QStringLiteral("fivebar-demo.svg"));
     }
+    // --demo also connects the built-in simulated machine.
+    if (auto* machineUi = window.findChild<fivebar::widgets::MachineUi*>()) machineUi->connectSimulated();
   }
   if (parser.isSet(screenshot)) {
     window.importer().setInteractive(false);

@@ -20,6 +20,7 @@
 #include "widgets/job_layer.hpp"
 #include "widgets/layers_panel.hpp"
 #include "widgets/machine_layer.hpp"
+#include "widgets/machine_ui.hpp"
 #include "widgets/mode_panel.hpp"
 #include "widgets/placement_panel.hpp"
 #include "widgets/placement_tool.hpp"
@@ -55,6 +56,10 @@ MainWindow::MainWindow(const MachineProfile& profile, QWidget* parent) : QMainWi
   createCanvas();
   createDocks();
   createMenus();
+  // The machine side (connection, jog, run, console, profile editor): widgets/machine_ui.hpp.
+  auto* machineUi = new MachineUi(*doc_, *preview_, *canvas_, *machineLayer_, this);
+  machineUi->addPanels([this](QWidget* panel, const QString& title, const QString& name,
+                              Qt::DockWidgetArea area) { return addMachinePanel(panel, title, name, area); });
   cursorLabel_ = new QLabel(this);
   statusBar()->addPermanentWidget(cursorLabel_);
   connect(canvas_, &CanvasView::cursorMoved, this, [this](QPointF mm) {

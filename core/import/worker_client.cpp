@@ -71,19 +71,11 @@ QString findSvgWorker(const ImportOptions& options) {
   return {};
 }
 
-ImportResult importSvgFile(const QString& path, const ImportOptions& options,
-                           const ProgressFn& progress) {
-  if (options.isolation == Isolation::InProcess) return importSvgInProcess(path, options, progress);
-  const QFileInfo info(path);
-  if (!info.isFile()) return failure(ImportStatus::FileError, path, "no such file");
-  if (!info.isReadable()) return failure(ImportStatus::FileError, path, "not readable");
-  const QString worker = findSvgWorker(options);
-  if (worker.isEmpty())
-    return failure(ImportStatus::WorkerNotFound, path,
-                   "the SVG worker (fivebar-svg-worker) was not found; set ImportOptions::workerPath "
-                   "or FIVEBAR_SVG_WORKER, or install it next to the program");
+namespace {
 
-  QProcess process;
+// Configures the child: offscreen Qt, no core dumps, the address-space limit.
+void prepareWorker(QProcess& process, const QString& worker, const QString& path,
+                   const ImportOptions& options) {
   process.setProgram(worker);
   process.setArguments(workerArguments(path, options));  // same working directory
   QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
@@ -98,6 +90,38 @@ ImportResult importSvgFile(const QString& path, const ImportOptions& options,
       setrlimit(RLIMIT_AS, &as);
     }
   });
+}
+
+// Maps how the finished worker ended to a result.
+ImportResult collectResult(QProcess& process, const QByteArray& output, const QByteArray& diagnostics,
+                           const QString& path, const ImportOptions& options) {
+  if (process.exitStatus() == QProcess::CrashExit)
+    return failure(ImportStatus::WorkerCrashed, path,
+                   "the SVG parser crashed on this file (it is hostile or corrupt, or needed more "
+                   "than the " + std::to_string(options.memoryLimitBytes >> 20) + " MB memory limit)");
+  ImportResult result;
+  if (process.exitCode() != 0 || !decodeResult(output, result))
+    return failure(ImportStatus::WorkerCrashed, path,
+                   "the SVG worker ended without a readable result (exit code " +
+                       std::to_string(process.exitCode()) + "): " + diagnostics.trimmed().toStdString());
+  return result;
+}
+
+}  // namespace
+
+ImportResult importSvgFile(const QString& path, const ImportOptions& options,
+                           const ProgressFn& progress) {
+  if (options.isolation == Isolation::InProcess) return importSvgInProcess(path, options, progress);
+  const QFileInfo info(path);
+  if (!info.isFile()) return failure(ImportStatus::FileError, path, "no such file");
+  if (!info.isReadable()) return failure(ImportStatus::FileError, path, "not readable");
+  const QString worker = findSvgWorker(options);
+  if (worker.isEmpty())
+    return failure(ImportStatus::WorkerNotFound, path,
+                   "the SVG worker (fivebar-svg-worker) was not found; set ImportOptions::workerPath "
+                   "or FIVEBAR_SVG_WORKER, or install it next to the program");
+  QProcess process;
+  prepareWorker(process, worker, path, options);
   process.start(QIODevice::ReadOnly);
   if (!process.waitForStarted(10000))
     return failure(ImportStatus::WorkerNotFound, path,
@@ -124,16 +148,7 @@ ImportResult importSvgFile(const QString& path, const ImportOptions& options,
   }
   output += process.readAllStandardOutput();
   readErrorChannel(process, pendingErrors, diagnostics, progress);
-  if (process.exitStatus() == QProcess::CrashExit)
-    return failure(ImportStatus::WorkerCrashed, path,
-                   "the SVG parser crashed on this file (it is hostile or corrupt, or needed more "
-                   "than the " + std::to_string(options.memoryLimitBytes >> 20) + " MB memory limit)");
-  ImportResult result;
-  if (process.exitCode() != 0 || !decodeResult(output, result))
-    return failure(ImportStatus::WorkerCrashed, path,
-                   "the SVG worker ended without a readable result (exit code " +
-                       std::to_string(process.exitCode()) + "): " + (diagnostics + pendingErrors).trimmed().toStdString());
-  return result;
+  return collectResult(process, output, diagnostics + pendingErrors, path, options);
 }
 
 }  // namespace fivebar::svg

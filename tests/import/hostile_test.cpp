@@ -6,6 +6,7 @@
 #include <QFile>
 #include <QTemporaryDir>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 
@@ -102,6 +103,40 @@ TEST_F(Isolation, CancelFromTheProgressCallbackStopsTheWorker) {
   EXPECT_EQ(r.status, ImportStatus::Cancelled);
   EXPECT_DOUBLE_EQ(last, 0.25);
   EXPECT_LT(elapsed, 5.0);
+}
+
+// About 4 MB of plotter paths: long enough for several progress reports.
+QByteArray bigDocument() {
+  QByteArray body;
+  for (int i = 0; body.size() < (4 << 20); ++i) {
+    const QByteArray a = QByteArray::number(i % 190), b = QByteArray::number((i * 7) % 190);
+    body += "<path d=\"M" + a + " " + b + " L" + b + " " + a + " C10 10 " + a + " 5 " + b + " 20\"/>\n";
+  }
+  return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"200mm\" height=\"200mm\" "
+         "viewBox=\"0 0 200 200\"><g stroke=\"black\" fill=\"none\">" + body + "</g></svg>";
+}
+
+TEST_F(Isolation, BigFileReportsRisingProgressAndCanBeCancelledMidway) {
+  const QString file = writeFile(dir, QStringLiteral("big.svg"), bigDocument());
+  std::vector<double> seen;
+  const ImportResult r = importSvgFile(file, {}, [&](double f) { seen.push_back(f); });
+  ASSERT_TRUE(r.ok()) << r.message;
+  ASSERT_GE(seen.size(), 10u);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_DOUBLE_EQ(seen.back(), 1.0);
+  std::atomic<bool> cancel{false};
+  ImportOptions o;
+  o.cancel = &cancel;
+  double cancelledAt = -1.0;
+  const ImportResult c = importSvgFile(file, o, [&](double f) {
+    if (f >= 0.1 && !cancel) {
+      cancelledAt = f;
+      cancel = true;
+    }
+  });
+  EXPECT_EQ(c.status, ImportStatus::Cancelled);
+  EXPECT_GE(cancelledAt, 0.1);
+  EXPECT_LT(cancelledAt, 1.0);
 }
 
 TEST_F(Isolation, GarbageOutputAndMissingPiecesAreReported) {

@@ -39,15 +39,17 @@ void expectFollowsLine(const MachineProfile& profile, const JointAngles& start, 
                        const Vec2& dir) {
   const Vec2 p0 = penOf(profile, start);
   JointAngles from = start;
-  for (const widgets::JogTarget& move : plan.moves) {
-    EXPECT_TRUE(checkJointMove(profile, from, move.q).ok());
-    EXPECT_GT(move.feedDegPerMin, 0.0);
+  ASSERT_EQ(plan.lines.size(), plan.targets.size());
+  for (std::size_t i = 0; i < plan.targets.size(); ++i) {
+    const JointAngles& to = plan.targets[i];
+    EXPECT_EQ(plan.lines[i].rfind("$J=", 0), 0u) << plan.lines[i];
+    EXPECT_TRUE(checkJointMove(profile, from, to).ok());
     for (double t : {0.25, 0.5, 0.75, 1.0}) {
-      const JointAngles q{from.theta1 + (move.q.theta1 - from.theta1) * t,
-                          from.theta2 + (move.q.theta2 - from.theta2) * t};
-      EXPECT_LT(distanceToLine(penOf(profile, q), p0, dir), widgets::kJogChordToleranceMm + 1e-9);
+      const JointAngles q{from.theta1 + (to.theta1 - from.theta1) * t,
+                          from.theta2 + (to.theta2 - from.theta2) * t};
+      EXPECT_LT(distanceToLine(penOf(profile, q), p0, dir), widgets::kJogChordToleranceMm + 1e-6);
     }
-    from = move.q;
+    from = to;
   }
 }
 
@@ -64,7 +66,7 @@ TEST(JogPlanner, RandomCartesianJogsFollowTheStraightLine) {
     ASSERT_TRUE(plan.ok()) << plan.reason;
     expectFollowsLine(profile, profile.homeAngles, plan, dir);
     if (plan.status == JogStatus::Full) {
-      const Vec2 end = penOf(profile, plan.moves.back().q);
+      const Vec2 end = penOf(profile, plan.targets.back());
       EXPECT_NEAR((end - (penOf(profile, profile.homeAngles) + dir * len)).norm(), 0.0, 1e-6);
     }
   }
@@ -78,9 +80,9 @@ TEST(JogPlanner, JogTowardTheEdgeStopsAtTheLastSafePoint) {
   EXPECT_FALSE(plan.reason.empty());
   expectFollowsLine(profile, profile.homeAngles, plan, dir);
   // The end lies short of the reach (a1 + b1 from the motors) and passes the pose check.
-  const Vec2 end = penOf(profile, plan.moves.back().q);
+  const Vec2 end = penOf(profile, plan.targets.back());
   EXPECT_LT((end - profile.geometry.motor1()).norm(), profile.geometry.a1 + profile.geometry.b1);
-  EXPECT_TRUE(checkPose(profile, plan.moves.back().q).ok());
+  EXPECT_TRUE(checkPose(profile, plan.targets.back()).ok());
 }
 
 TEST(JogPlanner, MotorJogBeyondItsLimitIsClippedWithTheReason) {
@@ -89,8 +91,8 @@ TEST(JogPlanner, MotorJogBeyondItsLimitIsClippedWithTheReason) {
   const JogPlan plan = widgets::planMotorJog(profile, profile.homeAngles, 1, room + 0.5, 0.3);
   ASSERT_NE(plan.status, JogStatus::Full);
   if (plan.status == JogStatus::Clipped) {
-    EXPECT_LE(plan.moves.back().q.theta1, profile.limits.theta1Max + 1e-9);
-    EXPECT_DOUBLE_EQ(plan.moves.back().q.theta2, profile.homeAngles.theta2);
+    EXPECT_LE(plan.targets.back().theta1, profile.limits.theta1Max + 1e-9);
+    EXPECT_DOUBLE_EQ(plan.targets.back().theta2, profile.homeAngles.theta2);
   }
   EXPECT_FALSE(plan.reason.empty());
 }
@@ -98,16 +100,16 @@ TEST(JogPlanner, MotorJogBeyondItsLimitIsClippedWithTheReason) {
 TEST(JogPlanner, GoToReachesThePointOrSaysWhyNot) {
   const MachineProfile profile = makerPlotter();
   const Vec2 target = penOf(profile, profile.homeAngles) + Vec2(25.0, -15.0);
-  const JogPlan plan = widgets::planGoTo(profile, profile.homeAngles, target, 40.0);
+  const JogPlan plan = widgets::planGoTo(profile, profile.homeAngles, target);
   ASSERT_EQ(plan.status, JogStatus::Full) << plan.reason;
-  EXPECT_NEAR((penOf(profile, plan.moves.back().q) - target).norm(), 0.0, 1e-6);
+  EXPECT_NEAR((penOf(profile, plan.targets.back()) - target).norm(), 0.0, 1e-6);
   EXPECT_GT(plan.pathMm.size(), 2u);
   JointAngles from = profile.homeAngles;
-  for (const auto& move : plan.moves) {
-    EXPECT_TRUE(checkJointMove(profile, from, move.q).ok());
-    from = move.q;
+  for (const JointAngles& to : plan.targets) {
+    EXPECT_TRUE(checkJointMove(profile, from, to).ok());
+    from = to;
   }
-  const JogPlan far = widgets::planGoTo(profile, profile.homeAngles, Vec2(0.0, 900.0), 40.0);
+  const JogPlan far = widgets::planGoTo(profile, profile.homeAngles, Vec2(0.0, 900.0));
   EXPECT_EQ(far.status, JogStatus::Refused);
   EXPECT_NE(far.reason.find("out of reach"), std::string::npos) << far.reason;
 }

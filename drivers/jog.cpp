@@ -1,0 +1,236 @@
+#include "jog.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/safety.hpp"
+#include "core/units.hpp"
+
+namespace fivebar::jog {
+namespace {
+
+std::string deg3(double rad) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f", degFromRad(rad));
+  return buf;
+}
+
+std::string jogLine(const JointAngles& q, double feedDegPerMin) {
+  char f[32];
+  std::snprintf(f, sizeof f, "%.1f", std::max(feedDegPerMin, 1.0));
+  return "$J=G90X" + deg3(q.theta1) + "Y" + deg3(q.theta2) + "F" + f;
+}
+
+// Joint feed (deg/min) that moves the pen `lengthMm` in lengthMm / speed seconds.
+double jointFeed(const JointAngles& a, const JointAngles& b, double lengthMm, double speedMmPerS) {
+  const double jointDeg = degFromRad(std::hypot(b.theta1 - a.theta1, b.theta2 - a.theta2));
+  return jointDeg / std::max(lengthMm / speedMmPerS, 1e-6) * 60.0;
+}
+
+std::optional<JointAngles> ikNear(const MachineProfile& p, const Vec2& xy, WorkingMode mode,
+                                  const JointAngles& near) {
+  const IkResult ik = inverse(p.geometry, xy, mode);
+  if (!ik.ok()) return std::nullopt;
+  return JointAngles{unwrapNear(ik.angles.theta1, near.theta1), unwrapNear(ik.angles.theta2, near.theta2)};
+}
+
+// Largest deviation (mm) of the joint-linear move a->b from the straight XY segment pa->pb.
+double deviationMm(const MachineProfile& p, const JointAngles& a, const JointAngles& b,
+                   const Vec2& pa, const Vec2& pb) {
+  double worst = 0.0;
+  const Vec2 d = pb - pa;
+  for (double t : {0.25, 0.5, 0.75}) {
+    const FkResult fk = forward(p.geometry, {a.theta1 + t * (b.theta1 - a.theta1),
+                                             a.theta2 + t * (b.theta2 - a.theta2)}, p.assembly);
+    if (!fk.ok()) return 1e9;
+    const double len = d.norm();
+    const double off = len > 0 ? std::abs(cross(d, fk.p - pa)) / len : (fk.p - pa).norm();
+    worst = std::max(worst, off);
+  }
+  return worst;
+}
+
+// Walks the straight line from `from` along unit `dir` for up to distanceMm.
+JogPlan walkLine(const MachineProfile& p, const JointAngles& start, const Vec2& from, const Vec2& dir,
+                 double distanceMm, double speedMmPerS, double maxDeviationMm, WorkingMode mode,
+                 bool asJog) {
+  JogPlan plan;
+  JointAngles q = start;
+  Vec2 here = from;
+  double done = 0.0, step = std::min(distanceMm, 5.0);
+  while (distanceMm - done > 1e-9) {
+    step = std::min(step * 2.0, distanceMm - done);
+    std::optional<JointAngles> next;
+    std::string why;
+    while (step >= kMinSubMoveMm || step >= distanceMm - done - 1e-12) {
+      const Vec2 target = here + dir * step;
+      next = ikNear(p, target, mode, q);
+      if (!next) { why = "the line leaves the workspace"; }
+      else if (deviationMm(p, q, *next, here, target) > maxDeviationMm) { next.reset(); why = "curved"; }
+      else if (const MoveCheck c = checkJointMove(p, q, *next); !c.ok()) { next.reset(); why = describe(c); }
+      if (next) break;
+      step *= 0.5;
+      if (step < kMinSubMoveMm) break;
+    }
+    if (!next) {
+      plan.status = plan.lines.empty() ? JogStatus::Blocked : JogStatus::Clipped;
+      plan.reason = "stopped after " + std::to_string(done).substr(0, 6) + " mm: " + why;
+      return plan;
+    }
+    const Vec2 target = here + dir * step;
+    plan.lines.push_back(asJog ? jogLine(*next, jointFeed(q, *next, step, speedMmPerS))
+                               : job::moveTo({degFromRad(next->theta1), degFromRad(next->theta2)}, false,
+                                             jointFeed(q, *next, step, speedMmPerS)));
+    plan.targets.push_back(*next);
+    q = *next;
+    here = target;
+    done += step;
+    plan.lengthMm = done;
+  }
+  return plan;
+}
+
+}  // namespace
+
+JogPlan planCartesianJog(const MachineProfile& p, const JointAngles& current, const Vec2& direction,
+                         double distanceMm, double speedMmPerS, double maxDeviationMm) {
+  const FkResult fk = forward(p.geometry, current, p.assembly);
+  if (!fk.ok() || direction.norm() == 0.0) {
+    JogPlan plan;
+    plan.status = JogStatus::NoPosition;
+    plan.reason = fk.ok() ? "no jog direction" : "the current motor angles do not close the linkage";
+    return plan;
+  }
+  const WorkingMode mode = workingModeOf(p.geometry, makePose(p.geometry, current, fk.p));
+  return walkLine(p, current, fk.p, direction.normalized(), distanceMm, speedMmPerS, maxDeviationMm,
+                  mode, true);
+}
+
+JogPlan planMotorJog(const MachineProfile& p, const JointAngles& current, int motor, double deltaDeg,
+                     double feedDegPerMin) {
+  JogPlan plan;
+  JointAngles target = current;
+  (motor == 1 ? target.theta1 : target.theta2) += radFromDeg(deltaDeg);
+  MoveCheck c = checkJointMove(p, current, target);
+  if (!c.ok()) {
+    // Clip just short of the first problem.
+    const double f = std::max(0.0, c.atFraction - 0.02);
+    plan.reason = describe(c);
+    target = {current.theta1 + f * (target.theta1 - current.theta1),
+              current.theta2 + f * (target.theta2 - current.theta2)};
+    if (f <= 0.0 || !checkJointMove(p, current, target).ok()) {
+      plan.status = JogStatus::Blocked;
+      return plan;
+    }
+    plan.status = JogStatus::Clipped;
+  }
+  plan.lines.push_back(jogLine(target, feedDegPerMin));
+  plan.targets.push_back(target);
+  return plan;
+}
+
+JogPlan planGoTo(const MachineProfile& p, const JointAngles& current, const Vec2& targetMm) {
+  JogPlan plan;
+  const FkResult fk = forward(p.geometry, current, p.assembly);
+  if (!fk.ok()) {
+    plan.status = JogStatus::NoPosition;
+    plan.reason = "the current motor angles do not close the linkage";
+    return plan;
+  }
+  const WorkingMode mode = workingModeOf(p.geometry, makePose(p.geometry, current, fk.p));
+  const auto q = ikNear(p, targetMm, mode, current);
+  const auto travel = q ? planSafeTravel(p, current, *q) : std::nullopt;
+  if (!travel) {
+    plan.status = JogStatus::Blocked;
+    plan.reason = q ? "no safe travel to that point" : "the point is out of reach";
+    return plan;
+  }
+  for (const std::string& s : job::penUpCommands(p.tool)) plan.lines.push_back(s);
+  for (const JointAngles& w : *travel) {
+    plan.lines.push_back(job::moveTo({degFromRad(w.theta1), degFromRad(w.theta2)}, true));
+    plan.targets.push_back(w);
+  }
+  plan.lengthMm = (targetMm - fk.p).norm();
+  return plan;
+}
+
+std::string homeCommand(const MachineProfile& p) {
+  return p.hasHomingSwitches ? "$H" : referencePoseCommand(p);
+}
+
+std::string referencePoseCommand(const MachineProfile& p) {
+  return "G10L20P0X" + deg3(p.homeAngles.theta1) + "Y" + deg3(p.homeAngles.theta2);
+}
+
+std::vector<Vec2> convexHull(std::vector<Vec2> pts) {
+  std::sort(pts.begin(), pts.end(), [](const Vec2& a, const Vec2& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  if (pts.size() < 3) return pts;
+  std::vector<Vec2> hull(2 * pts.size());
+  size_t k = 0;
+  for (size_t i = 0; i < pts.size(); ++i) {  // lower hull
+    while (k >= 2 && cross(hull[k - 1] - hull[k - 2], pts[i] - hull[k - 2]) <= 0) --k;
+    hull[k++] = pts[i];
+  }
+  for (size_t i = pts.size() - 1, t = k + 1; i-- > 0;) {  // upper hull
+    while (k >= t && cross(hull[k - 1] - hull[k - 2], pts[i] - hull[k - 2]) <= 0) --k;
+    hull[k++] = pts[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+JogPlan planFrame(const MachineProfile& p, const JointAngles& current, const job::GcodeJob& gcodeJob,
+                  const job::JobRules& rules, FrameShape shape, double speedMmPerS) {
+  JogPlan plan;
+  std::vector<Vec2> xy;
+  std::optional<WorkingMode> mode;
+  for (const auto& stroke : job::strokesOf(gcodeJob, rules))
+    for (const auto& q : stroke) {
+      const JointAngles a{radFromDeg(q[0]), radFromDeg(q[1])};
+      const FkResult fk = forward(p.geometry, a, p.assembly);
+      if (!fk.ok()) continue;
+      if (!mode) mode = workingModeOf(p.geometry, makePose(p.geometry, a, fk.p));
+      xy.push_back(fk.p);
+    }
+  if (xy.empty() || !mode) {
+    plan.status = JogStatus::Blocked;
+    plan.reason = "the job has no pen-down strokes to frame";
+    return plan;
+  }
+  std::vector<Vec2> corners = convexHull(xy);
+  if (shape == FrameShape::BoundingBox) {
+    Vec2 lo = xy[0], hi = xy[0];
+    for (const Vec2& v : xy) { lo = lo.cwiseMin(v); hi = hi.cwiseMax(v); }
+    corners = {lo, {hi.x(), lo.y()}, hi, {lo.x(), hi.y()}};
+  }
+  const auto first = ikNear(p, corners[0], *mode, current);
+  const JogPlan travel = first ? planGoTo(p, current, corners[0]) : JogPlan{JogStatus::Blocked};
+  if (!travel.ok()) {
+    plan.status = JogStatus::Blocked;
+    plan.reason = "cannot reach the frame's first corner: " + travel.reason;
+    return plan;
+  }
+  plan = travel;
+  JointAngles q = travel.targets.back();
+  for (size_t i = 1; i <= corners.size(); ++i) {
+    const Vec2 a = corners[i - 1], b = corners[i % corners.size()];
+    const JogPlan edge = walkLine(p, q, a, (b - a).normalized(), (b - a).norm(), speedMmPerS,
+                                  kDefaultDeviationMm, *mode, false);
+    if (edge.status != JogStatus::Ok) {
+      plan.status = JogStatus::Blocked;
+      plan.reason = "frame edge " + std::to_string(i) + ": " + edge.reason;
+      return plan;
+    }
+    plan.lines.insert(plan.lines.end(), edge.lines.begin(), edge.lines.end());
+    plan.targets.insert(plan.targets.end(), edge.targets.begin(), edge.targets.end());
+    plan.lengthMm += edge.lengthMm;
+    q = edge.targets.back();
+  }
+  return plan;
+}
+
+}  // namespace fivebar::jog

@@ -1,0 +1,206 @@
+// Canvas painting of a one-million-segment job (docs/performance/studio.md).
+// Baseline, measured in the same run: every path drawn with QPainter::drawPolyline and a wide
+// antialiased pen, as a naive canvas would. Against it: the level-of-detail PathScene painted
+// directly (a re-render, what a zoom step costs) and through the SceneRenderer cache (a pan
+// frame). Frames are painted offscreen into a 1280 x 800 QImage.
+#include <benchmark/benchmark.h>
+
+#include <QGuiApplication>
+#include <QImage>
+#include <QPainter>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <random>
+
+#include "widgets/path_scene.hpp"
+#include "widgets/scene_renderer.hpp"
+#include "widgets/view_transform.hpp"
+
+namespace {
+
+using fivebar::widgets::PathKind;
+using fivebar::widgets::PathScene;
+using fivebar::widgets::SceneRenderer;
+using fivebar::widgets::ScenePaintOptions;
+using fivebar::widgets::ScenePath;
+using fivebar::widgets::ViewTransform;
+
+constexpr int kSegments = 1000000;
+constexpr int kPointsPerPath = 500;
+const QSize kFrame(1280, 800);
+
+// 2000 wavy strokes of 500 points (about 0.3 mm apart) over a 200 x 150 mm page centred at
+// (0, 180) mm, joined by travel moves: a dense hatch-like plot of one million segments.
+const std::vector<ScenePath>& jobPaths() {
+  static const std::vector<ScenePath> paths = [] {
+    std::vector<ScenePath> out;
+    std::mt19937_64 rng(20261122);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const int strokes = kSegments / (kPointsPerPath - 1);
+    int order = 0;
+    QPointF last(0.0, 100.0);
+    for (int s = 0; s < strokes; ++s) {
+      ScenePath p;
+      const double y0 = 105.0 + 150.0 * u(rng), x0 = -100.0 + 50.0 * u(rng);
+      const double phase = 6.28 * u(rng), amp = 1.0 + 4.0 * u(rng);
+      for (int i = 0; i < kPointsPerPath; ++i) {
+        const double x = x0 + 0.3 * i;
+        p.pointsMm.emplace_back(x, y0 + amp * std::sin(phase + 0.05 * i));
+        if (i > 0) p.speedsMmPerS.push_back(static_cast<float>(20.0 + 20.0 * u(rng)));
+      }
+      ScenePath travel;
+      travel.kind = PathKind::Travel;
+      travel.pointsMm = {last, p.pointsMm.front()};
+      travel.firstOrder = order++;
+      p.firstOrder = order;
+      order += kPointsPerPath - 1;
+      last = p.pointsMm.back();
+      out.push_back(std::move(travel));
+      out.push_back(std::move(p));
+    }
+    return out;
+  }();
+  return paths;
+}
+
+std::shared_ptr<const PathScene> jobScene() {
+  static const auto scene = std::make_shared<const PathScene>(jobPaths());
+  return scene;
+}
+
+ViewTransform fitView() {
+  ViewTransform v(QPointF(0.0, 180.0), 1.0, QSizeF(kFrame));
+  v.fit(QRectF(-110.0, 100.0, 220.0, 160.0), 20.0);
+  return v;
+}
+
+double gBaselineMs = 0.0;
+
+void setRatio(benchmark::State& state, double ownMs) {
+  state.counters["ms_per_frame"] = ownMs;
+  if (gBaselineMs > 0.0) state.counters["speedup_vs_baseline"] = gBaselineMs / ownMs;
+}
+
+double elapsedMs(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void BM_Baseline_WidePolylineAntialiased(benchmark::State& state) {
+  const auto& paths = jobPaths();
+  const ViewTransform view = fitView();
+  QImage image(kFrame, QImage::Format_ARGB32_Premultiplied);
+  double totalMs = 0.0;
+  for (auto _ : state) {
+    const auto t0 = std::chrono::steady_clock::now();
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    painter.setTransform(view.widgetFromMachine());
+    QPen pen(QColor(0x1d, 0x4e, 0xd8), 0.4);  // 0.4 mm wide, scaled with the view
+    painter.setPen(pen);
+    for (const ScenePath& p : paths) {
+      painter.drawPolyline(p.pointsMm.data(), static_cast<int>(p.pointsMm.size()));
+    }
+    painter.end();
+    totalMs += elapsedMs(t0);
+  }
+  gBaselineMs = totalMs / static_cast<double>(state.iterations());
+  state.counters["ms_per_frame"] = gBaselineMs;
+}
+
+void BM_SceneBuild(benchmark::State& state) {
+  for (auto _ : state) {
+    PathScene scene(jobPaths());
+    benchmark::DoNotOptimize(scene.segmentCount());
+  }
+  state.counters["segments"] = static_cast<double>(jobScene()->segmentCount());
+}
+
+// A full re-render (a zoom step) at the given zoom relative to the fitted view.
+void BM_Scene_Render(benchmark::State& state) {
+  const auto scene = jobScene();
+  ViewTransform view = fitView();
+  view.zoomAround(QPointF(640.0, 400.0), static_cast<double>(state.range(0)));
+  QImage image(kFrame, QImage::Format_ARGB32_Premultiplied);
+  ScenePaintOptions options;
+  options.colourBySpeed = true;
+  double totalMs = 0.0;
+  for (auto _ : state) {
+    const auto t0 = std::chrono::steady_clock::now();
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    scene->paint(painter, view, options);
+    painter.end();
+    totalMs += elapsedMs(t0);
+  }
+  state.counters["level"] = scene->levelFor(view.pxPerMm());
+  state.counters["segments_painted_max"] =
+      static_cast<double>(scene->segmentCount(scene->levelFor(view.pxPerMm())));
+  setRatio(state, totalMs / static_cast<double>(state.iterations()));
+}
+
+// Pan frames: the cached image is blitted; a re-render happens only when the pan leaves the
+// cached margin (every ~10 frames here), and its cost is included in the mean.
+void BM_Renderer_Pan(benchmark::State& state) {
+  const auto scene = jobScene();
+  ViewTransform view = fitView();
+  view.zoomAround(QPointF(640.0, 400.0), static_cast<double>(state.range(0)));
+  QImage image(kFrame, QImage::Format_ARGB32_Premultiplied);
+  SceneRenderer renderer;
+  ScenePaintOptions options;
+  options.colourBySpeed = true;
+  double totalMs = 0.0;
+  int frame = 0;
+  for (auto _ : state) {
+    const auto t0 = std::chrono::steady_clock::now();
+    view.panByPx(QPointF((frame++ % 40 < 20) ? 37.0 : -37.0, 11.0 * ((frame % 7) - 3)));
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    renderer.paint(painter, view, scene, options, 1);
+    painter.end();
+    totalMs += elapsedMs(t0);
+  }
+  state.counters["full_renders"] = renderer.fullRenders();
+  setRatio(state, totalMs / static_cast<double>(state.iterations()));
+}
+
+// Wheel zoom frames around the cursor: every frame is at a new scale (a full re-render).
+void BM_Renderer_WheelZoom(benchmark::State& state) {
+  const auto scene = jobScene();
+  ViewTransform view = fitView();
+  QImage image(kFrame, QImage::Format_ARGB32_Premultiplied);
+  SceneRenderer renderer;
+  ScenePaintOptions options;
+  options.colourBySpeed = true;
+  double totalMs = 0.0;
+  int frame = 0;
+  for (auto _ : state) {
+    const auto t0 = std::chrono::steady_clock::now();
+    view.zoomAround(QPointF(500.0, 300.0), (frame++ % 24 < 12) ? 1.2 : 1.0 / 1.2);
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    renderer.paint(painter, view, scene, options, 1);
+    painter.end();
+    totalMs += elapsedMs(t0);
+  }
+  setRatio(state, totalMs / static_cast<double>(state.iterations()));
+}
+
+BENCHMARK(BM_Baseline_WidePolylineAntialiased)->Unit(benchmark::kMillisecond)->Iterations(2);
+BENCHMARK(BM_SceneBuild)->Unit(benchmark::kMillisecond)->Iterations(2);
+BENCHMARK(BM_Scene_Render)->Arg(1)->Arg(4)->Arg(32)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Renderer_Pan)->Arg(1)->Arg(4)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Renderer_WheelZoom)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  qputenv("QT_QPA_PLATFORM", "offscreen");
+  QGuiApplication app(argc, argv);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,127 @@
+// fivebar_machine_screenshots OUTDIR: screenshots of the studio's machine panels for the docs,
+// taken from the real main window driving the built-in simulated machine (not a test; run it
+// under xvfb-run -a -s "-screen 0 1600x1000x24"):
+//   machine-run.png      the demo job running, the executed part coloured on the canvas
+//   machine-goto.png     a go-to previewed on the canvas, waiting for confirmation
+//   machine-alarm.png    an alarm banner with its way out, and the profile editor's inline message
+#include <QApplication>
+#include <QDir>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QPushButton>
+#include <QSettings>
+#include <QTemporaryDir>
+#include <QThread>
+#include <cstdio>
+#include <functional>
+
+#include "app/studio/main_window.hpp"
+#include "widgets/import_controller.hpp"
+#include "widgets/jog_panel.hpp"
+#include "widgets/machine_ui.hpp"
+#include "widgets/preview_controller.hpp"
+#include "widgets/profile_editor.hpp"
+
+namespace {
+
+bool waitUntil(const std::function<bool()>& pred, int timeoutMs) {
+  QElapsedTimer clock;
+  clock.start();
+  while (!pred()) {
+    if (clock.elapsed() > timeoutMs) return false;
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
+    QThread::msleep(2);
+  }
+  return true;
+}
+
+void settle(int ms) { waitUntil([] { return false; }, ms); }
+
+bool grab(QWidget& window, const QString& path) {
+  settle(300);
+  const bool ok = window.grab().save(path);
+  std::printf("%s %s\n", ok ? "wrote" : "FAILED", qPrintable(path));
+  return ok;
+}
+
+void raiseDock(QWidget& window, const char* name) {
+  if (auto* dock = window.findChild<QDockWidget*>(QString::fromLatin1(name))) dock->raise();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  QApplication app(argc, argv);
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: fivebar_machine_screenshots OUTDIR\n");
+    return 2;
+  }
+  const QString outDir = QString::fromLocal8Bit(argv[1]);
+  QDir().mkpath(outDir);
+  QTemporaryDir settingsDir;  // a fresh dock layout, not the user's
+  QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settingsDir.path());
+  QApplication::setOrganizationName(QStringLiteral("FiveBarScreenshots"));
+  QApplication::setApplicationName(QStringLiteral("FiveBar Studio"));
+
+  using namespace fivebar;
+  studio::MainWindow window(*preset("maker-plotter"));
+  window.resize(1600, 1000);
+  window.show();
+  auto* machine = window.findChild<widgets::MachineUi*>();
+  if (machine == nullptr) {
+    std::fprintf(stderr, "the main window has no machine panels\n");
+    return 1;
+  }
+  machine->run().setJobDirectory(settingsDir.filePath(QStringLiteral("jobs")));
+  QFile demo(QStringLiteral(FIVEBAR_DEMO_SVG));
+  if (!demo.open(QIODevice::ReadOnly)) return 1;
+  window.importer().setInteractive(false);
+  window.importer().openData(demo.readAll(), QStringLiteral("fivebar-demo.svg"));
+  machine->connectSimulated(6.0);
+  widgets::MachineSession& session = machine->session();
+  const bool ready = waitUntil([&] {
+    return window.preview().result().status == widgets::PreviewStatus::Planned && !window.preview().busy() &&
+           session.state() == grbl::MachineState::Idle;
+  }, 60000);
+  if (!ready) {
+    std::fprintf(stderr, "the demo job did not plan or the machine did not report\n");
+    return 1;
+  }
+  raiseDock(window, "dockRun");
+  int status = 0;
+  // 1. A run in progress.
+  if (!machine->run().start()) return 1;
+  waitUntil([&] {
+    const auto& s = machine->run().snapshot();
+    return s.totalLines > 0 && s.linesCompleted * 100 >= s.totalLines * 45;
+  }, 120000);
+  if (!grab(window, outDir + QStringLiteral("/machine-run.png"))) status = 1;
+  machine->run().stop();
+  waitUntil([&] { return !machine->run().running(); }, 30000);
+  waitUntil([&] { return session.state() == grbl::MachineState::Idle && session.jogSettled(); }, 10000);
+
+  // 2. A go-to previewed on the canvas.
+  raiseDock(window, "dockJog");
+  widgets::JogPanel* jog = machine->jogPanel();
+  jog->goToButton()->setChecked(true);
+  if (const auto pen = session.penMm()) jog->goToTool().pick(QPointF(pen->x() - 45.0, pen->y() - 60.0));
+  if (!grab(window, outDir + QStringLiteral("/machine-goto.png"))) status = 1;
+  jog->goToButton()->setChecked(false);
+
+  // 3. An alarm (a hard limit tripped on the first line) and a bad profile value.
+  session.disconnectMachine();
+  QString error;
+  session.connectSimulated(6.0, sim::Fault{sim::FaultKind::AlarmAfter, 0}, &error);
+  waitUntil([&] { return session.state() != grbl::MachineState::Unknown; }, 5000);
+  session.sendLine(QStringLiteral("G4P0.01"));
+  waitUntil([&] { return session.problem().kind == widgets::MachineProblem::Kind::Alarm; }, 5000);
+  raiseDock(window, "dockMachine");
+  raiseDock(window, "dockProfile");
+  if (auto* editor = window.findChild<widgets::ProfileEditor*>()) {
+    if (auto* a1 = editor->numberField("geometry.a1")) a1->setValue(0.0);
+  }
+  if (!grab(window, outDir + QStringLiteral("/machine-alarm.png"))) status = 1;
+  return status;
+}
