@@ -57,16 +57,41 @@ bool isSafe(const Geometry& g, const WorkspaceSettings& s, WorkingMode mode, con
          x.typeIMarginRad >= s.typeIMarginRad;
 }
 
-// Checks `outer` minus `inner` (inner inside outer), as up to four strips.
+// Spacing of the samples along a growing edge: the boundary can bulge into the rectangle between
+// two samples by at most spacing^2 / (8 R) for a boundary curve of radius R, i.e. under
+// kRectangleInsetMm for R > 1.6 mm.
+constexpr double kEdgeSpacingMm = 0.25;
+// The final rectangle keeps this far inside the sampled boundary.
+constexpr double kRectangleInsetMm = 0.005;
+
+// Samples r on an (nx+1) x (ny+1) lattice at most spacingX / spacingY apart, edges included.
+bool latticeIsSafe(const Geometry& g, const WorkspaceSettings& s, WorkingMode mode, const Rect& r,
+                   double spacingX, double spacingY) {
+  const int nx = std::max(1, static_cast<int>(std::ceil(r.width() / spacingX)));
+  const int ny = std::max(1, static_cast<int>(std::ceil(r.height() / spacingY)));
+  for (int j = 0; j <= ny; ++j) {
+    const double y = r.yMin + r.height() * j / ny;
+    for (int i = 0; i <= nx; ++i)
+      if (!isSafe(g, s, mode, Vec2(r.xMin + r.width() * i / nx, y))) return false;
+  }
+  return true;
+}
+
+// Checks `outer` minus `inner` (inner inside outer), as up to four strips, finely along each
+// strip's long side and `spacingMm` across it.
 bool ringIsSafe(const Geometry& g, const WorkspaceSettings& s, WorkingMode mode, const Rect& inner,
                 const Rect& outer, double spacingMm) {
+  const double fine = std::min(spacingMm, kEdgeSpacingMm);
   const Rect strips[4] = {{outer.xMin, outer.yMin, inner.xMin, outer.yMax},
                           {inner.xMax, outer.yMin, outer.xMax, outer.yMax},
                           {inner.xMin, outer.yMin, inner.xMax, inner.yMin},
                           {inner.xMin, inner.yMax, inner.xMax, outer.yMax}};
-  for (const Rect& r : strips) {
+  for (int k = 0; k < 4; ++k) {
+    const Rect& r = strips[k];
     if (r.width() <= 0.0 || r.height() <= 0.0) continue;
-    if (!rectangleIsSafe(g, s, mode, r, spacingMm)) return false;
+    const bool vertical = k < 2;  // left and right strips run along y
+    if (!latticeIsSafe(g, s, mode, r, vertical ? spacingMm : fine, vertical ? fine : spacingMm))
+      return false;
   }
   return true;
 }
@@ -92,6 +117,19 @@ double roomToGridEdge(const GridSpec& grid, const Rect& r, int side) {
   }
 }
 
+// The edge `side` of r, sampled kEdgeSpacingMm apart.
+bool edgeIsSafe(const Geometry& g, const WorkspaceSettings& s, WorkingMode mode, const Rect& r,
+                int side) {
+  Rect line = r;
+  switch (side) {
+    case 0: line.xMax = r.xMin; break;
+    case 1: line.xMin = r.xMax; break;
+    case 2: line.yMax = r.yMin; break;
+    default: line.yMin = r.yMax; break;
+  }
+  return latticeIsSafe(g, s, mode, line, kEdgeSpacingMm, kEdgeSpacingMm);
+}
+
 Rect scaledAboutCentre(const Rect& r, double f) {
   const double cx = 0.5 * (r.xMin + r.xMax), cy = 0.5 * (r.yMin + r.yMax);
   const double hw = 0.5 * r.width() * f, hh = 0.5 * r.height() * f;
@@ -103,7 +141,7 @@ template <typename Grow>
 double bisectGrowth(const Geometry& g, const WorkspaceSettings& s, WorkingMode mode, const Rect& r,
                     double maxGrowth, double spacingMm, Grow grow) {
   double lo = 0.0, hi = maxGrowth;
-  for (int k = 0; k < 12; ++k) {
+  for (int k = 0; k < 10; ++k) {
     const double mid = 0.5 * (lo + hi);
     (ringIsSafe(g, s, mode, r, grow(mid), spacingMm) ? lo : hi) = mid;
   }
@@ -114,14 +152,7 @@ double bisectGrowth(const Geometry& g, const WorkspaceSettings& s, WorkingMode m
 
 bool rectangleIsSafe(const Geometry& g, const WorkspaceSettings& s, WorkingMode mode,
                      const Rect& r, double spacingMm) {
-  const int nx = std::max(1, static_cast<int>(std::ceil(r.width() / spacingMm)));
-  const int ny = std::max(1, static_cast<int>(std::ceil(r.height() / spacingMm)));
-  for (int j = 0; j <= ny; ++j) {
-    const double y = r.yMin + r.height() * j / ny;
-    for (int i = 0; i <= nx; ++i)
-      if (!isSafe(g, s, mode, Vec2(r.xMin + r.width() * i / nx, y))) return false;
-  }
-  return true;
+  return latticeIsSafe(g, s, mode, r, spacingMm, spacingMm);
 }
 
 std::optional<Rect> largestSafeRectangle(const WorkspaceMap& map, const Geometry& g,
@@ -150,7 +181,9 @@ std::optional<Rect> largestSafeRectangle(const WorkspaceMap& map, const Geometry
     for (int side = 0; side < 4; ++side) room = std::min(room, 2.0 * roomToGridEdge(grid, r, side));
     const double f = bisectGrowth(g, s, map.mode, r, std::max(0.0, room) / base, spacing,
                                   [&](double t) { return scaledAboutCentre(r, 1.0 + t); });
-    return scaledAboutCentre(r, 1.0 + f);
+    r = scaledAboutCentre(r, 1.0 + f);
+    const double inset = std::min(kRectangleInsetMm, 0.25 * std::min(r.width(), r.height()));
+    return scaledAboutCentre(r, 1.0 - 2.0 * inset / std::max(std::min(r.width(), r.height()), 1e-9));
   }
   for (int pass = 0; pass < 2; ++pass) {
     for (int side = 0; side < 4; ++side) {
@@ -160,7 +193,12 @@ std::optional<Rect> largestSafeRectangle(const WorkspaceMap& map, const Geometry
       r = moved(r, side, d);
     }
   }
-  return r;
+  // A side that could not grow was only sampled at the coarse spacing: check each edge finely.
+  for (int side = 0; side < 4; ++side) {
+    for (int k = 0; k < 8 && !edgeIsSafe(g, s, map.mode, r, side); ++k) r = moved(r, side, -0.125 * c);
+  }
+  const double inset = std::min(kRectangleInsetMm, 0.25 * std::min(r.width(), r.height()));
+  return Rect{r.xMin + inset, r.yMin + inset, r.xMax - inset, r.yMax - inset};
 }
 
 }  // namespace fivebar

@@ -1,5 +1,5 @@
-// Move checks and safe travel planning. Contract: safety.hpp. Derivation of the step bound:
-// docs/kinematics.md (passive-angle rates); summarised next to nextStepRad below.
+// Move checks and safe travel planning. Contract: safety.hpp. The sampling step bound is
+// derived next to nextStepRad below (passive-angle rates of the floating links).
 #include "safety.hpp"
 
 #include <algorithm>

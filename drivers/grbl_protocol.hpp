@@ -102,6 +102,9 @@ class GrblProtocol {
   // Advances the poll clock (seconds, monotonic); sends '?' when due and none is outstanding.
   void tick(double nowS);
   void setPollInterval(double intervalS);  // clamped to >= kMinPollIntervalS; <= 0 disables
+  // Receive-buffer budget for character counting (bytes). 1 = send-response (one line at a
+  // time, waiting for each answer): the baseline the benchmarks compare against.
+  void setRxBufferBytes(int bytes) { rxBufferBytes_ = bytes; }
   // The transport is gone: every counter resets, listeners hear onDisconnected once.
   void disconnected(const std::string& reason);
 

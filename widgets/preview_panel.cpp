@@ -20,7 +20,7 @@
 
 namespace fivebar::widgets {
 
-QString formatDuration(double seconds) {
+QString formatJobTime(double seconds) {
   if (!std::isfinite(seconds) || seconds < 0.0) return QStringLiteral("-");
   if (seconds < 60.0) return PreviewPanel::tr("%1 s").arg(seconds, 0, 'f', 1);
   const long total = std::lround(seconds);
@@ -133,7 +133,7 @@ void PreviewPanel::showResult() {
                        "<tr><td>Segments:</td><td>%5</td></tr>"
                        "<tr><td>Max deviation:</td><td>%6 mm</td></tr>"
                        "<tr><td>Singularity margin:</td><td>%7 deg</td></tr></table>")
-                        .arg(mode, formatDuration(r.trajectory->durationS()))
+                        .arg(mode, formatJobTime(r.trajectory->durationS()))
                         .arg(s.penDownMm, 0, 'f', 0)
                         .arg(s.travelMm, 0, 'f', 0)
                         .arg(s.segments)

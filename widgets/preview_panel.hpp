@@ -60,6 +60,6 @@ class PreviewPanel : public QWidget {
 };
 
 // "1 h 02 min", "3 min 05 s", "12.4 s".
-QString formatDuration(double seconds);
+QString formatJobTime(double seconds);
 
 }  // namespace fivebar::widgets

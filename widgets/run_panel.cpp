@@ -30,7 +30,7 @@ QString runStateName(job::RunState s) {
 
 }  // namespace
 
-QString formatDuration(double seconds) {
+QString formatTimeLeft(double seconds) {
   if (!(seconds >= 0.0)) return QStringLiteral("–");
   const long s = std::lround(seconds);
   if (s >= 3600)
@@ -137,7 +137,7 @@ void RunPanel::refreshProgress() {
   const double fraction = snap.totalLines > 0 ? double(snap.linesCompleted) / double(snap.totalLines) : 0.0;
   progress_->setValue(int(std::lround(std::clamp(fraction, 0.0, 1.0) * 1000.0)));
   progress_->setFormat(tr("%1 of %2 lines executed").arg(snap.linesCompleted).arg(snap.totalLines));
-  eta_->setText(run_.running() ? tr("%1 left").arg(formatDuration(snap.etaS)) : QString());
+  eta_->setText(run_.running() ? tr("%1 left").arg(formatTimeLeft(snap.etaS)) : QString());
   const job::RunState s = run_.state();
   if (run_.job()) state_->setText(runStateName(s));
 }

@@ -49,6 +49,6 @@ class RunPanel : public QWidget {
 };
 
 // "1 h 02 min", "3 min 05 s", "42 s" (translated units); "–" when unknown (< 0).
-QString formatDuration(double seconds);
+QString formatTimeLeft(double seconds);
 
 }  // namespace fivebar::widgets

@@ -88,7 +88,7 @@ void SimulationPanel::showTime() {
     readout_->clear();
     return;
   }
-  time_->setText(tr("%1 of %2").arg(formatDuration(sim_.timeS()), formatDuration(sim_.durationS())));
+  time_->setText(tr("%1 of %2").arg(formatJobTime(sim_.timeS()), formatJobTime(sim_.durationS())));
   const TrajectorySample s = sim_.sample();
   const Geometry& g = doc_.profile().geometry;
   const Pose pose = makePose(g, s.q, s.p);

@@ -3,9 +3,12 @@
 //
 //   fivebar-sim --pty PATH [--machine PRESET|FILE] [--speedup N] [--instant]
 //               [--fault drop-after=N|reset-after=N|error-on=N|alarm-after=N] [--record FILE]
+//               [--baud N]
 //
 // PATH becomes a symlink to the pty's slave device. --record writes the pen-down joint path
 // and counters as JSON on exit (SIGTERM / SIGINT) and when an injected drop closes the link.
+// --baud N emulates the serial wire (N/10 bytes per second each way, 8N1); without it bytes
+// pass as fast as the pty carries them.
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -21,6 +24,7 @@
 
 #include "core/profile.hpp"
 #include "pty.hpp"
+#include "wire.hpp"
 #include "record.hpp"
 #include "drivers/sim_machine.hpp"
 
@@ -36,13 +40,14 @@ struct Args {
   bool instant = false;
   fivebar::sim::Fault fault;
   std::string recordPath;
+  double baud = 0.0;  // 0: no wire emulation
 };
 
 int usage(const std::string& problem) {
   std::cerr << "fivebar-sim: " << problem << "\n"
             << "usage: fivebar-sim --pty PATH [--machine PRESET|FILE] [--speedup N] [--instant]\n"
             << "                   [--fault drop-after=N|reset-after=N|error-on=N|alarm-after=N]\n"
-            << "                   [--record FILE]\n";
+            << "                   [--record FILE] [--baud N]\n";
   return 2;
 }
 
@@ -56,7 +61,10 @@ std::string parseArgs(int argc, char** argv, Args& a) {
     if (opt == "--pty") a.ptyPath = value;
     else if (opt == "--machine") a.machine = value;
     else if (opt == "--record") a.recordPath = value;
-    else if (opt == "--speedup") {
+    else if (opt == "--baud") {
+      try { a.baud = std::stod(value); } catch (...) { a.baud = -1; }
+      if (!(a.baud > 0)) return "--baud needs a positive number, got '" + value + "'";
+    } else if (opt == "--speedup") {
       try { a.speedup = std::stod(value); } catch (...) { a.speedup = -1; }
       if (!(a.speedup > 0)) return "--speedup needs a positive number, got '" + value + "'";
     } else if (opt == "--fault") {
@@ -101,18 +109,22 @@ int main(int argc, char** argv) {
     pty.close();
     app.exit(code);
   };
+  fivebar::simapp::Wire wire(args.baud);
+  QElapsedTimer clock;
+  clock.start();
   const auto pump = [&] {
-    pty.write(machine.takeOutput());
+    const double nowS = double(clock.nsecsElapsed()) * 1e-9;
+    const std::string in = wire.deliverIn(nowS);
+    if (!in.empty()) machine.receive(in);
+    wire.queueOut(machine.takeOutput());
+    pty.write(wire.deliverOut(nowS));
     if (machine.linkDropped()) finish(0);
   };
   QSocketNotifier notifier(pty.masterFd(), QSocketNotifier::Read);
   QObject::connect(&notifier, &QSocketNotifier::activated, [&] {
-    const std::string bytes = pty.read();
-    if (!bytes.empty()) machine.receive(bytes);
+    wire.queueIn(pty.read());
     pump();
   });
-  QElapsedTimer clock;
-  clock.start();
   qint64 lastNs = 0;
   QTimer timer;
   QObject::connect(&timer, &QTimer::timeout, [&] {

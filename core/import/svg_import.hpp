@@ -50,7 +50,7 @@ struct ImportOptions {
   Isolation isolation = Isolation::WorkerProcess;
   QString workerPath;               // explicit worker executable; empty = search (see docs)
   double timeoutS = 10.0;           // wall-clock limit for the worker ...
-  double timeoutPerMegabyteS = 0.5; // ... plus this much per MB of input file
+  double timeoutPerMegabyteS = 1.0; // ... plus this much per MB of input file
   std::uint64_t memoryLimitBytes = std::uint64_t{4} << 30;  // worker address-space limit
   const std::atomic<bool>* cancel = nullptr;  // set to true to abandon the import
 };

@@ -237,6 +237,12 @@ void Sanitizer::writeSentinel(int index) {
   writer_.writeAttribute(QStringLiteral("opacity"), QStringLiteral("1"));
   writer_.writeAttribute(QStringLiteral("display"), QStringLiteral("inline"));
   writer_.writeAttribute(QStringLiteral("visibility"), QStringLiteral("visible"));
+  // Inline style too, so that a document style sheet ("line { stroke-width: 3 }") cannot
+  // override the sentinel's marks.
+  writer_.writeAttribute(QStringLiteral("style"),
+                         QStringLiteral("stroke:#%1;stroke-width:0.0009765625;stroke-opacity:1;"
+                                        "opacity:1;display:inline;visibility:visible")
+                             .arg(code, 6, 16, QLatin1Char('0')));
   writer_.writeEndElement();
 }
 

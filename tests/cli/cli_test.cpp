@@ -22,7 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
+struct CliRun {
   int exitCode = -1;
   std::string out, err;
   std::vector<std::string> lines() const {
@@ -55,14 +55,14 @@ class Cli : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
 
   // Runs `fivebar args...` with `input` on stdin.
-  Run run(const std::vector<std::string>& args, const std::string& input = "") {
+  CliRun run(const std::vector<std::string>& args, const std::string& input = "") {
     std::ofstream(dir_ / "stdin") << input;
     std::string cmd = quote(FIVEBAR_CLI);
     for (const std::string& a : args) cmd += " " + quote(a);
     cmd += " <" + quote((dir_ / "stdin").string()) + " >" + quote((dir_ / "stdout").string()) +
            " 2>" + quote((dir_ / "stderr").string());
     const int status = std::system(cmd.c_str());
-    Run r;
+    CliRun r;
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     r.out = slurp(dir_ / "stdout");
     r.err = slurp(dir_ / "stderr");
@@ -116,7 +116,7 @@ TEST_F(Cli, IkThenFkReturnsThePointsInEveryMode) {
         std::snprintf(buf, sizeof buf, "%.12f,%.12f\n", q.x(), q.y());
         in += buf;
       }
-      const Run ik = run({"ik", "--machine", file, "--mode", std::string(toString(mode))}, in);
+      const CliRun ik = run({"ik", "--machine", file, "--mode", std::string(toString(mode))}, in);
       ASSERT_EQ(ik.exitCode, 0) << ik.err;
       const auto angles = ik.lines();
       ASSERT_EQ(angles.size(), points[a].size());
@@ -125,7 +125,7 @@ TEST_F(Cli, IkThenFkReturnsThePointsInEveryMode) {
         const auto [t1, t2] = parsePair(line);
         EXPECT_TRUE(t1 > -180.0 && t1 <= 180.0 && t2 > -180.0 && t2 <= 180.0) << line;
       }
-      const Run fk = run({"fk", "--machine", file, "--assembly", a == 0 ? "+" : "-"}, ik.out);
+      const CliRun fk = run({"fk", "--machine", file, "--assembly", a == 0 ? "+" : "-"}, ik.out);
       ASSERT_EQ(fk.exitCode, 0) << fk.err;
       const auto xy = fk.lines();
       ASSERT_EQ(xy.size(), points[a].size());
@@ -148,7 +148,7 @@ TEST_F(Cli, IkAnglesAreNormalisedAndMatchTheCore) {
   std::snprintf(line, sizeof line, "%.15f,%.15f\n", fk.p.x(), fk.p.y());
   const Pose pose = makePose(g, {kPi, radFromDeg(60.0)}, fk.p);
   const WorkingMode mode = workingModeOf(g, pose);
-  const Run r = run({"ik", "--machine", "hoang2015", "--mode", std::string(toString(mode))}, line);
+  const CliRun r = run({"ik", "--machine", "hoang2015", "--mode", std::string(toString(mode))}, line);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto [t1, t2] = parsePair(r.lines().at(0));
   EXPECT_NEAR(t1, 180.0, 1e-7) << r.out;
@@ -157,7 +157,7 @@ TEST_F(Cli, IkAnglesAreNormalisedAndMatchTheCore) {
 }
 
 TEST_F(Cli, UnreachableInputsSayUnreachable) {
-  const Run ik = run({"ik", "--machine", "hoang2015", "--mode", "++"}, "1000,0\n0,150\n0,0\n");
+  const CliRun ik = run({"ik", "--machine", "hoang2015", "--mode", "++"}, "1000,0\n0,150\n0,0\n");
   ASSERT_EQ(ik.exitCode, 0) << ik.err;
   const auto lines = ik.lines();
   ASSERT_EQ(lines.size(), 3u);
@@ -165,39 +165,39 @@ TEST_F(Cli, UnreachableInputsSayUnreachable) {
   EXPECT_TRUE(std::regex_match(lines[1], kNineDecimals)) << lines[1];
   EXPECT_EQ(lines[2], "unreachable");  // |P - Mi| = 125 < |a - b| = 130
   // dai2022 with both arms pointing outward: the elbows are 450 mm apart, b1 + b2 = 270.
-  const Run fk = run({"fk", "--machine", "dai2022"}, "180,0\n90,90\n");
+  const CliRun fk = run({"fk", "--machine", "dai2022"}, "180,0\n90,90\n");
   ASSERT_EQ(fk.exitCode, 0) << fk.err;
   EXPECT_EQ(fk.lines().at(0), "unreachable");
   EXPECT_TRUE(std::regex_match(fk.lines().at(1), kNineDecimals));
 }
 
 TEST_F(Cli, MalformedLinesNameTheLineNumber) {
-  const Run r = run({"ik", "--machine", "hoang2015"}, "0,150\n\n0;150\n");
+  const CliRun r = run({"ik", "--machine", "hoang2015"}, "0,150\n\n0;150\n");
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("stdin line 2: expected x,y"), std::string::npos) << r.err;
   EXPECT_EQ(r.lines().size(), 1u);  // the good line before it was answered
-  const Run fk = run({"fk", "--machine", "hoang2015"}, "90,90\n90,abc\n");
+  const CliRun fk = run({"fk", "--machine", "hoang2015"}, "90,90\n90,abc\n");
   EXPECT_EQ(fk.exitCode, 1);
   EXPECT_NE(fk.err.find("stdin line 2: expected theta1,theta2"), std::string::npos) << fk.err;
-  const Run inf = run({"ik", "--machine", "hoang2015"}, "nan,1\n");
+  const CliRun inf = run({"ik", "--machine", "hoang2015"}, "nan,1\n");
   EXPECT_NE(inf.err.find("stdin line 1"), std::string::npos) << inf.err;
 }
 
 TEST_F(Cli, BadOptionsAndMachinesAreNamed) {
-  const Run unknown = run({"ik", "--machine", "hoang2016"});
+  const CliRun unknown = run({"ik", "--machine", "hoang2016"});
   EXPECT_NE(unknown.exitCode, 0);
   EXPECT_NE(unknown.err.find("hoang2016"), std::string::npos) << unknown.err;
   for (const std::string& n : presetNames()) EXPECT_NE(unknown.err.find(n), std::string::npos);
-  const Run option = run({"fk", "--machine", "dai2022", "--speed", "3"});
+  const CliRun option = run({"fk", "--machine", "dai2022", "--speed", "3"});
   EXPECT_EQ(option.exitCode, 2);
   EXPECT_NE(option.err.find("unknown option --speed"), std::string::npos) << option.err;
-  const Run mode = run({"ik", "--machine", "dai2022", "--mode", "+*"});
+  const CliRun mode = run({"ik", "--machine", "dai2022", "--mode", "+*"});
   EXPECT_EQ(mode.exitCode, 2);
   EXPECT_NE(mode.err.find("'+*'"), std::string::npos) << mode.err;
-  const Run missing = run({"ik"});
+  const CliRun missing = run({"ik"});
   EXPECT_EQ(missing.exitCode, 2);
   EXPECT_NE(missing.err.find("--machine"), std::string::npos) << missing.err;
-  const Run noFile = run({"fk", "--machine", path("none.json").string()});
+  const CliRun noFile = run({"fk", "--machine", path("none.json").string()});
   EXPECT_EQ(noFile.exitCode, 1);
   EXPECT_NE(noFile.err.find("none.json"), std::string::npos) << noFile.err;
 }
@@ -208,7 +208,7 @@ TEST_F(Cli, ProfileCheckReportsEachIssueWithFileAndField) {
   j["motors"]["stepsPerDegree1"] = 10;
   const std::string bad = path("bad.json").string();
   std::ofstream(bad) << j.dump(2);
-  const Run r = run({"profile", "check", bad});
+  const CliRun r = run({"profile", "check", bad});
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.out.find(bad + ": geometry.a1: geometry.a1 must be positive, got -3"),
             std::string::npos) << r.out;
@@ -216,25 +216,25 @@ TEST_F(Cli, ProfileCheckReportsEachIssueWithFileAndField) {
 
   const std::string broken = path("broken.json").string();
   std::ofstream(broken) << "{\n  \"schema\": \"fivebar-profile\"\n  \"version\": 1\n}\n";
-  const Run b = run({"profile", "check", broken});
+  const CliRun b = run({"profile", "check", broken});
   EXPECT_EQ(b.exitCode, 1);
   EXPECT_NE(b.out.find(broken + ":3:"), std::string::npos) << b.out;
 
-  const Run shown = run({"profile", "show", "dai2022"});
+  const CliRun shown = run({"profile", "show", "dai2022"});
   ASSERT_EQ(shown.exitCode, 0) << shown.err;
   const std::string good = path("good.json").string();
   std::ofstream(good) << shown.out;
-  const Run ok = run({"profile", "check", good});
+  const CliRun ok = run({"profile", "check", good});
   EXPECT_EQ(ok.exitCode, 0) << ok.out;
   EXPECT_EQ(nlohmann::json::parse(shown.out)["geometry"]["a1"], 135.0);
-  const Run sub = run({"profile", "frobnicate"});
+  const CliRun sub = run({"profile", "frobnicate"});
   EXPECT_EQ(sub.exitCode, 2);
   EXPECT_NE(sub.err.find("frobnicate"), std::string::npos) << sub.err;
 }
 
 TEST_F(Cli, WorkspaceReportsAreasAndRectangle) {
   const std::string json = path("ws.json").string();
-  const Run r = run({"workspace", "--machine", "hoang2015", "--mode", "++", "--cells", "200",
+  const CliRun r = run({"workspace", "--machine", "hoang2015", "--mode", "++", "--cells", "200",
                      "--aspect", "110:90", "--json", json});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("reachable area:"), std::string::npos) << r.out;
@@ -245,14 +245,14 @@ TEST_F(Cli, WorkspaceReportsAreasAndRectangle) {
   EXPECT_LE(j["singularityFreeAreaMm2"].get<double>(), j["reachableAreaMm2"].get<double>());
   EXPECT_GE(j["largestRectangle"]["widthMm"].get<double>(), 110.0);
   EXPECT_GE(j["largestRectangle"]["heightMm"].get<double>(), 90.0);
-  const Run bad = run({"workspace", "--machine", "hoang2015", "--cells", "ten"});
+  const CliRun bad = run({"workspace", "--machine", "hoang2015", "--cells", "ten"});
   EXPECT_EQ(bad.exitCode, 2);
   EXPECT_NE(bad.err.find("--cells"), std::string::npos) << bad.err;
 }
 
 TEST_F(Cli, WorkspacePngIsWrittenOrExplainedUnavailable) {
   const std::string png = path("ws.png").string();
-  const Run r = run({"workspace", "--machine", "article5r", "--cells", "128", "--png", png});
+  const CliRun r = run({"workspace", "--machine", "article5r", "--cells", "128", "--png", png});
 #ifdef FIVEBAR_CLI_HAS_PNG
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const std::string bytes = slurp(png);

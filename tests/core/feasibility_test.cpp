@@ -212,7 +212,11 @@ TEST(Feasibility, HundredThousandPointsAreFast) {
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   EXPECT_TRUE(r.feasible) << r.summary();
   EXPECT_EQ(r.pointsChecked, 100000u);
-  EXPECT_LT(s, 1.0);  // loose for CI; the figure is in docs/performance
+#ifdef NDEBUG  // timing only means something in an optimised build
+  EXPECT_LT(s, 1.0);  // loose for a loaded CI machine; the figure is in docs/performance
+#else
+  (void)s;
+#endif
 }
 
 }  // namespace

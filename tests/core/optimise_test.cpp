@@ -174,7 +174,9 @@ TEST(Optimise, HundredThousandStrokesWithinBudget) {
   const OptimiseResult r = optimise(in, pr, WorkingMode::PlusPlus, o);
   EXPECT_EQ(r.strokes.size(), in.size());
   EXPECT_LT(r.report.travelAfterS, 0.1 * r.report.travelBeforeS);
+#ifdef NDEBUG  // timing only means something in an optimised build
   EXPECT_LT(r.report.seconds, 3.0);  // loose for a loaded CI machine; figures in docs/performance
+#endif
 }
 
 }  // namespace

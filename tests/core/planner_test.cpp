@@ -134,7 +134,9 @@ TEST_F(PlannerTest, ToolSequenceIsConsistentAndTravelsAreSafe) {
   EXPECT_GE(pauses, 1);  // the second layer asks for a pen change
   // Layer speed override: the red layer draws at most 15 mm/s.
   for (const JobMove& m : r.job.moves)
-    if (m.kind == JobMoveKind::Draw && m.layerIndex == 1) EXPECT_LE(m.feedMmPerS, 15.0 * (1 + 1e-9));
+    if (m.kind == JobMoveKind::Draw && m.layerIndex == 1) {
+      EXPECT_LE(m.feedMmPerS, 15.0 * (1 + 1e-9));
+    }
 }
 
 TEST_F(PlannerTest, AtPutsTheBoundingBoxCentreThere) {
@@ -161,7 +163,9 @@ TEST_F(PlannerTest, FitWithoutAtStaysInTheSingularityFreeRegion) {
   auto rng = test::rng();
   const Drawing d = randomDrawing(rng, 8);
   PlanOptions o;
+  o.flatteningToleranceMm = 0.0;  // the polylines are the geometry: the fit may enlarge them
   const PlanResult r = planJob(d, p, o);
+  EXPECT_GT(r.placementScale, 1.0);  // 80 x 60 mm fitted into maker-plotter's rectangle
   ASSERT_TRUE(r.ok()) << r.message;
   EXPECT_GE(r.report.minSingularityMarginDeg, degFromRad(p.typeIIMarginRad) - 1e-9);
 }

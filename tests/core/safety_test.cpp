@@ -161,6 +161,39 @@ TEST(Safety, RandomMovesAgreeWithDenseSampling) {
   }
 }
 
+TEST(Safety, PathCheckAgreesWithMoveByMoveChecks) {
+  auto rng = test::rng();
+  std::uniform_real_distribution<double> angle(-kPi, kPi), delta(-0.15, 0.15);
+  const MachineProfile pr = profileFor(kAsymmetric);
+  int failing = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    std::vector<JointAngles> poses{{angle(rng), angle(rng)}};
+    for (int i = 0; i < 30; ++i)
+      poses.push_back({poses.back().theta1 + delta(rng), poses.back().theta2 + delta(rng)});
+    const PathCheck path = checkJointPath(pr, poses);
+    // Expected, move by move: a move is reported when its start pose is fine and the move
+    // fails, or (start already bad) when its end pose is bad; pose 0 on its own.
+    std::vector<std::pair<std::size_t, MoveStatus>> expected;
+    if (!checkPose(pr, poses[0]).ok()) expected.push_back({0, checkPose(pr, poses[0]).status});
+    for (std::size_t i = 0; i + 1 < poses.size(); ++i) {
+      if (checkPose(pr, poses[i]).ok()) {
+        const MoveCheck c = checkJointMove(pr, poses[i], poses[i + 1]);
+        if (!c.ok()) expected.push_back({i, c.status});
+      } else if (!checkPose(pr, poses[i + 1]).ok()) {
+        expected.push_back({i, checkPose(pr, poses[i + 1]).status});
+      }
+    }
+    ASSERT_EQ(path.problems.size(), expected.size());
+    for (std::size_t k = 0; k < expected.size(); ++k) {
+      EXPECT_EQ(path.problems[k].move, expected[k].first);
+      EXPECT_EQ(path.problems[k].check.status, expected[k].second);
+    }
+    failing += path.ok() ? 0 : 1;
+  }
+  EXPECT_GT(failing, 0);
+  EXPECT_LT(failing, 40);
+}
+
 TEST(Safety, JointLimitsAreCheckedOnContinuousAngles) {
   MachineProfile pr = profileFor(kDai);
   // A safe pose with theta1 around 180 deg.

@@ -105,10 +105,10 @@ TEST_F(Isolation, CancelFromTheProgressCallbackStopsTheWorker) {
   EXPECT_LT(elapsed, 5.0);
 }
 
-// About 4 MB of plotter paths: long enough for several progress reports.
+// About 2 MB of plotter paths: long enough for several progress reports.
 QByteArray bigDocument() {
   QByteArray body;
-  for (int i = 0; body.size() < (4 << 20); ++i) {
+  for (int i = 0; body.size() < (2 << 20); ++i) {
     const QByteArray a = QByteArray::number(i % 190), b = QByteArray::number((i * 7) % 190);
     body += "<path d=\"M" + a + " " + b + " L" + b + " " + a + " C10 10 " + a + " 5 " + b + " 20\"/>\n";
   }

@@ -161,10 +161,12 @@ TEST(ImportStructure, NestedSvgMapsItsViewBox) {
   EXPECT_NEAR((p[0].points[1] - Vec2(30, 20)).norm(), 0.0, kExact);
 }
 
-TEST(ImportStructure, DisplayNoneIsSkipped) {
+TEST(ImportStructure, DisplayNoneHiddenAndTransparentAreSkipped) {
   const ImportResult r = importText(page(
       "<path d=\"M0 0 L1 1\" display=\"none\"" + std::string(kStroke) + "/>"
       "<g style=\"display:none\"><path d=\"M0 0 L2 2\"" + kStroke + "/></g>"
+      "<path d=\"M0 0 L3 3\" visibility=\"hidden\"" + kStroke + "/>"
+      "<path d=\"M0 0 L4 4\" stroke-opacity=\"0\" stroke=\"black\" fill=\"none\"/>"
       "<path d=\"M5 5 L6 6\"" + kStroke + "/>"));
   ASSERT_TRUE(r.ok()) << r.message;
   const auto p = allPaths(r.drawing);
@@ -188,6 +190,20 @@ TEST(ImportStructure, FillOnlyShapesAreOutlinedOrSkippedAndFilledStrokedOnce) {
   ASSERT_TRUE(skipped.ok()) << skipped.message;
   ASSERT_EQ(test::pathCount(skipped.drawing), 1u);
   EXPECT_EQ(skipped.drawing.layers[0].rgb, 0x0000ffu);
+}
+
+TEST(ImportStructure, StyleSheetsCannotTurnLayerMarkersIntoLines) {
+  const ImportResult r = importText(page(
+      "<style>line { stroke-width: 3px; stroke: #ff0000 } * { opacity: 1 }</style>"
+      "<g id=\"a\"><path d=\"M1 1 L2 2\"" + std::string(kStroke) + "/></g>"
+      "<g id=\"b\"><line x1=\"5\" y1=\"5\" x2=\"9\" y2=\"5\"/></g>"));
+  ASSERT_TRUE(r.ok()) << r.message;
+  ASSERT_EQ(r.drawing.layers.size(), 2u);
+  EXPECT_EQ(r.drawing.layers[0].id, "a");
+  EXPECT_EQ(r.drawing.layers[0].paths.size(), 1u);
+  ASSERT_EQ(r.drawing.layers[1].paths.size(), 1u);  // the document's own line, styled red
+  EXPECT_EQ(r.drawing.layers[1].rgb, 0xff0000u);
+  EXPECT_NEAR((r.drawing.layers[1].paths[0].points[0] - Vec2(5, 45)).norm(), 0.0, kExact);
 }
 
 TEST(ImportStructure, TextBecomesOutlines) {
