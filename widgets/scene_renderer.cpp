@@ -1,5 +1,7 @@
 #include "widgets/scene_renderer.hpp"
 
+#include <cmath>
+
 namespace fivebar::widgets {
 namespace {
 // The cached image extends this share of the viewport beyond each edge.
@@ -13,8 +15,12 @@ bool SceneRenderer::covers(const ViewTransform& view) const {
 
 void SceneRenderer::renderFull(const ViewTransform& view, const ScenePaintOptions& options) {
   const QSizeF vp = view.viewportPx();
-  const QSize size(static_cast<int>(vp.width() * (1.0 + 2.0 * kMarginShare)) + 1,
-                   static_cast<int>(vp.height() * (1.0 + 2.0 * kMarginShare)) + 1);
+  // Whole-pixel margins keep the image's pixel grid aligned with the viewport's, so a pan by
+  // whole pixels blits without resampling.
+  const int marginX = static_cast<int>(std::ceil(vp.width() * kMarginShare));
+  const int marginY = static_cast<int>(std::ceil(vp.height() * kMarginShare));
+  const QSize size(static_cast<int>(std::ceil(vp.width())) + 2 * marginX,
+                   static_cast<int>(std::ceil(vp.height())) + 2 * marginY);
   imageView_ = ViewTransform(view.centerMm(), view.pxPerMm(), QSizeF(size));
   if (image_.size() != size) image_ = QImage(size, QImage::Format_ARGB32_Premultiplied);
   image_.fill(Qt::transparent);

@@ -336,7 +336,9 @@ void Sanitizer::startElement() {
   }
   const QXmlStreamAttributes attributes = cleanAttributes(tag);
   if (!checkNumbers(tag, attributes)) return;
-  if (depth_ == 2 && isRendering(tag)) {
+  // The sentinel colour holds index + 1 in 24 bits; later elements share the last marker.
+  constexpr std::size_t kMaxMarkers = 0xFFFFFE;
+  if (depth_ == 2 && isRendering(tag) && result_.topLevel.size() < kMaxMarkers) {
     const int index = static_cast<int>(result_.topLevel.size());
     TopLevelElement top;
     top.tag = tag;

@@ -58,7 +58,10 @@ class SimProcess {
     return nlohmann::json::parse(in, nullptr, false);
   }
   bool running() { return process_.state() != QProcess::NotRunning; }
-  bool waitExit(int ms) { return process_.waitForFinished(ms); }
+  // True once the process has exited (waitForFinished alone is false for an exited process).
+  bool waitExit(int ms) {
+    return process_.state() == QProcess::NotRunning || process_.waitForFinished(ms);
+  }
 
  private:
   QString pty_;

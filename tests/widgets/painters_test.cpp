@@ -78,9 +78,11 @@ TEST(MachinePainter, DrawsLinksAtThePose) {
   const auto at = [&](const Vec2& v) {
     return view.widgetFromMachine(QPointF(v.x(), v.y())).toPoint();
   };
-  // Motors, the middle of each link and the pen are painted; a far corner is not.
-  EXPECT_TRUE(differsFrom(image, at(g.motor1()), Qt::white));
-  EXPECT_TRUE(differsFrom(image, at(g.motor2()), Qt::white));
+  // Motors (their body around the white joint), the middle of each link and the pen are
+  // painted; a far corner is not.
+  const QPoint belowJoint(0, 10);
+  EXPECT_TRUE(differsFrom(image, at(g.motor1()) + belowJoint, Qt::white));
+  EXPECT_TRUE(differsFrom(image, at(g.motor2()) + belowJoint, Qt::white));
   EXPECT_TRUE(differsFrom(image, at(0.5 * (g.motor1() + pose.R1)), Qt::white));
   EXPECT_TRUE(differsFrom(image, at(0.5 * (pose.R2 + pose.P)), Qt::white));
   EXPECT_TRUE(differsFrom(image, at(pose.P), Qt::white));
