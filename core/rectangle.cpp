@@ -148,6 +148,39 @@ double bisectGrowth(const Geometry& g, const WorkspaceSettings& s, WorkingMode m
   return lo;
 }
 
+// Fixed shape: alternately centre r in the free room along x and y (the room towards each side
+// found by bisection) and scale it about its centre as far as it stays safe.
+Rect growWithAspect(const WorkspaceMap& map, const Geometry& g, const WorkspaceSettings& s, Rect r) {
+  const GridSpec& grid = map.grid;
+  const double c = grid.cellMm, spacing = 0.5 * c;
+  for (int pass = 0; pass < 3; ++pass) {
+    double room[4];
+    for (int side = 0; side < 4; ++side) {
+      const double limit = std::max(0.0, std::min(2.0 * c, roomToGridEdge(grid, r, side)));
+      room[side] = bisectGrowth(g, s, map.mode, r, limit, spacing,
+                                [&](double t) { return moved(r, side, t); });
+    }
+    const double dx = 0.5 * (room[1] - room[0]), dy = 0.5 * (room[3] - room[2]);
+    r = {r.xMin + dx, r.yMin + dy, r.xMax + dx, r.yMax + dy};
+    double limit = 2.0 * c;
+    for (int side = 0; side < 4; ++side) limit = std::min(limit, 2.0 * roomToGridEdge(grid, r, side));
+    const double base = std::max(r.width(), 1e-9);
+    const double f = bisectGrowth(g, s, map.mode, r, std::max(0.0, limit) / base, spacing,
+                                  [&](double t) { return scaledAboutCentre(r, 1.0 + t); });
+    r = scaledAboutCentre(r, 1.0 + f);
+  }
+  auto edgesSafe = [&] {
+    for (int side = 0; side < 4; ++side)
+      if (!edgeIsSafe(g, s, map.mode, r, side)) return false;
+    return true;
+  };
+  for (int k = 0; k < 8 && !edgesSafe(); ++k)
+    r = scaledAboutCentre(r, 1.0 - 0.25 * c / std::max(std::min(r.width(), r.height()), 1e-9));
+  const double shorter = std::max(std::min(r.width(), r.height()), 1e-9);
+  const double inset = std::min(kRectangleInsetMm, 0.25 * shorter);
+  return scaledAboutCentre(r, 1.0 - 2.0 * inset / shorter);
+}
+
 }  // namespace
 
 bool rectangleIsSafe(const Geometry& g, const WorkspaceSettings& s, WorkingMode mode,
@@ -175,16 +208,7 @@ std::optional<Rect> largestSafeRectangle(const WorkspaceMap& map, const Geometry
   if (r.width() < 0.0 || r.height() < 0.0 || !rectangleIsSafe(g, s, map.mode, r, spacing))
     return std::nullopt;
   // Grow towards the true boundary, to a small fraction of a cell.
-  if (aspectRatio > 0.0) {
-    const double base = std::max(r.width(), 1e-9);
-    double room = 2.0 * c;
-    for (int side = 0; side < 4; ++side) room = std::min(room, 2.0 * roomToGridEdge(grid, r, side));
-    const double f = bisectGrowth(g, s, map.mode, r, std::max(0.0, room) / base, spacing,
-                                  [&](double t) { return scaledAboutCentre(r, 1.0 + t); });
-    r = scaledAboutCentre(r, 1.0 + f);
-    const double inset = std::min(kRectangleInsetMm, 0.25 * std::min(r.width(), r.height()));
-    return scaledAboutCentre(r, 1.0 - 2.0 * inset / std::max(std::min(r.width(), r.height()), 1e-9));
-  }
+  if (aspectRatio > 0.0) return growWithAspect(map, g, s, r);
   for (int pass = 0; pass < 2; ++pass) {
     for (int side = 0; side < 4; ++side) {
       const double room = std::max(0.0, std::min(c, roomToGridEdge(grid, r, side)));

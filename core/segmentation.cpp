@@ -11,8 +11,8 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Points closer than this (mm) are one point: duplicates add nothing but zero-length moves.
 constexpr double kDuplicatePointMm = 1e-9;
 // FK samples along a joint-linear move: one per this much motor rotation, at least kMinSamples.
-constexpr double kSampleStepRad = 0.25 * kPi / 180.0;
-constexpr int kMinSamples = 6;
+constexpr double kSampleStepRad = 0.5 * kPi / 180.0;
+constexpr int kMinSamples = 4;
 constexpr int kMaxSamples = 512;
 // Bisection steps that refine a partial piece after halving found one that fits.
 constexpr int kRefineSteps = 3;

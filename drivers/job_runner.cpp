@@ -124,7 +124,7 @@ void JobRunner::onAck(const grbl::Ack& ack) {
       const int fileLine = idx ? job_.lines[*idx].fileLine : 0;
       pause((idx ? "line " + std::to_string(fileLine) : std::string("resume preamble line")) +
             " '" + ack.line + "' was rejected: " + grbl::describeError(ack.errorCode) +
-            " The job is paused; stop it, fix the line if needed, and resume.");
+            " The job was paused; after the stop, fix the line if needed and resume.");
     }
   } else if (isMotion(seq)) {
     pendingMotions_.emplace_back(seq, ++ackedBlocks_);
@@ -186,8 +186,8 @@ void JobRunner::onAlarm(int code, const std::vector<std::uint64_t>& /*lostIds*/)
   forgetInFlight();
   if (state_ == RunState::Running || state_ == RunState::Holding || state_ == RunState::Held ||
       state_ == RunState::Paused)
-    pause(grbl::describeAlarm(code) + " The job is paused; stop it (soft reset and unlock), "
-          "check the machine, then resume from the last drawn point.");
+    pause(grbl::describeAlarm(code) + " The job was paused; stopping it (soft reset, unlock) "
+          "leaves the machine ready to resume from the last drawn point.");
 }
 
 void JobRunner::onReset(const std::string& version, const std::vector<std::uint64_t>& /*lost*/,
@@ -203,7 +203,7 @@ void JobRunner::onReset(const std::string& version, const std::vector<std::uint6
   if (state_ == RunState::Running || state_ == RunState::Holding || state_ == RunState::Held) {
     sawAlarm_ = true;  // no feed hold: the board has just restarted
     pause("the board reset unexpectedly (Grbl " + version + "); lines it had not executed were "
-          "lost. Stop the job, check the machine, then resume from the last drawn point.");
+          "lost. Check the machine, then resume from the last drawn point.");
   }
 }
 

@@ -580,4 +580,799 @@
         <translation>Zu öffnende SVG-Zeichnung.</translation>
     </message>
 </context>
+<context>
+    <name>fivebar::widgets::ConsolePanel</name>
+    <message>
+        <source>Lines sent to and received from the machine appear here.</source>
+        <translation>Hier erscheinen die an die Maschine gesendeten und von ihr empfangenen Zeilen.</translation>
+    </message>
+    <message>
+        <source>G-code or $ command, e.g. $$ or G0 X10 Y20</source>
+        <translation>G-Code oder $-Befehl, z. B. $$ oder G0 X10 Y20</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Senden</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::GoToTool</name>
+    <message>
+        <source>Connect the machine first: its position is not known.</source>
+        <translation>Verbinden Sie zuerst die Maschine: ihre Position ist nicht bekannt.</translation>
+    </message>
+    <message>
+        <source>Go to %1, %2 mm? The dashed path is the pen&apos;s travel (%3 checked moves).</source>
+        <translation>Nach %1, %2 mm fahren? Der gestrichelte Weg ist die Fahrt des Stifts (%3 geprüfte Bewegungen).</translation>
+    </message>
+    <message>
+        <source>Cannot go there: %1</source>
+        <translation>Dorthin kann nicht gefahren werden: %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::JogController</name>
+    <message>
+        <source>Jog refused: the machine is not connected, not idle, or a job is running.</source>
+        <translation>Verfahren abgelehnt: Die Maschine ist nicht verbunden, nicht bereit, oder ein Auftrag läuft.</translation>
+    </message>
+    <message>
+        <source>Jog stopped at the last safe point: %1</source>
+        <translation>Verfahren am letzten sicheren Punkt angehalten: %1</translation>
+    </message>
+    <message>
+        <source>Jog refused: %1</source>
+        <translation>Verfahren abgelehnt: %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::JogPanel</name>
+    <message>
+        <source>Jog the pen %1 mm in X, %2 mm in Y per step; hold for a continuous jog</source>
+        <translation>Stift pro Schritt um %1 mm in X und %2 mm in Y verfahren; gedrückt halten für fortlaufendes Verfahren</translation>
+    </message>
+    <message>
+        <source>Go to…</source>
+        <translation>Anfahren…</translation>
+    </message>
+    <message>
+        <source>Click the canvas to choose where the pen goes; the path is shown before you confirm.</source>
+        <translation>Klicken Sie auf die Zeichenfläche, um das Ziel des Stifts zu wählen; der Weg wird vor der Bestätigung angezeigt.</translation>
+    </message>
+    <message>
+        <source>Turn motor %1 clockwise by one step</source>
+        <translation>Motor %1 um einen Schritt im Uhrzeigersinn drehen</translation>
+    </message>
+    <message>
+        <source>Turn motor %1 counter-clockwise by one step</source>
+        <translation>Motor %1 um einen Schritt gegen den Uhrzeigersinn drehen</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <source>mm / °</source>
+        <translation>mm / °</translation>
+    </message>
+    <message>
+        <source> mm/s</source>
+        <translation> mm/s</translation>
+    </message>
+    <message>
+        <source>Pen up</source>
+        <translation>Stift hoch</translation>
+    </message>
+    <message>
+        <source>Lift the pen (Page Up on the canvas)</source>
+        <translation>Stift anheben (Bild auf auf der Zeichenfläche)</translation>
+    </message>
+    <message>
+        <source>Pen down</source>
+        <translation>Stift ab</translation>
+    </message>
+    <message>
+        <source>Lower the pen (Page Down on the canvas)</source>
+        <translation>Stift absenken (Bild ab auf der Zeichenfläche)</translation>
+    </message>
+    <message>
+        <source>Go</source>
+        <translation>Los</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Jog</source>
+        <translation>Verfahren</translation>
+    </message>
+    <message>
+        <source>Click the canvas where the pen should go.</source>
+        <translation>Klicken Sie auf die Stelle der Zeichenfläche, die der Stift anfahren soll.</translation>
+    </message>
+    <message>
+        <source>Home ($H)</source>
+        <translation>Referenzfahrt ($H)</translation>
+    </message>
+    <message>
+        <source>Set reference pose</source>
+        <translation>Referenzpose setzen</translation>
+    </message>
+    <message>
+        <source>Run the homing cycle</source>
+        <translation>Referenzfahrt ausführen</translation>
+    </message>
+    <message>
+        <source>Declare that the machine now stands at the profile&apos;s home pose</source>
+        <translation>Festlegen, dass die Maschine jetzt in der Ausgangspose des Profils steht</translation>
+    </message>
+    <message>
+        <source>Speed of XY jogs</source>
+        <translation>Geschwindigkeit beim XY-Verfahren</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachineBanner</name>
+    <message>
+        <source>Reset</source>
+        <translation>Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Soft reset (Ctrl-X): stops everything; the machine keeps its position unless it was moving.</source>
+        <translation>Soft-Reset (Strg-X): hält alles an; die Maschine behält ihre Position, sofern sie sich nicht bewegt hat.</translation>
+    </message>
+    <message>
+        <source>Unlock ($X)</source>
+        <translation>Entsperren ($X)</translation>
+    </message>
+    <message>
+        <source>Leave the alarm state without homing. Only when you know the machine stands where the studio shows it.</source>
+        <translation>Den Alarmzustand ohne Referenzfahrt verlassen. Nur wenn Sie wissen, dass die Maschine dort steht, wo das Studio sie zeigt.</translation>
+    </message>
+    <message>
+        <source>Dismiss</source>
+        <translation>Schließen</translation>
+    </message>
+    <message>
+        <source>Alarm %1: the machine stopped</source>
+        <translation>Alarm %1: Die Maschine hat angehalten</translation>
+    </message>
+    <message>
+        <source>Alarm: the machine is locked</source>
+        <translation>Alarm: Die Maschine ist gesperrt</translation>
+    </message>
+    <message>
+        <source>Error %1: a command was rejected</source>
+        <translation>Fehler %1: Ein Befehl wurde abgelehnt</translation>
+    </message>
+    <message>
+        <source>The board waits for a reset first: press Reset, then Unlock.</source>
+        <translation>Die Steuerung erwartet zuerst ein Zurücksetzen: Drücken Sie Zurücksetzen, dann Entsperren.</translation>
+    </message>
+    <message>
+        <source>Home ($H)</source>
+        <translation>Referenzfahrt ($H)</translation>
+    </message>
+    <message>
+        <source>Set reference pose</source>
+        <translation>Referenzpose setzen</translation>
+    </message>
+    <message>
+        <source>Run the homing cycle; the machine moves to its switches.</source>
+        <translation>Referenzfahrt ausführen; die Maschine fährt an ihre Endschalter.</translation>
+    </message>
+    <message>
+        <source>Declare that the machine now stands at the profile&apos;s home pose (G10 L20).</source>
+        <translation>Festlegen, dass die Maschine jetzt in der Ausgangspose des Profils steht (G10 L20).</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachinePanel</name>
+    <message>
+        <source>Idle</source>
+        <translation>Bereit</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Läuft</translation>
+    </message>
+    <message>
+        <source>On hold</source>
+        <translation>Angehalten</translation>
+    </message>
+    <message>
+        <source>Jogging</source>
+        <translation>Verfährt</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <source>Door open</source>
+        <translation>Tür offen</translation>
+    </message>
+    <message>
+        <source>Check mode</source>
+        <translation>Prüfmodus</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>Referenzfahrt</translation>
+    </message>
+    <message>
+        <source>Sleeping</source>
+        <translation>Ruhezustand</translation>
+    </message>
+    <message>
+        <source>Unknown</source>
+        <translation>Unbekannt</translation>
+    </message>
+    <message>
+        <source>Refresh</source>
+        <translation>Aktualisieren</translation>
+    </message>
+    <message>
+        <source>List the serial ports again</source>
+        <translation>Serielle Schnittstellen neu auflisten</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Verbinden</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>Trennen</translation>
+    </message>
+    <message>
+        <source>Baud</source>
+        <translation>Baud</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>Verbindung</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Pen (X, Y)</source>
+        <translation>Stift (X, Y)</translation>
+    </message>
+    <message>
+        <source>Motors (θ1, θ2)</source>
+        <translation>Motoren (θ1, θ2)</translation>
+    </message>
+    <message>
+        <source>Buffers</source>
+        <translation>Puffer</translation>
+    </message>
+    <message>
+        <source>Simulated machine (built in)</source>
+        <translation>Simulierte Maschine (eingebaut)</translation>
+    </message>
+    <message>
+        <source>Cannot connect</source>
+        <translation>Verbindung nicht möglich</translation>
+    </message>
+    <message>
+        <source>Connected to %1</source>
+        <translation>Verbunden mit %1</translation>
+    </message>
+    <message>
+        <source>Not connected</source>
+        <translation>Nicht verbunden</translation>
+    </message>
+    <message>
+        <source>Offline</source>
+        <translation>Offline</translation>
+    </message>
+    <message>
+        <source>%1, %2 mm</source>
+        <translation>%1, %2 mm</translation>
+    </message>
+    <message>
+        <source>%1°, %2°</source>
+        <translation>%1°, %2°</translation>
+    </message>
+    <message>
+        <source>planner %1 of %2 blocks free, RX %3 of %4 bytes free</source>
+        <translation>Planer %1 von %2 Blöcken frei, RX %3 von %4 Bytes frei</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachineSession</name>
+    <message>
+        <source>Cannot open %1.</source>
+        <translation>%1 kann nicht geöffnet werden.</translation>
+    </message>
+    <message>
+        <source>Connected to %1.</source>
+        <translation>Verbunden mit %1.</translation>
+    </message>
+    <message>
+        <source>Disconnected.</source>
+        <translation>Getrennt.</translation>
+    </message>
+    <message>
+        <source>Not connected: %1 was not sent.</source>
+        <translation>Nicht verbunden: %1 wurde nicht gesendet.</translation>
+    </message>
+    <message>
+        <source>Not sent (%1): %2</source>
+        <translation>Nicht gesendet (%1): %2</translation>
+    </message>
+    <message>
+        <source>A job is running: %1 was not sent.</source>
+        <translation>Ein Auftrag läuft: %1 wurde nicht gesendet.</translation>
+    </message>
+    <message>
+        <source>Jog refused: the machine is not idle, not connected or a job is running.</source>
+        <translation>Verfahren abgelehnt: Die Maschine ist nicht bereit, nicht verbunden, oder ein Auftrag läuft.</translation>
+    </message>
+    <message>
+        <source>%1 (jog in %2 checked moves)</source>
+        <translation>%1 (Verfahren in %2 geprüften Bewegungen)</translation>
+    </message>
+    <message>
+        <source>[soft reset]</source>
+        <translation>[Soft-Reset]</translation>
+    </message>
+    <message>
+        <source>[feed hold]</source>
+        <translation>[Vorschub halten]</translation>
+    </message>
+    <message>
+        <source>[cycle start]</source>
+        <translation>[Zyklusstart]</translation>
+    </message>
+    <message>
+        <source>%1 was rejected: %2</source>
+        <translation>%1 wurde abgelehnt: %2</translation>
+    </message>
+    <message>
+        <source>The machine is locked (alarm state). Unlock it with $X or home it with $H once you know where it stands.</source>
+        <translation>Die Maschine ist gesperrt (Alarmzustand). Entsperren Sie sie mit $X oder führen Sie mit $H eine Referenzfahrt aus, sobald Sie wissen, wo sie steht.</translation>
+    </message>
+    <message>
+        <source>The board reset (Grbl %1).</source>
+        <translation>Die Steuerung wurde zurückgesetzt (Grbl %1).</translation>
+    </message>
+    <message>
+        <source>Connection lost: %1</source>
+        <translation>Verbindung verloren: %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachineUi</name>
+    <message>
+        <source>Machine</source>
+        <translation>Maschine</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Ausführen</translation>
+    </message>
+    <message>
+        <source>Jog</source>
+        <translation>Verfahren</translation>
+    </message>
+    <message>
+        <source>Console</source>
+        <translation>Konsole</translation>
+    </message>
+    <message>
+        <source>Machine profile</source>
+        <translation>Maschinenprofil</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::ProfileEditor</name>
+    <message>
+        <source>Load preset</source>
+        <translation>Vorlage laden</translation>
+    </message>
+    <message>
+        <source>Import…</source>
+        <translation>Importieren…</translation>
+    </message>
+    <message>
+        <source>Load a machine profile from a JSON file</source>
+        <translation>Ein Maschinenprofil aus einer JSON-Datei laden</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Exportieren…</translation>
+    </message>
+    <message>
+        <source>Save this machine profile as a JSON file</source>
+        <translation>Dieses Maschinenprofil als JSON-Datei speichern</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Maschine</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Geometry</source>
+        <translation>Geometrie</translation>
+    </message>
+    <message>
+        <source>Joint limits</source>
+        <translation>Gelenkgrenzen</translation>
+    </message>
+    <message>
+        <source>Motors</source>
+        <translation>Motoren</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <source>Motion and safety</source>
+        <translation>Bewegung und Sicherheit</translation>
+    </message>
+    <message>
+        <source>Connection and home pose</source>
+        <translation>Verbindung und Ausgangspose</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Driving link a1</source>
+        <translation>Antriebsglied a1</translation>
+    </message>
+    <message>
+        <source>Floating link b1</source>
+        <translation>Koppelglied b1</translation>
+    </message>
+    <message>
+        <source>Driving link a2</source>
+        <translation>Antriebsglied a2</translation>
+    </message>
+    <message>
+        <source>Floating link b2</source>
+        <translation>Koppelglied b2</translation>
+    </message>
+    <message>
+        <source>Motor distance w</source>
+        <translation>Motorabstand w</translation>
+    </message>
+    <message>
+        <source>Limit the motor angles</source>
+        <translation>Motorwinkel begrenzen</translation>
+    </message>
+    <message>
+        <source>θ1 minimum</source>
+        <translation>θ1 Minimum</translation>
+    </message>
+    <message>
+        <source>θ1 maximum</source>
+        <translation>θ1 Maximum</translation>
+    </message>
+    <message>
+        <source>θ2 minimum</source>
+        <translation>θ2 Minimum</translation>
+    </message>
+    <message>
+        <source>θ2 maximum</source>
+        <translation>θ2 Maximum</translation>
+    </message>
+    <message>
+        <source>Motor 1 steps per degree</source>
+        <translation>Motor 1 Schritte pro Grad</translation>
+    </message>
+    <message>
+        <source>Motor 2 steps per degree</source>
+        <translation>Motor 2 Schritte pro Grad</translation>
+    </message>
+    <message>
+        <source>Motor 1 maximum speed</source>
+        <translation>Motor 1 Höchstgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source> °/min</source>
+        <translation> °/min</translation>
+    </message>
+    <message>
+        <source>Motor 2 maximum speed</source>
+        <translation>Motor 2 Höchstgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Motor 1 acceleration</source>
+        <translation>Motor 1 Beschleunigung</translation>
+    </message>
+    <message>
+        <source> °/s²</source>
+        <translation> °/s²</translation>
+    </message>
+    <message>
+        <source>Motor 2 acceleration</source>
+        <translation>Motor 2 Beschleunigung</translation>
+    </message>
+    <message>
+        <source>Junction deviation</source>
+        <translation>Eckenabweichung</translation>
+    </message>
+    <message>
+        <source>Pen servo (M3 S / M5)</source>
+        <translation>Stift-Servo (M3 S / M5)</translation>
+    </message>
+    <message>
+        <source>Z axis</source>
+        <translation>Z-Achse</translation>
+    </message>
+    <message>
+        <source>Laser (M4 S / M5)</source>
+        <translation>Laser (M4 S / M5)</translation>
+    </message>
+    <message>
+        <source>Pen up S value</source>
+        <translation>S-Wert Stift hoch</translation>
+    </message>
+    <message>
+        <source>Pen down S value</source>
+        <translation>S-Wert Stift ab</translation>
+    </message>
+    <message>
+        <source>Pen up delay</source>
+        <translation>Wartezeit Stift hoch</translation>
+    </message>
+    <message>
+        <source>Pen down delay</source>
+        <translation>Wartezeit Stift ab</translation>
+    </message>
+    <message>
+        <source>Z up</source>
+        <translation>Z oben</translation>
+    </message>
+    <message>
+        <source>Z down</source>
+        <translation>Z unten</translation>
+    </message>
+    <message>
+        <source>Z feed</source>
+        <translation>Z-Vorschub</translation>
+    </message>
+    <message>
+        <source> mm/min</source>
+        <translation> mm/min</translation>
+    </message>
+    <message>
+        <source>Laser power S value</source>
+        <translation>S-Wert Laserleistung</translation>
+    </message>
+    <message>
+        <source>Working mode (built)</source>
+        <translation>Arbeitsmodus (Aufbau)</translation>
+    </message>
+    <message>
+        <source>Assembly mode</source>
+        <translation>Montagemodus</translation>
+    </message>
+    <message>
+        <source>Drawing speed</source>
+        <translation>Zeichengeschwindigkeit</translation>
+    </message>
+    <message>
+        <source> mm/s</source>
+        <translation> mm/s</translation>
+    </message>
+    <message>
+        <source>Travel speed</source>
+        <translation>Verfahrgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Type II singularity margin</source>
+        <translation>Abstand zur Typ-II-Singularität</translation>
+    </message>
+    <message>
+        <source>Type I singularity margin</source>
+        <translation>Abstand zur Typ-I-Singularität</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>Baudrate</translation>
+    </message>
+    <message>
+        <source>The machine has homing switches ($H)</source>
+        <translation>Die Maschine hat Referenzschalter ($H)</translation>
+    </message>
+    <message>
+        <source>Home θ1</source>
+        <translation>Ausgangspose θ1</translation>
+    </message>
+    <message>
+        <source>Home θ2</source>
+        <translation>Ausgangspose θ2</translation>
+    </message>
+    <message>
+        <source>The profile is not applied until these problems are fixed.</source>
+        <translation>Das Profil wird erst übernommen, wenn diese Probleme behoben sind.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be used:
+%2</source>
+        <translation>%1 kann nicht verwendet werden:
+%2</translation>
+    </message>
+    <message>
+        <source>Fix the profile&apos;s problems before exporting it.</source>
+        <translation>Beheben Sie die Probleme des Profils, bevor Sie es exportieren.</translation>
+    </message>
+    <message>
+        <source>Import machine profile</source>
+        <translation>Maschinenprofil importieren</translation>
+    </message>
+    <message>
+        <source>Machine profiles (*.json)</source>
+        <translation>Maschinenprofile (*.json)</translation>
+    </message>
+    <message>
+        <source>Import failed</source>
+        <translation>Import fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Export machine profile</source>
+        <translation>Maschinenprofil exportieren</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Export fehlgeschlagen</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::RunController</name>
+    <message>
+        <source>The connection was closed during the run. The progress is saved beside the job: reconnect and resume.</source>
+        <translation>Die Verbindung wurde während des Auftrags getrennt. Der Fortschritt ist neben dem Auftrag gespeichert: Verbinden Sie erneut und setzen Sie fort.</translation>
+    </message>
+    <message>
+        <source>Cannot start: connect the machine, wait until it is idle, and let the job plan first.</source>
+        <translation>Start nicht möglich: Verbinden Sie die Maschine, warten Sie, bis sie bereit ist, und lassen Sie den Auftrag zuerst planen.</translation>
+    </message>
+    <message>
+        <source>Cannot create the job folder %1.</source>
+        <translation>Der Auftragsordner %1 kann nicht angelegt werden.</translation>
+    </message>
+    <message>
+        <source>Nothing to resume: there is no saved progress beside %1.</source>
+        <translation>Nichts fortzusetzen: Neben %1 ist kein Fortschritt gespeichert.</translation>
+    </message>
+    <message>
+        <source>Resuming %1…</source>
+        <translation>%1 wird fortgesetzt…</translation>
+    </message>
+    <message>
+        <source>Running %1…</source>
+        <translation>%1 läuft…</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::RunPanel</name>
+    <message>
+        <source>Ready</source>
+        <translation>Bereit</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Läuft</translation>
+    </message>
+    <message>
+        <source>Holding…</source>
+        <translation>Hält an…</translation>
+    </message>
+    <message>
+        <source>On hold</source>
+        <translation>Angehalten</translation>
+    </message>
+    <message>
+        <source>Paused by a problem</source>
+        <translation>Wegen eines Problems pausiert</translation>
+    </message>
+    <message>
+        <source>Stopping…</source>
+        <translation>Wird gestoppt…</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Gestoppt</translation>
+    </message>
+    <message>
+        <source>Finished</source>
+        <translation>Fertig</translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation>%1 h %2 min</translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Starten</translation>
+    </message>
+    <message>
+        <source>Write the planned job as G-code and stream it to the machine</source>
+        <translation>Den geplanten Auftrag als G-Code schreiben und an die Maschine senden</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>Anhalten</translation>
+    </message>
+    <message>
+        <source>Feed hold: the machine decelerates and waits</source>
+        <translation>Vorschub halten: Die Maschine bremst ab und wartet</translation>
+    </message>
+    <message>
+        <source>Continue</source>
+        <translation>Weiter</translation>
+    </message>
+    <message>
+        <source>Continue after a hold</source>
+        <translation>Nach dem Anhalten weitermachen</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stoppen</translation>
+    </message>
+    <message>
+        <source>Stop the job: hold, reset and unlock; the progress is kept for a resume</source>
+        <translation>Auftrag stoppen: anhalten, zurücksetzen und entsperren; der Fortschritt bleibt zum Fortsetzen erhalten</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Fortsetzen</translation>
+    </message>
+    <message>
+        <source>Continue the interrupted job from its last completed pen-down point, with a safe pen-up approach</source>
+        <translation>Den unterbrochenen Auftrag ab seinem letzten fertigen Zeichenpunkt fortsetzen, mit sicherer Anfahrt bei angehobenem Stift</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Ausführen</translation>
+    </message>
+    <message>
+        <source>An interrupted run was saved (line %1 of %2 done): %3</source>
+        <translation>Ein unterbrochener Lauf wurde gespeichert (Zeile %1 von %2 erledigt): %3</translation>
+    </message>
+    <message>
+        <source>No job sent yet</source>
+        <translation>Noch kein Auftrag gesendet</translation>
+    </message>
+    <message>
+        <source>%1 of %2 lines executed</source>
+        <translation>%1 von %2 Zeilen ausgeführt</translation>
+    </message>
+    <message>
+        <source>%1 left</source>
+        <translation>noch %1</translation>
+    </message>
+</context>
 </TS>

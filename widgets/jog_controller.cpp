@@ -1,6 +1,7 @@
 #include "widgets/jog_controller.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/units.hpp"
 
@@ -84,7 +85,8 @@ void JogController::topUp() {
   if (!streaming_ || !session_.link()) return;
   if (!session_.canJog()) return;  // waiting for the machine; the stream resumes when it can
   const grbl::GrblProtocol& protocol = session_.link()->protocol();
-  while (streaming_ && protocol.linesInFlight() + protocol.linesQueued() < kLinesAhead) {
+  while (streaming_ && protocol.linesInFlight() + protocol.linesQueued() < kLinesAhead &&
+         leadS(*streaming_) < kLeadS) {
     double amount = speedMmPerS_ * kChunkS;
     if (streaming_->kind == JogDirection::Kind::Motor) amount = kMotorSpeedDegPerS * kChunkS;
     const JogPlan p = plan(*streaming_, amount);
@@ -99,6 +101,22 @@ void JogController::topUp() {
     }
   }
   if (!streaming_) streamTimer_.stop();
+}
+
+double JogController::leadS(const JogDirection& direction) const {
+  const auto reported = session_.motorAngles();
+  const auto planned = session_.jogStart();
+  if (!reported || !planned) return 0.0;
+  if (direction.kind == JogDirection::Kind::Motor) {
+    const double deltaDeg = degFromRad(std::hypot(planned->theta1 - reported->theta1,
+                                                  planned->theta2 - reported->theta2));
+    return deltaDeg / kMotorSpeedDegPerS;
+  }
+  const MachineProfile& profile = session_.profile();
+  const FkResult a = forward(profile.geometry, *reported, profile.assembly);
+  const FkResult b = forward(profile.geometry, *planned, profile.assembly);
+  if (!a.ok() || !b.ok()) return 0.0;
+  return (b.p - a.p).norm() / std::max(speedMmPerS_, 1e-6);
 }
 
 void JogController::report(const JogPlan& p) {

@@ -32,6 +32,9 @@ class JogController : public QObject {
   static constexpr int kStreamPeriodMs = 40;    // how often the continuous stream is topped up
   static constexpr double kChunkS = 0.15;       // motion time per continuous chunk
   static constexpr std::size_t kLinesAhead = 3; // jog lines kept in flight while streaming
+  // Motion planned ahead of the reported position (s at jog speed): bounds the run-on after a
+  // release, since GRBL acknowledges a jog line when it enters the planner, not when it is done.
+  static constexpr double kLeadS = 0.3;
   static constexpr double kMotorSpeedDegPerS = 20.0;
 
   explicit JogController(MachineSession& session, QObject* parent = nullptr);
@@ -55,6 +58,8 @@ class JogController : public QObject {
  private:
   JogPlan plan(const JogDirection& direction, double amount) const;
   void topUp();
+  // Seconds of motion between the reported position and the end of what was sent.
+  double leadS(const JogDirection& direction) const;
   void report(const JogPlan& plan);
 
   MachineSession& session_;

@@ -26,7 +26,10 @@ void MachineLayer::setExternalAngles(std::optional<JointAngles> angles) {
 
 void MachineLayer::refresh() {
   const MachineProfile& profile = doc_.profile();
-  if (external_) {
+  // A running (or scrubbed) simulation wins; otherwise the connected machine's pose.
+  const bool simulating =
+      sim_.trajectory() != nullptr && (sim_.playing() || sim_.timeS() > 0.0);
+  if (external_ && !simulating) {
     pose_ = poseOf(profile, *external_);
   } else if (sim_.trajectory() != nullptr) {
     const TrajectorySample s = sim_.sample();
@@ -39,7 +42,8 @@ void MachineLayer::refresh() {
 
 void MachineLayer::paint(QPainter& painter, const ViewTransform& view) {
   if (!pose_) return;
-  paintMachine(painter, view.widgetFromMachine(), doc_.profile().geometry, *pose_);
+  // Slightly see-through so the drawing under the arms stays readable.
+  paintMachine(painter, view.widgetFromMachine(), doc_.profile().geometry, *pose_, kOpacity);
 }
 
 }  // namespace fivebar::widgets

@@ -1,5 +1,6 @@
-// Canvas layer showing the machine to scale at its current pose: the simulation's pose while a
-// trajectory is loaded, otherwise the profile's home pose. The pose is recomputed when its
+// Canvas layer showing the machine to scale at its current pose: the simulation's pose while it
+// runs or is scrubbed, else the connected machine's reported pose (setExternalAngles), else the
+// simulation's start pose or the profile's home pose. The pose is recomputed when its
 // source changes (not in paint); paint only draws it.
 #pragma once
 
@@ -16,6 +17,8 @@ namespace fivebar::widgets {
 class MachineLayer : public QObject, public CanvasLayer {
   Q_OBJECT
  public:
+  static constexpr double kOpacity = 0.85;
+
   MachineLayer(const StudioDocument& doc, const SimulationController& sim,
                QObject* parent = nullptr);
 

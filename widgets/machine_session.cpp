@@ -79,6 +79,7 @@ void MachineSession::teardown(const QString& reason) {
   simulated_ = nullptr;
   userLines_.clear();
   jogLines_.clear();
+  cancelAfter_.clear();
   jogEnd_.reset();
   settleReports_ = 0;
   settleBlocked_ = false;
@@ -183,6 +184,7 @@ void MachineSession::cancelJog() {
     jogLines_.erase(id);
   }
   link_->protocol().sendRealtime(grbl::realtime::kJogCancel);
+  cancelAfter_ = jogLines_;
   // Where the machine stops is known only from the next reports: no jog until then.
   jogEnd_.reset();
   settleBlocked_ = true;
@@ -265,6 +267,8 @@ void MachineSession::onAck(const grbl::Ack& ack) {
   }
   const bool user = userLines_.erase(ack.id) > 0;
   const bool jog = jogLines_.erase(ack.id) > 0;
+  if (cancelAfter_.erase(ack.id) > 0 && cancelAfter_.empty() && link_)
+    link_->protocol().sendRealtime(grbl::realtime::kJogCancel);
   if (!user) return;
   if (ack.ok()) {
     if (problem_.kind == MachineProblem::Kind::Error) setProblem({});
@@ -304,6 +308,7 @@ void MachineSession::onAlarm(int code, const std::vector<std::uint64_t>& lostIds
     userLines_.erase(id);
     jogLines_.erase(id);
   }
+  cancelAfter_.clear();
   jogEnd_.reset();
   settleBlocked_ = false;
   settleReports_ = 0;
@@ -324,6 +329,7 @@ void MachineSession::onReset(const std::string& version, const std::vector<std::
       jogLines_.erase(id);
     }
   }
+  cancelAfter_.clear();
   jogEnd_.reset();
   settleBlocked_ = false;
   settleReports_ = 0;

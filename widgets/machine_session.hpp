@@ -118,6 +118,9 @@ class MachineSession : public QObject, private grbl::ProtocolListener {
   SimulatedTransport* simulated_ = nullptr;
   std::set<std::uint64_t> userLines_;  // ids of lines sent by the user (errors go to the banner)
   std::set<std::uint64_t> jogLines_;  // lines of jog / go-to plans not yet answered
+  // Jog lines already in the board's buffer at a cancel: once they are answered they have entered
+  // the planner, and a second cancel stops them (GRBL's 0x85 does not flush its serial buffer).
+  std::set<std::uint64_t> cancelAfter_;
   std::optional<JointAngles> jogEnd_;  // end of the jog that may still be running
   int settleReports_ = 0;     // quiet reports still needed before jogEnd_ is forgotten
   bool settleBlocked_ = false;  // after a cancel / new reference: no jog until settled

@@ -59,7 +59,7 @@ ModePanel::ModePanel(StudioDocument& doc, WorkspaceLayer& layer,
   region_ = new QCheckBox(tr("Reachable and singularity-free regions"), overlayBox);
   typeII_ = new QCheckBox(tr("Type II singularity curves"), overlayBox);
   rectangleBox_ = new QCheckBox(tr("Largest singularity-free rectangle"), overlayBox);
-  legendBox_ = new QCheckBox(tr("Legend and scale"), overlayBox);
+  legendBox_ = new QCheckBox(tr("Workspace legend"), overlayBox);
   map_ = new QComboBox(overlayBox);
   map_->addItem(tr("None"), static_cast<int>(MapKind::None));
   map_->addItem(tr("Transmission angle"), static_cast<int>(MapKind::Transmission));

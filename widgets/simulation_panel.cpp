@@ -8,6 +8,7 @@
 #include <QStyle>
 #include <QToolButton>
 #include <QVBoxLayout>
+#include <cmath>
 
 #include "core/singularity.hpp"
 #include "core/units.hpp"
@@ -16,6 +17,12 @@
 #include "widgets/studio_document.hpp"
 
 namespace fivebar::widgets {
+namespace {
+// A value as printed with `decimals` decimals, without a "-0.00".
+double printable(double value, int decimals) {
+  return std::abs(value) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : value;
+}
+}  // namespace
 
 SimulationPanel::SimulationPanel(SimulationController& sim, const StudioDocument& doc,
                                  QWidget* parent)
@@ -102,8 +109,8 @@ void SimulationPanel::showTime() {
          "<tr><td>Type II margin:</td><td><b>%9 deg</b></td></tr></table>")
           .arg(degFromRad(s.q.theta1), 0, 'f', 2)
           .arg(degFromRad(s.q.theta2), 0, 'f', 2)
-          .arg(s.p.x(), 0, 'f', 2)
-          .arg(s.p.y(), 0, 'f', 2)
+          .arg(printable(s.p.x(), 2), 0, 'f', 2)
+          .arg(printable(s.p.y(), 2), 0, 'f', 2)
           .arg(s.penDown ? tr("down") : tr("up"))
           .arg(degFromRad(mu.mu), 0, 'f', 1)
           .arg(degFromRad(mu.mu1), 0, 'f', 1)

@@ -18,7 +18,7 @@ struct WorkspaceOverlays {
   bool regions = true;     // reachable / singularity-free regions and the margin band
   bool typeII = true;      // type II singularity curves
   bool rectangle = true;   // largest singularity-free rectangle
-  bool legend = true;
+  bool legend = false;     // the workspace legend card (the map's colour bar is always shown)
   MapKind map = MapKind::None;
 };
 
@@ -28,7 +28,11 @@ class WorkspaceLayer : public QObject, public CanvasLayer {
   WorkspaceLayer(const StudioDocument& doc, const WorkspaceCache& cache,
                  QObject* parent = nullptr);
 
+  // Regions, curves, rectangle and map (legends excluded: see paintLegends).
   void paint(QPainter& painter, const ViewTransform& view) override;
+  // The legend (top right), the map's colour bar and the scale bar (bottom right); painted by a
+  // WorkspaceLegendLayer above every other layer so nothing hides them.
+  void paintLegends(QPainter& painter, const ViewTransform& view);
   const WorkspaceOverlays& overlays() const { return overlays_; }
 
  public slots:
@@ -47,6 +51,21 @@ class WorkspaceLayer : public QObject, public CanvasLayer {
   MapKind imageKind_ = MapKind::None;
   QImage image_;
   MapScale imageScale_;
+  // Cached legend card: valid for this set and mode.
+  const WorkspaceSet* legendSet_ = nullptr;
+  WorkingMode legendMode_ = WorkingMode::PlusPlus;
+  QImage legendImage_;
+};
+
+class WorkspaceLegendLayer : public CanvasLayer {
+ public:
+  explicit WorkspaceLegendLayer(WorkspaceLayer& layer) : layer_(layer) {}
+  void paint(QPainter& painter, const ViewTransform& view) override {
+    layer_.paintLegends(painter, view);
+  }
+
+ private:
+  WorkspaceLayer& layer_;
 };
 
 }  // namespace fivebar::widgets

@@ -47,7 +47,18 @@ int main(int argc, char** argv) {
       QApplication::translate("main", "Save a picture of the window once the job is planned, "
                                       "then quit."),
       QStringLiteral("FILE.png"));
-  parser.addOptions({demo, machine, lang, screenshot});
+  const QCommandLineOption overlay(
+      QStringLiteral("overlay"),
+      QApplication::translate("main", "With --screenshot: show the workspace legend "
+                                      "(legend) or a map (transmission, conditioning or "
+                                      "resolution)."),
+      QStringLiteral("MAP"));
+  const QCommandLineOption atTime(
+      QStringLiteral("at-time"),
+      QApplication::translate("main", "With --screenshot: simulation position as a fraction "
+                                      "of the job (0 to 1)."),
+      QStringLiteral("FRACTION"));
+  parser.addOptions({demo, machine, lang, screenshot, overlay, atTime});
   parser.addPositionalArgument(QStringLiteral("drawing"),
                                QApplication::translate("main", "SVG drawing to open."),
                                QStringLiteral("[FILE.svg]"));
@@ -87,8 +98,15 @@ int main(int argc, char** argv) {
   }
   if (parser.isSet(screenshot)) {
     window.importer().setInteractive(false);
-    fivebar::studio::screenshotWhenReady(window, parser.value(screenshot), !files.isEmpty() ||
-                                                                               parser.isSet(demo));
+    const QStringList overlayValue = parser.values(overlay);
+    const QString atTimeValue = parser.value(atTime);
+    fivebar::studio::screenshotWhenReady(
+        window, parser.value(screenshot), !files.isEmpty() || parser.isSet(demo),
+        [&window, overlayValue, atTimeValue] {
+          const QString problem =
+              fivebar::studio::applyViewOptions(window, overlayValue, atTimeValue);
+          if (!problem.isEmpty()) std::fprintf(stderr, "fivebar-studio: %s\n", qPrintable(problem));
+        });
   }
   return QApplication::exec();
 }

@@ -40,6 +40,8 @@ namespace {
 const char* const kGeometryKey = "window/geometry";
 const char* const kStateKey = "window/state";
 constexpr int kStateVersion = 1;
+constexpr int kBottomDockHeightPx = 130;
+constexpr int kSideDockWidthPx = 340;
 }  // namespace
 
 MainWindow::MainWindow(const MachineProfile& profile, QWidget* parent) : QMainWindow(parent) {
@@ -100,6 +102,8 @@ void MainWindow::createCanvas() {
   canvas_->addLayer(workspaceLayer_);
   canvas_->addLayer(jobLayer_);
   canvas_->addLayer(machineLayer_);
+  legendLayer_ = std::make_unique<WorkspaceLegendLayer>(*workspaceLayer_);
+  canvas_->addLayer(legendLayer_.get());
   canvas_->setTool(placementTool_);
   const auto repaint = [this] { canvas_->update(); };
   connect(workspaceLayer_, &WorkspaceLayer::changed, this, repaint);
@@ -116,6 +120,8 @@ QDockWidget* MainWindow::addDock(QWidget* panel, const QString& title, const QSt
   scroll->setWidget(panel);
   scroll->setWidgetResizable(true);
   scroll->setFrameShape(QFrame::NoFrame);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  scroll->setMinimumWidth(std::min(panel->sizeHint().width(), kSideDockWidthPx) + 16);
   dock->setWidget(scroll);
   addDockWidget(area, dock);
   return dock;
@@ -125,8 +131,11 @@ QDockWidget* MainWindow::addMachinePanel(QWidget* panel, const QString& title,
                                          const QString& objectName, Qt::DockWidgetArea area) {
   QDockWidget* dock = addDock(panel, title, objectName, area);
   machineMenu_->addAction(dock->toggleViewAction());
-  // Re-apply the remembered layout so the new dock lands where the user left it.
-  restoreState(QSettings().value(kStateKey).toByteArray(), kStateVersion);
+  // Default layout: machine panels join the studio's tab groups on their side (the remembered
+  // layout, restored at the end of construction, overrides this).
+  if (area == Qt::RightDockWidgetArea && rightTabs_ != nullptr) tabifyDockWidget(rightTabs_, dock);
+  if (area == Qt::LeftDockWidgetArea && leftTabs_ != nullptr) tabifyDockWidget(leftTabs_, dock);
+  if (area == Qt::BottomDockWidgetArea) resizeDocks({dock}, {kBottomDockHeightPx}, Qt::Vertical);
   return dock;
 }
 
@@ -144,9 +153,9 @@ void MainWindow::createDocks() {
   auto* sim = addDock(new SimulationPanel(*simulation_, *doc_, this), tr("Simulation"),
                       QStringLiteral("dockSimulation"), Qt::RightDockWidgetArea);
   tabifyDockWidget(placement, layers);
-  placement->raise();
-  resizeDocks({mode, preview}, {300, 330}, Qt::Horizontal);
-  (void)sim;
+  resizeDocks({mode, placement, preview, sim}, {330, 420, 430, 330}, Qt::Vertical);
+  leftTabs_ = layers;
+  rightTabs_ = sim;
 }
 
 void MainWindow::createMenus() {
@@ -254,8 +263,19 @@ void MainWindow::fitView() {
 
 void MainWindow::restoreLayout() {
   QSettings settings;
-  if (!restoreGeometry(settings.value(kGeometryKey).toByteArray())) resize(1500, 940);
-  restoreState(settings.value(kStateKey).toByteArray(), kStateVersion);
+  if (!restoreGeometry(settings.value(kGeometryKey).toByteArray())) resize(1560, 960);
+  if (!restoreState(settings.value(kStateKey).toByteArray(), kStateVersion)) {
+    // First start: the studio's own panels in front of their tab groups, docks wide enough
+    // for their forms.
+    for (const char* name : {"dockPlacement", "dockSimulation"}) {
+      if (auto* dock = findChild<QDockWidget*>(QLatin1String(name))) dock->raise();
+    }
+    auto* left = findChild<QDockWidget*>(QStringLiteral("dockWorkspace"));
+    auto* right = findChild<QDockWidget*>(QStringLiteral("dockPreview"));
+    if (left != nullptr && right != nullptr) {
+      resizeDocks({left, right}, {kSideDockWidthPx, kSideDockWidthPx}, Qt::Horizontal);
+    }
+  }
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

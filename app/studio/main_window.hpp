@@ -6,6 +6,7 @@
 #pragma once
 
 #include <QMainWindow>
+#include <memory>
 
 #include "core/profile.hpp"
 
@@ -24,6 +25,7 @@ class SimulationController;
 class StudioDocument;
 class WorkspaceCache;
 class WorkspaceLayer;
+class WorkspaceLegendLayer;
 }  // namespace fivebar::widgets
 
 namespace fivebar::studio {
@@ -42,6 +44,7 @@ class MainWindow : public QMainWindow {
   widgets::WorkspaceCache& workspace() { return *workspace_; }
   widgets::MachineLayer& machineLayer() { return *machineLayer_; }
   widgets::JobLayer& jobLayer() { return *jobLayer_; }
+  widgets::WorkspaceLayer& workspaceLayer() { return *workspaceLayer_; }
 
   // The machine side's place in the window: the panel goes into a dock (restored with the
   // others), its toggle into the Machine menu.
@@ -76,6 +79,9 @@ class MainWindow : public QMainWindow {
   widgets::JobLayer* jobLayer_ = nullptr;
   widgets::MachineLayer* machineLayer_ = nullptr;
   widgets::PlacementTool* placementTool_ = nullptr;
+  std::unique_ptr<widgets::WorkspaceLegendLayer> legendLayer_;
+  QDockWidget* leftTabs_ = nullptr;   // tab group machine panels join on each side
+  QDockWidget* rightTabs_ = nullptr;
   QMenu* viewMenu_ = nullptr;
   QMenu* recentMenu_ = nullptr;
   QMenu* machineMenu_ = nullptr;

@@ -11,7 +11,9 @@
 #include "widgets/import_controller.hpp"
 #include "widgets/preview_controller.hpp"
 #include "widgets/studio_document.hpp"
+#include "widgets/simulation_controller.hpp"
 #include "widgets/workspace_cache.hpp"
+#include "widgets/workspace_layer.hpp"
 
 namespace fivebar::studio {
 namespace {
@@ -32,7 +34,8 @@ std::optional<MachineProfile> resolveProfile(const std::string& presetOrPath, st
   return std::nullopt;
 }
 
-void screenshotWhenReady(MainWindow& window, const QString& path, bool expectDrawing) {
+void screenshotWhenReady(MainWindow& window, const QString& path, bool expectDrawing,
+                         std::function<void()> beforeGrab) {
   auto* poll = new QTimer(&window);
   auto clock = std::make_shared<QElapsedTimer>();
   clock->start();
@@ -41,11 +44,13 @@ void screenshotWhenReady(MainWindow& window, const QString& path, bool expectDra
                    [&window, planned] {
                      if (window.document().hasDrawing()) *planned = true;
                    });
-  QObject::connect(poll, &QTimer::timeout, &window, [&window, poll, clock, planned, path] {
+  QObject::connect(poll, &QTimer::timeout, &window, [&window, poll, clock, planned, path,
+                                                     beforeGrab] {
     const bool ready = window.workspace().current() != nullptr && !window.importer().busy() &&
                        *planned && !window.preview().busy();
     if (!ready && clock->elapsed() < kGiveUpMs) return;
     poll->stop();
+    if (beforeGrab) beforeGrab();
     QTimer::singleShot(kSettleMs, &window, [&window, path, ready] {
       const bool saved = window.grab().save(path, "PNG");
       if (!saved) std::fprintf(stderr, "fivebar-studio: cannot write %s\n", qPrintable(path));
@@ -54,6 +59,28 @@ void screenshotWhenReady(MainWindow& window, const QString& path, bool expectDra
     });
   });
   poll->start(kPollMs);
+}
+
+QString applyViewOptions(MainWindow& window, const QStringList& overlays, const QString& atTime) {
+  for (const QString& overlay : overlays) {
+    widgets::WorkspaceOverlays o = window.workspaceLayer().overlays();
+    if (overlay == QLatin1String("legend")) o.legend = true;
+    else if (overlay == QLatin1String("transmission")) o.map = widgets::MapKind::Transmission;
+    else if (overlay == QLatin1String("conditioning")) o.map = widgets::MapKind::Conditioning;
+    else if (overlay == QLatin1String("resolution")) o.map = widgets::MapKind::Resolution;
+    else return QStringLiteral("--overlay: expected legend, transmission, conditioning or resolution, got '%1'").arg(overlay);
+    window.workspaceLayer().setOverlays(o);
+  }
+  if (!atTime.isEmpty()) {
+    bool ok = false;
+    const double f = atTime.toDouble(&ok);
+    if (!ok || f < 0.0 || f > 1.0) {
+      return QStringLiteral("--at-time: expected a fraction from 0 to 1, got '%1'").arg(atTime);
+    }
+    widgets::SimulationController& sim = window.simulation();
+    sim.setTimeS(f * sim.durationS());
+  }
+  return {};
 }
 
 }  // namespace fivebar::studio

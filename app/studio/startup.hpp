@@ -3,6 +3,8 @@
 #pragma once
 
 #include <QString>
+#include <QStringList>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -16,8 +18,15 @@ class MainWindow;
 std::optional<MachineProfile> resolveProfile(const std::string& presetOrPath, std::string& error);
 
 // Once the workspace is computed, the import (if `expectDrawing`) has finished and the first
-// plan is done, grabs the window into `path` (PNG) and quits the application with 0, or with 1
-// when saving fails or nothing got ready within the time limit.
-void screenshotWhenReady(MainWindow& window, const QString& path, bool expectDrawing);
+// plan is done, calls `beforeGrab` (to set up what the picture shows), grabs the window into
+// `path` (PNG) and quits the application with 0, or with 1 when saving fails or nothing got
+// ready within the time limit.
+void screenshotWhenReady(MainWindow& window, const QString& path, bool expectDrawing,
+                         std::function<void()> beforeGrab = {});
+
+// Documentation helpers for screenshots: "--overlay legend|transmission|conditioning|resolution"
+// (repeatable) shows the workspace legend or that map; "--at-time F" puts the simulation at fraction F (0..1) of the job. Returns
+// an error message for a bad value, empty when fine.
+QString applyViewOptions(MainWindow& window, const QStringList& overlays, const QString& atTime);
 
 }  // namespace fivebar::studio

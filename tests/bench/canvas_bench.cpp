@@ -154,7 +154,10 @@ void BM_Renderer_Pan(benchmark::State& state) {
   int frame = 0;
   for (auto _ : state) {
     const auto t0 = std::chrono::steady_clock::now();
-    view.panByPx(QPointF((frame++ % 40 < 20) ? 37.0 : -37.0, 11.0 * ((frame % 7) - 3)));
+    const double dx = (frame % 40 < 20) ? 37.0 : -37.0;
+    const double dy = 11.0 * ((frame % 7) - 3);
+    ++frame;
+    view.panByPx(QPointF(dx, dy));
     image.fill(Qt::white);
     QPainter painter(&image);
     renderer.paint(painter, view, scene, options, 1);

@@ -71,7 +71,10 @@ double streamLines(const QString& pty, const std::vector<std::string>& lines, in
   fivebar::SerialTransport port(pty, int(kBaud));
   fivebar::MachineLink link(port, 0.0, 1);
   QString error;
-  if (!port.open(&error)) return -1.0;
+  if (!port.open(&error)) {
+    std::fprintf(stderr, "%s\n", error.toStdString().c_str());
+    return -1.0;
+  }
   AckCounter counter;
   link.protocol().addListener(&counter);
   link.protocol().setRxBufferBytes(budgetBytes);
@@ -90,6 +93,8 @@ double streamLines(const QString& pty, const std::vector<std::string>& lines, in
   const double s = double(clock.nsecsElapsed()) * 1e-9;
   link.protocol().removeListener(&counter);
   port.close();
+  if (counter.acks != int(lines.size()) || counter.errors != 0)
+    std::fprintf(stderr, "%d of %zu lines answered, %d errors\n", counter.acks, lines.size(), counter.errors);
   return counter.acks == int(lines.size()) && counter.errors == 0 ? s : -1.0;
 }
 

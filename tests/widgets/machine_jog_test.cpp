@@ -5,7 +5,6 @@
 #include <QLabel>
 #include <QPushButton>
 #include <cmath>
-#include <cstdio>
 #include <random>
 
 #include "core/safety.hpp"
@@ -160,11 +159,8 @@ TEST(JogPanel, HoldingStreamsAContinuousJogAndReleaseStopsIt) {
   emit down->pressed();
   waitUntil([] { return false; }, 1200);  // hold for 1.2 s
   EXPECT_TRUE(panel.controller().streaming());
-  const Vec2 atRelease = *rig.session.penMm();
-  std::printf("DEBUG before %.2f release %.2f inflight %zu queued %zu\n", before.y(), atRelease.y(), rig.session.link()->protocol().linesInFlight(), rig.session.link()->protocol().linesQueued());
   emit down->released();
   ASSERT_TRUE(rig.waitIdle());
-  std::printf("DEBUG stopped %.2f\n", rig.session.penMm()->y());
   const Vec2 stopped = *rig.session.penMm();
   // Far more than one 0.1 mm step, at most the hold time at speed plus a short overshoot.
   EXPECT_LT(stopped.y() - before.y(), -5.0);

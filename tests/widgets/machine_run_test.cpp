@@ -25,7 +25,7 @@ namespace {
 using test::MachineRig;
 using test::waitUntil;
 
-// A small drawing: a 30 mm square and a triangle, work frame.
+// A small drawing: a 30 mm square, a triangle and a circle, work frame.
 Drawing testDrawing() {
   Drawing d;
   d.source = "machine-run-test";
@@ -38,7 +38,13 @@ Drawing testDrawing() {
   Polyline triangle;
   triangle.points = {Vec2(5, 5), Vec2(25, 5), Vec2(15, 22)};
   triangle.closed = true;
-  layer.paths = {square, triangle};
+  Polyline circle;  // 90 segments: enough lines that a fault can strike mid-job
+  for (int i = 0; i < 90; ++i) {
+    const double a = 2.0 * kPi * i / 90.0;
+    circle.points.push_back(Vec2(15.0 + 12.0 * std::cos(a), 15.0 + 12.0 * std::sin(a)));
+  }
+  circle.closed = true;
+  layer.paths = {square, triangle, circle};
   d.layers.push_back(layer);
   return d;
 }
@@ -72,7 +78,10 @@ TEST(RunPanel, RunsThePlannedJobToCompletionAndColoursWhatIsDone) {
   panel.startButton()->click();
   ASSERT_TRUE(rig.run.running()) << rig.run.lastMessage().toStdString();
   EXPECT_TRUE(rig.session.jobActive());
-  EXPECT_TRUE(panel.holdButton()->isEnabled());
+  EXPECT_TRUE(panel.stopButton()->isEnabled());
+  // Hold becomes available once the stream has synchronised and runs.
+  EXPECT_TRUE(waitUntil([&] { return panel.holdButton()->isEnabled(); }, 10000));
+  EXPECT_EQ(rig.run.state(), job::RunState::Running);
   EXPECT_FALSE(panel.startButton()->isEnabled());
   ASSERT_GT(layer.totalSegments(), 0u);
   // Half-way the canvas shows part of the job as done, not all of it.
@@ -104,8 +113,8 @@ TEST(RunPanel, RunsThePlannedJobToCompletionAndColoursWhatIsDone) {
 TEST(RunPanel, ResumesAfterTheLinkDropsAlsoAfterARestart) {
   RunRig rig;
   ASSERT_TRUE(rig.planned()) << rig.preview.result().message.toStdString();
-  // The link drops after 40 lines: the run ends, its progress is saved beside the job.
-  ASSERT_TRUE(rig.connect(25.0, sim::Fault{sim::FaultKind::DropAfter, 40}));
+  // The link drops after 60 lines: the run ends, its progress is saved beside the job.
+  ASSERT_TRUE(rig.connect(25.0, sim::Fault{sim::FaultKind::DropAfter, 60}));
   ASSERT_TRUE(rig.waitIdle());
   ASSERT_TRUE(rig.run.start());
   ASSERT_TRUE(waitUntil([&] { return !rig.run.running(); }, 45000));
