@@ -123,7 +123,18 @@ class Segmenter {
     const size_t last = pts_.size() - 1;
     size_t lo = i_ + 1, hi = last + 1, step = 1;
     double loDev = firstDeviation;
-    while (lo < last) {
+    // The previous merge's span predicts this one: try it first, then gallop or bisect.
+    if (lastSpan_ > 1 && i_ + lastSpan_ <= last) {
+      const double d = deviationTo(i_ + lastSpan_);
+      if (d <= opt_.deviationBudgetMm) {
+        lo = i_ + lastSpan_;
+        loDev = d;
+        step = lastSpan_;
+      } else {
+        hi = i_ + lastSpan_;
+      }
+    }
+    while (hi > last && lo < last) {
       const size_t cand = std::min(last, lo + step);
       const double d = deviationTo(cand);
       if (d > opt_.deviationBudgetMm) { hi = cand; break; }
@@ -139,6 +150,7 @@ class Segmenter {
     double length = (pts_[i_ + 1] - cur_).norm();
     for (size_t k = i_ + 1; k < lo; ++k) length += (pts_[k + 1] - pts_[k]).norm();
     push(qs_[lo], pts_[lo], loDev, length);
+    lastSpan_ = lo - i_;
     i_ = lo;
     hintMm_ = kInfinity;
     return true;
@@ -209,6 +221,7 @@ class Segmenter {
   JointAngles qcur_;
   std::vector<Vec2> chain_;
   double hintMm_ = kInfinity;  // length of the last split piece (mm), infinite after a vertex
+  size_t lastSpan_ = 0;        // input segments the last merged move covered
 };
 
 }  // namespace

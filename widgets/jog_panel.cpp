@@ -3,7 +3,6 @@
 #include <QButtonGroup>
 #include <QDoubleSpinBox>
 #include <QGridLayout>
-#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QKeyEvent>
 #include <QLabel>
@@ -55,7 +54,7 @@ JogPanel::JogPanel(MachineSession& session, QWidget* parent)
                              "before you confirm."));
   grid->addWidget(goToButton_, 1, 1);
 
-  auto* motorRow = new QGridLayout;
+  auto* motorRow = new QHBoxLayout;
   for (int motor = 1; motor <= 2; ++motor) {
     for (int s = 0; s < 2; ++s) {
       const int sign = s == 0 ? -1 : 1;
@@ -63,7 +62,7 @@ JogPanel::JogPanel(MachineSession& session, QWidget* parent)
       const QString tip = sign < 0 ? tr("Turn motor %1 clockwise by one step").arg(motor)
                                    : tr("Turn motor %1 counter-clockwise by one step").arg(motor);
       motors_[motor - 1][s] = makeJogButton(text, tip, JogDirection::motorJog(motor, sign));
-      motorRow->addWidget(motors_[motor - 1][s], motor - 1, s);
+      motorRow->addWidget(motors_[motor - 1][s]);
     }
   }
 
@@ -102,28 +101,26 @@ JogPanel::JogPanel(MachineSession& session, QWidget* parent)
   confirmText_->setWordWrap(true);
   confirm_ = new QPushButton(tr("Go"), confirmRow_);
   cancel_ = new QPushButton(tr("Cancel"), confirmRow_);
-  auto* confirmLayout = new QHBoxLayout(confirmRow_);
+  auto* confirmLayout = new QGridLayout(confirmRow_);
   confirmLayout->setContentsMargins(0, 0, 0, 0);
-  confirmLayout->addWidget(confirmText_, 1);
-  confirmLayout->addWidget(confirm_);
-  confirmLayout->addWidget(cancel_);
+  confirmLayout->addWidget(confirmText_, 0, 0, 1, 2);
+  confirmLayout->addWidget(confirm_, 1, 0);
+  confirmLayout->addWidget(cancel_, 1, 1);
   confirmRow_->hide();
 
   message_ = new QLabel(this);
   message_->setWordWrap(true);
   message_->setStyleSheet(QStringLiteral("color: #b45309"));
 
-  auto* box = new QGroupBox(tr("Jog"), this);
-  auto* boxLayout = new QVBoxLayout(box);
-  boxLayout->addLayout(stepRow);
-  boxLayout->addLayout(grid);
-  boxLayout->addLayout(motorRow);
-  boxLayout->addLayout(toolRow);
-  boxLayout->addWidget(confirmRow_);
-  boxLayout->addWidget(message_);
+  // The go-to question and the messages come first, where they are seen without scrolling.
   auto* layout = new QVBoxLayout(this);
-  layout->setContentsMargins(4, 4, 4, 4);
-  layout->addWidget(box);
+  layout->setContentsMargins(8, 8, 8, 8);
+  layout->addLayout(stepRow);
+  layout->addWidget(confirmRow_);
+  layout->addWidget(message_);
+  layout->addLayout(grid);
+  layout->addLayout(motorRow);
+  layout->addLayout(toolRow);
   layout->addStretch(1);
 
   moveWidgets_.insert(moveWidgets_.end(), {goToButton_, home_, penUp_, penDown_, speed_});
@@ -210,6 +207,7 @@ void JogPanel::setGoToActive(bool active) {
 }
 
 void JogPanel::onPicked(bool ok, const QString& text) {
+  message_->clear();
   confirmText_->setText(text);
   confirm_->setEnabled(ok);
   confirmRow_->show();

@@ -1,6 +1,6 @@
 #include "widgets/machine_banner.hpp"
 
-#include <QHBoxLayout>
+#include <QGridLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QVBoxLayout>
@@ -27,12 +27,12 @@ MachineBanner::MachineBanner(MachineSession& session, QWidget* parent)
   home_ = new QPushButton(this);
   dismiss_ = new QPushButton(tr("Dismiss"), this);
 
-  auto* buttons = new QHBoxLayout;
-  buttons->addWidget(reset_);
-  buttons->addWidget(unlock_);
-  buttons->addWidget(home_);
-  buttons->addStretch(1);
-  buttons->addWidget(dismiss_);
+  // Two columns, so the banner fits a narrow dock.
+  auto* buttons = new QGridLayout;
+  buttons->addWidget(reset_, 0, 0);
+  buttons->addWidget(unlock_, 0, 1);
+  buttons->addWidget(home_, 1, 0, 1, 2);
+  buttons->addWidget(dismiss_, 2, 1);
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(8, 6, 8, 6);
   layout->addWidget(title_);

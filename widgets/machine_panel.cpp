@@ -68,18 +68,21 @@ MachinePanel::MachinePanel(MachineSession& session, QWidget* parent)
   link_ = new QLabel(this);
   link_->setWordWrap(true);
 
+  ports_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  ports_->setMinimumContentsLength(12);
   auto* portRow = new QHBoxLayout;
   portRow->addWidget(ports_, 1);
   portRow->addWidget(refresh_);
+  auto* baudRow = new QHBoxLayout;
+  baudRow->addWidget(new QLabel(tr("Baud"), this));
+  baudRow->addWidget(baud_, 1);
   auto* buttonRow = new QHBoxLayout;
-  buttonRow->addWidget(new QLabel(tr("Baud"), this));
-  buttonRow->addWidget(baud_);
-  buttonRow->addStretch(1);
   buttonRow->addWidget(connect_);
   buttonRow->addWidget(disconnect_);
   auto* connection = new QGroupBox(tr("Connection"), this);
   auto* connectionLayout = new QVBoxLayout(connection);
   connectionLayout->addLayout(portRow);
+  connectionLayout->addLayout(baudRow);
   connectionLayout->addLayout(buttonRow);
   connectionLayout->addWidget(link_);
 
@@ -95,6 +98,7 @@ MachinePanel::MachinePanel(MachineSession& session, QWidget* parent)
   angles_ = new QLabel(this);
   buffers_ = new QLabel(this);
   for (QLabel* l : {xy_, angles_, buffers_}) l->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  buffers_->setWordWrap(true);
   auto* status = new QGroupBox(tr("Status"), this);
   auto* form = new QFormLayout(status);
   form->addRow(tr("State"), state_);
@@ -104,8 +108,8 @@ MachinePanel::MachinePanel(MachineSession& session, QWidget* parent)
 
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(4, 4, 4, 4);
+  layout->addWidget(banner_);  // first: a problem is the first thing to see
   layout->addWidget(connection);
-  layout->addWidget(banner_);
   layout->addWidget(status);
   layout->addStretch(1);
 

@@ -346,7 +346,8 @@ void MachineSession::onReset(const std::string& version, const std::vector<std::
 
 void MachineSession::onLine(const grbl::ParsedLine& line) {
   using grbl::LineKind;
-  if (line.kind == LineKind::Status || line.kind == LineKind::Empty) return;
+  // Status reports are shown by the panel; the banner is logged by onReset.
+  if (line.kind == LineKind::Status || line.kind == LineKind::Empty || line.kind == LineKind::Banner) return;
   if (line.kind == LineKind::Ok && jobActive_) return;
   const bool bad = line.kind == LineKind::Error || line.kind == LineKind::Alarm;
   QString text;
@@ -354,7 +355,6 @@ void MachineSession::onLine(const grbl::ParsedLine& line) {
     case LineKind::Ok: text = QStringLiteral("ok"); break;
     case LineKind::Error: text = fromStd(grbl::describeError(line.code)); break;
     case LineKind::Alarm: text = fromStd(grbl::describeAlarm(line.code)); break;
-    case LineKind::Banner: text = QStringLiteral("Grbl %1").arg(fromStd(line.text)); break;
     case LineKind::Message: text = QStringLiteral("[MSG:%1]").arg(fromStd(line.text)); break;
     case LineKind::Setting:
       text = QStringLiteral("$%1=%2").arg(line.settingId).arg(line.settingValue);

@@ -18,6 +18,61 @@ constexpr double kHalfPixel = 0.5;
 // Stop adding levels once a level keeps more than this share of the previous one's segments.
 constexpr double kUselessLevelShare = 0.9;
 
+constexpr std::size_t kMaxMergedPoints = 64;  // bounds the simplification's cost per segment
+
+// Squared distance from q to the segment a-b.
+double distance2(const QPointF& q, const QPointF& a, const QPointF& b) {
+  const QPointF ab = b - a, aq = q - a;
+  const double len2 = ab.x() * ab.x() + ab.y() * ab.y();
+  double t = len2 > 0.0 ? (aq.x() * ab.x() + aq.y() * ab.y()) / len2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  const QPointF d = aq - t * ab;
+  return d.x() * d.x() + d.y() * d.y();
+}
+
+// Level-of-detail simplification step: the farthest index j > from (at most kMaxMergedPoints
+// ahead) such that every point between `from` and j lies within sqrt(tol2) of the chord.
+std::size_t farthestWithin(const std::vector<QPointF>& pts, std::size_t from, double tol2) {
+  const std::size_t last = std::min(pts.size() - 1, from + kMaxMergedPoints);
+  std::size_t best = from + 1;
+  for (std::size_t j = from + 2; j <= last; ++j) {
+    bool ok = true;
+    for (std::size_t k = from + 1; k < j && ok; ++k) ok = distance2(pts[k], pts[from], pts[j]) <= tol2;
+    if (!ok) break;
+    best = j;
+  }
+  return best;
+}
+
+// One pyramid step: each path's points simplified within toleranceMm; a kept segment carries
+// the order and colour class of the first segment it replaces. Class changes are kept.
+std::vector<PathScene::LevelPath> simplifyLevel(const std::vector<PathScene::LevelPath>& in,
+                                                double toleranceMm) {
+  const double tol2 = toleranceMm * toleranceMm;
+  std::vector<PathScene::LevelPath> out(in.size());
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const auto& p = in[i];
+    auto& q = out[i];
+    const std::size_t n = p.points.size();
+    std::size_t kept = 0;
+    q.points.push_back(p.points[0]);
+    while (kept + 1 < n) {
+      std::size_t next = farthestWithin(p.points, kept, tol2);
+      for (std::size_t k = kept + 1; k < next; ++k) {
+        if (p.classes[k] != p.classes[kept]) {
+          next = k;
+          break;
+        }
+      }
+      q.points.push_back(p.points[next]);
+      q.orders.push_back(p.orders[kept]);
+      q.classes.push_back(p.classes[kept]);
+      kept = next;
+    }
+  }
+  return out;
+}
+
 struct Pending {
   QLineF line;
   int order;
@@ -54,20 +109,14 @@ PathScene::PathScene(const std::vector<ScenePath>& paths) {
   }
   if (segmentCount_ == 0) return;
   boundsMm_ = QRectF(QPointF(x0, y0), QPointF(x1, y1));
-  // Paths are processed in drawing order so that a stable bucket sort keeps orders ascending.
-  std::vector<ScenePath const*> sorted;
-  sorted.reserve(paths.size());
-  for (const ScenePath& p : paths) sorted.push_back(&p);
-  std::stable_sort(sorted.begin(), sorted.end(),
-                   [](auto* a, auto* b) { return a->firstOrder < b->firstOrder; });
-  std::vector<ScenePath> ordered;  // cheap relative to the level data; keeps buildLevel simple
-  ordered.reserve(sorted.size());
-  for (auto* p : sorted) ordered.push_back(*p);
-
+  // A pyramid: each level simplifies the previous one's points with a 4x larger tolerance, so
+  // every level merges at most kMaxMergedPoints of the previous level's points per segment.
+  std::vector<LevelPath> current = baseLevel(paths);
   double tolerance = 0.0;
   for (int l = 0; l < kMaxLevels; ++l) {
+    if (tolerance > 0.0) current = simplifyLevel(current, tolerance);
     Level level;
-    buildLevel(ordered, tolerance, level);
+    bucket(current, tolerance, level);
     const bool useless = !levels_.empty() &&
         level.lines.size() > kUselessLevelShare * static_cast<double>(levels_.back().lines.size());
     if (useless && l > 1) break;
@@ -76,16 +125,7 @@ PathScene::PathScene(const std::vector<ScenePath>& paths) {
   }
 }
 
-void PathScene::buildLevel(const std::vector<ScenePath>& paths, double toleranceMm,
-                           Level& level) const {
-  level.toleranceMm = toleranceMm;
-  const double cellW = std::max(boundsMm_.width() / kGrid, 1e-9);
-  const double cellH = std::max(boundsMm_.height() / kGrid, 1e-9);
-  const auto bucketOf = [&](const QPointF& m) {
-    const int bx = std::clamp(static_cast<int>((m.x() - boundsMm_.left()) / cellW), 0, kGrid - 1);
-    const int by = std::clamp(static_cast<int>((m.y() - boundsMm_.top()) / cellH), 0, kGrid - 1);
-    return by * kGrid + bx;
-  };
+std::vector<PathScene::LevelPath> PathScene::baseLevel(const std::vector<ScenePath>& paths) const {
   const double speedScale = maxSpeed_ > 0.0f ? 1.0 / maxSpeed_ : 0.0;
   const auto classOf = [&](const ScenePath& p, std::size_t segment) {
     if (p.kind == PathKind::Travel) return kTravelClass;
@@ -94,20 +134,48 @@ void PathScene::buildLevel(const std::vector<ScenePath>& paths, double tolerance
     const double t = p.speedsMmPerS[std::min(segment, p.speedsMmPerS.size() - 1)] * speedScale;
     return 2 + std::clamp(static_cast<int>(t * kSpeedClasses), 0, kSpeedClasses - 1);
   };
-  std::vector<Pending> pending;
-  pending.reserve(toleranceMm == 0.0 ? segmentCount_ : segmentCount_ / 4 + 16);
-  const double tol2 = toleranceMm * toleranceMm;
+  // Paths in drawing order, so that a stable bucket sort keeps orders ascending.
+  std::vector<const ScenePath*> sorted;
+  sorted.reserve(paths.size());
   for (const ScenePath& p : paths) {
-    const std::size_t n = p.pointsMm.size();
-    if (n < 2) continue;
-    std::size_t kept = 0;
-    for (std::size_t i = 1; i < n; ++i) {
-      const QPointF d = p.pointsMm[i] - p.pointsMm[kept];
-      if (i + 1 < n && d.x() * d.x() + d.y() * d.y() < tol2) continue;
-      const QLineF line(p.pointsMm[kept], p.pointsMm[i]);
-      const int key = classOf(p, kept) * kGrid * kGrid + bucketOf(line.center());
-      pending.push_back({line, p.firstOrder + static_cast<int>(kept), key});
-      kept = i;
+    if (p.pointsMm.size() >= 2) sorted.push_back(&p);
+  }
+  std::stable_sort(sorted.begin(), sorted.end(),
+                   [](auto* a, auto* b) { return a->firstOrder < b->firstOrder; });
+  std::vector<LevelPath> out(sorted.size());
+  for (std::size_t i = 0; i < sorted.size(); ++i) {
+    const ScenePath& p = *sorted[i];
+    LevelPath& lp = out[i];
+    lp.points = p.pointsMm;
+    const std::size_t segments = p.pointsMm.size() - 1;
+    lp.orders.resize(segments);
+    lp.classes.resize(segments);
+    for (std::size_t k = 0; k < segments; ++k) {
+      lp.orders[k] = p.firstOrder + static_cast<int>(k);
+      lp.classes[k] = static_cast<std::uint8_t>(classOf(p, k));
+    }
+  }
+  return out;
+}
+
+void PathScene::bucket(const std::vector<LevelPath>& paths, double toleranceMm,
+                       Level& level) const {
+  level.toleranceMm = toleranceMm;
+  const double cellW = std::max(boundsMm_.width() / kGrid, 1e-9);
+  const double cellH = std::max(boundsMm_.height() / kGrid, 1e-9);
+  const auto bucketOf = [&](const QPointF& m) {
+    const int bx = std::clamp(static_cast<int>((m.x() - boundsMm_.left()) / cellW), 0, kGrid - 1);
+    const int by = std::clamp(static_cast<int>((m.y() - boundsMm_.top()) / cellH), 0, kGrid - 1);
+    return by * kGrid + bx;
+  };
+  std::size_t total = 0;
+  for (const LevelPath& p : paths) total += p.orders.size();
+  std::vector<Pending> pending;
+  pending.reserve(total);
+  for (const LevelPath& p : paths) {
+    for (std::size_t k = 0; k < p.orders.size(); ++k) {
+      const QLineF line(p.points[k], p.points[k + 1]);
+      pending.push_back({line, p.orders[k], p.classes[k] * kGrid * kGrid + bucketOf(line.center())});
     }
   }
   // Stable counting sort by key (class, bucket).

@@ -1,7 +1,8 @@
 // A paint-ready, level-of-detail representation of many machine-frame paths (a planned job or a
 // placed drawing) that pans and zooms a million segments within a frame budget:
-//  - per level of detail, consecutive points closer than the level's tolerance are merged,
-//    and the level whose tolerance is below half a pixel is painted;
+//  - per level of detail, polylines are simplified (points within the level's tolerance of the
+//    chord that replaces them are dropped), and the level whose tolerance is below half a pixel
+//    is painted;
 //  - segments are bucketed on a grid so only visible buckets are painted;
 //  - within a level segments are grouped by colour class, each class painted with one
 //    cosmetic pen in drawLines batches (no antialiasing, no wide pens).
@@ -68,6 +69,13 @@ class PathScene {
   // Speed ramp colour for t in [0, 1] (slow to fast), shared with the legend.
   static QColor speedColour(double t);
 
+  // A level's simplified paths: points, and per segment its order and colour class.
+  struct LevelPath {
+    std::vector<QPointF> points;
+    std::vector<int> orders;
+    std::vector<std::uint8_t> classes;
+  };
+
  private:
   struct Run {
     int colourClass = 0;
@@ -82,7 +90,8 @@ class PathScene {
     std::vector<Run> runs;         // sorted by class, then bucket
     std::vector<QRectF> bucketBounds;
   };
-  void buildLevel(const std::vector<ScenePath>& paths, double toleranceMm, Level& level) const;
+  std::vector<LevelPath> baseLevel(const std::vector<ScenePath>& paths) const;
+  void bucket(const std::vector<LevelPath>& paths, double toleranceMm, Level& level) const;
 
   std::vector<Level> levels_;
   std::size_t segmentCount_ = 0;

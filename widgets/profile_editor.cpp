@@ -279,6 +279,8 @@ void ProfileEditor::fill(const MachineProfile& p) {
   workingMode_->setCurrentIndex(workingMode_->findData(int(p.defaultMode)));
   assembly_->setCurrentIndex(assembly_->findData(int(p.assembly)));
   homing_->setChecked(p.hasHomingSwitches);
+  const int presetIndex = presets_->findText(QString::fromStdString(p.name));
+  if (presetIndex >= 0) presets_->setCurrentIndex(presetIndex);
   filling_ = false;
 }
 

@@ -6,7 +6,7 @@
 
 namespace fivebar::widgets {
 
-QColor runDoneColour() { return QColor(0xea, 0x58, 0x0c); }
+QColor runDoneColour() { return QColor(0x16, 0xa3, 0x4a); }  // green: apart from the speed colours
 
 RunLayer::RunLayer(const RunController& run, const MachineSession& session, QObject* parent)
     : QObject(parent), run_(run), session_(session) {
@@ -52,7 +52,7 @@ void RunLayer::paint(QPainter& painter, const ViewTransform& view) {
     lines.reserve(done);
     for (std::size_t i = 0; i < done; ++i) lines.push_back(segments_[i].mm);
     painter.setTransform(view.widgetFromMachine());
-    QPen pen(runDoneColour(), 2.2);
+    QPen pen(runDoneColour(), 3.0);
     pen.setCosmetic(true);
     pen.setCapStyle(Qt::RoundCap);
     painter.setPen(pen);

@@ -2,7 +2,6 @@
 
 #include <QCoreApplication>
 #include <QGridLayout>
-#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
@@ -77,20 +76,17 @@ RunPanel::RunPanel(RunController& run, MachineSession& session, QWidget* parent)
   stateRow->addWidget(state_);
   stateRow->addStretch(1);
   stateRow->addWidget(eta_);
-  auto* resumeRow = new QHBoxLayout;
-  resumeRow->addWidget(resumeInfo_, 1);
-  resumeRow->addWidget(resume_);
+  auto* resumeRow = new QVBoxLayout;
+  resumeRow->addWidget(resumeInfo_);
+  resumeRow->addWidget(resume_, 0, Qt::AlignLeft);
 
-  auto* box = new QGroupBox(tr("Run"), this);
-  auto* boxLayout = new QVBoxLayout(box);
-  boxLayout->addLayout(buttons);
-  boxLayout->addLayout(stateRow);
-  boxLayout->addWidget(progress_);
-  boxLayout->addWidget(message_);
-  boxLayout->addLayout(resumeRow);
   auto* layout = new QVBoxLayout(this);
-  layout->setContentsMargins(4, 4, 4, 4);
-  layout->addWidget(box);
+  layout->setContentsMargins(8, 8, 8, 8);
+  layout->addLayout(buttons);
+  layout->addLayout(stateRow);
+  layout->addWidget(progress_);
+  layout->addWidget(message_);
+  layout->addLayout(resumeRow);
   layout->addStretch(1);
 
   connect(start_, &QPushButton::clicked, this, &RunPanel::startClicked);

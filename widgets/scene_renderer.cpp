@@ -15,10 +15,14 @@ bool SceneRenderer::covers(const ViewTransform& view) const {
 
 void SceneRenderer::renderFull(const ViewTransform& view, const ScenePaintOptions& options) {
   const QSizeF vp = view.viewportPx();
+  // A new zoom renders just the viewport (zoom steps come in bursts); a pan at an unchanged zoom
+  // renders the margins too, so the following pan frames are blits.
+  const bool sameZoom = !image_.isNull() && view.pxPerMm() == imageView_.pxPerMm();
+  const double marginShare = sameZoom ? kMarginShare : 0.0;
   // Whole-pixel margins keep the image's pixel grid aligned with the viewport's, so a pan by
   // whole pixels blits without resampling.
-  const int marginX = static_cast<int>(std::ceil(vp.width() * kMarginShare));
-  const int marginY = static_cast<int>(std::ceil(vp.height() * kMarginShare));
+  const int marginX = static_cast<int>(std::ceil(vp.width() * marginShare));
+  const int marginY = static_cast<int>(std::ceil(vp.height() * marginShare));
   const QSize size(static_cast<int>(std::ceil(vp.width())) + 2 * marginX,
                    static_cast<int>(std::ceil(vp.height())) + 2 * marginY);
   imageView_ = ViewTransform(view.centerMm(), view.pxPerMm(), QSizeF(size));

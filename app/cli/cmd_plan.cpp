@@ -87,13 +87,12 @@ PlanOptions planOptionsFrom(const Options& o) {
 
 void printProblems(const std::string& file, const PlanResult& r) {
   std::cerr << "fivebar plan: " << file << ": " << r.message << "\n";
-  size_t shown = 0;
-  for (const PlanProblem& p : r.report.problems) {
-    if (++shown > 10) break;
-    std::cerr << "  " << p.path << " at (" << fixed9(p.whereMm.x()) << ", "
-              << fixed9(p.whereMm.y()) << ") mm: " << p.why << "\n";
-    for (const std::string& fix : p.fixes) std::cerr << "    fix: " << fix << "\n";
-  }
+  const auto& problems = r.report.problems;
+  for (size_t i = 0; i < problems.size() && i < 5; ++i)
+    std::cerr << "  " << problems[i].path << ": " << problems[i].why << "\n";
+  if (problems.size() > 5) std::cerr << "  ... " << problems.size() - 5 << " more in the report\n";
+  if (!problems.empty())
+    for (const std::string& fix : problems.front().fixes) std::cerr << "  fix: " << fix << "\n";
 }
 
 // The SVG in the work frame, flattened within toleranceMm; errors go to stderr.

@@ -116,13 +116,13 @@ int main(int argc, char** argv) {
     const double nowS = double(clock.nsecsElapsed()) * 1e-9;
     const std::string in = wire.deliverIn(nowS);
     if (!in.empty()) machine.receive(in);
-    wire.queueOut(machine.takeOutput());
+    wire.queueOut(machine.takeOutput(), nowS);
     pty.write(wire.deliverOut(nowS));
     if (machine.linkDropped()) finish(0);
   };
   QSocketNotifier notifier(pty.masterFd(), QSocketNotifier::Read);
   QObject::connect(&notifier, &QSocketNotifier::activated, [&] {
-    wire.queueIn(pty.read());
+    wire.queueIn(pty.read(), double(clock.nsecsElapsed()) * 1e-9);
     pump();
   });
   qint64 lastNs = 0;
