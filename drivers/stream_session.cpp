@@ -72,9 +72,11 @@ void StreamSession::onTick(double nowS) {
   }
   if (phase_ == Phase::Streaming && nowS >= nextReportS_) {
     const job::RunSnapshot s = runner_->snapshot();
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "%s: %zu/%zu lines acknowledged, %zu executed%s",
-                  job::toString(runner_->state()), s.linesAcked, s.totalLines, s.linesCompleted,
+    char buf[200];
+    // The machine state shows an M0 pause or a hold from the board's own button (Hold: send ~).
+    const std::string machine(grbl::toString(link_.protocol().state()));
+    std::snprintf(buf, sizeof buf, "%s (machine %s): %zu/%zu lines acknowledged, %zu executed%s",
+                  job::toString(runner_->state()), machine.c_str(), s.linesAcked, s.totalLines, s.linesCompleted,
                   s.etaS >= 0 ? (", ETA " + std::to_string(long(std::lround(s.etaS))) + " s").c_str() : "");
     emit progress(QString::fromUtf8(buf));
     nextReportS_ = nowS + options_.reportEveryS;

@@ -45,7 +45,8 @@ std::size_t farthestWithin(const std::vector<QPointF>& pts, std::size_t from, do
 }
 
 // One pyramid step: each path's points simplified within toleranceMm; a kept segment carries
-// the order and colour class of the first segment it replaces. Class changes are kept.
+// the order and colour class of the first segment it replaces (a path has one kind, so only the
+// speed shade, a sub-pixel detail at that level, can be approximated).
 std::vector<PathScene::LevelPath> simplifyLevel(const std::vector<PathScene::LevelPath>& in,
                                                 double toleranceMm) {
   const double tol2 = toleranceMm * toleranceMm;
@@ -57,13 +58,7 @@ std::vector<PathScene::LevelPath> simplifyLevel(const std::vector<PathScene::Lev
     std::size_t kept = 0;
     q.points.push_back(p.points[0]);
     while (kept + 1 < n) {
-      std::size_t next = farthestWithin(p.points, kept, tol2);
-      for (std::size_t k = kept + 1; k < next; ++k) {
-        if (p.classes[k] != p.classes[kept]) {
-          next = k;
-          break;
-        }
-      }
+      const std::size_t next = farthestWithin(p.points, kept, tol2);
       q.points.push_back(p.points[next]);
       q.orders.push_back(p.orders[kept]);
       q.classes.push_back(p.classes[kept]);

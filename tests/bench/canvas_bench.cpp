@@ -47,7 +47,10 @@ const std::vector<ScenePath>& jobPaths() {
       for (int i = 0; i < kPointsPerPath; ++i) {
         const double x = x0 + 0.3 * i;
         p.pointsMm.emplace_back(x, y0 + amp * std::sin(phase + 0.05 * i));
-        if (i > 0) p.speedsMmPerS.push_back(static_cast<float>(20.0 + 20.0 * u(rng)));
+        // Planned feeds vary smoothly along a stroke (slower in the bends).
+        if (i > 0) {
+          p.speedsMmPerS.push_back(static_cast<float>(20.0 + 20.0 * std::abs(std::cos(phase + 0.05 * i))));
+        }
       }
       ScenePath travel;
       travel.kind = PathKind::Travel;

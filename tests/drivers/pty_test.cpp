@@ -152,6 +152,8 @@ struct PtyFault {
   const char* spec;
   const char* expectInMessage;
 };
+void PrintTo(const PtyFault& f, std::ostream* os) { *os << f.spec; }
+
 class PtyEndToEndFault : public ::testing::TestWithParam<PtyFault> {};
 
 TEST_P(PtyEndToEndFault, EndsCleanSavesProgressAndResumeCompletes) {

@@ -110,6 +110,8 @@ struct FaultCase {
   const char* expectInProblem;
 };
 
+void PrintTo(const FaultCase& c, std::ostream* os) { *os << "fault kind " << int(c.kind); }
+
 class JobRunnerFault : public ::testing::TestWithParam<FaultCase> {};
 
 TEST_P(JobRunnerFault, EndsCleanAndResumeDrawsTheRest) {
