@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "parallel.hpp"
 #include "placement.hpp"
 
 namespace fivebar {
@@ -38,7 +39,32 @@ std::string pointText(const Stroke& s, int k, const Vec2& p) {
   return b;
 }
 
-// One pass over the job in one working mode; see preflight() for the contract.
+// What checking one stroke asks of the job-wide pass, in order: problems to add and travels
+// to check (travel checks share the job's detour budget, so they run in job order). A travel
+// `fromOutside` starts at the pose before the stroke (the previous stroke's end or home).
+struct StrokeEvent {
+  bool travel = false;
+  bool fromOutside = false;
+  JointAngles from, to;
+  int pointIndex = 0;
+  PreflightProblem problem;  // when !travel
+};
+
+// The result of checking one stroke on its own, assuming it starts from the home pose.
+struct StrokePass {
+  std::vector<StrokeEvent> events;
+  std::optional<JointAngles> first;  // first reachable pose (unwrapped from the home pose)
+  int firstIndex = -1;               // its point index
+  std::optional<JointAngles> last;   // last reachable pose
+  std::size_t points = 0;
+  double minMarginRad = std::numeric_limits<double>::infinity();
+};
+
+// One pass over the job in one working mode; see preflight() for the contract. The costly part
+// (inverse kinematics and move checks of every stroke) runs on the strokes in parallel, each as
+// if it started from the home pose; a stroke is then merged in job order when its first pose is
+// the one the job reaches it with (the usual case), or checked again in order otherwise, so the
+// report does not depend on the threads.
 class Preflight {
  public:
   Preflight(const MachineProfile& pr, WorkingMode mode, const PreflightOptions& o,
@@ -49,30 +75,22 @@ class Preflight {
   void run(const std::vector<Stroke>& strokes) {
     std::optional<JointAngles> at;
     if (o_.includeHomeTravel) at = home_;
-    std::vector<JointAngles> poses;
-    std::vector<int> index;  // point index of each pose
-    for (std::size_t si = 0; si < strokes.size(); ++si) {
-      const Stroke& s = strokes[si];
-      const int sIndex = static_cast<int>(si);
-      poses.clear();
-      index.clear();
-      for (std::size_t k = 0; k < s.points.size(); ++k) {
-        const JointAngles& ref = poses.empty() ? at.value_or(home_) : poses.back();
-        const auto q = jointsOf(s, sIndex, static_cast<int>(k), ref, poses.empty());
-        if (!q) {  // unreachable point: check the run so far, start a new one after it
-          checkRun(s, sIndex, poses, index);
-          add(std::move(*pending_));
-          poses.clear();
-          index.clear();
-          continue;
+    std::vector<StrokePass> passes;
+    for (std::size_t first = 0; first < strokes.size(); first += kChunkStrokes) {
+      const std::size_t n = std::min(kChunkStrokes, strokes.size() - first);
+      passes.assign(n, StrokePass{});
+      parallelFor(n, planningThreads(), [&](std::size_t i) {
+        checkStroke(strokes[first + i], static_cast<int>(first + i), passes[i]);
+      });
+      for (std::size_t i = 0; i < n; ++i) {
+        const Stroke& s = strokes[first + i];
+        const int si = static_cast<int>(first + i);
+        if (!startsAsAssumed(s, passes[i], at)) {
+          passes[i] = StrokePass{};
+          checkStroke(s, si, passes[i], at.value_or(home_));
         }
-        ++rep_.pointsChecked;
-        if (poses.empty() && at && checkPose(pr_, *q).ok()) checkTravel(s, sIndex, static_cast<int>(k), *at, *q);
-        poses.push_back(*q);
-        index.push_back(static_cast<int>(k));
-        at = *q;
+        merge(s, si, passes[i], at);
       }
-      checkRun(s, sIndex, poses, index);
     }
     if (o_.includeHomeTravel && at && rep_.pointsChecked > 0) {
       static const Stroke kHome{{}, -1, -1, false};
@@ -83,17 +101,77 @@ class Preflight {
   }
 
  private:
+  static constexpr std::size_t kChunkStrokes = 1024;
+
+  // Checks stroke s on its own, the pose before it taken as `outside` (home by default).
+  void checkStroke(const Stroke& s, int si, StrokePass& out) const { checkStroke(s, si, out, home_); }
+  void checkStroke(const Stroke& s, int si, StrokePass& out, const JointAngles& outside) const {
+    std::optional<JointAngles> at;  // the previous reachable pose of this stroke
+    std::vector<JointAngles> poses;
+    std::vector<int> index;  // point index of each pose
+    for (std::size_t k = 0; k < s.points.size(); ++k) {
+      const JointAngles& ref = poses.empty() ? at.value_or(outside) : poses.back();
+      const int kk = static_cast<int>(k);
+      std::optional<PreflightProblem> pending;  // set when jointsOf returns nullopt
+      const auto q = jointsOf(s, si, kk, ref, poses.empty(), pending);
+      if (!q) {  // unreachable point: check the run so far, start a new one after it
+        checkRun(s, si, poses, index, out);
+        problem(out, std::move(*pending));
+        poses.clear();
+        index.clear();
+        continue;
+      }
+      ++out.points;
+      if (!out.first) out.first = *q, out.firstIndex = kk;
+      if (poses.empty() && checkPose(pr_, *q).ok())
+        out.events.push_back({true, !at.has_value(), at.value_or(outside), *q, kk, {}});
+      poses.push_back(*q);
+      index.push_back(kk);
+      at = *q;
+    }
+    checkRun(s, si, poses, index, out);
+    out.last = at;
+  }
+
+  // Whether the stroke's first reachable pose, unwrapped from the pose the job is at, is the
+  // one the stroke was checked with.
+  bool startsAsAssumed(const Stroke& s, const StrokePass& pass, const std::optional<JointAngles>& at) const {
+    if (!pass.first) return true;
+    const IkResult ik = inverse(g_, s.points[static_cast<std::size_t>(pass.firstIndex)], mode_);
+    if (!ik.ok()) return false;
+    const JointAngles ref = at.value_or(home_);
+    const JointLimits& l = pr_.limits;
+    const JointAngles q{nearWithinLimits(ik.angles.theta1, ref.theta1, l.theta1Min, l.theta1Max),
+                        nearWithinLimits(ik.angles.theta2, ref.theta2, l.theta2Min, l.theta2Max)};
+    return q.theta1 == pass.first->theta1 && q.theta2 == pass.first->theta2;
+  }
+
+  void merge(const Stroke& s, int si, StrokePass& pass, std::optional<JointAngles>& at) {
+    for (StrokeEvent& e : pass.events) {
+      if (!e.travel) {
+        add(std::move(e.problem));
+      } else if (!e.fromOutside) {
+        checkTravel(s, si, e.pointIndex, e.from, e.to);
+      } else if (at) {
+        checkTravel(s, si, e.pointIndex, *at, e.to);
+      }
+    }
+    rep_.pointsChecked += pass.points;
+    rep_.minTypeIIMarginRad = std::min(rep_.minTypeIIMarginRad, pass.minMarginRad);
+    if (pass.last) at = pass.last;
+  }
+
   // Continuous joint angles of point k, unwrapped near `ref`; reports reach and assembly
-  // problems and returns nullopt for them.
+  // problems (in `pending`) and returns nullopt for them.
   std::optional<JointAngles> jointsOf(const Stroke& s, int si, int k, const JointAngles& ref,
-                                      bool strokeStart) {
+                                      bool strokeStart, std::optional<PreflightProblem>& pending) const {
     const Vec2& p = s.points[k];
     const IkResult ik = inverse(g_, p, mode_);
     if (!ik.ok()) {
       const bool leg1 = !inverseArm1(g_, p, arm1Sign(mode_)).has_value();
-      pending_ = PreflightProblem{si, s.layerIndex, s.pathIndex, k, MoveKind::Point, p,
-                                  MoveStatus::CannotClose,
-                                  pointText(s, k, p) + " is out of reach of leg " + (leg1 ? "1" : "2")};
+      pending = PreflightProblem{si, s.layerIndex, s.pathIndex, k, MoveKind::Point, p,
+                                 MoveStatus::CannotClose,
+                                 pointText(s, k, p) + " is out of reach of leg " + (leg1 ? "1" : "2")};
       return std::nullopt;
     }
     JointAngles q{unwrapNear(ik.angles.theta1, ref.theta1), unwrapNear(ik.angles.theta2, ref.theta2)};
@@ -105,31 +183,37 @@ class Preflight {
     if (assemblyModeOf(makePose(g_, q, p)) != pr_.assembly) {
       const AssemblyMode other =
           pr_.assembly == AssemblyMode::Plus ? AssemblyMode::Minus : AssemblyMode::Plus;
-      pending_ = PreflightProblem{si, s.layerIndex, s.pathIndex, k, MoveKind::Point, p,
-                                  MoveStatus::AssemblyChange,
-                                  pointText(s, k, p) + " needs assembly mode " +
-                                      std::string(toString(other)) + " in working mode " +
-                                      std::string(toString(mode_))};
+      pending = PreflightProblem{si, s.layerIndex, s.pathIndex, k, MoveKind::Point, p,
+                                 MoveStatus::AssemblyChange,
+                                 pointText(s, k, p) + " needs assembly mode " +
+                                     std::string(toString(other)) + " in working mode " +
+                                     std::string(toString(mode_))};
       return std::nullopt;
     }
     return q;
   }
 
+  static void problem(StrokePass& out, PreflightProblem p) {
+    StrokeEvent e;
+    e.problem = std::move(p);
+    out.events.push_back(std::move(e));
+  }
+
   // Pen-down moves through consecutive reachable points of one stroke.
   void checkRun(const Stroke& s, int si, const std::vector<JointAngles>& poses,
-                const std::vector<int>& index) {
+                const std::vector<int>& index, StrokePass& out) const {
     if (poses.empty()) return;
     const PathCheck c = checkJointPath(pr_, poses);
-    rep_.minTypeIIMarginRad = std::min(rep_.minTypeIIMarginRad, c.minTypeIIMarginRad);
+    out.minMarginRad = std::min(out.minMarginRad, c.minTypeIIMarginRad);
     for (const PathProblem& p : c.problems) {
       if (p.move == 0 && p.check.atFraction == 0.0) {
         const int k = index[0];
-        add(s, si, k, MoveKind::Point, s.points[k], p.check.status,
-            pointText(s, k, s.points[k]) + ": " + describe(p.check));
+        problem(out, {si, s.layerIndex, s.pathIndex, k, MoveKind::Point, s.points[k], p.check.status,
+                      pointText(s, k, s.points[k]) + ": " + describe(p.check)});
       } else {
         const int k = index[p.move + 1];
-        add(s, si, k, MoveKind::Draw, p.check.where, p.check.status,
-            "the line to " + pointText(s, k, s.points[k]) + " " + describe(p.check));
+        problem(out, {si, s.layerIndex, s.pathIndex, k, MoveKind::Draw, p.check.where, p.check.status,
+                      "the line to " + pointText(s, k, s.points[k]) + " " + describe(p.check)});
       }
     }
   }
@@ -147,17 +231,13 @@ class Preflight {
     }
     const std::string target = si < 0 ? std::string("the travel back to the home pose")
                                       : "the travel to " + pointText(s, k, s.points[k]);
-    add(s, si, k, MoveKind::Travel, c.where, c.status,
-        target + " " + describe(c) +
-            (searched                 ? "; no safe detour found"
-             : o_.allowTravelDetours ? "; detour not searched (limit of searches per job reached)"
-                                     : ""));
+    add({si, s.layerIndex, s.pathIndex, k, MoveKind::Travel, c.where, c.status,
+         target + " " + describe(c) +
+             (searched                 ? "; no safe detour found"
+              : o_.allowTravelDetours ? "; detour not searched (limit of searches per job reached)"
+                                      : "")});
   }
 
-  void add(const Stroke& s, int si, int k, MoveKind kind, const Vec2& where, MoveStatus status,
-           std::string reason) {
-    add({si, s.layerIndex, s.pathIndex, k, kind, where, status, std::move(reason)});
-  }
   void add(PreflightProblem problem) {
     ++rep_.problemCount;
     if (rep_.problems.size() < o_.maxListedProblems) rep_.problems.push_back(std::move(problem));
@@ -169,7 +249,6 @@ class Preflight {
   const PreflightOptions& o_;
   FeasibilityReport& rep_;
   JointAngles home_;
-  std::optional<PreflightProblem> pending_;  // set by jointsOf when it returns nullopt
   int detourSearches_ = 0;
 };
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "move_samples.hpp"
+
 namespace fivebar {
 namespace {
 
@@ -18,16 +20,10 @@ constexpr double kAccelConvergence = 1e-3;
 // Largest XY speed (mm per unit of the move parameter u in [0, 1]) along the move, by samples.
 double peakSpeedPerUnit(const Geometry& g, AssemblyMode assembly, const JointAngles& a,
                         const JointAngles& b, double fallbackLengthMm) {
-  Vec2 prev = Vec2::Zero();
+  Vec2 p[kSpeedSamples + 1];
+  if (!sampleJointMove(g, assembly, a, b, kSpeedSamples, p)) return fallbackLengthMm;
   double peak = 0.0;
-  for (int k = 0; k <= kSpeedSamples; ++k) {
-    const double u = static_cast<double>(k) / kSpeedSamples;
-    const JointAngles q{a.theta1 + u * (b.theta1 - a.theta1), a.theta2 + u * (b.theta2 - a.theta2)};
-    const FkResult fk = forward(g, q, assembly);
-    if (!fk.ok()) return fallbackLengthMm;
-    if (k > 0) peak = std::max(peak, (fk.p - prev).norm() * kSpeedSamples);
-    prev = fk.p;
-  }
+  for (int k = 1; k <= kSpeedSamples; ++k) peak = std::max(peak, (p[k] - p[k - 1]).norm() * kSpeedSamples);
   return peak;
 }
 

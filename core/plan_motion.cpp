@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "feeds.hpp"
+#include "parallel.hpp"
 #include "planner.hpp"
 #include "safety.hpp"
 #include "segmentation.hpp"
@@ -13,6 +14,8 @@
 namespace fivebar {
 namespace {
 
+// Strokes segmented in parallel before being drawn in order (bounds the memory held).
+constexpr size_t kChunkStrokes = 512;
 // FK samples per travel move for its XY length.
 constexpr int kTravelLengthSamples = 16;
 // Lever arm factor for the G-code rounding share of the tolerance (docs/planning.md): a joint
@@ -47,7 +50,17 @@ class MotionPlanner {
     job_.assembly = p_.assembly;
     if (!startPose()) return;
     job_.strokes.resize(strokes_.size());
-    for (size_t k = 0; k < strokes_.size(); ++k) drawStroke(k);
+    // Segmentation and feeds of a stroke do not depend on where the pen comes from (only the
+    // turn its angles are unwrapped to, fixed up in drawStroke): chunks of strokes are
+    // segmented in parallel, then drawn in order, so the job does not depend on the threads.
+    const int threads = planningThreads();
+    std::vector<Prepared> chunk;
+    for (size_t first = 0; first < strokes_.size(); first += kChunkStrokes) {
+      const size_t n = std::min(kChunkStrokes, strokes_.size() - first);
+      chunk.assign(n, Prepared{});
+      parallelFor(n, threads, [&](size_t i) { prepare(first + i, chunk[i]); });
+      for (size_t i = 0; i < n; ++i) drawStroke(first + i, chunk[i]);
+    }
     if (penDown_) penUp();
     travelTo(job_.start, -1, -1, "travel back to the start pose");
   }
@@ -67,14 +80,39 @@ class MotionPlanner {
     return true;
   }
 
-  void drawStroke(size_t k) {
+  // A stroke segmented (angles unwrapped near the home pose) with its feeds.
+  struct Prepared {
+    SegmentedStroke seg;
+    std::vector<SegmentFeed> feeds;
+  };
+
+  void prepare(size_t k, Prepared& out) const {
+    const Stroke& s = strokes_[k];
+    if (s.points.empty()) return;
+    out.seg = segmentStroke(g_, mode_, p_.assembly, s.points, job_.start, segOpt_);
+    if (out.seg.ok())
+      out.feeds = planFeeds(g_, p_.assembly, out.seg.waypoints, drawSpeed(s.layerIndex), limits_);
+  }
+
+  // Shifts the stroke's angles by whole turns so that it starts nearest the current pose.
+  void unwrapNearCurrent(SegmentedStroke& seg) const {
+    if (seg.waypoints.empty()) return;
+    const JointAngles q0 = seg.waypoints[0].q;
+    const double d1 = unwrapNear(q0.theta1, at_.theta1) - q0.theta1;
+    const double d2 = unwrapNear(q0.theta2, at_.theta2) - q0.theta2;
+    if (d1 == 0.0 && d2 == 0.0) return;
+    for (JointWaypoint& w : seg.waypoints) w.q = {w.q.theta1 + d1, w.q.theta2 + d2};
+  }
+
+  void drawStroke(size_t k, Prepared& prepared) {
     const Stroke& s = strokes_[k];
     PlannedStroke& ps = job_.strokes[k];
     ps.layerIndex = s.layerIndex;
     ps.pathIndex = s.pathIndex;
     ps.reversed = s.reversed;
     if (s.points.empty()) return;
-    const SegmentedStroke seg = segmentStroke(g_, mode_, p_.assembly, s.points, at_, segOpt_);
+    SegmentedStroke& seg = prepared.seg;
+    unwrapNearCurrent(seg);
     if (!seg.ok()) {
       problem(pathLabel(s), seg.failedAt,
               seg.status == SegmentStatus::OutOfReach
@@ -92,15 +130,14 @@ class MotionPlanner {
       return;
     penDown(static_cast<int>(k), layer);
     ps.firstMove = static_cast<int>(job_.moves.size());
-    draw(seg, static_cast<int>(k), layer);
+    draw(seg, prepared.feeds, static_cast<int>(k), layer);
     ps.moveCount = static_cast<int>(job_.moves.size()) - ps.firstMove;
     for (const JointWaypoint& w : seg.waypoints) ps.lengthMm += w.pathLengthMm;
     job_.summary.penDownMm += ps.lengthMm;
   }
 
-  void draw(const SegmentedStroke& seg, int stroke, int layer) {
-    const std::vector<SegmentFeed> feeds =
-        planFeeds(g_, p_.assembly, seg.waypoints, drawSpeed(layer), limits_);
+  void draw(const SegmentedStroke& seg, const std::vector<SegmentFeed>& feeds, int stroke,
+            int layer) {
     for (size_t i = 0; i < feeds.size(); ++i) {
       const JointWaypoint& w = seg.waypoints[i + 1];
       JobMove& m = push(JobMoveKind::Draw, stroke, layer);

@@ -9,6 +9,7 @@
 
 #include "feasibility.hpp"
 #include "optimise.hpp"
+#include "parallel.hpp"
 #include "placement.hpp"
 #include "workspace.hpp"
 
@@ -112,24 +113,28 @@ PlanResult planJob(const Drawing& drawing, const MachineProfile& profile,
   const bool fit = options.fit || !options.atMm;
   std::vector<WorkingMode> modes(kAllWorkingModes.begin(), kAllWorkingModes.end());
   if (options.mode) modes = {*options.mode};
-  std::vector<Candidate> cands;
-  PreflightOptions pf;
-  pf.maxListedProblems = 20;
-  for (WorkingMode mode : modes) {
+  // The working modes are independent: placed and preflighted in parallel, kept in mode order.
+  std::vector<std::optional<Candidate>> slots(modes.size());
+  parallelFor(modes.size(), planningThreads(), [&](std::size_t i) {
     Candidate c;
-    c.mode = mode;
+    c.mode = modes[i];
     if (fit) {
-      const auto placed = fittedPlacement(drawing, profile, mode, options);
-      if (!placed) continue;
+      const auto placed = fittedPlacement(drawing, profile, c.mode, options);
+      if (!placed) return;
       c.placement = *placed;
     } else {
       c.placement = Placement{*options.atMm, options.rotationRad, options.scale};
     }
+    PreflightOptions pf;
+    pf.maxListedProblems = 20;
     pf.anchorMm = c.placement.centerMm;
     c.strokes = placeDrawing(drawing, c.placement);
-    c.report = preflight(c.strokes, profile, mode, pf);
-    cands.push_back(std::move(c));
-  }
+    c.report = preflight(c.strokes, profile, c.mode, pf);
+    slots[i] = std::move(c);
+  });
+  std::vector<Candidate> cands;
+  for (std::optional<Candidate>& c : slots)
+    if (c) cands.push_back(std::move(*c));
   if (cands.empty()) {
     out.status = PlanStatus::Infeasible;
     out.message = "no working mode has a singularity-free area to fit the drawing into";

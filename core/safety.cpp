@@ -13,8 +13,12 @@
 namespace fivebar {
 namespace {
 
-// Largest joint step (max over motors) between two samples of a move, rad.
-constexpr double kMaxJointStepRad = radFromDeg(0.1);
+// Joint step (max over motors) between two samples of a move within this distance of a joint
+// limit, and the resolution of the reported smallest margin, rad. Elsewhere the step is set by
+// the Lipschitz bound alone (nextStepRad), which is what makes the check safe.
+constexpr double kFineJointStepRad = radFromDeg(0.1);
+// Bracket width (joint rad) at which the search for the smallest margin of a move stops.
+constexpr double kMarginSearchRad = radFromDeg(0.01);
 // Smallest step the adaptive rule may take, so a move always ends, rad.
 constexpr double kMinJointStepRad = 1e-5;
 // Type II margin below which the forward-kinematics branch is ambiguous: a move that gets this
@@ -102,14 +106,20 @@ Sample evaluate(const MachineProfile& pr, const JointAngles& q) {
 // keeps every excursion between two samples above the thresholds. Distances are taken in
 // sines, which never exceed the distances in angles (d asin / dx >= 1); the worst margin is
 // the one whose sine is midway, below the angle midway since asin is convex.
-double nextStepRad(const MachineProfile& pr, const Sample& s) {
+// Joint limits need no interior samples (the limit box is convex and the move is linear in joint
+// space); steps are only kept fine (kFineJointStepRad) within that distance of a limit, so the
+// first sample beyond it is reported as precisely as with dense sampling.
+double nextStepRad(const MachineProfile& pr, const JointAngles& q, const Sample& s) {
   const Geometry& g = pr.geometry;
+  const JointLimits& l = pr.limits;
+  const double toLimit = std::min({q.theta1 - l.theta1Min, l.theta1Max - q.theta1,
+                                   q.theta2 - l.theta2Min, l.theta2Max - q.theta2});
   const double sinThrII = std::max(sinOfThreshold(pr.typeIIMarginRad), kSinAssemblyFlipMargin);
   const double gapII = s.sinTypeII - sinThrII;
   const double sinWorst = std::max(sinThrII + 0.5 * gapII, 1e-9);
   const double reach = g.a1 + g.a2;
   const double rateII = reach * (1.0 / g.b1 + 1.0 / g.b2) / sinWorst;
-  double step = std::min(kMaxJointStepRad, 0.5 * gapII / rateII);
+  double step = std::min(std::max(toLimit, kFineJointStepRad), 0.5 * gapII / rateII);
   if (pr.typeIMarginRad > 0.0) {
     const double rateI = 1.0 + reach / (std::min(g.b1, g.b2) * sinWorst);
     step = std::min(step, 0.5 * (s.sinTypeI - sinOfThreshold(pr.typeIMarginRad)) / rateI);
@@ -160,18 +170,54 @@ MoveCheck checkPose(const MachineProfile& profile, const JointAngles& q) {
 
 namespace {
 
+// Smallest sin(type II margin) of the move on the bracket [lo, hi] of move fractions, by golden
+// section search down to kMarginSearchRad of joint motion, starting from the known `best`
+// (every evaluated sample is a real pose of the move, so the result never undershoots it).
+double refineMinSin(const MachineProfile& pr, const JointAngles& from, const JointAngles& to,
+                    double lo, double hi, double span, double best) {
+  constexpr double kGolden = 0.6180339887498949;
+  auto sinAt = [&](double t) {
+    const Sample s = evaluate(pr, lerp(from, to, t));
+    return s.closes ? s.sinTypeII : 0.0;
+  };
+  double x1 = hi - kGolden * (hi - lo), x2 = lo + kGolden * (hi - lo);
+  double f1 = sinAt(x1), f2 = sinAt(x2);
+  best = std::min({best, f1, f2});
+  while ((hi - lo) * span > kMarginSearchRad) {
+    if (f1 < f2) {
+      hi = x2, x2 = x1, f2 = f1;
+      x1 = hi - kGolden * (hi - lo);
+      f1 = sinAt(x1);
+      best = std::min(best, f1);
+    } else {
+      lo = x1, x1 = x2, f1 = f2;
+      x2 = lo + kGolden * (hi - lo);
+      f2 = sinAt(x2);
+      best = std::min(best, f2);
+    }
+  }
+  return best;
+}
+
 // Walks one move from an evaluated start sample to an evaluated end sample; `out` gets the
 // first problem after the start (the start itself is the caller's business) and the margins.
+// Samples are spaced by nextStepRad; when they are coarser than kFineJointStepRad, the smallest
+// margin of a safe move is refined around the smallest sample (refineMinSin).
 void walk(const MachineProfile& pr, const JointAngles& from, const JointAngles& to,
           const Sample& start, const Sample& end, MoveCheck& out) {
   const double span = std::max(std::abs(to.theta1 - from.theta1), std::abs(to.theta2 - from.theta2));
-  double t = 0.0;
+  double t = 0.0, prevT = 0.0;
+  double minLo = 0.0, minHi = 0.0;  // the samples around the smallest one (move fractions)
+  bool minOpen = true;              // the sample after the smallest one is not taken yet
   Sample s = start;
   double minSin = start.sinTypeII;
   while (t < 1.0) {
-    t = span > 0.0 ? std::min(1.0, t + nextStepRad(pr, s) / span) : 1.0;
+    const JointAngles q = lerp(from, to, t);
+    prevT = t;
+    t = span > 0.0 ? std::min(1.0, t + nextStepRad(pr, q, s) / span) : 1.0;
     s = t < 1.0 ? evaluate(pr, lerp(from, to, t)) : end;
-    minSin = std::min(minSin, s.sinTypeII);
+    if (minOpen) minHi = t, minOpen = false;
+    if (s.sinTypeII < minSin) minSin = s.sinTypeII, minLo = prevT, minHi = t, minOpen = true;
     if (s.status != MoveStatus::Ok) {
       out.minTypeIIMarginRad = std::min(out.minTypeIIMarginRad, std::asin(minSin));
       out.status = s.status == MoveStatus::AssemblyChange ? throughOrOut(pr, from, to, t, span)
@@ -181,6 +227,8 @@ void walk(const MachineProfile& pr, const JointAngles& from, const JointAngles& 
       return;
     }
   }
+  if ((minHi - minLo) * span > kFineJointStepRad)
+    minSin = refineMinSin(pr, from, to, minLo, minHi, span, minSin);
   out.minTypeIIMarginRad = std::min(out.minTypeIIMarginRad, std::asin(minSin));
   out.atFraction = 1.0;
   out.where = end.p;

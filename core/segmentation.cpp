@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "move_samples.hpp"
+
 namespace fivebar {
 namespace {
 
@@ -233,11 +235,7 @@ double jointMoveDeviation(const Geometry& g, AssemblyMode assembly, const JointA
                            kMinSamples, kMaxSamples);
   thread_local std::vector<Vec2> curve;
   curve.resize(static_cast<size_t>(n) + 1);
-  for (int k = 0; k <= n; ++k) {
-    const FkResult fk = forward(g, lerp(qa, qb, static_cast<double>(k) / n), assembly);
-    if (!fk.ok()) return kInfinity;
-    curve[static_cast<size_t>(k)] = fk.p;
-  }
+  if (!sampleJointMove(g, assembly, qa, qb, n, curve.data())) return kInfinity;
   // The curve between two samples lies within its sagitta (|second difference| / 8) of their
   // chord; allow for it (with margin) on both directed distances.
   double sagitta = 0.0;

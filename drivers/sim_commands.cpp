@@ -132,8 +132,11 @@ SimMachine::LineResult SimMachine::executeGcode(const std::string& line, bool jo
     const Axes3 m = planner_.position();
     const bool l2 = w.hasCode('G', 10) && w.get('L').value_or(0) == 2;
     const char letters[3] = {'X', 'Y', 'Z'};
+    const Axes3 before = wco_;
     for (size_t i = 0; i < 3; ++i)
       if (auto v = w.get(letters[i])) wco_[i] = l2 ? *v : m[i] - *v;
+    // GRBL 1.1 reports a changed work offset in the very next status report.
+    if (wco_ != before) reportsSinceWco_ = 0;
   } else if (axisWords) {
     if (!motion(w, jog)) return LineResult::Done;
   }

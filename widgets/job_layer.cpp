@@ -38,6 +38,12 @@ JobLayer::JobLayer(const StudioDocument& doc, const PreviewController& preview,
   connect(&preview_, &PreviewController::scrubLimitChanged, this, &JobLayer::changed);
   connect(&sim_, &SimulationController::timeChanged, this, &JobLayer::changed);
   connect(&doc_, &StudioDocument::placementChanged, this, &JobLayer::changed);
+  settle_.setSingleShot(true);
+  settle_.setInterval(kSettleMs);
+  connect(&settle_, &QTimer::timeout, this, [this] {
+    settling_ = true;
+    emit changed();
+  });
 }
 
 void JobLayer::setColourBySpeed(bool on) {
@@ -81,7 +87,10 @@ void JobLayer::paint(QPainter& painter, const ViewTransform& view) {
     traceRenderer_.paint(painter, view, r.jobScene, trace, optionsKey() | 32u);
   } else if (fresh && r.jobScene) {
     o.orderLimit = preview_.scrubLimit();
+    mainRenderer_.setQuickZoom(!settling_);
     mainRenderer_.paint(painter, view, r.jobScene, o, optionsKey());
+    settling_ = false;
+    if (mainRenderer_.stale()) settle_.start();
   } else if (r.drawingScene) {
     o.machineFromScene = placementDelta(preview_.resultPlacement(), doc_.placement());
     // Any change of the delta must re-render: fold it into the key.

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <QObject>
+#include <QTimer>
 #include <optional>
 
 #include "widgets/canvas_layer.hpp"
@@ -41,6 +42,11 @@ class JobLayer : public QObject, public CanvasLayer {
   const StudioDocument& doc_;
   const PreviewController& preview_;
   const SimulationController& sim_;
+  // Quick zoom: zoom frames scale the cached job image; once the view rests for kSettleMs the
+  // job is re-rendered sharp.
+  static constexpr int kSettleMs = 150;
+  QTimer settle_;
+  bool settling_ = false;
   SceneRenderer mainRenderer_;
   SceneRenderer traceRenderer_;
   bool colourBySpeed_ = true;

@@ -1,12 +1,16 @@
 #include "widgets/machine_ui.hpp"
 
+#include <QAction>
+#include <QDir>
 #include <QDockWidget>
+#include <QStandardPaths>
 
 #include "widgets/canvas_view.hpp"
 #include "widgets/console_panel.hpp"
 #include "widgets/jog_panel.hpp"
 #include "widgets/machine_layer.hpp"
 #include "widgets/machine_panel.hpp"
+#include "widgets/machine_settings_dialog.hpp"
 #include "widgets/profile_editor.hpp"
 #include "widgets/run_layer.hpp"
 #include "widgets/run_panel.hpp"
@@ -46,6 +50,23 @@ void MachineUi::addPanels(const AddDock& addDock) {
   addDock(jog_, tr("Jog"), QStringLiteral("dockJog"), Qt::RightDockWidgetArea);
   addDock(console_, tr("Console"), QStringLiteral("dockConsole"), Qt::BottomDockWidgetArea);
   addDock(profile_, tr("Machine profile"), QStringLiteral("dockProfile"), Qt::LeftDockWidgetArea);
+  settingsAction_ = new QAction(tr("Machine &settings..."), this);
+  settingsAction_->setObjectName(QStringLiteral("actionMachineSettings"));
+  connect(settingsAction_, &QAction::triggered, this, [this] { openSettingsDialog(); });
+}
+
+// Shows the (single) settings dialog and reads the board when connected. Backups go to the
+// application's data folder, "settings-backups".
+MachineSettingsDialog* MachineUi::openSettingsDialog() {
+  if (settingsDialog_ == nullptr) {
+    const QString dir = QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
+                            .filePath(QStringLiteral("settings-backups"));
+    settingsDialog_ = new MachineSettingsDialog(session_, dir, window_);
+  }
+  settingsDialog_->show();
+  settingsDialog_->raise();
+  if (session_.isConnected()) settingsDialog_->readBoard();
+  return settingsDialog_;
 }
 
 bool MachineUi::connectSimulated(double speedup) {

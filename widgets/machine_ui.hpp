@@ -10,6 +10,7 @@
 #include "widgets/machine_session.hpp"
 #include "widgets/run_controller.hpp"
 
+class QAction;
 class QDockWidget;
 
 namespace fivebar::widgets {
@@ -19,6 +20,7 @@ class ConsolePanel;
 class JogPanel;
 class MachineLayer;
 class MachinePanel;
+class MachineSettingsDialog;
 class ProfileEditor;
 class RunLayer;
 class RunPanel;
@@ -42,6 +44,10 @@ class MachineUi : public QObject {
   JogPanel* jogPanel() const { return jog_; }
   RunPanel* runPanel() const { return runPanel_; }
   MachinePanel* machinePanel() const { return machinePanel_; }
+  // "Machine settings...": opens the dialog comparing the board's $$ with the profile (created
+  // by addPanels; the window puts it in its Machine menu).
+  QAction* settingsAction() const { return settingsAction_; }
+  MachineSettingsDialog* openSettingsDialog();
 
  private:
   StudioDocument& doc_;
@@ -56,6 +62,8 @@ class MachineUi : public QObject {
   RunPanel* runPanel_ = nullptr;
   ConsolePanel* console_ = nullptr;
   ProfileEditor* profile_ = nullptr;
+  QAction* settingsAction_ = nullptr;
+  MachineSettingsDialog* settingsDialog_ = nullptr;
 };
 
 }  // namespace fivebar::widgets

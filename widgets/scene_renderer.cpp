@@ -39,6 +39,24 @@ void SceneRenderer::paint(QPainter& painter, const ViewTransform& view,
                           const std::shared_ptr<const PathScene>& scene,
                           const ScenePaintOptions& options, quint64 optionsKey) {
   if (!scene || scene->empty()) return;
+  const bool onlyZoomed = quickZoom_ && !image_.isNull() && scene == scene_ &&
+                          optionsKey == optionsKey_ && options.orderBegin == orderBegin_ &&
+                          options.orderLimit == orderLimit_ &&
+                          view.pxPerMm() != imageView_.pxPerMm();
+  if (onlyZoomed) {
+    // Image pixel -> machine (image view) -> widget (current view): a scale and an offset.
+    const double r = view.pxPerMm() / imageView_.pxPerMm();
+    const QPointF origin = view.widgetFromMachine(imageView_.machineFromWidget(QPointF(0, 0)));
+    painter.save();
+    painter.setOpacity(painter.opacity() * options.opacity);
+    painter.setTransform(QTransform(r, 0.0, 0.0, r, origin.x(), origin.y()), true);
+    painter.drawImage(QPointF(0, 0), image_);
+    painter.restore();
+    stale_ = true;
+    ++previewFrames_;
+    return;
+  }
+  stale_ = false;
   const bool sameBase = scene == scene_ && optionsKey == optionsKey_ &&
                         options.orderBegin == orderBegin_ && covers(view);
   const bool grows = sameBase && orderLimit_ >= 0 &&

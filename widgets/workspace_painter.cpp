@@ -1,5 +1,6 @@
 #include "widgets/workspace_painter.hpp"
 
+#include <QCoreApplication>
 #include <QFontMetricsF>
 #include <QImage>
 #include <QPainterPath>
@@ -112,30 +113,39 @@ double paintWorkspaceLegend(QPainter& painter, QPointF topLeftPx, const Workspac
   painter.setFont(font);
   const QFontMetricsF fm(font);
   const double line = fm.height() + 6.0, swatch = 22.0, pad = 10.0;
-  const QString marginText = QStringLiteral("type II >= %1 deg, type I >= %2 deg")
-                                 .arg(degFromRad(map.typeIIMarginRad), 0, 'f', 0)
-                                 .arg(degFromRad(map.typeIMarginRad), 0, 'f', 0);
+  // Legend text: translation context "WorkspaceLegend" (no QObject here).
+  const QString marginText =
+      QCoreApplication::translate("WorkspaceLegend", "type II >= %1 deg, type I >= %2 deg")
+          .arg(degFromRad(map.typeIIMarginRad), 0, 'f', 0)
+          .arg(degFromRad(map.typeIMarginRad), 0, 'f', 0);
   struct Entry {
     QString text;
     QColor fill;
     QPen pen;
   };
-  const QString rect = analysis.largestRectangle ? sizeText(*analysis.largestRectangle)
-                                                 : QStringLiteral("none");
+  const QString rect = analysis.largestRectangle
+                           ? sizeText(*analysis.largestRectangle)
+                           : QCoreApplication::translate("WorkspaceLegend", "none");
   const std::vector<Entry> entries{
-      {QStringLiteral("singularity-free (%1)").arg(marginText), safeFill(), Qt::NoPen},
-      {QStringLiteral("reachable, within a singularity margin"), marginFill(), Qt::NoPen},
-      {QStringLiteral("reach boundary"), Qt::transparent, QPen(reachLine(), 1.6)},
-      {QStringLiteral("singularity-free boundary"), Qt::transparent,
-       QPen(safeLine(), 1.2, Qt::DashLine)},
-      {QStringLiteral("type II singularity (%1 curves)").arg(analysis.typeIILoci.size()),
+      {QCoreApplication::translate("WorkspaceLegend", "singularity-free (%1)").arg(marginText),
+       safeFill(), Qt::NoPen},
+      {QCoreApplication::translate("WorkspaceLegend", "reachable, within a singularity margin"),
+       marginFill(), Qt::NoPen},
+      {QCoreApplication::translate("WorkspaceLegend", "reach boundary"), Qt::transparent,
+       QPen(reachLine(), 1.6)},
+      {QCoreApplication::translate("WorkspaceLegend", "singularity-free boundary"),
+       Qt::transparent, QPen(safeLine(), 1.2, Qt::DashLine)},
+      {QCoreApplication::translate("WorkspaceLegend", "type II singularity (%1 curves)")
+           .arg(analysis.typeIILoci.size()),
        Qt::transparent, QPen(typeIILine(), 2.4)},
-      {QStringLiteral("largest rectangle: %1").arg(rect), QColor(0x1d, 0x4e, 0xd8, 28),
-       QPen(rectangleLine(), 2.0)},
+      {QCoreApplication::translate("WorkspaceLegend", "largest rectangle: %1").arg(rect),
+       QColor(0x1d, 0x4e, 0xd8, 28), QPen(rectangleLine(), 2.0)},
   };
   const QStringList areas{
-      QStringLiteral("reachable area: %1 cm\u00b2").arg(analysis.reachableAreaMm2 / 100.0, 0, 'f', 1),
-      QStringLiteral("singularity-free area: %1 cm\u00b2").arg(analysis.safeAreaMm2 / 100.0, 0, 'f', 1)};
+      QCoreApplication::translate("WorkspaceLegend", "reachable area: %1 cm\u00b2")
+          .arg(analysis.reachableAreaMm2 / 100.0, 0, 'f', 1),
+      QCoreApplication::translate("WorkspaceLegend", "singularity-free area: %1 cm\u00b2")
+          .arg(analysis.safeAreaMm2 / 100.0, 0, 'f', 1)};
   double width = 0.0;
   for (const Entry& e : entries) width = std::max(width, fm.horizontalAdvance(e.text));
   for (const QString& a : areas) width = std::max(width, fm.horizontalAdvance(a));

@@ -1,14 +1,18 @@
-// fivebar stream / fivebar send: the machine commands (GRBL 1.1 over a serial port or the
+// fivebar stream / send / setup: the machine commands (GRBL 1.1 over a serial port or the
 // simulator's pseudo-terminal). Protocol rules and resume format: docs/machine-protocol.md.
 #include <QCoreApplication>
+#include <QDateTime>
 #include <QTimer>
+#include <algorithm>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <optional>
 
 #include "commands.hpp"
 #include "drivers/grbl_codes.hpp"
 #include "drivers/machine_link.hpp"
+#include "drivers/machine_setup.hpp"
 #include "drivers/serial_transport.hpp"
 #include "drivers/stream_session.hpp"
 #include "machine_arg.hpp"
@@ -31,6 +35,15 @@ constexpr const char* kSendHelp =
     "Sends each LINE and prints what the board answers. Settings ($N=V) and other $ commands\n"
     "go one at a time. Real-time commands: ? ! ~ reset (0x18) jog-cancel (0x85).\n"
     "Exit 0 when every line was answered ok, 1 on error:N (explained) or no answer.\n";
+
+constexpr const char* kSetupHelp =
+    "usage: fivebar setup --port DEVICE --machine PRESET|FILE [--baud 115200] [--write]\n"
+    "                     [--backup FILE]\n"
+    "Reads the board's settings ($$) and compares them with the ones the machine profile\n"
+    "expects (see fivebar grbl-settings). With --write, first saves the board's settings to\n"
+    "the backup file (default grbl-settings-backup-DATE.txt), then writes the differences one\n"
+    "at a time. Exit 0 when the board matches (or was written), 1 on differences without\n"
+    "--write or on any failure.\n";
 
 // QCoreApplication for a command that needs Qt's event loop.
 struct QtApp {
@@ -235,6 +248,95 @@ int runSend(const Args& args) {
   qt.app.exec();
   port.close();
   return sender.exitCode();
+}
+
+namespace {
+
+void printComparison(const setup::Settings& board, const setup::Settings& wanted,
+                     const std::vector<setup::SettingDiff>& diffs) {
+  std::printf("%-8s %14s %14s\n", "setting", "board", "profile");
+  for (const auto& [id, w] : wanted) {
+    const auto b = board.find(id);
+    const bool differs =
+        std::any_of(diffs.begin(), diffs.end(), [id = id](const auto& d) { return d.id == id; });
+    const std::string boardText = b == board.end() ? "-" : std::to_string(b->second);
+    std::printf("$%-7d %14s %14f%s\n", id, boardText.c_str(), w, differs ? "  differs" : "");
+  }
+  std::printf("%zu setting(s) differ\n", diffs.size());
+}
+
+std::string saveBackupFile(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::trunc);
+  out << text;
+  out.flush();
+  return out ? std::string() : path + ": cannot write the backup file";
+}
+
+}  // namespace
+
+int runSetup(const Args& args) {
+  const Options o(args, {"--port", "--baud", "--machine", "--backup"}, {"--write", "--help"});
+  if (o.flag("--help")) { std::cout << kSetupHelp; return 0; }
+  if (!o.positional().empty()) throw UsageError("setup takes no positional arguments");
+  const auto profile = loadMachine(o.required("--machine"), "setup", std::cerr);
+  if (!profile) return 1;
+  const bool write = o.flag("--write");
+  const std::string backupPath = o.value("--backup").value_or(
+      "grbl-settings-backup-" +
+      QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")).toStdString() +
+      ".txt");
+  QtApp qt;
+  SerialTransport port(QString::fromStdString(o.required("--port")), baudFrom(o));
+  MachineLink link(port, 0.5);
+  QString error;
+  if (!port.open(&error)) {
+    std::cerr << "fivebar setup: " << error.toStdString() << "\n";
+    return 1;
+  }
+  const setup::Settings wanted = setup::expectedSettings(*profile);
+  setup::SettingsSync sync(link.protocol());
+  std::vector<setup::SettingDiff> diffs;
+  int exitCode = 1;
+  bool reading = false, writing = false;
+  const double timeoutS = 10.0;
+  double deadlineS = -1.0;
+  const auto stop = [&](int code, const std::string& message) {
+    if (!message.empty()) std::cerr << "fivebar setup: " << message << "\n";
+    exitCode = code;
+    qt.app.quit();
+  };
+  QObject::connect(&link, &MachineLink::ticked, [&](double nowS) {
+    if (deadlineS < 0.0) deadlineS = nowS + timeoutS;
+    if (sync.state() == setup::SetupState::Failed) return stop(1, sync.problem());
+    if (!reading) {
+      if (link.protocol().statusReportsSeen() == 0) {
+        if (nowS > deadlineS) stop(1, "no status report: is it a GRBL 1.1 board at this baud rate?");
+        return;
+      }
+      reading = true;
+      deadlineS = nowS + timeoutS;
+      return sync.read();
+    }
+    if (sync.state() != setup::SetupState::Done) {
+      if (nowS > deadlineS) stop(1, "no answer within " + std::to_string(int(timeoutS)) + " s");
+      return;
+    }
+    if (writing) {
+      std::printf("wrote %zu setting(s); backup of the previous settings: %s\n", diffs.size(),
+                  backupPath.c_str());
+      return stop(0, "");
+    }
+    diffs = setup::compare(sync.board(), wanted);
+    printComparison(sync.board(), wanted, diffs);
+    if (diffs.empty() || !write) return stop(diffs.empty() ? 0 : 1, "");
+    writing = true;
+    deadlineS = nowS + timeoutS + 0.5 * double(diffs.size());
+    sync.apply(diffs, [&](const std::string& text) { return saveBackupFile(backupPath, text); });
+  });
+  link.start();
+  qt.app.exec();
+  port.close();
+  return exitCode;
 }
 
 }  // namespace fivebar::cli

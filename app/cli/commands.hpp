@@ -17,6 +17,7 @@ int runPlan(const Args& args);           // cmd_plan.cpp
 int runGrblSettings(const Args& args);   // cmd_plan.cpp
 int runStream(const Args& args);         // cmd_machine.cpp (Qt builds only)
 int runSend(const Args& args);           // cmd_machine.cpp (Qt builds only)
+int runSetup(const Args& args);          // cmd_machine.cpp (Qt builds only)
 // Further commands are declared here as they land (plan, grbl-settings, stream, send).
 
 }  // namespace fivebar::cli

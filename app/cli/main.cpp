@@ -24,6 +24,7 @@ constexpr Command kCommands[] = {
 #ifdef FIVEBAR_HAVE_DRIVERS
     {"stream", "stream a G-code job to a GRBL board (character counting, resume)", fivebar::cli::runStream},
     {"send", "send one-off lines or settings to a GRBL board", fivebar::cli::runSend},
+    {"setup", "compare a GRBL board's settings with a profile; --write applies them", fivebar::cli::runSetup},
 #endif
 };
 

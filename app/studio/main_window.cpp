@@ -62,6 +62,8 @@ MainWindow::MainWindow(const MachineProfile& profile, QWidget* parent) : QMainWi
   auto* machineUi = new MachineUi(*doc_, *preview_, *canvas_, *machineLayer_, this);
   machineUi->addPanels([this](QWidget* panel, const QString& title, const QString& name,
                               Qt::DockWidgetArea area) { return addMachinePanel(panel, title, name, area); });
+  machineMenu_->addSeparator();
+  machineMenu_->addAction(machineUi->settingsAction());
   cursorLabel_ = new QLabel(this);
   statusBar()->addPermanentWidget(cursorLabel_);
   connect(canvas_, &CanvasView::cursorMoved, this, [this](QPointF mm) {

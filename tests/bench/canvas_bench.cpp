@@ -193,11 +193,40 @@ void BM_Renderer_WheelZoom(benchmark::State& state) {
   setRatio(state, totalMs / static_cast<double>(state.iterations()));
 }
 
+// Wheel zoom with quick zoom (the studio's canvas): zoom frames scale the cached image; the
+// settled re-render after each burst of 6 wheel steps is included in the mean.
+void BM_Renderer_WheelZoomQuick(benchmark::State& state) {
+  const auto scene = jobScene();
+  ViewTransform view = fitView();
+  QImage image(kFrame, QImage::Format_ARGB32_Premultiplied);
+  SceneRenderer renderer;
+  ScenePaintOptions options;
+  options.colourBySpeed = true;
+  double totalMs = 0.0;
+  int frame = 0;
+  for (auto _ : state) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const bool settle = frame % 7 == 6;
+    if (!settle) view.zoomAround(QPointF(500.0, 300.0), (frame % 28 < 14) ? 1.2 : 1.0 / 1.2);
+    ++frame;
+    renderer.setQuickZoom(!settle);
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    renderer.paint(painter, view, scene, options, 1);
+    painter.end();
+    totalMs += elapsedMs(t0);
+  }
+  state.counters["preview_frames"] = renderer.previewFrames();
+  state.counters["full_renders"] = renderer.fullRenders();
+  setRatio(state, totalMs / static_cast<double>(state.iterations()));
+}
+
 BENCHMARK(BM_Baseline_WidePolylineAntialiased)->Unit(benchmark::kMillisecond)->Iterations(2);
 BENCHMARK(BM_SceneBuild)->Unit(benchmark::kMillisecond)->Iterations(2);
 BENCHMARK(BM_Scene_Render)->Arg(1)->Arg(4)->Arg(32)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Renderer_Pan)->Arg(1)->Arg(4)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Renderer_WheelZoom)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Renderer_WheelZoomQuick)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "drivers/serial_transport.hpp"
+#include "drivers/simulated_transport.hpp"
 #include "drivers/stream_session.hpp"
 #include "sim_harness.hpp"
 
@@ -195,6 +196,72 @@ INSTANTIATE_TEST_SUITE_P(Faults, PtyEndToEndFault,
                            std::string s = info.param.spec;
                            return s.substr(0, s.find('-'));
                          });
+
+// A fake transport: records writes, replays a board transcript, reports the port vanishing.
+class FakeTransport : public Transport {
+ public:
+  bool open(QString*) override { return open_ = true; }
+  void close() override { open_ = false; }
+  bool isOpen() const override { return open_; }
+  void write(const QByteArray& bytes) override { written += bytes; }
+  QString name() const override { return "fake"; }
+  void replay(const QByteArray& chunk) { emit bytesReceived(chunk); }
+  void vanish(const QString& why) { emit disconnected(why); }
+  QByteArray written;
+  bool open_ = false;
+};
+
+TEST(FakeTransport, TranscriptReplayThroughMachineLinkAndOneDisconnect) {
+  FakeTransport fake;
+  MachineLink link(fake);
+  struct Log : grbl::ProtocolListener {
+    int acks = 0, errors = 0, disconnects = 0;
+    void onAck(const grbl::Ack& a) override { ++acks; errors += a.ok() ? 0 : 1; }
+    void onDisconnected(const std::string&) override { ++disconnects; }
+  } log;
+  link.protocol().addListener(&log);
+  fake.open(nullptr);
+  link.protocol().enqueue("G1X10F600");
+  link.protocol().enqueue("G1X20");
+  link.protocol().enqueue("G2X1Y1I1");
+  EXPECT_EQ(fake.written, QByteArray("G1X10F600\nG1X20\nG2X1Y1I1\n"));
+  for (const char* chunk : {"o", "k\r\nok", "\r\n<Run|MPos:1.0", "00,0.000,0.000|Bf:13,100|FS:600,0>\r\nerr",
+                            "or:20\r\n"})
+    fake.replay(chunk);
+  EXPECT_EQ(log.acks, 3);
+  EXPECT_EQ(log.errors, 1);
+  EXPECT_EQ(link.protocol().state(), grbl::MachineState::Run);
+  // QSerialPort reports a vanished port again and again; the link goes down once.
+  for (int i = 0; i < 1000; ++i) fake.vanish("read error");
+  EXPECT_EQ(log.disconnects, 1);
+  link.protocol().removeListener(&log);
+}
+
+// The same session on the in-process simulated machine (SimulatedTransport, real-time clock
+// times 20): the transport seam swaps without changing anything above it.
+TEST(SimulatedTransport, StreamsAJobInProcess) {
+  PtyJob job;
+  SimulatedTransport transport({job.p, {}, false}, 20.0);
+  MachineLink link(transport);
+  StreamSession session(link, job.options(false));
+  QString error;
+  ASSERT_TRUE(transport.open(&error));
+  std::string problem;
+  ASSERT_TRUE(session.begin(&problem)) << problem;
+  Outcome out;
+  QEventLoop loop;
+  QObject::connect(&session, &StreamSession::finished, [&](bool ok, const QString& m) {
+    out = {true, ok, m.toStdString()};
+    loop.quit();
+  });
+  QTimer::singleShot(60000, &loop, &QEventLoop::quit);
+  transport.startClock();
+  link.start();
+  loop.exec();
+  ASSERT_TRUE(out.finished);
+  EXPECT_TRUE(out.ok) << out.message;
+  expectStrokesCover(job.strokes, transport.machine().strokes(), job.tol());
+}
 
 TEST(PtyEndToEnd, ResumeRefusesAChangedJob) {
   PtyJob job;

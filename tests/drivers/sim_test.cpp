@@ -164,6 +164,50 @@ TEST(SimMachine, SettingsReadAndWrite) {
   EXPECT_DOUBLE_EQ(s100[1], 50.0);
 }
 
+// The "|WCO:" fields of the status reports in `out`, in order ("" for a report without one).
+std::vector<std::string> wcoFieldsOf(const std::string& out) {
+  std::vector<std::string> fields;
+  for (size_t at = out.find('<'); at != std::string::npos; at = out.find('<', at + 1)) {
+    const std::string report = out.substr(at, out.find('>', at) - at);
+    const size_t w = report.find("|WCO:");
+    fields.push_back(w == std::string::npos
+                         ? ""
+                         : report.substr(w + 5, report.find('|', w + 5) - w - 5));
+  }
+  return fields;
+}
+
+// Real GRBL 1.1 sends WCO in the first status report after the offset changes (G10 L20 / L2),
+// not only on its periodic refresh.
+TEST(SimMachine, ChangedWorkOffsetIsInTheNextStatusReport) {
+  sim::SimMachine sim({testProfile(), {}, true});
+  sim.takeOutput();
+  const auto status = [&] {
+    sim.receive("?");
+    sim.advance(0.001);
+    const auto f = wcoFieldsOf(sim.takeOutput());
+    EXPECT_EQ(f.size(), 1u);
+    return f.empty() ? std::string("?") : f.back();
+  };
+  // Past the periodic WCO report, so the next one would not carry it by schedule.
+  for (int i = 0; i < 3; ++i) status();
+  ASSERT_EQ(status(), "");
+  sim.receive("G10 L20 P1 X10 Y-5\n");
+  sim.advance(0.01);
+  const std::string reply = sim.takeOutput();
+  ASSERT_NE(reply.find("ok"), std::string::npos) << reply;
+  const std::string wco = status();
+  ASSERT_FALSE(wco.empty()) << "no WCO right after G10 L20";
+  double x = 0, y = 0, z = 0;
+  ASSERT_EQ(std::sscanf(wco.c_str(), "%lf,%lf,%lf", &x, &y, &z), 3) << wco;
+  // G10 L20: the current machine position becomes work X10 Y-5, so WCO = MPos - (10, -5).
+  const auto home = testProfile().homeAngles;
+  EXPECT_NEAR(x, degFromRad(home.theta1) - 10.0, 1e-2) << wco;
+  EXPECT_NEAR(y, degFromRad(home.theta2) + 5.0, 1e-2) << wco;
+  // Unchanged afterwards: back to the periodic schedule (not in the following report).
+  EXPECT_EQ(status(), "");
+}
+
 TEST(SimMachine, RealSpeedStreamingNeverStarvesThePlannerInAStroke) {
   const MachineProfile p = testProfile();
   auto rng = fivebar::test::rng();

@@ -1,8 +1,13 @@
-// StudioDocument: every edit is undoable, merges by gesture, and signals what changed.
+// StudioDocument: every edit is undoable, merges by gesture, and signals what changed; the
+// placement tool turns mouse drags into one undoable edit each.
 #include <gtest/gtest.h>
 
+#include <QMouseEvent>
 #include <QSignalSpy>
+#include <cmath>
 
+#include "core/units.hpp"
+#include "widgets/placement_tool.hpp"
 #include "widgets/studio_document.hpp"
 
 namespace fivebar::widgets {
@@ -146,6 +151,70 @@ TEST(StudioDocument, ProfileEditIsUndoable) {
   doc.undoStack()->undo();
   EXPECT_DOUBLE_EQ(doc.profile().geometry.a1, p.geometry.a1 - 10.0);
   EXPECT_EQ(spy.count(), 2);
+}
+
+}  // namespace
+}  // namespace fivebar::widgets
+
+namespace fivebar::widgets {
+namespace {
+
+void drag(PlacementTool& tool, const ViewTransform& view, QPointF from, QPointF to,
+          Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+  QMouseEvent press(QEvent::MouseButtonPress, from, from, Qt::LeftButton, Qt::LeftButton, modifiers);
+  ASSERT_TRUE(tool.mousePress(&press, view));
+  for (int i = 1; i <= 10; ++i) {
+    const QPointF at = from + (to - from) * (i / 10.0);
+    QMouseEvent move(QEvent::MouseMove, at, at, Qt::NoButton, Qt::LeftButton, modifiers);
+    EXPECT_TRUE(tool.mouseMove(&move, view));
+  }
+  QMouseEvent release(QEvent::MouseButtonRelease, to, to, Qt::LeftButton, Qt::NoButton, modifiers);
+  EXPECT_TRUE(tool.mouseRelease(&release, view));
+}
+
+TEST(PlacementTool, DragsMoveScaleAndRotateInOneUndoStepEach) {
+  StudioDocument doc(profile());
+  Placement at;
+  at.centerMm = Vec2(0.0, 150.0);
+  doc.replaceDrawing(threeLayers(), QStringLiteral("a.svg"), at);  // work bounds 0..3 x 0..1 mm
+  Placement big = doc.placement();
+  big.scale = 20.0;  // 60 x 20 mm on the machine
+  doc.setPlacement(big);
+  PlacementTool tool(doc);
+  const ViewTransform view(QPointF(0.0, 150.0), 4.0, QSizeF(800.0, 600.0));
+  const int before = doc.undoStack()->count();
+  // Move: drag the body 40 px right and 20 px up = +10 mm x, +5 mm y.
+  const QPointF centre = view.widgetFromMachine(QPointF(0.0, 150.0));
+  EXPECT_EQ(tool.handleAt(centre, view), PlacementTool::Handle::Body);
+  drag(tool, view, centre, centre + QPointF(40.0, -20.0));
+  EXPECT_NEAR(doc.placement().centerMm.x(), 10.0, 1e-9);
+  EXPECT_NEAR(doc.placement().centerMm.y(), 155.0, 1e-9);
+  EXPECT_EQ(doc.undoStack()->count(), before + 1);
+  // Scale: drag a corner twice as far from the centre.
+  const auto corners = tool.cornersMm();
+  ASSERT_TRUE(corners);
+  const QPointF corner = view.widgetFromMachine((*corners)[2]);
+  const QPointF c = view.widgetFromMachine(QPointF(10.0, 155.0));
+  EXPECT_EQ(tool.handleAt(corner, view), PlacementTool::Handle::Corner);
+  drag(tool, view, corner, c + 2.0 * (corner - c));
+  EXPECT_NEAR(doc.placement().scale, 40.0, 1e-6);
+  EXPECT_EQ(doc.undoStack()->count(), before + 2);
+  // Rotate with Shift: snaps to a multiple of 15 deg.
+  const auto rotated = tool.cornersMm();
+  const QPointF top = (view.widgetFromMachine((*rotated)[2]) + view.widgetFromMachine((*rotated)[3])) / 2.0;
+  QLineF handle(c, top);
+  handle.setLength(handle.length() + PlacementTool::kRotateHandleOffsetPx);
+  EXPECT_EQ(tool.handleAt(handle.p2(), view), PlacementTool::Handle::Rotate);
+  drag(tool, view, handle.p2(), c + QPointF(-60.0, -48.0), Qt::ShiftModifier);
+  const double deg = degFromRad(doc.placement().rotationRad);
+  EXPECT_NEAR(deg / 15.0, std::round(deg / 15.0), 1e-9);
+  EXPECT_GT(std::abs(deg), 10.0);
+  EXPECT_EQ(doc.undoStack()->count(), before + 3);
+  doc.undoStack()->undo();
+  doc.undoStack()->undo();
+  doc.undoStack()->undo();
+  EXPECT_EQ(doc.placement().centerMm, Vec2(0.0, 150.0));
+  EXPECT_DOUBLE_EQ(doc.placement().scale, 20.0);
 }
 
 }  // namespace

@@ -180,3 +180,33 @@ TEST(SceneRenderer, CachedFrameEqualsDirectPaint) {
 
 }  // namespace
 }  // namespace fivebar::widgets
+
+namespace fivebar::widgets {
+namespace {
+
+TEST(SceneRenderer, QuickZoomScalesTheCacheUntilSettled) {
+  auto scene = std::make_shared<const PathScene>(std::vector<ScenePath>{spiral(20000, 60.0)});
+  ViewTransform view(QPointF(0.0, 150.0), 2.0, QSizeF(300.0, 200.0));
+  SceneRenderer renderer;
+  renderer.setQuickZoom(true);
+  QImage frame = transparentImage(QSize(300, 200));
+  QPainter painter(&frame);
+  const ScenePaintOptions o;
+  renderer.paint(painter, view, scene, o, 1);
+  EXPECT_EQ(renderer.fullRenders(), 1);
+  EXPECT_FALSE(renderer.stale());
+  for (int i = 0; i < 4; ++i) {
+    view.zoomAround(QPointF(150.0, 100.0), 1.2);
+    renderer.paint(painter, view, scene, o, 1);
+  }
+  EXPECT_EQ(renderer.fullRenders(), 1);  // zoom steps reuse the cached image, scaled
+  EXPECT_EQ(renderer.previewFrames(), 4);
+  EXPECT_TRUE(renderer.stale());
+  renderer.setQuickZoom(false);  // the view rests: render sharp
+  renderer.paint(painter, view, scene, o, 1);
+  EXPECT_EQ(renderer.fullRenders(), 2);
+  EXPECT_FALSE(renderer.stale());
+}
+
+}  // namespace
+}  // namespace fivebar::widgets

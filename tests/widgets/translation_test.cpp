@@ -1,0 +1,202 @@
+// The German translation is complete (every message translated) and is what tr() finds at run
+// time from the embedded .qm (the contexts must be the qualified class names).
+#include <gtest/gtest.h>
+
+#include <QAbstractButton>
+#include <QAction>
+#include <QCoreApplication>
+#include <QDockWidget>
+#include <QFile>
+#include <QGroupBox>
+#include <QLabel>
+#include <QMenu>
+#include <QRegularExpression>
+#include <QTranslator>
+#include <QXmlStreamReader>
+#include <set>
+
+#include "app/studio/main_window.hpp"
+#include "core/profile.hpp"
+#include "widgets/console_panel.hpp"
+#include "widgets/import_controller.hpp"
+#include "widgets/jog_controller.hpp"
+#include "widgets/jog_goto_tool.hpp"
+#include "widgets/jog_panel.hpp"
+#include "widgets/layers_panel.hpp"
+#include "widgets/machine_banner.hpp"
+#include "widgets/machine_panel.hpp"
+#include "widgets/machine_session.hpp"
+#include "widgets/machine_settings_dialog.hpp"
+#include "widgets/machine_ui.hpp"
+#include "widgets/mode_panel.hpp"
+#include "widgets/placement_panel.hpp"
+#include "widgets/preview_panel.hpp"
+#include "widgets/profile_editor.hpp"
+#include "widgets/run_controller.hpp"
+#include "widgets/run_panel.hpp"
+#include "widgets/simulation_panel.hpp"
+#include "widgets/studio_document.hpp"
+
+namespace {
+
+// The contexts tr() uses at run time: the QObject classes' meta-object names (qualified) and
+// the explicit contexts of QCoreApplication::translate calls.
+std::set<QString> runtimeContexts() {
+  using namespace fivebar::widgets;
+  std::set<QString> names;
+  for (const QMetaObject* m :
+       {&fivebar::studio::MainWindow::staticMetaObject, &ConsolePanel::staticMetaObject,
+        &ImportController::staticMetaObject, &JogController::staticMetaObject,
+        &GoToTool::staticMetaObject, &JogPanel::staticMetaObject, &LayersPanel::staticMetaObject,
+        &MachineBanner::staticMetaObject, &MachinePanel::staticMetaObject,
+        &MachineSession::staticMetaObject, &MachineSettingsDialog::staticMetaObject,
+        &MachineUi::staticMetaObject,
+        &ModePanel::staticMetaObject, &PlacementPanel::staticMetaObject,
+        &PreviewPanel::staticMetaObject, &SpeedLegend::staticMetaObject,
+        &ProfileEditor::staticMetaObject, &RunController::staticMetaObject,
+        &RunPanel::staticMetaObject, &SimulationPanel::staticMetaObject,
+        &StudioDocument::staticMetaObject})
+    names.insert(QString::fromLatin1(m->className()));
+  for (const char* c : {"QObject", "main", "DocumentCommands", "JobPipeline", "MapPainter",
+                        "WorkspaceLegend"})
+    names.insert(QString::fromLatin1(c));
+  return names;
+}
+
+// Every context of the .ts file must be one tr() looks up; an unqualified "ModePanel" (lupdate
+// not resolving "namespace fivebar::widgets {") would never be found at run time.
+TEST(Translations, ContextsAreTheRuntimeOnes) {
+  QFile ts(QStringLiteral(FIVEBAR_TS_DE));
+  ASSERT_TRUE(ts.open(QIODevice::ReadOnly)) << FIVEBAR_TS_DE;
+  QXmlStreamReader xml(&ts);
+  const std::set<QString> known = runtimeContexts();
+  QStringList unknown;
+  while (!xml.atEnd()) {
+    xml.readNext();
+    if (xml.isStartElement() && xml.name() == QLatin1String("name")) {
+      const QString context = xml.readElementText();
+      if (!known.count(context)) unknown << context;
+    }
+  }
+  EXPECT_TRUE(unknown.isEmpty()) << unknown.join(QLatin1Char(' ')).toStdString();
+}
+
+// Samples through the real run-time path: the installed German translator and tr() of the
+// classes (whose context is their meta-object name).
+TEST(Translations, RuntimeTrReturnsGerman) {
+  QTranslator translator;
+  ASSERT_TRUE(translator.load(QStringLiteral(":/i18n/fivebar_de.qm")));
+  ASSERT_TRUE(QCoreApplication::installTranslator(&translator));
+  using namespace fivebar::widgets;
+  EXPECT_EQ(ModePanel::tr("Working mode"), QStringLiteral("Arbeitsmodus"));
+  EXPECT_EQ(fivebar::studio::MainWindow::tr("&File"), QStringLiteral("&Datei"));
+  EXPECT_EQ(MachineUi::tr("Jog"), QStringLiteral("Verfahren"));
+  EXPECT_EQ(LayersPanel::tr("%n path(s)", nullptr, 2), QStringLiteral("2 Pfade"));
+  EXPECT_EQ(QCoreApplication::translate("WorkspaceLegend", "reach boundary"),
+            QStringLiteral("Reichweitengrenze"));
+  QCoreApplication::removeTranslator(&translator);
+}
+
+// The texts a user reads in the main window: actions, menus, dock titles, labels, group boxes,
+// buttons, in a fixed order (children order of one construction).
+QStringList visibleTexts(const QWidget& window) {
+  QStringList out;
+  for (const QAction* a : window.findChildren<QAction*>()) out << a->text();
+  for (const QMenu* m : window.findChildren<QMenu*>()) out << m->title();
+  for (const QDockWidget* d : window.findChildren<QDockWidget*>()) out << d->windowTitle();
+  for (const QLabel* l : window.findChildren<QLabel*>()) out << l->text();
+  for (const QGroupBox* g : window.findChildren<QGroupBox*>()) out << g->title();
+  for (const QAbstractButton* b : window.findChildren<QAbstractButton*>()) out << b->text();
+  return out;
+}
+
+// Translations identical to their source in the .ts ("Status", "Alarm", "F5"): legitimately
+// the same in German.
+std::set<QString> sameInGerman() {
+  QFile ts(QStringLiteral(FIVEBAR_TS_DE));
+  std::set<QString> same;
+  if (!ts.open(QIODevice::ReadOnly)) return same;
+  QXmlStreamReader xml(&ts);
+  QString source;
+  while (!xml.atEnd()) {
+    xml.readNext();
+    if (!xml.isStartElement()) continue;
+    if (xml.name() == QLatin1String("source")) source = xml.readElementText();
+    if (xml.name() == QLatin1String("translation") &&
+        xml.readElementText(QXmlStreamReader::IncludeChildElements) == source)
+      same.insert(source);
+  }
+  return same;
+}
+
+// The main window built under the German translator shows no text it shows in English, except
+// words that are the same in both languages and texts without letters (numbers, units).
+TEST(Translations, MainWindowShowsNoEnglish) {
+  const auto profile = fivebar::preset("maker-plotter");
+  ASSERT_TRUE(profile.has_value());
+  QStringList english;
+  {
+    fivebar::studio::MainWindow window(*profile);
+    english = visibleTexts(window);
+  }
+  QTranslator translator;
+  ASSERT_TRUE(translator.load(QStringLiteral(":/i18n/fivebar_de.qm")));
+  QCoreApplication::installTranslator(&translator);
+  QStringList german;
+  {
+    fivebar::studio::MainWindow window(*profile);
+    german = visibleTexts(window);
+  }
+  QCoreApplication::removeTranslator(&translator);
+  ASSERT_EQ(english.size(), german.size());
+  const std::set<QString> same = sameInGerman();
+  const QRegularExpression words(QStringLiteral("[A-Za-z]{3,}"));
+  QStringList untranslated;
+  for (qsizetype i = 0; i < english.size(); ++i)
+    if (english[i] == german[i] && english[i].contains(words) && !same.count(english[i]))
+      untranslated << english[i];
+  EXPECT_GT(english.size(), 40);
+  EXPECT_TRUE(untranslated.isEmpty()) << untranslated.join(QStringLiteral(" | ")).toStdString();
+}
+
+TEST(Translations, GermanIsComplete) {
+  QFile ts(QStringLiteral(FIVEBAR_TS_DE));
+  ASSERT_TRUE(ts.open(QIODevice::ReadOnly)) << FIVEBAR_TS_DE;
+  QXmlStreamReader xml(&ts);
+  int messages = 0;
+  QStringList untranslated;
+  QString context, source;
+  while (!xml.atEnd()) {
+    xml.readNext();
+    if (!xml.isStartElement()) continue;
+    if (xml.name() == QLatin1String("name")) context = xml.readElementText();
+    if (xml.name() == QLatin1String("source")) source = xml.readElementText();
+    if (xml.name() == QLatin1String("translation")) {
+      ++messages;
+      const bool unfinished = xml.attributes().value(QLatin1String("type")) == QLatin1String("unfinished");
+      // Plural messages hold <numerusform> children; readElementText would fail on them.
+      const QString text = xml.readElementText(QXmlStreamReader::IncludeChildElements);
+      if (unfinished || text.trimmed().isEmpty()) untranslated << context + QStringLiteral(": ") + source;
+    }
+  }
+  ASSERT_FALSE(xml.hasError()) << xml.errorString().toStdString();
+  EXPECT_GT(messages, 100);
+  EXPECT_TRUE(untranslated.isEmpty()) << untranslated.join(QLatin1Char('\n')).toStdString();
+}
+
+TEST(Translations, EmbeddedGermanIsFoundByQualifiedContexts) {
+  QTranslator translator;
+  ASSERT_TRUE(translator.load(QStringLiteral(":/i18n/fivebar_de.qm")));
+  EXPECT_EQ(translator.translate("fivebar::widgets::ModePanel", "Working mode"),
+            QStringLiteral("Arbeitsmodus"));
+  EXPECT_EQ(translator.translate("fivebar::studio::MainWindow", "&File"), QStringLiteral("&Datei"));
+  EXPECT_EQ(translator.translate("DocumentCommands", "Move drawing"),
+            QStringLiteral("Zeichnung verschieben"));
+  // Plural forms (QCoreApplication::translate substitutes %n afterwards).
+  EXPECT_EQ(translator.translate("fivebar::widgets::LayersPanel", "%n path(s)", nullptr, 3),
+            QStringLiteral("%n Pfade"));
+  EXPECT_EQ(translator.translate("fivebar::widgets::LayersPanel", "%n path(s)", nullptr, 1),
+            QStringLiteral("%n Pfad"));
+}
+
+}  // namespace
