@@ -1,6 +1,7 @@
 #include "gcode.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -10,11 +11,20 @@
 namespace fivebar {
 namespace {
 
-// Fixed-point text of `value` with `decimals` decimals; never "-0.000".
+// Fixed-point text of `value` with `decimals` decimals, as printf("%.*f") writes it, but never
+// "-0.000". std::to_chars gives the same digits without locale and is several times faster on
+// the million numbers of a large job.
 std::string fixed(double value, int decimals) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
-  std::string s(buf);
+  const std::to_chars_result r =
+      std::to_chars(buf, buf + sizeof buf, value, std::chars_format::fixed, decimals);
+  std::string s;
+  if (r.ec == std::errc{}) {
+    s.assign(buf, r.ptr);
+  } else {  // too long for the buffer (|value| near 1e60 or more): let snprintf size it
+    s.resize(static_cast<size_t>(std::snprintf(nullptr, 0, "%.*f", decimals, value)) + 1);
+    s.resize(static_cast<size_t>(std::snprintf(s.data(), s.size(), "%.*f", decimals, value)));
+  }
   if (s[0] == '-' && s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);
   return s;
 }

@@ -59,6 +59,7 @@ class MotionPlanner {
       const size_t n = std::min(kChunkStrokes, strokes_.size() - first);
       chunk.assign(n, Prepared{});
       parallelFor(n, threads, [&](size_t i) { prepare(first + i, chunk[i]); });
+      reserveMoves(chunk);
       for (size_t i = 0; i < n; ++i) drawStroke(first + i, chunk[i]);
     }
     if (penDown_) penUp();
@@ -84,14 +85,25 @@ class MotionPlanner {
   struct Prepared {
     SegmentedStroke seg;
     std::vector<SegmentFeed> feeds;
+    std::vector<double> typeIIRad;  // type II margin at each waypoint (turn-independent)
   };
 
   void prepare(size_t k, Prepared& out) const {
     const Stroke& s = strokes_[k];
     if (s.points.empty()) return;
     out.seg = segmentStroke(g_, mode_, p_.assembly, s.points, job_.start, segOpt_);
-    if (out.seg.ok())
-      out.feeds = planFeeds(g_, p_.assembly, out.seg.waypoints, drawSpeed(s.layerIndex), limits_);
+    if (!out.seg.ok()) return;
+    out.feeds = planFeeds(g_, p_.assembly, out.seg.waypoints, drawSpeed(s.layerIndex), limits_);
+    out.typeIIRad.reserve(out.seg.waypoints.size());
+    for (const JointWaypoint& w : out.seg.waypoints) out.typeIIRad.push_back(typeIIMarginAt(w.q, w.p));
+  }
+
+  // Room for a chunk's moves (draws plus a few tool and travel moves per stroke), growing the
+  // job geometrically so that the moves are not copied once per chunk.
+  void reserveMoves(const std::vector<Prepared>& chunk) {
+    size_t need = job_.moves.size();
+    for (const Prepared& p : chunk) need += p.feeds.size() + 6;
+    if (need > job_.moves.capacity()) job_.moves.reserve(std::max(need, 2 * job_.moves.capacity()));
   }
 
   // Shifts the stroke's angles by whole turns so that it starts nearest the current pose.
@@ -130,14 +142,14 @@ class MotionPlanner {
       return;
     penDown(static_cast<int>(k), layer);
     ps.firstMove = static_cast<int>(job_.moves.size());
-    draw(seg, prepared.feeds, static_cast<int>(k), layer);
+    draw(seg, prepared, static_cast<int>(k), layer);
     ps.moveCount = static_cast<int>(job_.moves.size()) - ps.firstMove;
     for (const JointWaypoint& w : seg.waypoints) ps.lengthMm += w.pathLengthMm;
     job_.summary.penDownMm += ps.lengthMm;
   }
 
-  void draw(const SegmentedStroke& seg, const std::vector<SegmentFeed>& feeds, int stroke,
-            int layer) {
+  void draw(const SegmentedStroke& seg, const Prepared& prepared, int stroke, int layer) {
+    const std::vector<SegmentFeed>& feeds = prepared.feeds;
     for (size_t i = 0; i < feeds.size(); ++i) {
       const JointWaypoint& w = seg.waypoints[i + 1];
       JobMove& m = push(JobMoveKind::Draw, stroke, layer);
@@ -148,7 +160,7 @@ class MotionPlanner {
       m.feedLimited = feeds[i].limited();
       m.maxDeviationMm = w.deviationMm;
       m.toolValue = toolDownValue(layer);
-      moved(w.q, w.p);
+      moved(w.q, w.p, prepared.typeIIRad[i + 1]);
       job_.summary.segments += 1;
       job_.summary.feedLimitedSegments += m.feedLimited ? 1 : 0;
       job_.summary.maxDeviationMm = std::max(job_.summary.maxDeviationMm, w.deviationMm);
@@ -226,11 +238,15 @@ class MotionPlanner {
     return m;
   }
 
-  void moved(const JointAngles& q, const Vec2& p) {
+  double typeIIMarginAt(const JointAngles& q, const Vec2& p) const {
+    return singularityMargins(g_, makePose(g_, q, p)).typeII;
+  }
+
+  void moved(const JointAngles& q, const Vec2& p) { moved(q, p, typeIIMarginAt(q, p)); }
+  void moved(const JointAngles& q, const Vec2& p, double typeIIRad) {
     at_ = q;
     atXY_ = p;
-    const double margin = singularityMargins(g_, makePose(g_, q, p)).typeII;
-    minMargin_ = std::min(minMargin_, margin);
+    minMargin_ = std::min(minMargin_, typeIIRad);
     job_.summary.minTypeIIMarginRad = minMargin_;
   }
 

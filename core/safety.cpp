@@ -17,8 +17,9 @@ namespace {
 // limit, and the resolution of the reported smallest margin, rad. Elsewhere the step is set by
 // the Lipschitz bound alone (nextStepRad), which is what makes the check safe.
 constexpr double kFineJointStepRad = radFromDeg(0.1);
-// Bracket width (joint rad) at which the search for the smallest margin of a move stops.
-constexpr double kMarginSearchRad = radFromDeg(0.01);
+// Bracket width (joint rad) at which the search for the smallest margin of a move stops: the
+// resolution of sampling every 0.1 deg, at the cost of a few samples.
+constexpr double kMarginSearchRad = kFineJointStepRad;
 // Smallest step the adaptive rule may take, so a move always ends, rad.
 constexpr double kMinJointStepRad = 1e-5;
 // Type II margin below which the forward-kinematics branch is ambiguous: a move that gets this

@@ -35,8 +35,8 @@ struct MoveCheck {
 // assembly mode, by sampling it finely enough that no excursion between samples is missed: the
 // step between samples comes from a Lipschitz bound on the margins (derivation in safety.cpp),
 // so no margin can cross its threshold between two samples; within 0.1 deg of a joint limit
-// samples are at most 0.1 deg apart. The smallest type II margin reported is refined to 0.01 deg
-// of joint motion around the smallest sample. Each sample: joint limits, loop closure (forward
+// samples are at most 0.1 deg apart. The smallest type II margin reported is refined to 0.1 deg
+// of joint motion around the smallest sample (golden section search). Each sample: joint limits, loop closure (forward
 // kinematics in profile.assembly), type II margin (below 0.05 deg the move touches the type II
 // locus: AssemblyChange, or CannotClose when it goes on out of the closable region), type II
 // and type I margins of the profile. Reports the first problem along the move.

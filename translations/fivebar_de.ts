@@ -707,6 +707,10 @@
         <source>Connection lost: %1</source>
         <translation>Verbindung verloren: %1</translation>
     </message>
+    <message>
+        <source>the simulated machine</source>
+        <translation>der simulierten Maschine</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachineSettingsDialog</name>

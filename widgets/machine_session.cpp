@@ -60,7 +60,7 @@ bool MachineSession::openLink(std::unique_ptr<Transport> transport, QString* err
   link_ = std::make_unique<MachineLink>(*transport_, kPollIntervalS, kTickMs);
   link_->protocol().addListener(this);
   link_->start();
-  emit consoleLine(tr("Connected to %1.").arg(transport_->name()), ConsoleKind::Info);
+  emit consoleLine(tr("Connected to %1.").arg(linkName()), ConsoleKind::Info);
   emit connectionChanged(true);
   return true;
 }
@@ -92,7 +92,13 @@ void MachineSession::teardown(const QString& reason) {
   emit connectionChanged(false);
 }
 
-QString MachineSession::linkName() const { return transport_ ? transport_->name() : QString(); }
+// The port path, or the built-in simulator in the user's language.
+QString MachineSession::linkName() const {
+  if (!transport_) return {};
+  if (dynamic_cast<const SimulatedTransport*>(transport_.get()) != nullptr)
+    return tr("the simulated machine");
+  return transport_->name();
+}
 
 grbl::MachineState MachineSession::state() const {
   return link_ ? link_->protocol().state() : grbl::MachineState::Unknown;

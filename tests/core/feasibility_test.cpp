@@ -219,5 +219,45 @@ TEST(Feasibility, HundredThousandPointsAreFast) {
 #endif
 }
 
+// The preflight checks strokes in parallel chunks (of 1024) and merges them in job order: the
+// report must name exactly the broken strokes, in order, the same on every run.
+TEST(Feasibility, ManyStrokesReportProblemsInJobOrderAndRepeatably) {
+  const MachineProfile pr = daiProfile();
+  std::vector<Stroke> job;
+  std::vector<int> broken;
+  std::size_t reachable = 0;
+  for (int i = 0; i < 2500; ++i) {
+    const double x = -30.0 + 0.024 * i;
+    job.push_back(line({x, 160.0}, {x + 5.0, 175.0}, 3, i % 3, i));
+    if (i % 600 == 17) {  // pokes out of both legs' reach (more than 270 mm from each motor)
+      job.back().points.push_back({0.0, 262.0});
+      broken.push_back(i);
+    }
+    for (const Vec2& p : job.back().points) reachable += inverse(kDai, p, WorkingMode::PlusPlus).ok();
+  }
+  PreflightOptions o;
+  o.maxListedProblems = 1000;
+  o.suggestFixes = false;
+  const FeasibilityReport r = preflight(job, pr, WorkingMode::PlusPlus, o);
+  ASSERT_FALSE(r.feasible);
+  EXPECT_EQ(r.pointsChecked, reachable);
+  std::vector<int> named;
+  for (std::size_t k = 0; k < r.problems.size(); ++k) {
+    const PreflightProblem& p = r.problems[k];
+    if (k > 0) EXPECT_GE(p.strokeIndex, r.problems[k - 1].strokeIndex);
+    if (p.kind == MoveKind::Point && p.status == MoveStatus::CannotClose) {
+      named.push_back(p.strokeIndex);
+      EXPECT_EQ(p.pathIndex, p.strokeIndex);
+      EXPECT_EQ(p.pointIndex, 4);
+    }
+  }
+  EXPECT_EQ(named, broken);
+  const FeasibilityReport again = preflight(job, pr, WorkingMode::PlusPlus, o);
+  ASSERT_EQ(again.problems.size(), r.problems.size());
+  for (std::size_t k = 0; k < r.problems.size(); ++k)
+    EXPECT_EQ(again.problems[k].reason, r.problems[k].reason);
+  EXPECT_EQ(again.minTypeIIMarginRad, r.minTypeIIMarginRad);
+}
+
 }  // namespace
 }  // namespace fivebar
