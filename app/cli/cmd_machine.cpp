@@ -259,8 +259,9 @@ void printComparison(const setup::Settings& board, const setup::Settings& wanted
     const auto b = board.find(id);
     const bool differs =
         std::any_of(diffs.begin(), diffs.end(), [id = id](const auto& d) { return d.id == id; });
-    const std::string boardText = b == board.end() ? "-" : std::to_string(b->second);
-    std::printf("$%-7d %14s %14f%s\n", id, boardText.c_str(), w, differs ? "  differs" : "");
+    char boardText[32] = "-";
+    if (b != board.end()) std::snprintf(boardText, sizeof boardText, "%.4f", b->second);
+    std::printf("$%-7d %14s %14.4f%s\n", id, boardText, w, differs ? "  differs" : "");
   }
   std::printf("%zu setting(s) differ\n", diffs.size());
 }
