@@ -8,13 +8,17 @@
 #include <QGuiApplication>
 #include <QImage>
 #include <QPainter>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
 #include <random>
 
+#include "core/kinematics.hpp"
+#include "widgets/machine_painter.hpp"
 #include "widgets/path_scene.hpp"
 #include "widgets/scene_renderer.hpp"
+#include "widgets/studio_palette.hpp"
 #include "widgets/view_transform.hpp"
 
 namespace {
@@ -221,12 +225,109 @@ void BM_Renderer_WheelZoomQuick(benchmark::State& state) {
   setRatio(state, totalMs / static_cast<double>(state.iterations()));
 }
 
+// Simulation playback frames (the studio at 60 Hz, speed x10). The file's job is ScenePaths, not
+// a PlannedJob, so the clock is mimicked: each order (segment or travel move) lasts its length
+// over its feed (travel at 100 mm/s); per frame the time advances by 10/60 s, the pen point is
+// interpolated in the current move and the linkage posed by inverse kinematics (a 200/200 mm
+// arm machine, motors 100 mm apart). The frame is painted as the canvas does while simulating:
+// grid, the job faded (opacity 0.25), the trace up to the completed moves grown incrementally,
+// then the machine (opacity 0.85). The workspace and legend layers are not painted.
+struct SimTimeline {
+  std::vector<double> endS;      // per order: cumulative time at its end
+  std::vector<QPointF> fromMm;   // per order: start point
+  std::vector<QPointF> toMm;     // per order: end point
+};
+
+const SimTimeline& simTimeline() {
+  static const SimTimeline timeline = [] {
+    SimTimeline t;
+    double now = 0.0;
+    for (const ScenePath& p : jobPaths()) {
+      for (std::size_t i = 0; i + 1 < p.pointsMm.size(); ++i) {
+        const QPointF a = p.pointsMm[i], b = p.pointsMm[i + 1];
+        const double len = std::hypot(b.x() - a.x(), b.y() - a.y());
+        const double feed = p.speedsMmPerS.empty() ? 100.0 : p.speedsMmPerS[i];
+        now += len / feed;
+        t.endS.push_back(now);
+        t.fromMm.push_back(a);
+        t.toMm.push_back(b);
+      }
+    }
+    return t;
+  }();
+  return timeline;
+}
+
+void BM_Simulation_Frame(benchmark::State& state) {
+  constexpr double kSpeed = 10.0;
+  const auto scene = jobScene();
+  const SimTimeline& timeline = simTimeline();
+  fivebar::Geometry g;
+  g.a1 = g.a2 = 200.0;
+  g.b1 = g.b2 = 200.0;
+  g.w = 100.0;
+  const ViewTransform view = fitView();
+  QImage image(kFrame, QImage::Format_ARGB32_Premultiplied);
+  SceneRenderer mainRenderer;
+  SceneRenderer traceRenderer;
+  ScenePaintOptions faded;
+  faded.colourBySpeed = true;
+  faded.opacity = 0.25;
+  ScenePaintOptions trace;
+  trace.colourBySpeed = false;
+  trace.drawColour = fivebar::widgets::palette::trace();
+  trace.penWidthPx = 1.5;
+  fivebar::Pose pose;
+  bool havePose = false;
+  double timeS = 0.0;
+  int ikFailures = 0;
+  double totalMs = 0.0;
+  for (auto _ : state) {
+    const auto t0 = std::chrono::steady_clock::now();
+    timeS += kSpeed / 60.0;
+    const auto it = std::upper_bound(timeline.endS.begin(), timeline.endS.end(), timeS);
+    const int move = static_cast<int>(it - timeline.endS.begin());  // moves fully done
+    QPointF penMm = timeline.toMm.back();
+    if (move < static_cast<int>(timeline.endS.size())) {
+      const double start = move > 0 ? timeline.endS[move - 1] : 0.0;
+      const double span = timeline.endS[move] - start;
+      const double f = span > 0.0 ? (timeS - start) / span : 1.0;
+      penMm = timeline.fromMm[move] + f * (timeline.toMm[move] - timeline.fromMm[move]);
+    }
+    const fivebar::Vec2 p(penMm.x(), penMm.y());
+    const fivebar::IkResult ik = fivebar::inverse(g, p, fivebar::WorkingMode::PlusMinus);
+    if (ik.ok()) {
+      pose = fivebar::makePose(g, ik.angles, p);
+      havePose = true;
+    } else {
+      ++ikFailures;
+    }
+    trace.orderLimit = move;
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    fivebar::widgets::paintGrid(painter, view);
+    mainRenderer.paint(painter, view, scene, faded, 1u | 16u);
+    traceRenderer.paint(painter, view, scene, trace, 32u);
+    if (havePose) fivebar::widgets::paintMachine(painter, view.widgetFromMachine(), g, pose, 0.85);
+    painter.end();
+    totalMs += elapsedMs(t0);
+  }
+  const double ms = totalMs / static_cast<double>(state.iterations());
+  state.counters["fps"] = 1000.0 / ms;
+  state.counters["sim_time_s"] = timeS;
+  state.counters["ik_failures"] = ikFailures;
+  state.counters["full_renders"] = mainRenderer.fullRenders() + traceRenderer.fullRenders();
+  state.counters["trace_incremental_renders"] = traceRenderer.incrementalRenders();
+  setRatio(state, ms);
+}
+
 BENCHMARK(BM_Baseline_WidePolylineAntialiased)->Unit(benchmark::kMillisecond)->Iterations(2);
 BENCHMARK(BM_SceneBuild)->Unit(benchmark::kMillisecond)->Iterations(2);
 BENCHMARK(BM_Scene_Render)->Arg(1)->Arg(4)->Arg(32)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Renderer_Pan)->Arg(1)->Arg(4)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Renderer_WheelZoom)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Renderer_WheelZoomQuick)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Simulation_Frame)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
