@@ -6,16 +6,6 @@
 
 #include "test_support.hpp"
 
-namespace fivebar::test {
-std::uint64_t seed() {
-  static const std::uint64_t s = [] {
-    const char* env = std::getenv("FIVEBAR_TEST_SEED");
-    return env ? std::stoull(env) : std::uint64_t{20261122};
-  }();
-  return s;
-}
-}  // namespace fivebar::test
-
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
   std::cout << "random seed " << fivebar::test::seed() << " (set FIVEBAR_TEST_SEED to change)\n";

@@ -7,16 +7,6 @@
 
 #include "test_support.hpp"
 
-namespace fivebar::test {
-std::uint64_t seed() {
-  static const std::uint64_t s = [] {
-    const char* env = std::getenv("FIVEBAR_TEST_SEED");
-    return env ? std::stoull(env) : std::uint64_t{20261122};
-  }();
-  return s;
-}
-}  // namespace fivebar::test
-
 int main(int argc, char** argv) {
   qputenv("QT_QPA_PLATFORM", "offscreen");
   QCoreApplication app(argc, argv);
