@@ -75,7 +75,10 @@ std::vector<SegmentFeed> planFeeds(const Geometry& g, AssemblyMode assembly,
     const double asked = b.pathLengthMm / askedMmPerS;
     const double motor = std::max(std::abs(dq[k][0]) / limits.maxSpeedRadPerS1,
                                   std::abs(dq[k][1]) / limits.maxSpeedRadPerS2);
-    const double peak = peakSpeedPerUnit(g, assembly, a.q, b.q, b.pathLengthMm) / askedMmPerS;
+    const double peakMm = b.peakSpeedMmPerUnit > 0.0
+                              ? b.peakSpeedMmPerUnit
+                              : peakSpeedPerUnit(g, assembly, a.q, b.q, b.pathLengthMm);
+    const double peak = peakMm / askedMmPerS;
     double t = std::max(asked, peak);
     if (peak > kAskedSpeedSlack * asked) reasons[k] = FeedLimit::PeakXYSpeed;
     if (motor > t) { t = motor; reasons[k] = FeedLimit::MotorSpeed; }

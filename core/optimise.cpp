@@ -3,6 +3,7 @@
 #include "optimise.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -250,6 +251,8 @@ OptimiseResult optimise(std::vector<Stroke> strokes, const MachineProfile& profi
   r.report.travelBeforeS = travelTimeS(strokes, profile, mode, options.start);
   // The 2-opt budget starts when the first 2-opt starts.
   std::optional<Clock::time_point> deadline;
+  std::size_t stepsLeft = options.maxTwoOptSteps > 0 ? options.maxTwoOptSteps
+                                                     : std::numeric_limits<std::size_t>::max();
   std::optional<JointAngles> at = options.start;
   for (std::size_t b = 0; b < strokes.size();) {
     std::size_t e = b;
@@ -269,7 +272,8 @@ OptimiseResult optimise(std::vector<Stroke> strokes, const MachineProfile& profi
       if (!deadline)
         deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                       std::chrono::duration<double>(options.timeBudgetS));
-      if (options.allowReverse) order::twoOpt(ends, tour, start, options.maxTwoOptPasses, *deadline);
+      if (options.allowReverse) order::twoOpt(ends, tour, start, options.maxTwoOptPasses, stepsLeft,
+                                                *deadline);
       if (order::tourCost(ends, tour, start) <= order::inputCost(ends, start)) applyTour(run, tour);
     }
     if (!run.empty()) at = endAngles(profile.geometry, run.back().points.back(), mode);

@@ -23,6 +23,9 @@ struct OptimiseOptions {
   bool allowReverse = true;         // strokes may be drawn backwards
   double timeBudgetS = 0.3;         // wall-clock budget for the 2-opt improvement
   int maxTwoOptPasses = 50;
+  // Deterministic budget: long edges the 2-opt may examine in all (0 = no limit). Unlike the
+  // wall-clock budget, the same input then always gives the same order.
+  std::size_t maxTwoOptSteps = 0;
   // Pen position (joint angles) before the first stroke, e.g. the home pose; nullopt = none.
   std::optional<JointAngles> start;
 };

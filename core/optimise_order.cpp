@@ -128,10 +128,9 @@ class TwoOpt {
       : e_(e), t_(t), start_(start), n_(static_cast<int>(t.order.size())), pos_(t.order.size()) {
     for (int p = 0; p < n_; ++p) pos_[t.order[p]] = p;
   }
-  // Runs passes until none improves, or the pass / time budget ends.
-  // Runs passes until none improves, or the pass / time budget ends. Only edges longer than
+  // Runs passes until none improves, or the pass / step / time budget ends. Only edges longer than
   // the median edge of the starting tour are worked on: greedy leaves its waste in long jumps.
-  void run(int maxPasses, Clock::time_point deadline) {
+  void run(int maxPasses, std::size_t& stepsLeft, Clock::time_point deadline) {
     if (maxPasses <= 0 || n_ < 3) return;
     std::vector<double> edges;
     for (int p = 0; p + 1 < n_; ++p) edges.push_back(cost(exit(p), entry(p + 1)));
@@ -143,6 +142,8 @@ class TwoOpt {
       for (int p = 0; p + 1 < n_; ++p) {
         if ((p & 255) == 0 && Clock::now() > deadline) return;
         if (cost(exit(p), entry(p + 1)) <= longEdge) continue;
+        if (stepsLeft == 0) return;
+        --stepsLeft;
         improved |= tryForward(p, nbr) || tryBackward(p, nbr);
       }
       if (!improved) return;
@@ -247,8 +248,8 @@ Tour greedyTour(const Ends& e, std::size_t n, const std::optional<Vec2>& start, 
 }
 
 void twoOpt(const Ends& e, Tour& t, const std::optional<Vec2>& start, int maxPasses,
-            std::chrono::steady_clock::time_point deadline) {
-  TwoOpt(e, t, start).run(maxPasses, deadline);
+            std::size_t& stepsLeft, std::chrono::steady_clock::time_point deadline) {
+  TwoOpt(e, t, start).run(maxPasses, stepsLeft, deadline);
 }
 
 // Travel cost (s) of a tour in the scaled joint space, and of the input order.

@@ -32,9 +32,9 @@ inline double cost(const Vec2& a, const Vec2& b) { return (a - b).cwiseAbs().max
 Tour greedyTour(const Ends& e, std::size_t n, const std::optional<Vec2>& start, bool allowReverse);
 
 // 2-opt with segment reversal (strokes in a reversed segment flip) until no move improves or
-// the pass / time budget ends.
+// the pass / step / time budget ends; stepsLeft counts down the long edges examined.
 void twoOpt(const Ends& e, Tour& t, const std::optional<Vec2>& start, int maxPasses,
-            std::chrono::steady_clock::time_point deadline);
+            std::size_t& stepsLeft, std::chrono::steady_clock::time_point deadline);
 
 // Travel time of a tour, and of the input order (stroke i p-th, unflipped), s.
 double tourCost(const Ends& e, const Tour& t, const std::optional<Vec2>& start);

@@ -50,6 +50,11 @@ class MotionPlanner {
     job_.assembly = p_.assembly;
     if (!startPose()) return;
     job_.strokes.resize(strokes_.size());
+    // One allocation for the moves in the usual case: a move per point at most when strokes are
+    // merged, plus tool and travel moves (reserveMoves grows it when long lines are split).
+    size_t points = 0;
+    for (const Stroke& s : strokes_) points += s.points.size();
+    job_.moves.reserve(points + 8 * strokes_.size());
     // Segmentation and feeds of a stroke do not depend on where the pen comes from (only the
     // turn its angles are unwrapped to, fixed up in drawStroke): chunks of strokes are
     // segmented in parallel, then drawn in order, so the job does not depend on the threads.
@@ -85,7 +90,7 @@ class MotionPlanner {
   struct Prepared {
     SegmentedStroke seg;
     std::vector<SegmentFeed> feeds;
-    std::vector<double> typeIIRad;  // type II margin at each waypoint (turn-independent)
+    PathCheck check;  // every move of the stroke, as segmented (angles near the home pose)
   };
 
   void prepare(size_t k, Prepared& out) const {
@@ -93,9 +98,17 @@ class MotionPlanner {
     if (s.points.empty()) return;
     out.seg = segmentStroke(g_, mode_, p_.assembly, s.points, job_.start, segOpt_);
     if (!out.seg.ok()) return;
+    out.check = checkWaypoints(out.seg);
+    if (!out.check.ok()) return;
     out.feeds = planFeeds(g_, p_.assembly, out.seg.waypoints, drawSpeed(s.layerIndex), limits_);
-    out.typeIIRad.reserve(out.seg.waypoints.size());
-    for (const JointWaypoint& w : out.seg.waypoints) out.typeIIRad.push_back(typeIIMarginAt(w.q, w.p));
+  }
+
+  // The safety rule on the moves that will be sent: every joint-linear move between waypoints.
+  PathCheck checkWaypoints(const SegmentedStroke& seg) const {
+    std::vector<JointAngles> poses;
+    poses.reserve(seg.waypoints.size());
+    for (const JointWaypoint& w : seg.waypoints) poses.push_back(w.q);
+    return checkJointPath(p_, poses);
   }
 
   // Room for a chunk's moves (draws plus a few tool and travel moves per stroke), growing the
@@ -107,13 +120,15 @@ class MotionPlanner {
   }
 
   // Shifts the stroke's angles by whole turns so that it starts nearest the current pose.
-  void unwrapNearCurrent(SegmentedStroke& seg) const {
-    if (seg.waypoints.empty()) return;
+  // Returns whether the angles changed (joint limits then need a new check).
+  bool unwrapNearCurrent(SegmentedStroke& seg) const {
+    if (seg.waypoints.empty()) return false;
     const JointAngles q0 = seg.waypoints[0].q;
     const double d1 = unwrapNear(q0.theta1, at_.theta1) - q0.theta1;
     const double d2 = unwrapNear(q0.theta2, at_.theta2) - q0.theta2;
-    if (d1 == 0.0 && d2 == 0.0) return;
+    if (d1 == 0.0 && d2 == 0.0) return false;
     for (JointWaypoint& w : seg.waypoints) w.q = {w.q.theta1 + d1, w.q.theta2 + d2};
+    return true;
   }
 
   void drawStroke(size_t k, Prepared& prepared) {
@@ -124,7 +139,7 @@ class MotionPlanner {
     ps.reversed = s.reversed;
     if (s.points.empty()) return;
     SegmentedStroke& seg = prepared.seg;
-    unwrapNearCurrent(seg);
+    if (unwrapNearCurrent(seg) && seg.ok()) prepared.check = checkWaypoints(seg);
     if (!seg.ok()) {
       problem(pathLabel(s), seg.failedAt,
               seg.status == SegmentStatus::OutOfReach
@@ -133,6 +148,14 @@ class MotionPlanner {
               {"move or shrink the drawing (--at, --scale, --fit)", "try another --mode"});
       return;
     }
+    if (!prepared.check.ok()) {
+      const MoveCheck& c = prepared.check.problems.front().check;
+      problem(pathLabel(s), c.where,
+              c.status == MoveStatus::NearTypeI ? describe(c) : "the drawn line " + describe(c),
+              {"move or shrink the drawing (--at, --scale, --fit)", "try another --mode"});
+      return;
+    }
+    minMargin_ = std::min(minMargin_, prepared.check.minTypeIIMarginRad);
     const int layer = s.layerIndex;
     const bool newLayer = layer != lastLayer_;
     lastLayer_ = layer;
@@ -160,7 +183,7 @@ class MotionPlanner {
       m.feedLimited = feeds[i].limited();
       m.maxDeviationMm = w.deviationMm;
       m.toolValue = toolDownValue(layer);
-      moved(w.q, w.p, prepared.typeIIRad[i + 1]);
+      moved(w.q, w.p, kPi / 2.0);  // margins: the stroke's check
       job_.summary.segments += 1;
       job_.summary.feedLimitedSegments += m.feedLimited ? 1 : 0;
       job_.summary.maxDeviationMm = std::max(job_.summary.maxDeviationMm, w.deviationMm);
@@ -319,8 +342,11 @@ PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Lay
                   std::to_string(options.flatteningToleranceMm) + " mm) and G-code rounding";
     return out;
   }
+  StageClock clock(out.timings);
   MotionPlanner(strokes, layers, profile, mode, options, out).run(budget);
+  clock.lap("segmentation, feeds, travel");
   estimateJobTime(out.job, profile);
+  clock.lap("time estimate");
   PlanReport& r = out.report;
   const JobSummary& s = out.job.summary;
   r.feasible = r.problems.empty();

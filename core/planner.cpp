@@ -19,10 +19,22 @@ namespace {
 // Cells per side of the workspace map the fit rectangle is searched on.
 constexpr int kFitGridCells = 160;
 
+// Long edges the 2-opt of a plan may examine (about a microsecond each).
+constexpr std::size_t kTwoOptSteps = 100000;
+// Stride of the point sample that bounds a mode's margin from above: about this many points.
+constexpr std::size_t kScreenPoints = 20000;
+
+struct ModeOption {
+  WorkingMode mode = WorkingMode::PlusPlus;
+  Placement placement;
+  // sin of the smallest type II margin over a sample of the placed points: no plan in this mode
+  // has a larger margin. nullopt when a sampled point cannot be reached in the mode.
+  std::optional<double> marginBound;
+};
+
 struct Candidate {
   WorkingMode mode = WorkingMode::PlusPlus;
   Placement placement;
-  std::vector<Stroke> strokes;
   FeasibilityReport report;
 };
 
@@ -41,13 +53,30 @@ std::string fixedText(double v, int decimals) {
   return s.str();
 }
 
+// Bounds of the visible points rotated by rotationRad about the origin.
+std::optional<RectMm> rotatedBounds(const Drawing& d, double rotationRad) {
+  const Eigen::Rotation2Dd rot(rotationRad);
+  std::optional<RectMm> box;
+  for (const Layer& l : d.layers) {
+    if (!l.visible) continue;
+    for (const Polyline& path : l.paths)
+      for (const Vec2& p0 : path.points) {
+        const Vec2 p = rot * p0;
+        if (!box) box = RectMm{p.x(), p.y(), p.x(), p.y()};
+        box->x0 = std::min(box->x0, p.x()), box->x1 = std::max(box->x1, p.x());
+        box->y0 = std::min(box->y0, p.y()), box->y1 = std::max(box->y1, p.y());
+      }
+  }
+  return box;
+}
+
 // The drawing fitted into the mode's largest singularity-free rectangle.
 std::optional<Placement> fittedPlacement(const Drawing& d, const MachineProfile& p,
-                                         WorkingMode mode, const PlanOptions& o) {
+                                         WorkingMode mode, const PlanOptions& o,
+                                         const std::optional<RectMm>& rotated) {
   const WorkspaceSettings s = workspaceSettings(p);
   const WorkspaceMap map =
-      computeMap(p.geometry, s, mode, gridCovering(p.geometry, kFitGridCells), 2);
-  const auto rotated = strokeBounds(placeDrawing(d, Placement{Vec2::Zero(), o.rotationRad, 1.0}));
+      computeMap(p.geometry, s, mode, gridCovering(p.geometry, kFitGridCells), 1);
   const double aspect =
       rotated && rotated->height() > 1e-9 && rotated->width() > 1e-9
           ? rotated->width() / rotated->height() : 0.0;
@@ -95,6 +124,82 @@ void reportInfeasible(const Drawing& d, const std::vector<Candidate>& cands, boo
                 out.report.problems.front().path + ": " + out.report.problems.front().why;
 }
 
+// sin of the type II margin of the pose reaching p with angles q; negative when the pose is in
+// the other assembly mode.
+double signedSinTypeII(const Geometry& g, const JointAngles& q, const Vec2& p, AssemblyMode a) {
+  const Vec2 d1 = p - elbow1(g, q.theta1), d2 = p - elbow2(g, q.theta2);
+  const double s = std::min(1.0, std::abs(cross(d1, d2)) / (g.b1 * g.b2));
+  return assemblyModeOf(makePose(g, q, p)) == a ? s : -s;
+}
+
+// Upper bound of the margin any plan in `mode` can have (see ModeOption::marginBound).
+std::optional<double> screenMargin(const Drawing& d, const Placement& placement,
+                                   const MachineProfile& p, WorkingMode mode) {
+  const Eigen::Affine2d machineFromWorkT = machineFromWork(d, placement);
+  std::size_t total = 0;
+  for (const Layer& l : d.layers)
+    if (l.visible)
+      for (const Polyline& path : l.paths) total += path.points.size();
+  const std::size_t stride = std::max<std::size_t>(1, total / kScreenPoints);
+  double bound = 1.0;
+  std::size_t k = 0;
+  for (const Layer& l : d.layers) {
+    if (!l.visible) continue;
+    for (const Polyline& path : l.paths)
+      for (const Vec2& w : path.points) {
+        if (k++ % stride != 0) continue;
+        const Vec2 x = machineFromWorkT * w;
+        const IkResult ik = inverse(p.geometry, x, mode);
+        if (!ik.ok()) return std::nullopt;
+        const double s = signedSinTypeII(p.geometry, ik.angles, x, p.assembly);
+        if (s < 0.0) return std::nullopt;
+        bound = std::min(bound, s);
+      }
+  }
+  return std::asin(bound);
+}
+
+// The whole plan in one working mode: placed strokes, optimised, segmented and checked.
+PlanResult planInMode(const Drawing& drawing, const MachineProfile& profile,
+                      const PlanOptions& options, const ModeOption& m, StageTimes& times) {
+  StageClock clock(times);
+  std::vector<Stroke> strokes = placeDrawing(drawing, m.placement);
+  clock.lap("placement");
+  if (options.optimise) {
+    OptimiseOptions oo;
+    oo.start = profile.homeAngles;
+    // A deterministic 2-opt budget (the same drawing always gives the same job), about 0.1 s;
+    // the wall-clock budget only guards against a pathological case.
+    oo.maxTwoOptSteps = kTwoOptSteps;
+    oo.timeBudgetS = 2.0;
+    strokes = optimise(std::move(strokes), profile, m.mode, oo).strokes;
+    clock.lap("optimise");
+  }
+  PlanOptions machineOptions = options;
+  machineOptions.flatteningToleranceMm *= m.placement.scale;
+  PlanResult result = planStrokes(strokes, drawing.layers, profile, m.mode, machineOptions);
+  times.append(result.timings);
+  clock.restart();
+  result.placementScale = m.placement.scale;
+  return result;
+}
+
+// Preflight of every mode that has a placement, for the report of a job no mode can plan.
+std::vector<Candidate> preflightAll(const Drawing& drawing, const MachineProfile& profile,
+                                    const std::vector<ModeOption>& modes) {
+  std::vector<Candidate> cands(modes.size());
+  for (std::size_t i = 0; i < modes.size(); ++i) {
+    Candidate& c = cands[i];
+    c.mode = modes[i].mode;
+    c.placement = modes[i].placement;
+    PreflightOptions pf;
+    pf.maxListedProblems = 20;
+    pf.anchorMm = c.placement.centerMm;
+    c.report = preflight(placeDrawing(drawing, c.placement), profile, c.mode, pf);
+  }
+  return cands;
+}
+
 }  // namespace
 
 PlanResult planJob(const Drawing& drawing, const MachineProfile& profile,
@@ -110,58 +215,85 @@ PlanResult planJob(const Drawing& drawing, const MachineProfile& profile,
     out.message = "nothing visible to draw in '" + drawing.source + "'";
     return out;
   }
+  StageClock clock(out.timings);
   const bool fit = options.fit || !options.atMm;
   std::vector<WorkingMode> modes(kAllWorkingModes.begin(), kAllWorkingModes.end());
   if (options.mode) modes = {*options.mode};
-  // The working modes are independent: placed and preflighted in parallel, kept in mode order.
-  std::vector<std::optional<Candidate>> slots(modes.size());
+  // Each mode's placement and an upper bound of its margin (from a sample of the points), in
+  // parallel; then full plans, best bound first, until no other mode can beat the best plan.
+  const auto rotated = rotatedBounds(drawing, options.rotationRad);
+  std::vector<std::optional<ModeOption>> slots(modes.size());
   parallelFor(modes.size(), planningThreads(), [&](std::size_t i) {
-    Candidate c;
-    c.mode = modes[i];
+    ModeOption m;
+    m.mode = modes[i];
     if (fit) {
-      const auto placed = fittedPlacement(drawing, profile, c.mode, options);
+      const auto placed = fittedPlacement(drawing, profile, m.mode, options, rotated);
       if (!placed) return;
-      c.placement = *placed;
+      m.placement = *placed;
     } else {
-      c.placement = Placement{*options.atMm, options.rotationRad, options.scale};
+      m.placement = Placement{*options.atMm, options.rotationRad, options.scale};
     }
-    PreflightOptions pf;
-    pf.maxListedProblems = 20;
-    pf.anchorMm = c.placement.centerMm;
-    c.strokes = placeDrawing(drawing, c.placement);
-    c.report = preflight(c.strokes, profile, c.mode, pf);
-    slots[i] = std::move(c);
+    m.marginBound = screenMargin(drawing, m.placement, profile, m.mode);
+    slots[i] = m;
   });
-  std::vector<Candidate> cands;
-  for (std::optional<Candidate>& c : slots)
-    if (c) cands.push_back(std::move(*c));
-  if (cands.empty()) {
+  std::vector<ModeOption> candidates;
+  for (const auto& m : slots)
+    if (m) candidates.push_back(*m);
+  clock.lap("placement and mode screening");
+  if (candidates.empty()) {
     out.status = PlanStatus::Infeasible;
     out.message = "no working mode has a singularity-free area to fit the drawing into";
     out.report.problems.push_back({"job", Vec2::Zero(), out.message, {"check the profile"}});
     return out;
   }
-  const Candidate* chosen = nullptr;
-  for (const Candidate& c : cands)
-    if (c.report.feasible &&
-        (!chosen || c.report.minTypeIIMarginRad > chosen->report.minTypeIIMarginRad))
-      chosen = &c;
-  if (!chosen) {
-    reportInfeasible(drawing, cands, fit, out);
-    return out;
+  std::vector<const ModeOption*> order;
+  for (const ModeOption& m : candidates)
+    if (m.marginBound) order.push_back(&m);
+  std::stable_sort(order.begin(), order.end(), [](const ModeOption* a, const ModeOption* b) {
+    return *a->marginBound > *b->marginBound;
+  });
+  std::optional<PlanResult> best;
+  std::optional<PlanResult> firstFailure;
+  for (const ModeOption* m : order) {
+    if (best && *m->marginBound <= best->job.summary.minTypeIIMarginRad) break;
+    PlanResult r = planInMode(drawing, profile, options, *m, out.timings);
+    if (r.ok() && (!best || r.job.summary.minTypeIIMarginRad > best->job.summary.minTypeIIMarginRad))
+      best = std::move(r);
+    else if (!r.ok() && !firstFailure)
+      firstFailure = std::move(r);
   }
-  std::vector<Stroke> strokes = chosen->strokes;
-  if (options.optimise) {
-    OptimiseOptions oo;
-    oo.start = profile.homeAngles;
-    oo.timeBudgetS = 0.2;
-    strokes = optimise(std::move(strokes), profile, chosen->mode, oo).strokes;
+  if (best) {
+    best->timings = std::move(out.timings);
+    return std::move(*best);
   }
-  PlanOptions machineOptions = options;
-  machineOptions.flatteningToleranceMm *= chosen->placement.scale;
-  PlanResult result = planStrokes(strokes, drawing.layers, profile, chosen->mode, machineOptions);
-  result.placementScale = chosen->placement.scale;
-  return result;
+  // No mode plans: the preflight of every mode explains what to change.
+  std::vector<Candidate> cands = preflightAll(drawing, profile, candidates);
+  clock.lap("preflight for the report");
+  const bool anyFeasible = std::any_of(cands.begin(), cands.end(),
+                                       [](const Candidate& c) { return c.report.feasible; });
+  if (anyFeasible && firstFailure) {  // the points pass but the planned moves do not
+    firstFailure->timings = std::move(out.timings);
+    return std::move(*firstFailure);
+  }
+  reportInfeasible(drawing, cands, fit, out);
+  return out;
+}
+
+std::optional<double> largestPlacementScale(const Drawing& drawing, const MachineProfile& profile,
+                                            const PlanOptions& options) {
+  if (!drawingBounds(drawing)) return std::nullopt;
+  if (options.atMm && !options.fit) return options.scale;
+  std::vector<WorkingMode> modes(kAllWorkingModes.begin(), kAllWorkingModes.end());
+  if (options.mode) modes = {*options.mode};
+  const auto rotated = rotatedBounds(drawing, options.rotationRad);
+  std::vector<double> scales(modes.size(), 0.0);
+  parallelFor(modes.size(), planningThreads(), [&](std::size_t i) {
+    if (const auto placed = fittedPlacement(drawing, profile, modes[i], options, rotated))
+      scales[i] = placed->scale;
+  });
+  const double largest = *std::max_element(scales.begin(), scales.end());
+  if (largest > 0.0) return largest;
+  return std::nullopt;
 }
 
 std::string reportToJson(const PlanReport& r) {

@@ -10,6 +10,7 @@
 #include "drawing.hpp"
 #include "job.hpp"
 #include "profile.hpp"
+#include "stage_times.hpp"
 #include "strokes.hpp"
 
 namespace fivebar {
@@ -71,8 +72,15 @@ struct PlanResult {
   PlannedJob job;        // complete when status == Ok
   PlanReport report;
   double placementScale = 1.0;  // work mm -> machine mm of the placement used (planJob)
+  StageTimes timings;           // wall-clock seconds per pipeline stage
   bool ok() const { return status == PlanStatus::Ok; }
 };
+
+// The largest placement scale planJob can use for the drawing (the fitted scale of the best
+// candidate mode; options.scale without fitting), so that a caller can flatten curves finely
+// enough before planning. nullopt when nothing can be placed.
+std::optional<double> largestPlacementScale(const Drawing& drawing, const MachineProfile& profile,
+                                            const PlanOptions& options);
 
 // The whole pipeline from a drawing in the work frame.
 PlanResult planJob(const Drawing& drawing, const MachineProfile& profile,

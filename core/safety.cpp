@@ -200,12 +200,20 @@ double refineMinSin(const MachineProfile& pr, const JointAngles& from, const Joi
   return best;
 }
 
+// The samples around the smallest type II margin of a walked move: where a finer search for the
+// true minimum would look (move fractions lo..hi of the move from -> to).
+struct MinBracket {
+  JointAngles from, to;
+  double lo = 0.0, hi = 0.0, span = 0.0;
+  double minSin = 2.0;
+  bool coarse() const { return (hi - lo) * span > kFineJointStepRad; }
+};
+
 // Walks one move from an evaluated start sample to an evaluated end sample; `out` gets the
-// first problem after the start (the start itself is the caller's business) and the margins.
-// Samples are spaced by nextStepRad; when they are coarser than kFineJointStepRad, the smallest
-// margin of a safe move is refined around the smallest sample (refineMinSin).
+// first problem after the start (the start itself is the caller's business) and the smallest
+// sampled margin, `bracket` the samples around it. Samples are spaced by nextStepRad.
 void walk(const MachineProfile& pr, const JointAngles& from, const JointAngles& to,
-          const Sample& start, const Sample& end, MoveCheck& out) {
+          const Sample& start, const Sample& end, MoveCheck& out, MinBracket& bracket) {
   const double span = std::max(std::abs(to.theta1 - from.theta1), std::abs(to.theta2 - from.theta2));
   double t = 0.0, prevT = 0.0;
   double minLo = 0.0, minHi = 0.0;  // the samples around the smallest one (move fractions)
@@ -228,11 +236,18 @@ void walk(const MachineProfile& pr, const JointAngles& from, const JointAngles& 
       return;
     }
   }
-  if ((minHi - minLo) * span > kFineJointStepRad)
-    minSin = refineMinSin(pr, from, to, minLo, minHi, span, minSin);
+  bracket = {from, to, minLo, minHi, span, minSin};
   out.minTypeIIMarginRad = std::min(out.minTypeIIMarginRad, std::asin(minSin));
   out.atFraction = 1.0;
   out.where = end.p;
+}
+
+// The smallest margin (rad) of a safe move, refined around its smallest sample when the
+// samples there are coarser than kFineJointStepRad (refineMinSin).
+double refinedMargin(const MachineProfile& pr, const MinBracket& b) {
+  const double minSin =
+      b.coarse() ? refineMinSin(pr, b.from, b.to, b.lo, b.hi, b.span, b.minSin) : b.minSin;
+  return std::asin(minSin);
 }
 
 MoveCheck startCheck(const Sample& s) {
@@ -250,7 +265,9 @@ MoveCheck checkJointMove(const MachineProfile& profile, const JointAngles& from,
   const Sample start = evaluate(profile, from);
   MoveCheck out = startCheck(start);
   if (!out.ok()) return out;
-  walk(profile, from, to, start, evaluate(profile, to), out);
+  MinBracket bracket;
+  walk(profile, from, to, start, evaluate(profile, to), out, bracket);
+  if (out.ok()) out.minTypeIIMarginRad = std::min(out.minTypeIIMarginRad, refinedMargin(profile, bracket));
   return out;
 }
 
@@ -261,12 +278,15 @@ PathCheck checkJointPath(const MachineProfile& profile, const std::vector<JointA
   Sample prev = evaluate(profile, poses[0]);
   path.minTypeIIMarginRad = prev.typeIIRad();
   if (prev.status != MoveStatus::Ok) path.problems.push_back({0, startCheck(prev)});
+  MinBracket smallest;  // of the safe moves: refined once, at the end
   for (std::size_t i = 0; i + 1 < poses.size(); ++i) {
     const Sample end = evaluate(profile, poses[i + 1]);
     MoveCheck c = startCheck(prev);
     if (prev.status == MoveStatus::Ok) {
-      walk(profile, poses[i], poses[i + 1], prev, end, c);
+      MinBracket b;
+      walk(profile, poses[i], poses[i + 1], prev, end, c, b);
       if (!c.ok()) path.problems.push_back({i, c});
+      else if (b.minSin < smallest.minSin) smallest = b;
     } else if (end.status != MoveStatus::Ok) {  // starts at a reported pose: only its end counts
       c = startCheck(end);
       c.atFraction = 1.0;
@@ -275,6 +295,8 @@ PathCheck checkJointPath(const MachineProfile& profile, const std::vector<JointA
     path.minTypeIIMarginRad = std::min(path.minTypeIIMarginRad, c.minTypeIIMarginRad);
     prev = end;
   }
+  if (smallest.minSin <= 1.0)
+    path.minTypeIIMarginRad = std::min(path.minTypeIIMarginRad, refinedMargin(profile, smallest));
   return path;
 }
 

@@ -64,7 +64,9 @@ struct PathCheck {
 // Checks the chain of joint-linear moves through `poses` (continuous angles) as checkJointMove
 // checks each move, evaluating every shared pose once (the fast path of job preflight). A bad
 // pose is reported once: as the end (atFraction 1) of the move reaching it, or for poses[0] as
-// move 0 at atFraction 0. A path of one pose is checked as that pose.
+// move 0 at atFraction 0. A path of one pose is checked as that pose. The smallest margin is
+// refined (as checkJointMove refines each move's) around the path's smallest sample only: a move
+// whose samples all stay above it is not searched between its samples.
 PathCheck checkJointPath(const MachineProfile& profile, const std::vector<JointAngles>& poses);
 
 // Checks a single pose (continuous angles) exactly as checkJointMove checks each sample:

@@ -27,6 +27,10 @@ struct JointWaypoint {
   Vec2 p = Vec2::Zero();      // machine frame, mm (on the stroke)
   double deviationMm = 0.0;   // max deviation of the move ending here (0 for the first)
   double pathLengthMm = 0.0;  // stroke length covered by the move ending here (mm)
+  // Largest XY speed along the move ending here, mm per unit of the move parameter u in [0, 1],
+  // from the FK samples the deviation was measured with; 0 when not known (then planFeeds
+  // samples the move itself).
+  double peakSpeedMmPerUnit = 0.0;
 };
 
 enum class SegmentStatus {

@@ -33,6 +33,7 @@ constexpr const char* kPlanHelp =
     "  --no-optimise             keep the drawing's stroke order and direction\n"
     "  -o, --output JOB.gcode    G-code output file\n"
     "  --report REPORT.json      planning report (also written when the job is infeasible)\n"
+    "  --timings                 print the wall-clock time of each stage to stderr\n"
     "Exits 1 when the job is infeasible, naming the first offending path and the reason.\n";
 
 constexpr const char* kSettingsHelp =
@@ -129,20 +130,27 @@ int plan(const Options& o) {
   if (!QCoreApplication::instance()) app.emplace(argc, argv);
 #endif
   const auto start = std::chrono::steady_clock::now();
+  StageTimes times;
+  StageClock clock(times);
   // Flatten with the tolerance's share, in work-frame mm (the placement scales it).
   const double share = kFlatteningShare * opt.toleranceMm;
   double importTol = share / (opt.atMm && !opt.fit ? opt.scale : 1.0);
   auto drawing = importDrawing(file, importTol);
   if (!drawing) return 1;
-  opt.flatteningToleranceMm = importTol;
-  PlanResult r = planJob(*drawing, *machine, opt);
-  if (r.placementScale * importTol > share * 1.000001) {  // fitted larger: flatten finer
-    importTol = share / r.placementScale;
+  clock.lap("import");
+  // Fitting may enlarge the drawing: flatten again, finer, before planning.
+  const std::optional<double> scale = largestPlacementScale(*drawing, *machine, opt);
+  clock.lap("placement and mode screening");
+  if (scale && *scale * importTol > share * 1.000001) {
+    importTol = share / *scale;
     drawing = importDrawing(file, importTol);
     if (!drawing) return 1;
-    opt.flatteningToleranceMm = importTol;
-    r = planJob(*drawing, *machine, opt);
+    clock.lap("import");
   }
+  opt.flatteningToleranceMm = importTol;
+  PlanResult r = planJob(*drawing, *machine, opt);
+  times.append(r.timings);
+  clock.restart();
   if (const auto report = o.value("--report"); report && !writeFile(*report, reportToJson(r.report)))
     return 1;
   if (!r.ok()) {
@@ -150,6 +158,7 @@ int plan(const Options& o) {
     return 1;
   }
   if (!writeFile(output, writeGcode(r.job, *machine))) return 1;
+  clock.lap("G-code");
   const double wallS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const PlanReport& rep = r.report;
   std::cout << output << ": mode " << toString(rep.mode) << ", " << rep.segments << " segments, "
@@ -158,6 +167,9 @@ int plan(const Options& o) {
             << " s, max deviation " << fixed9(rep.maxDeviationMm).substr(0, 6) << " mm, margin "
             << fixed9(rep.minSingularityMarginDeg).substr(0, 5) << " deg (planned in "
             << std::lround(wallS * 1000) << " ms)\n";
+  if (o.flag("--timings"))
+    for (const auto& [stage, seconds] : times.stages)
+      std::cerr << "  " << stage << ": " << std::lround(seconds * 1000) << " ms\n";
   return 0;
 }
 
@@ -171,7 +183,7 @@ int runPlan(const Args& args) {
     const Options o(normalized,
                     {"--machine", "--mode", "--at", "--scale", "--rotate", "--tolerance",
                      "--output", "--report"},
-                    {"--fit", "--no-optimise", "--help"});
+                    {"--fit", "--no-optimise", "--timings", "--help"});
     if (o.flag("--help")) {
       std::cout << kPlanHelp;
       return 0;

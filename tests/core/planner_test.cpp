@@ -170,6 +170,62 @@ TEST_F(PlannerTest, FitWithoutAtStaysInTheSingularityFreeRegion) {
   EXPECT_GE(r.report.minSingularityMarginDeg, degFromRad(p.typeIIMarginRad) - 1e-9);
 }
 
+TEST_F(PlannerTest, EveryDrawAndTravelMovePassesTheSafetyCheck) {
+  auto rng = test::rng();
+  const Drawing d = randomDrawing(rng, 12);
+  PlanOptions o;
+  o.flatteningToleranceMm = 0.0;
+  const PlanResult r = planJob(d, p, o);
+  ASSERT_TRUE(r.ok()) << r.message;
+  JointAngles at = r.job.start;
+  double smallest = kPi;
+  for (const JobMove& m : r.job.moves) {
+    if (!isMotion(m.kind)) continue;
+    const MoveCheck c = checkJointMove(p, at, m.target);
+    ASSERT_TRUE(c.ok()) << toString(m.kind) << " move: " << describe(c);
+    smallest = std::min(smallest, c.minTypeIIMarginRad);
+    at = m.target;
+  }
+  // The reported margin is that of the moves sent (refined to 0.1 deg of joint motion).
+  EXPECT_NEAR(r.report.minSingularityMarginDeg, degFromRad(smallest), 0.2);
+}
+
+TEST_F(PlannerTest, AutoPicksTheFeasibleModeWithTheLargestMargin) {
+  auto rng = test::rng();
+  const Drawing d = randomDrawing(rng, 6);
+  PlanOptions o;
+  o.flatteningToleranceMm = 0.0;
+  const PlanResult autoPlan = planJob(d, p, o);
+  ASSERT_TRUE(autoPlan.ok()) << autoPlan.message;
+  double best = -1.0;
+  WorkingMode bestMode = WorkingMode::PlusPlus;
+  for (WorkingMode m : kAllWorkingModes) {
+    PlanOptions one = o;
+    one.mode = m;
+    const PlanResult r = planJob(d, p, one);
+    if (r.ok() && r.report.minSingularityMarginDeg > best)
+      best = r.report.minSingularityMarginDeg, bestMode = m;
+  }
+  EXPECT_EQ(autoPlan.report.mode, bestMode);
+  EXPECT_DOUBLE_EQ(autoPlan.report.minSingularityMarginDeg, best);
+}
+
+TEST_F(PlannerTest, LargestPlacementScaleIsTheScaleThePlanUses) {
+  auto rng = test::rng();
+  const Drawing d = randomDrawing(rng, 6);
+  PlanOptions o;
+  o.flatteningToleranceMm = 0.0;
+  o.mode = WorkingMode::PlusPlus;
+  const auto scale = largestPlacementScale(d, p, o);
+  ASSERT_TRUE(scale.has_value());
+  const PlanResult r = planJob(d, p, o);
+  ASSERT_TRUE(r.ok()) << r.message;
+  EXPECT_DOUBLE_EQ(*scale, r.placementScale);
+  o.atMm = Vec2(0, 170);
+  o.scale = 0.5;
+  EXPECT_DOUBLE_EQ(*largestPlacementScale(d, p, o), 0.5);
+}
+
 TEST_F(PlannerTest, InfeasibleJobNamesThePathAndTheReason) {
   Drawing d;
   d.layers.resize(1);
