@@ -1,9 +1,11 @@
 // planStrokes: placed strokes -> PlannedJob (segmentation, feeds, travel, tool commands, timing).
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <limits>
 
 #include "feeds.hpp"
+#include "memory_hint.hpp"
 #include "parallel.hpp"
 #include "planner.hpp"
 #include "safety.hpp"
@@ -55,17 +57,27 @@ class MotionPlanner {
     size_t points = 0;
     for (const Stroke& s : strokes_) points += s.points.size();
     job_.moves.reserve(points + 8 * strokes_.size());
+    adviseHugePages(job_.moves.data(), job_.moves.capacity() * sizeof(JobMove));
     // Segmentation and feeds of a stroke do not depend on where the pen comes from (only the
     // turn its angles are unwrapped to, fixed up in drawStroke): chunks of strokes are
-    // segmented in parallel, then drawn in order, so the job does not depend on the threads.
+    // segmented in parallel, the next chunk while this one is drawn in order, so the job does
+    // not depend on the threads.
     const int threads = planningThreads();
-    std::vector<Prepared> chunk;
-    for (size_t first = 0; first < strokes_.size(); first += kChunkStrokes) {
+    auto prepareChunk = [&](size_t first, std::vector<Prepared>& chunk) {
       const size_t n = std::min(kChunkStrokes, strokes_.size() - first);
       chunk.assign(n, Prepared{});
       parallelFor(n, threads, [&](size_t i) { prepare(first + i, chunk[i]); });
+    };
+    std::vector<Prepared> chunk, next;
+    if (!strokes_.empty()) prepareChunk(0, chunk);
+    for (size_t first = 0; first < strokes_.size(); first += kChunkStrokes) {
+      std::future<void> ahead;
+      if (first + kChunkStrokes < strokes_.size())
+        ahead = std::async(std::launch::async, [&, first] { prepareChunk(first + kChunkStrokes, next); });
       reserveMoves(chunk);
-      for (size_t i = 0; i < n; ++i) drawStroke(first + i, chunk[i]);
+      for (size_t i = 0; i < chunk.size(); ++i) drawStroke(first + i, chunk[i]);
+      if (ahead.valid()) ahead.get();
+      std::swap(chunk, next);
     }
     if (penDown_) penUp();
     travelTo(job_.start, -1, -1, "travel back to the start pose");
@@ -116,7 +128,10 @@ class MotionPlanner {
   void reserveMoves(const std::vector<Prepared>& chunk) {
     size_t need = job_.moves.size();
     for (const Prepared& p : chunk) need += p.feeds.size() + 6;
-    if (need > job_.moves.capacity()) job_.moves.reserve(std::max(need, 2 * job_.moves.capacity()));
+    if (need > job_.moves.capacity()) {
+      job_.moves.reserve(std::max(need, 2 * job_.moves.capacity()));
+      adviseHugePages(job_.moves.data(), job_.moves.capacity() * sizeof(JobMove));
+    }
   }
 
   // Shifts the stroke's angles by whole turns so that it starts nearest the current pose.

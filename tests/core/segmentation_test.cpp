@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "core/move_samples.hpp"
 #include "core/profile.hpp"
 #include "core/segmentation.hpp"
 #include "test_support.hpp"
@@ -247,6 +248,32 @@ TEST_F(SegmentationTest, AnglesUnwrapNearTheReference) {
   ASSERT_TRUE(seg.ok());
   EXPECT_NEAR(seg.waypoints[0].q.theta1, ref.theta1, 1e-9);
   EXPECT_NEAR(seg.waypoints[0].q.theta2, ref.theta2, 1e-9);
+}
+
+TEST_F(SegmentationTest, MoveSamplesAreForwardKinematicsAtEqualSteps) {
+  auto rng = test::rng();
+  std::uniform_real_distribution<double> x(-60, 60), y(140, 220), unit(0, 1);
+  for (int trial = 0; trial < 200; ++trial) {
+    const IkResult a = inverse(p.geometry, {x(rng), y(rng)}, WorkingMode::PlusPlus);
+    const IkResult b = inverse(p.geometry, {x(rng), y(rng)}, WorkingMode::PlusPlus);
+    ASSERT_TRUE(a.ok() && b.ok());
+    // Short moves (Taylor step rotation) and long ones (re-anchored every 32 samples).
+    const int n = trial % 2 ? 1 + static_cast<int>(unit(rng) * 8) : 40 + static_cast<int>(unit(rng) * 900);
+    std::vector<Vec2> out(static_cast<size_t>(n) + 1);
+    const bool closes = sampleJointMove(p.geometry, p.assembly, a.angles, MotorTrig::of(a.angles),
+                                        b.angles, n, out.data());
+    bool allClose = true;
+    for (int k = 0; k <= n; ++k) {
+      const double u = static_cast<double>(k) / n;
+      const FkResult fk = forward(p.geometry,
+                                  {a.angles.theta1 + u * (b.angles.theta1 - a.angles.theta1),
+                                   a.angles.theta2 + u * (b.angles.theta2 - a.angles.theta2)},
+                                  p.assembly);
+      allClose = allClose && fk.ok();
+      if (closes && fk.ok()) ASSERT_LT((fk.p - out[static_cast<size_t>(k)]).norm(), 1e-9) << k << " of " << n;
+    }
+    EXPECT_EQ(closes, allClose) << "trial " << trial;
+  }
 }
 
 }  // namespace
