@@ -12,7 +12,7 @@
 
 namespace fivebar {
 
-enum class JobMoveKind {
+enum class JobMoveKind : unsigned char {
   Draw,     // pen down, joint-linear move along a stroke
   Travel,   // pen up, joint-linear move between strokes (checked by planSafeTravel)
   PenUp,    // tool raised (servo M5 / M3 S<up>, Z up, laser off); no motion
@@ -35,7 +35,7 @@ constexpr std::string_view toString(JobMoveKind kind) {
 inline bool isMotion(JobMoveKind kind) { return kind == JobMoveKind::Draw || kind == JobMoveKind::Travel; }
 
 struct JobMove {
-  JobMoveKind kind = JobMoveKind::Draw;
+  // (Fields ordered for size: a large job holds millions of moves.)
   JointAngles target;            // joint target after the move (rad, continuous); unchanged
                                  // from the previous move for non-motion kinds
   Vec2 targetXY = Vec2::Zero();  // machine-frame end-effector after the move (mm)
@@ -43,13 +43,14 @@ struct JobMove {
   double jointFeedRadPerS = 0.0; // |dtheta| / duration at cruise: the G-code F (in deg/min)
   double dwellS = 0.0;           // Dwell: how long; PenUp/PenDown: settle time that follows
   double toolValue = 0.0;        // PenDown/Draw: servo S or laser S; Z-axis: Z target (mm)
-  int strokeIndex = -1;          // stroke (index into PlannedJob::strokes) it belongs to, or -1
-  int layerIndex = -1;           // layer of that stroke, or -1
-  bool feedLimited = false;      // feed lowered below the asked speed (motor limits, minimum
-                                 // segment duration, or acceleration)
   double maxDeviationMm = 0.0;   // Draw: max distance of the real (FK) curve from the stroke
   double durationS = 0.0;        // planned duration from the GRBL time model
   double startTimeS = 0.0;       // planned start time since the job start
+  int strokeIndex = -1;          // stroke (index into PlannedJob::strokes) it belongs to, or -1
+  int layerIndex = -1;           // layer of that stroke, or -1
+  JobMoveKind kind = JobMoveKind::Draw;
+  bool feedLimited = false;      // feed lowered below the asked speed (motor limits, minimum
+                                 // segment duration, or acceleration)
 };
 
 // Identification of one planned stroke, for messages and the studio.

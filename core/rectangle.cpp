@@ -77,11 +77,11 @@ bool latticeIsSafe(const Geometry& g, const WorkspaceSettings& s, WorkingMode mo
   return true;
 }
 
-// Checks `outer` minus `inner` (inner inside outer), as up to four strips, finely along each
-// strip's long side and `spacingMm` across it.
+// Checks `outer` minus `inner` (inner inside outer), as up to four strips, `fineMm` apart along
+// each strip's long side and `spacingMm` across it.
 bool ringIsSafe(const Geometry& g, const WorkspaceSettings& s, WorkingMode mode, const Rect& inner,
-                const Rect& outer, double spacingMm) {
-  const double fine = std::min(spacingMm, kEdgeSpacingMm);
+                const Rect& outer, double spacingMm, double fineMm = kEdgeSpacingMm) {
+  const double fine = std::min(spacingMm, fineMm);
   const Rect strips[4] = {{outer.xMin, outer.yMin, inner.xMin, outer.yMax},
                           {inner.xMax, outer.yMin, outer.xMax, outer.yMax},
                           {inner.xMin, outer.yMin, inner.xMax, inner.yMin},
@@ -139,11 +139,11 @@ Rect scaledAboutCentre(const Rect& r, double f) {
 // Largest growth in [0, maxGrowth] for which grow(t) stays safe, by bisection.
 template <typename Grow>
 double bisectGrowth(const Geometry& g, const WorkspaceSettings& s, WorkingMode mode, const Rect& r,
-                    double maxGrowth, double spacingMm, Grow grow) {
+                    double maxGrowth, double spacingMm, double fineMm, Grow grow) {
   double lo = 0.0, hi = maxGrowth;
   for (int k = 0; k < 10; ++k) {
     const double mid = 0.5 * (lo + hi);
-    (ringIsSafe(g, s, mode, r, grow(mid), spacingMm) ? lo : hi) = mid;
+    (ringIsSafe(g, s, mode, r, grow(mid), spacingMm, fineMm) ? lo : hi) = mid;
   }
   return lo;
 }
@@ -157,7 +157,7 @@ Rect growWithAspect(const WorkspaceMap& map, const Geometry& g, const WorkspaceS
     double room[4];
     for (int side = 0; side < 4; ++side) {
       const double limit = std::max(0.0, std::min(2.0 * c, roomToGridEdge(grid, r, side)));
-      room[side] = bisectGrowth(g, s, map.mode, r, limit, spacing,
+      room[side] = bisectGrowth(g, s, map.mode, r, limit, spacing, spacing,
                                 [&](double t) { return moved(r, side, t); });
     }
     const double dx = 0.5 * (room[1] - room[0]), dy = 0.5 * (room[3] - room[2]);
@@ -165,7 +165,7 @@ Rect growWithAspect(const WorkspaceMap& map, const Geometry& g, const WorkspaceS
     double limit = 2.0 * c;
     for (int side = 0; side < 4; ++side) limit = std::min(limit, 2.0 * roomToGridEdge(grid, r, side));
     const double base = std::max(r.width(), 1e-9);
-    const double f = bisectGrowth(g, s, map.mode, r, std::max(0.0, limit) / base, spacing,
+    const double f = bisectGrowth(g, s, map.mode, r, std::max(0.0, limit) / base, spacing, spacing,
                                   [&](double t) { return scaledAboutCentre(r, 1.0 + t); });
     r = scaledAboutCentre(r, 1.0 + f);
   }
@@ -174,6 +174,23 @@ Rect growWithAspect(const WorkspaceMap& map, const Geometry& g, const WorkspaceS
       if (!edgeIsSafe(g, s, map.mode, r, side)) return false;
     return true;
   };
+  // The growth above sampled its rings `spacing` apart (cheap); the edges are now checked
+  // kEdgeSpacingMm apart. A bulge of the boundary between coarse samples is cut off by the
+  // smallest shrink that clears it (bisection within a quarter cell), else by quarter cells.
+  if (!edgesSafe()) {
+    const Rect grown = r;
+    const double step = 0.25 * c / std::max(std::min(r.width(), r.height()), 1e-9);
+    r = scaledAboutCentre(grown, 1.0 - step);
+    if (edgesSafe()) {
+      double lo = 1.0 - step, hi = 1.0;
+      for (int k = 0; k < 6; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        r = scaledAboutCentre(grown, mid);
+        (edgesSafe() ? lo : hi) = mid;
+      }
+      r = scaledAboutCentre(grown, lo);
+    }
+  }
   for (int k = 0; k < 8 && !edgesSafe(); ++k)
     r = scaledAboutCentre(r, 1.0 - 0.25 * c / std::max(std::min(r.width(), r.height()), 1e-9));
   const double shorter = std::max(std::min(r.width(), r.height()), 1e-9);
@@ -212,7 +229,7 @@ std::optional<Rect> largestSafeRectangle(const WorkspaceMap& map, const Geometry
   for (int pass = 0; pass < 2; ++pass) {
     for (int side = 0; side < 4; ++side) {
       const double room = std::max(0.0, std::min(c, roomToGridEdge(grid, r, side)));
-      const double d = bisectGrowth(g, s, map.mode, r, room, spacing,
+      const double d = bisectGrowth(g, s, map.mode, r, room, spacing, kEdgeSpacingMm,
                                     [&](double t) { return moved(r, side, t); });
       r = moved(r, side, d);
     }
