@@ -121,7 +121,10 @@ class NeighbourLists {
 };
 
 // 2-opt on the open tour (fixed start node when given) with segment reversal; strokes inside a
-// reversed segment are flipped, which keeps the cost symmetric.
+// reversed segment are flipped, which keeps the cost symmetric. A move reverses at most
+// kMaxReversal strokes, so that a step costs microseconds on a tour of any length (the greedy
+// tour's long jumps are mostly repaired by partners close to them in tour order).
+constexpr int kMaxReversal = 1000;
 class TwoOpt {
  public:
   TwoOpt(const Ends& e, Tour& t, const std::optional<Vec2>& start)
@@ -167,7 +170,7 @@ class TwoOpt {
     for (int c : nbr.of(2 * t_.order[p] + (t_.flip[p] ? 0 : 1))) {
       if (c < 0 || cost(a, e_.node[c]) >= dab) break;
       const int q = pos_[c / 2];
-      if (q <= p || !isExitNode(c)) continue;
+      if (q <= p || q - p > kMaxReversal || !isExitNode(c)) continue;
       const double gain = dab + outCost(q, exit(q)) - cost(a, exit(q)) - outCost(q, b);
       if (gain > 1e-12) return reverse(p + 1, q), true;
     }
@@ -180,7 +183,7 @@ class TwoOpt {
     for (int c : nbr.of(2 * t_.order[p + 1] + (t_.flip[p + 1] ? 1 : 0))) {
       if (c < 0 || cost(b, e_.node[c]) >= dab) break;
       const int q = pos_[c / 2];
-      if (q > p || isExitNode(c)) continue;
+      if (q > p || p - q > kMaxReversal || isExitNode(c)) continue;
       const double gain = inCost(q, entry(q)) + dab - inCost(q, a) - cost(entry(q), b);
       if (gain > 1e-12) return reverse(q, p), true;
     }

@@ -20,8 +20,8 @@ namespace {
 // Cells per side of the workspace map the fit rectangle is searched on.
 constexpr int kFitGridCells = 160;
 
-// Long edges the 2-opt of a plan may examine (about a microsecond each).
-constexpr std::size_t kTwoOptSteps = 50000;
+// Long edges the 2-opt of a plan may examine (well under a microsecond each).
+constexpr std::size_t kTwoOptSteps = 150000;
 // Stride of the point sample that bounds a mode's margin from above: about this many points.
 constexpr std::size_t kScreenPoints = 20000;
 
@@ -210,7 +210,7 @@ PlanResult planInMode(const Drawing& drawing, const MachineProfile& profile,
   if (options.optimise) {
     OptimiseOptions oo;
     oo.start = profile.homeAngles;
-    // A deterministic 2-opt budget (the same drawing always gives the same job), about 0.1 s
+    // A deterministic 2-opt budget (the same drawing always gives the same job), under 0.1 s
     // on 40,000 strokes; the wall-clock budget only guards against a pathological case.
     oo.maxTwoOptSteps = kTwoOptSteps;
     oo.timeBudgetS = 2.0;
