@@ -141,6 +141,7 @@ int plan(const Options& o) {
   // Fitting may enlarge the drawing: flatten again, finer, before planning.
   const std::optional<double> scale = largestPlacementScale(*drawing, *machine, opt);
   clock.lap("placement and mode screening");
+  if (o.flag("--timings") && scale) std::cerr << "  placement scale " << *scale << "\n";
   if (scale && *scale * importTol > share * 1.000001) {
     importTol = share / *scale;
     drawing = importDrawing(file, importTol);

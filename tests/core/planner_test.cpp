@@ -210,6 +210,21 @@ TEST_F(PlannerTest, AutoPicksTheFeasibleModeWithTheLargestMargin) {
   EXPECT_DOUBLE_EQ(autoPlan.report.minSingularityMarginDeg, best);
 }
 
+TEST_F(PlannerTest, TheSameDrawingAlwaysGivesTheSameJob) {
+  auto rng = test::rng();
+  const Drawing d = randomDrawing(rng, 60);  // enough strokes for the 2-opt to work
+  PlanOptions o;
+  o.flatteningToleranceMm = 0.0;
+  const PlanResult a = planJob(d, p, o), b = planJob(d, p, o);
+  ASSERT_TRUE(a.ok() && b.ok()) << a.message << b.message;
+  ASSERT_EQ(a.job.moves.size(), b.job.moves.size());
+  for (size_t i = 0; i < a.job.moves.size(); ++i) {
+    ASSERT_EQ(a.job.moves[i].kind, b.job.moves[i].kind) << i;
+    ASSERT_EQ(a.job.moves[i].target.theta1, b.job.moves[i].target.theta1) << i;
+    ASSERT_EQ(a.job.moves[i].target.theta2, b.job.moves[i].target.theta2) << i;
+  }
+}
+
 TEST_F(PlannerTest, LargestPlacementScaleIsTheScaleThePlanUses) {
   auto rng = test::rng();
   const Drawing d = randomDrawing(rng, 6);
