@@ -101,12 +101,12 @@ std::optional<Drawing> importDrawing(const std::string& file, double toleranceMm
 #ifdef FIVEBAR_HAVE_IMPORT
   svg::ImportOptions io;
   io.toleranceMm = toleranceMm;
-  const svg::ImportResult r = svg::importSvgFile(QString::fromStdString(file), io);
+  svg::ImportResult r = svg::importSvgFile(QString::fromStdString(file), io);
   if (!r.ok()) {
     std::cerr << "fivebar plan: " << r.message << "\n";
     return std::nullopt;
   }
-  return r.drawing;
+  return std::move(r.drawing);
 #else
   (void)toleranceMm;
   std::cerr << "fivebar plan: " << file << ": this build has no SVG import (configured with "

@@ -18,19 +18,6 @@ Vec2 mapped(const QTransform& t, double x, double y) {
   return {p.x(), p.y()};
 }
 
-// Drops consecutive duplicates; marks the polyline closed when it ends where it started.
-void finishPolyline(Polyline& line, bool closed, std::vector<Polyline>& out) {
-  auto& pts = line.points;
-  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
-  if (pts.size() > 2 && pts.front() == pts.back()) {
-    pts.pop_back();
-    closed = true;
-  }
-  if (pts.size() < 2) return;
-  line.closed = closed && pts.size() > 2;
-  out.push_back(std::move(line));
-}
-
 std::uint32_t rgbOf(const QBrush& brush) {
   QColor colour = brush.color();
   if (const QGradient* g = brush.gradient(); g && !g->stops().isEmpty())
@@ -45,6 +32,18 @@ bool visible(const QBrush& brush) {
 }
 
 }  // namespace
+
+void finishPolyline(Polyline& line, bool closed, std::vector<Polyline>& out) {
+  auto& pts = line.points;
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  if (pts.size() > 2 && pts.front() == pts.back()) {
+    pts.pop_back();
+    closed = true;
+  }
+  if (pts.size() < 2) return;
+  line.closed = closed && pts.size() > 2;
+  out.push_back(std::move(line));
+}
 
 void appendFlattenedPath(const QPainterPath& path, const QTransform& transform,
                          double toleranceMm, std::vector<Polyline>& out) {

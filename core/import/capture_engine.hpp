@@ -116,6 +116,10 @@ class CaptureDevice final : public QPaintDevice {
   std::unique_ptr<CaptureEngine> engine_;
 };
 
+// Drops consecutive duplicate points; marks the polyline closed when it ends where it started;
+// appends it to `out` when at least two points remain (shared with the direct reader).
+void finishPolyline(Polyline& line, bool closed, std::vector<Polyline>& out);
+
 // Flattening helpers, exposed for tests. Points are mapped by `transform` before flattening.
 void appendFlattenedPath(const QPainterPath& path, const QTransform& transform,
                          double toleranceMm, std::vector<Polyline>& out);

@@ -15,26 +15,30 @@ struct Cubic {
   int depth = 0;
 };
 
-bool flatEnough(const Cubic& c, double toleranceMm) {
+// bound2Limit = 16 tolerance^2: the Hain/Willcocks bound squared, times 16.
+bool flatEnough(const Cubic& c, double bound2Limit) {
   const Vec2 u = 3.0 * c.c1 - 2.0 * c.p0 - c.p3;
   const Vec2 v = 3.0 * c.c2 - c.p0 - 2.0 * c.p3;
   const double bound2 = std::max(u.x() * u.x(), v.x() * v.x()) +
                         std::max(u.y() * u.y(), v.y() * v.y());
-  return bound2 <= 16.0 * toleranceMm * toleranceMm;
+  return bound2 <= bound2Limit;
 }
 
 }  // namespace
 
 void flattenCubic(const Vec2& p0, const Vec2& c1, const Vec2& c2, const Vec2& p3,
                   double toleranceMm, std::vector<Vec2>& out) {
-  // Explicit stack, right half pushed first so pieces come out in order.
+  // Depth-first: keep splitting the current piece, its right half waiting on an explicit stack,
+  // so that pieces come out in order.
+  const double limit = 16.0 * toleranceMm * toleranceMm;
   Cubic stack[kMaxDepth + 2];
   int top = 0;
-  stack[top++] = Cubic{p0, c1, c2, p3, 0};
-  while (top > 0) {
-    const Cubic c = stack[--top];
-    if (c.depth >= kMaxDepth || flatEnough(c, toleranceMm)) {
+  Cubic c{p0, c1, c2, p3, 0};
+  for (;;) {
+    if (c.depth >= kMaxDepth || flatEnough(c, limit)) {
       out.push_back(c.p3);
+      if (top == 0) return;
+      c = stack[--top];
       continue;
     }
     const Vec2 ab = 0.5 * (c.p0 + c.c1);
@@ -44,7 +48,7 @@ void flattenCubic(const Vec2& p0, const Vec2& c1, const Vec2& c2, const Vec2& p3
     const Vec2 bcd = 0.5 * (bc + cd);
     const Vec2 mid = 0.5 * (abc + bcd);
     stack[top++] = Cubic{mid, bcd, cd, c.p3, c.depth + 1};
-    stack[top++] = Cubic{c.p0, ab, abc, mid, c.depth + 1};
+    c = Cubic{c.p0, ab, abc, mid, c.depth + 1};
   }
 }
 

@@ -1,5 +1,6 @@
-// In-process import: sanitise, render through Qt SVG into the capture engine, group into layers,
-// then size, check and flip into the work frame (y up).
+// In-process import: the direct reader for plain documents (fast_import.hpp); otherwise sanitise
+// and render through Qt SVG into the capture engine. Then group into layers, size, check and flip
+// into the work frame (y up).
 #include <QBuffer>
 #include <QFile>
 #include <QFileInfo>
@@ -12,6 +13,8 @@
 #include <limits>
 
 #include "capture_engine.hpp"
+#include "fast_import.hpp"
+#include "import_pipeline.hpp"
 #include "layers.hpp"
 #include "svg_import.hpp"
 #include "svg_sanitize.hpp"
@@ -142,33 +145,82 @@ std::string render(SanitizeResult& clean, const PageSetup& page, const ImportOpt
   return {};
 }
 
-ImportResult importDevice(QIODevice& input, const QString& source, const ImportOptions& o,
-                          const ProgressFn& progress) {
-  if (const std::string bad = validateOptions(o); !bad.empty())
-    return failure(ImportStatus::InvalidOptions, source, bad);
+Capture failed(ImportStatus status, const QString& source, const std::string& message) {
+  Capture c;
+  c.status = status;
+  c.message = source.toStdString() + ": " + message;
+  return c;
+}
+
+// The general path: sanitiser, Qt SVG, capture engine (options already validated).
+Capture captureGeneral(QIODevice& input, const QString& source, const ImportOptions& o,
+                       const ProgressFn& progress) {
   auto cancelled = [&] { return o.cancel && o.cancel->load(); };
   SanitizeResult clean = sanitizeSvg(input, o.dpi, [&](double f) {
     if (progress) progress(0.5 * f);
     return !cancelled();
   });
-  if (clean.status != ImportStatus::Ok) return failure(clean.status, source, clean.error);
-  PageSetup page;
-  if (const std::string bad = computePage(clean.root, o.dpi, page); !bad.empty())
-    return failure(ImportStatus::InvalidDocument, source,
-                   "line " + std::to_string(clean.root.line) + ": " + bad);
+  if (clean.status != ImportStatus::Ok) return failed(clean.status, source, clean.error);
+  Capture capture;
+  if (const std::string bad = computePage(clean.root, o.dpi, capture.page); !bad.empty())
+    return failed(ImportStatus::InvalidDocument, source,
+                  "line " + std::to_string(clean.root.line) + ": " + bad);
   if (progress) progress(0.5);
-  std::vector<CapturedRun> runs;
-  if (const std::string bad = render(clean, page, o, progress, runs); !bad.empty())
-    return failure(ImportStatus::RenderFailed, source, bad);
-  if (cancelled()) return failure(ImportStatus::Cancelled, source, "import cancelled");
+  if (const std::string bad = render(clean, capture.page, o, progress, capture.runs); !bad.empty())
+    return failed(ImportStatus::RenderFailed, source, bad);
+  if (cancelled()) return failed(ImportStatus::Cancelled, source, "import cancelled");
+  capture.topLevel = std::move(clean.topLevel);
+  capture.warnings = std::move(clean.warnings);
+  return capture;
+}
 
+// The direct reader when the document is in its subset, else the general path.
+Capture captureBytes(const QByteArray& data, const QString& source, const ImportOptions& o,
+                     const ProgressFn& progress, bool allowDirect, const RunSink& sink) {
+  if (const std::string bad = validateOptions(o); !bad.empty())
+    return failed(ImportStatus::InvalidOptions, source, bad);
+  if (allowDirect) {
+    DirectCapture direct;
+    const ProgressFn scaled = [&](double f) {
+      if (progress) progress(0.95 * f);
+    };
+    switch (captureDirect(data, o, scaled, direct, sink)) {
+      case DirectStatus::Cancelled: return failed(ImportStatus::Cancelled, source, "import cancelled");
+      case DirectStatus::Captured: {
+        Capture capture;
+        capture.runs = std::move(direct.runs);
+        capture.topLevel = std::move(direct.topLevel);
+        capture.page = direct.page;
+        return capture;
+      }
+      case DirectStatus::Declined:
+        if (sink && sink.restart) sink.restart();
+        break;
+    }
+  }
+  QBuffer buffer;
+  buffer.setData(data);
+  buffer.open(QIODevice::ReadOnly);
+  return captureGeneral(buffer, source, o, progress);
+}
+
+}  // namespace
+
+ImportResult finishImport(Capture&& capture, const QString& source, const ImportOptions& o,
+                          const ProgressFn& progress) {
   ImportResult result;
-  result.warnings = clean.warnings;
+  if (capture.status != ImportStatus::Ok) {
+    result.status = capture.status;
+    result.message = std::move(capture.message);
+    return result;
+  }
+  result.warnings = std::move(capture.warnings);
   Drawing& drawing = result.drawing;
   drawing.source = source.toStdString();
-  drawing.layers = buildLayers(std::move(runs), clean.topLevel, o.layerMode);
+  drawing.layers = buildLayers(std::move(capture.runs), capture.topLevel, o.layerMode);
   const Extent extent = inspect(drawing.layers, o.maxCoordinateMm);
   if (!extent.problem.empty()) return failure(ImportStatus::AbsurdCoordinates, source, extent.problem);
+  const PageSetup& page = capture.page;
   drawing.widthMm = page.widthMm > 0.0 ? page.widthMm : extent.maxX;
   drawing.heightMm = page.heightMm > 0.0 ? page.heightMm : extent.maxY;
   if (!page.sizeKnown)
@@ -178,25 +230,34 @@ ImportResult importDevice(QIODevice& input, const QString& source, const ImportO
   return result;
 }
 
-}  // namespace
-
 ImportResult importSvgData(const QByteArray& data, const QString& sourceName,
                            const ImportOptions& options, const ProgressFn& progress) {
-  QBuffer buffer;
-  buffer.setData(data);
-  buffer.open(QIODevice::ReadOnly);
-  return importDevice(buffer, sourceName, options, progress);
+  return finishImport(captureBytes(data, sourceName, options, progress, true, {}), sourceName,
+                      options, progress);
+}
+
+ImportResult importSvgDataGeneral(const QByteArray& data, const QString& sourceName,
+                                  const ImportOptions& options, const ProgressFn& progress) {
+  return finishImport(captureBytes(data, sourceName, options, progress, false, {}), sourceName,
+                      options, progress);
+}
+
+Capture captureSvgFile(const QString& path, const ImportOptions& options, const ProgressFn& progress,
+                       const RunSink& sink) {
+  QFile file(path);
+  if (!QFileInfo(path).isFile()) return failed(ImportStatus::FileError, path, "no such file");
+  if (!file.open(QIODevice::ReadOnly))
+    return failed(ImportStatus::FileError, path, "cannot open: " + file.errorString().toStdString());
+  if (file.size() == 0) return failed(ImportStatus::FileError, path, "the file is empty");
+  const QByteArray data = file.readAll();
+  if (file.error() != QFileDevice::NoError)
+    return failed(ImportStatus::FileError, path, "cannot read: " + file.errorString().toStdString());
+  return captureBytes(data, path, options, progress, true, sink);
 }
 
 ImportResult importSvgInProcess(const QString& path, const ImportOptions& options,
                                 const ProgressFn& progress) {
-  QFile file(path);
-  if (!QFileInfo(path).isFile())
-    return failure(ImportStatus::FileError, path, "no such file");
-  if (!file.open(QIODevice::ReadOnly))
-    return failure(ImportStatus::FileError, path, "cannot open: " + file.errorString().toStdString());
-  if (file.size() == 0) return failure(ImportStatus::FileError, path, "the file is empty");
-  return importDevice(file, path, options, progress);
+  return finishImport(captureSvgFile(path, options, progress), path, options, progress);
 }
 
 }  // namespace fivebar::svg

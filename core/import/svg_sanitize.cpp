@@ -44,29 +44,6 @@ bool isGeometryAttribute(QStringView name) {
   return geometry.contains(name);
 }
 
-// True when the text holds "nan", "inf" or an exponent that overflows a double.
-bool hasNonFiniteNumber(QStringView value) {
-  const qsizetype n = value.size();
-  for (qsizetype i = 0; i < n; ++i) {
-    const char16_t c = value[i].unicode() | 0x20;  // ASCII lower case
-    if (i + 2 < n && (c == u'n' || c == u'i')) {
-      const char16_t c1 = value[i + 1].unicode() | 0x20, c2 = value[i + 2].unicode() | 0x20;
-      if ((c == u'n' && c1 == u'a' && c2 == u'n') || (c == u'i' && c1 == u'n' && c2 == u'f'))
-        return true;
-    }
-    if (c == u'e' && i > 0 && value[i - 1].isDigit()) {
-      qsizetype j = i + 1;
-      bool negative = false;
-      if (j < n && (value[j] == u'+' || value[j] == u'-')) negative = value[j++] == u'-';
-      int exponent = 0;
-      while (j < n && value[j].isDigit() && exponent < 100000)
-        exponent = exponent * 10 + (value[j++].unicode() - u'0');
-      if (!negative && exponent > 300) return true;
-    }
-  }
-  return false;
-}
-
 class Sanitizer {
  public:
   Sanitizer(QIODevice& input, double dpi, const std::function<bool(double)>& progress)
@@ -382,6 +359,28 @@ void Sanitizer::characters() {
 }
 
 }  // namespace
+
+bool hasNonFiniteNumber(QStringView value) {
+  const qsizetype n = value.size();
+  for (qsizetype i = 0; i < n; ++i) {
+    const char16_t c = value[i].unicode() | 0x20;  // ASCII lower case
+    if (i + 2 < n && (c == u'n' || c == u'i')) {
+      const char16_t c1 = value[i + 1].unicode() | 0x20, c2 = value[i + 2].unicode() | 0x20;
+      if ((c == u'n' && c1 == u'a' && c2 == u'n') || (c == u'i' && c1 == u'n' && c2 == u'f'))
+        return true;
+    }
+    if (c == u'e' && i > 0 && value[i - 1].isDigit()) {
+      qsizetype j = i + 1;
+      bool negative = false;
+      if (j < n && (value[j] == u'+' || value[j] == u'-')) negative = value[j++] == u'-';
+      int exponent = 0;
+      while (j < n && value[j].isDigit() && exponent < 100000)
+        exponent = exponent * 10 + (value[j++].unicode() - u'0');
+      if (!negative && exponent > 300) return true;
+    }
+  }
+  return false;
+}
 
 SanitizeResult sanitizeSvg(QIODevice& input, double dpi,
                            const std::function<bool(double)>& progress) {

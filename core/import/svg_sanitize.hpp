@@ -45,6 +45,10 @@ struct SanitizeResult {
   std::vector<std::string> warnings;
 };
 
+// True when the text holds "nan", "inf" or an exponent that overflows a double (the check the
+// sanitiser applies to geometry attributes).
+bool hasNonFiniteNumber(QStringView value);
+
 // Reads the whole device. dpi: user units per inch (nested <svg> lengths). progress(fraction of
 // input read) returns false to cancel.
 SanitizeResult sanitizeSvg(QIODevice& input, double dpi,

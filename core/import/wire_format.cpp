@@ -1,6 +1,9 @@
 #include "wire_format.hpp"
 
-#include <cstdio>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
 #include <cstring>
 #include <string_view>
 
@@ -8,37 +11,72 @@ namespace fivebar::svg {
 namespace {
 
 constexpr std::string_view kMagic = "FBSVG1\n";
+constexpr std::string_view kStreamMagic = "FBSVG2\n";
+constexpr std::uint8_t kRunsRecord = 'C';
+constexpr std::uint8_t kRestartRecord = 'R';
+constexpr std::uint8_t kFinalRecord = 'F';
 constexpr std::string_view kTrailer = "END\n";
 constexpr std::uint32_t kMaxCount = 1u << 30;
+constexpr std::uint32_t kMaxTextBytes = 1u << 24;  // messages, names: far below this
 
-// Appends to a byte buffer; with a file, hands the buffer to it whenever it passes 1 MB.
+// Appends to a byte buffer; with a descriptor, hands the buffer to it whenever it passes 1 MB.
 class Writer {
  public:
-  explicit Writer(QByteArray& out, std::FILE* file = nullptr) : out_(out), file_(file) {}
+  explicit Writer(QByteArray& out, int fd = -1) : out_(out), fd_(fd) {}
   template <typename T>
   void raw(T value) { out_.append(reinterpret_cast<const char*>(&value), sizeof value); }
   void text(const std::string& s) {
     raw(static_cast<std::uint32_t>(s.size()));
     out_.append(s.data(), static_cast<qsizetype>(s.size()));
   }
-  void bytes(std::string_view s) { out_.append(s.data(), static_cast<qsizetype>(s.size())); }
+  void bytes(const void* data, std::size_t n) {
+    out_.append(static_cast<const char*>(data), static_cast<qsizetype>(n));
+  }
+  void bytes(std::string_view s) { bytes(s.data(), s.size()); }
   void maybeFlush(bool force = false) {
-    if (!file_ || (!force && out_.size() < (qsizetype{1} << 20))) return;
-    std::fwrite(out_.constData(), 1, static_cast<std::size_t>(out_.size()), file_);
+    if (fd_ < 0 || (!force && out_.size() < (qsizetype{1} << 20))) return;
+    const char* p = out_.constData();
+    qsizetype left = out_.size();
+    while (left > 0 && ok_) {
+      const ssize_t n = ::write(fd_, p, static_cast<std::size_t>(left));
+      if (n < 0 && errno == EINTR) continue;
+      ok_ = n > 0;
+      if (ok_) {
+        p += n;
+        left -= n;
+      }
+    }
     out_.clear();
   }
+  bool ok() const { return ok_; }
 
  private:
   QByteArray& out_;
-  std::FILE* file_;
+  int fd_;
+  bool ok_ = true;
 };
+
+void writePolylines(const std::vector<Polyline>& lines, Writer& w) {
+  w.raw(static_cast<std::uint32_t>(lines.size()));
+  for (const Polyline& line : lines) {
+    w.raw(static_cast<std::uint8_t>(line.closed ? 1 : 0));
+    w.raw(static_cast<std::uint32_t>(line.points.size()));
+    static_assert(sizeof(Vec2) == 2 * sizeof(double), "points are sent as x, y doubles");
+    w.bytes(line.points.data(), line.points.size() * sizeof(Vec2));
+    w.maybeFlush();
+  }
+}
+
+void writeTexts(const std::vector<std::string>& texts, Writer& w) {
+  w.raw(static_cast<std::uint32_t>(texts.size()));
+  for (const std::string& t : texts) w.text(t);
+}
 
 void encode(const ImportResult& result, Writer& w) {
   w.bytes(kMagic);
   w.raw(static_cast<std::uint32_t>(result.status));
   w.text(result.message);
-  w.raw(static_cast<std::uint32_t>(result.warnings.size()));
-  for (const std::string& warning : result.warnings) w.text(warning);
+  writeTexts(result.warnings, w);
   const Drawing& d = result.drawing;
   w.raw(d.widthMm);
   w.raw(d.heightMm);
@@ -49,16 +87,7 @@ void encode(const ImportResult& result, Writer& w) {
     w.text(layer.name);
     w.raw(layer.rgb);
     w.raw(static_cast<std::uint8_t>(layer.visible ? 1 : 0));
-    w.raw(static_cast<std::uint32_t>(layer.paths.size()));
-    for (const Polyline& line : layer.paths) {
-      w.raw(static_cast<std::uint8_t>(line.closed ? 1 : 0));
-      w.raw(static_cast<std::uint32_t>(line.points.size()));
-      for (const Vec2& p : line.points) {
-        w.raw(p.x());
-        w.raw(p.y());
-      }
-      w.maybeFlush();
-    }
+    writePolylines(layer.paths, w);
   }
   w.bytes(kTrailer);
   w.maybeFlush(true);
@@ -66,56 +95,84 @@ void encode(const ImportResult& result, Writer& w) {
 
 class Reader {
  public:
-  explicit Reader(const QByteArray& in) : in_(in) {}
+  explicit Reader(ByteSource& in) : in_(in) {}
   template <typename T>
-  bool raw(T& value) {
-    if (pos_ + static_cast<qsizetype>(sizeof value) > in_.size()) return false;
-    std::memcpy(&value, in_.constData() + pos_, sizeof value);
-    pos_ += static_cast<qsizetype>(sizeof value);
-    return true;
-  }
+  bool raw(T& value) { return in_.read(&value, sizeof value); }
   bool text(std::string& s) {
     std::uint32_t n = 0;
-    if (!raw(n) || pos_ + static_cast<qsizetype>(n) > in_.size()) return false;
-    s.assign(in_.constData() + pos_, n);
-    pos_ += static_cast<qsizetype>(n);
-    return true;
+    if (!raw(n) || n > kMaxTextBytes) return false;
+    s.resize(n);
+    return n == 0 || in_.read(s.data(), n);
   }
   bool literal(std::string_view expected) {
-    if (pos_ + static_cast<qsizetype>(expected.size()) > in_.size()) return false;
-    if (std::string_view(in_.constData() + pos_, expected.size()) != expected) return false;
-    pos_ += static_cast<qsizetype>(expected.size());
-    return true;
+    char buffer[16];
+    return expected.size() <= sizeof buffer && in_.read(buffer, expected.size()) &&
+           std::string_view(buffer, expected.size()) == expected;
   }
   bool count(std::uint32_t& n) { return raw(n) && n < kMaxCount; }
+  // n points, read in blocks so that memory follows the data actually received.
+  bool points(std::uint32_t n, std::vector<Vec2>& out) {
+    constexpr std::uint32_t kBlock = 1u << 16;
+    out.clear();
+    out.reserve(std::min(n, kBlock));
+    for (std::uint32_t done = 0; done < n;) {
+      const std::uint32_t k = std::min(n - done, kBlock);
+      out.resize(done + k);
+      if (!in_.read(out.data() + done, k * sizeof(Vec2))) return false;
+      done += k;
+    }
+    return true;
+  }
 
  private:
-  const QByteArray& in_;
-  qsizetype pos_ = 0;
+  ByteSource& in_;
 };
 
-bool decodeLayer(Reader& r, Layer& layer) {
-  std::uint8_t visible = 0;
+// Appends the polylines (count, then each) to `out`.
+bool readPolylines(Reader& r, std::vector<Polyline>& out) {
   std::uint32_t paths = 0;
-  if (!r.text(layer.id) || !r.text(layer.name) || !r.raw(layer.rgb) || !r.raw(visible) ||
-      !r.count(paths))
-    return false;
-  layer.visible = visible != 0;
-  layer.paths.resize(paths);
-  for (Polyline& line : layer.paths) {
+  if (!r.count(paths)) return false;
+  for (std::uint32_t i = 0; i < paths; ++i) {
     std::uint8_t closed = 0;
     std::uint32_t n = 0;
     if (!r.raw(closed) || !r.count(n)) return false;
+    Polyline& line = out.emplace_back();
     line.closed = closed != 0;
-    line.points.resize(n);
-    for (Vec2& p : line.points) {
-      double x = 0, y = 0;
-      if (!r.raw(x) || !r.raw(y)) return false;
-      p = Vec2(x, y);
-    }
+    if (!r.points(n, line.points)) return false;
   }
   return true;
 }
+
+bool readTexts(Reader& r, std::vector<std::string>& out) {
+  std::uint32_t n = 0;
+  if (!r.count(n)) return false;
+  out.clear();
+  for (std::uint32_t i = 0; i < n; ++i)
+    if (!r.text(out.emplace_back())) return false;
+  return true;
+}
+
+bool decodeLayer(Reader& r, Layer& layer) {
+  std::uint8_t visible = 0;
+  if (!r.text(layer.id) || !r.text(layer.name) || !r.raw(layer.rgb) || !r.raw(visible)) return false;
+  layer.visible = visible != 0;
+  return readPolylines(r, layer.paths);
+}
+
+class ArraySource final : public ByteSource {
+ public:
+  explicit ArraySource(const QByteArray& bytes) : bytes_(bytes) {}
+  bool read(void* dst, std::size_t n) override {
+    if (n > static_cast<std::size_t>(bytes_.size() - pos_)) return false;
+    std::memcpy(dst, bytes_.constData() + pos_, n);
+    pos_ += static_cast<qsizetype>(n);
+    return true;
+  }
+
+ private:
+  const QByteArray& bytes_;
+  qsizetype pos_ = 0;
+};
 
 }  // namespace
 
@@ -134,31 +191,125 @@ QByteArray encodeResult(const ImportResult& result) {
   return out;
 }
 
-void writeResult(const ImportResult& result, std::FILE* file) {
-  QByteArray buffer;
-  buffer.reserve((qsizetype{1} << 20) + 65536);
-  Writer w(buffer, file);
-  encode(result, w);
-  std::fflush(file);
-}
-
-bool decodeResult(const QByteArray& bytes, ImportResult& result) {
-  Reader r(bytes);
-  std::uint32_t status = 0, warnings = 0, layers = 0;
-  if (!r.literal(kMagic) || !r.raw(status) || !r.text(result.message) || !r.count(warnings))
+bool decodeResult(ByteSource& source, ImportResult& result) {
+  Reader r(source);
+  std::uint32_t status = 0, layers = 0;
+  if (!r.literal(kMagic) || !r.raw(status) || !r.text(result.message) ||
+      !readTexts(r, result.warnings))
     return false;
   if (status > static_cast<std::uint32_t>(ImportStatus::InvalidOptions)) return false;
   result.status = static_cast<ImportStatus>(status);
-  result.warnings.resize(warnings);
-  for (std::string& w : result.warnings)
-    if (!r.text(w)) return false;
   Drawing& d = result.drawing;
   if (!r.raw(d.widthMm) || !r.raw(d.heightMm) || !r.text(d.source) || !r.count(layers))
     return false;
-  d.layers.resize(layers);
-  for (Layer& layer : d.layers)
-    if (!decodeLayer(r, layer)) return false;
+  d.layers.clear();
+  for (std::uint32_t i = 0; i < layers; ++i)
+    if (!decodeLayer(r, d.layers.emplace_back())) return false;
   return r.literal(kTrailer);
+}
+
+bool decodeResult(const QByteArray& bytes, ImportResult& result) {
+  ArraySource source(bytes);
+  return decodeResult(source, result);
+}
+
+// --- the capture stream ---
+
+struct CaptureStreamWriter::Impl {
+  explicit Impl(int fd) : writer(buffer, fd) { buffer.reserve((qsizetype{1} << 20) + 65536); }
+  QByteArray buffer;
+  Writer writer;
+};
+
+CaptureStreamWriter::CaptureStreamWriter(int fd) : impl_(std::make_unique<Impl>(fd)) {
+  impl_->writer.bytes(kStreamMagic);
+}
+
+CaptureStreamWriter::~CaptureStreamWriter() = default;
+
+void CaptureStreamWriter::runs(const std::vector<CapturedRun>& runs) {
+  Writer& w = impl_->writer;
+  if (runs.empty()) return;
+  w.raw(kRunsRecord);
+  w.raw(static_cast<std::uint32_t>(runs.size()));
+  for (const CapturedRun& run : runs) {
+    w.raw(static_cast<std::int32_t>(run.topIndex));
+    w.raw(run.rgb);
+    writePolylines(run.paths, w);
+  }
+  w.maybeFlush();
+}
+
+void CaptureStreamWriter::restart() { impl_->writer.raw(kRestartRecord); }
+
+bool CaptureStreamWriter::finish(const Capture& c, const std::vector<std::string>& qtMessages) {
+  Writer& w = impl_->writer;
+  runs(c.runs);
+  w.raw(kFinalRecord);
+  w.raw(static_cast<std::uint32_t>(c.status));
+  w.text(c.message);
+  writeTexts(c.warnings, w);
+  writeTexts(qtMessages, w);
+  w.raw(static_cast<std::uint8_t>(c.page.sizeKnown ? 1 : 0));
+  w.raw(c.page.widthMm);
+  w.raw(c.page.heightMm);
+  w.raw(static_cast<std::uint32_t>(c.topLevel.size()));
+  for (const TopLevelElement& t : c.topLevel) {
+    w.text(t.tag.toStdString());
+    w.text(t.id.toStdString());
+    w.text(t.label.toStdString());
+    w.raw(static_cast<std::uint8_t>(t.inkscapeLayer ? 1 : 0));
+  }
+  w.bytes(kTrailer);
+  w.maybeFlush(true);
+  return w.ok();
+}
+
+namespace {
+
+bool readFinal(Reader& r, StreamedCapture& out) {
+  Capture& c = out.capture;
+  std::uint32_t status = 0, elements = 0;
+  std::uint8_t sizeKnown = 0;
+  if (!r.raw(status) || status > static_cast<std::uint32_t>(ImportStatus::InvalidOptions) ||
+      !r.text(c.message) || !readTexts(r, c.warnings) || !readTexts(r, out.qtMessages) ||
+      !r.raw(sizeKnown) || !r.raw(c.page.widthMm) || !r.raw(c.page.heightMm) || !r.count(elements))
+    return false;
+  c.status = static_cast<ImportStatus>(status);
+  c.page.sizeKnown = sizeKnown != 0;
+  for (std::uint32_t i = 0; i < elements; ++i) {
+    std::string tag, id, label;
+    std::uint8_t inkscape = 0;
+    if (!r.text(tag) || !r.text(id) || !r.text(label) || !r.raw(inkscape)) return false;
+    c.topLevel.push_back(TopLevelElement{QString::fromStdString(tag), QString::fromStdString(id),
+                                         QString::fromStdString(label), inkscape != 0});
+  }
+  return r.literal(kTrailer);
+}
+
+}  // namespace
+
+bool decodeCaptureStream(ByteSource& source, StreamedCapture& out) {
+  Reader r(source);
+  if (!r.literal(kStreamMagic)) return false;
+  std::vector<CapturedRun>& runs = out.capture.runs;
+  for (;;) {
+    std::uint8_t kind = 0;
+    if (!r.raw(kind)) return false;
+    if (kind == kFinalRecord) return readFinal(r, out);
+    if (kind == kRestartRecord) {
+      runs.clear();
+      continue;
+    }
+    std::uint32_t n = 0;
+    if (kind != kRunsRecord || !r.count(n)) return false;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      CapturedRun& run = runs.emplace_back();
+      std::int32_t top = 0;
+      if (!r.raw(top) || !r.raw(run.rgb) || !readPolylines(r, run.paths)) return false;
+      run.topIndex = top;
+    }
+  }
 }
 
 QStringList workerArguments(const QString& path, const ImportOptions& o) {
@@ -176,7 +327,8 @@ QStringList workerArguments(const QString& path, const ImportOptions& o) {
           QStringLiteral("--"), path};
 }
 
-QString parseWorkerArguments(const QStringList& arguments, QString& path, ImportOptions& o) {
+QString parseWorkerArguments(const QStringList& arguments, QString& path, ImportOptions& o,
+                             int* resultFd) {
   for (qsizetype i = 0; i < arguments.size(); ++i) {
     const QString& key = arguments[i];
     if (key == u"--") {
@@ -193,6 +345,10 @@ QString parseWorkerArguments(const QStringList& arguments, QString& path, Import
     else if (key == u"--height-mm") o.forcedHeightMm = value.toDouble(&ok);
     else if (key == u"--max-coordinate-mm") o.maxCoordinateMm = value.toDouble(&ok);
     else if (key == u"--outline-fills") o.outlineFills = value == u"1";
+    else if (key == QLatin1StringView(kResultFdOption) && resultFd) {
+      *resultFd = value.toInt(&ok);
+      ok = ok && *resultFd >= 0;
+    }
     else if (key == u"--layers") {
       if (value == u"auto") o.layerMode = LayerMode::Auto;
       else if (value == u"group") o.layerMode = LayerMode::ByGroup;

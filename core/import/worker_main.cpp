@@ -1,15 +1,20 @@
 // fivebar-svg-worker: imports one SVG in its own process so that a crash or hang of Qt SVG on a
 // hostile file cannot take the caller down (svg_import.hpp, importSvgFile).
-// Usage: fivebar-svg-worker [options] -- FILE   (options: wire_format.cpp, workerArguments)
-// stdout: the ImportResult in the binary wire format; stderr: "progress <fraction>" lines.
-// Exit code 0 whenever a result was written (whatever its status), 2 for a bad command line.
+// Usage: fivebar-svg-worker [--result-fd N] [options] -- FILE   (options: wire_format.cpp)
+// The capture stream (wire_format.hpp) goes to descriptor N (importSvgFile passes a pipe of its
+// own) or to stdout; stderr carries "progress <fraction>" lines.
+// Exit code 0 whenever a result was written (whatever its status), 2 for a bad command line,
+// 3 when the result could not be written.
 #include <QGuiApplication>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "import_pipeline.hpp"
 #include "svg_import.hpp"
 #include "wire_format.hpp"
 
@@ -41,7 +46,9 @@ int main(int argc, char** argv) {
   QGuiApplication app(argc, argv);
   QString path;
   fivebar::svg::ImportOptions options;
-  const QString error = fivebar::svg::parseWorkerArguments(app.arguments().mid(1), path, options);
+  int resultFd = 1;
+  const QString error =
+      fivebar::svg::parseWorkerArguments(app.arguments().mid(1), path, options, &resultFd);
   if (!error.isEmpty()) {
     std::fprintf(stderr, "fivebar-svg-worker: %s\n", qPrintable(error));
     return 2;
@@ -55,12 +62,19 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s%.2f\n", fivebar::svg::kProgressPrefix, fraction);
     std::fflush(stderr);
   };
-  fivebar::svg::ImportResult result = fivebar::svg::importSvgInProcess(path, options, progress);
-  if (result.ok()) {
-    for (const std::string& m : qtMessages()) result.warnings.push_back(m);
-  } else if (result.status == fivebar::svg::ImportStatus::RenderFailed && !qtMessages().empty()) {
-    result.message += " (" + qtMessages().front() + ")";
+  // Runs go out while the capture goes on; the caller builds the Drawing meanwhile.
+  fivebar::svg::CaptureStreamWriter stream(resultFd);
+  fivebar::svg::RunSink sink;
+  sink.take = [&](std::vector<fivebar::svg::CapturedRun>& runs) { stream.runs(runs); };
+  sink.restart = [&] { stream.restart(); };
+  fivebar::svg::Capture capture = fivebar::svg::captureSvgFile(path, options, progress, sink);
+  std::vector<std::string> qtWarnings;
+  if (capture.status == fivebar::svg::ImportStatus::Ok) qtWarnings = qtMessages();
+  else if (capture.status == fivebar::svg::ImportStatus::RenderFailed && !qtMessages().empty())
+    capture.message += " (" + qtMessages().front() + ")";
+  if (!stream.finish(capture, qtWarnings)) {
+    std::fprintf(stderr, "fivebar-svg-worker: cannot write the result: %s\n", std::strerror(errno));
+    return 3;
   }
-  fivebar::svg::writeResult(result, stdout);
   return 0;
 }

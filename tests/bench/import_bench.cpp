@@ -3,7 +3,12 @@
 // process (best of 3):
 //   baseline = Qt SVG load + render into a paint engine that flattens with
 //              QPainterPath::toSubpathPolygons (Qt's fixed-threshold flattener), no sanitising.
-// Run: build/<dir>/tests/bench/fivebar_bench_import
+// BM_ImportPlotter10MbWorker (issue 3 goal: <= 0.35 s) reports wall-clock seconds instead, the
+// figure the goal is about, with two baselines from the same process:
+//   vs_read    = import wall time / reading the file into memory (the floor of any import);
+//   vs_general = import wall time / the general path in-process (sanitiser + Qt SVG, the import
+//                before the direct reader and the streamed worker result).
+// Run: build/<dir>/tests/bench/fivebar_bench_import [--benchmark_filter=Plotter10Mb]
 #include <benchmark/benchmark.h>
 
 #include <QFile>
@@ -17,8 +22,14 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
 #include <random>
+#include <string>
 
+#include "core/import/import_pipeline.hpp"
 #include "core/import/svg_import.hpp"
 
 namespace {
@@ -75,6 +86,60 @@ QByteArray generatedSvg(int megabytes) {
     out += d;
   }
   return out + "</g></svg>\n";
+}
+
+// The plotter file of the pipeline benchmark (`fivebar_bench_pipeline --write-svg`), generated
+// the same way: 42,000 paths on a 200 x 150 mm page, 60 % chains of 3..10 cubic "petals", 40 %
+// polylines of 2..7 points, 3 decimals; about 9.7 MB and 2.65 M points at 0.04 mm. Byte for
+// byte the file of `fivebar_bench_pipeline --write-svg` (GCC evaluates its Vec2(a(), b())
+// arguments right to left; the draws below follow that order).
+QByteArray plotterSvg() {
+  std::mt19937_64 rng(20261122);
+  std::uniform_real_distribution<double> x(10, 190), y(10, 140), d(-6, 6), u(0, 1);
+  std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"200mm\" height=\"150mm\" "
+                    "viewBox=\"0 0 200 150\">\n<g fill=\"none\" stroke=\"black\" stroke-width=\"0.3\">\n";
+  std::string lines;
+  char buffer[64];
+  auto point = [&](std::string& to, double px, double py) {
+    std::snprintf(buffer, sizeof buffer, "%.3f %.3f", px, 150.0 - py);
+    to += buffer;
+  };
+  for (int i = 0; i < 42000; ++i) {
+    if (u(rng) < 0.6) {
+      double ay = y(rng), ax = x(rng);  // GCC's right-to-left argument order in the original
+      const int n = 3 + static_cast<int>(u(rng) * 8);
+      std::string path = "<path d=\"M";
+      point(path, ax, ay);
+      for (int k = 0; k < n; ++k) {
+        const double p1y = ay + d(rng), p1x = ax + d(rng), p3y = ay + d(rng), p3x = ax + d(rng);
+        const double p2y = p3y + d(rng), p2x = p3x + d(rng);
+        ax = std::clamp(p3x, 1.0, 199.0);
+        ay = std::clamp(p3y, 1.0, 149.0);
+        path += " C";
+        point(path, p1x, p1y);
+        path += ' ';
+        point(path, p2x, p2y);
+        path += ' ';
+        point(path, ax, ay);
+      }
+      out += path + "\"/>\n";
+    } else {
+      std::string line = "<polyline points=\"";
+      const int n = 2 + static_cast<int>(u(rng) * 6);
+      for (int k = 0; k < n; ++k) {
+        const double py = y(rng), px = x(rng);
+        point(line, px, py);
+        line += ' ';
+      }
+      lines += line + "\"/>\n";
+    }
+  }
+  out += lines + "</g>\n</svg>\n";
+  return QByteArray::fromStdString(out);
+}
+
+double wallSeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 QByteArray readFile(const QString& path) {
@@ -161,6 +226,56 @@ void BM_ImportGeneratedWorker(benchmark::State& state) {
   state.counters["worker_peak_MB"] = static_cast<double>(usage.ru_maxrss) / 1024.0;
 }
 
+// Wall time of importSvgFile (worker, tolerance 0.04 mm) on the 10 MB plotter file.
+void BM_ImportPlotter10MbWorker(benchmark::State& state) {
+  const QByteArray svg = plotterSvg();
+  QTemporaryDir dir;
+  const QString path = dir.filePath(QStringLiteral("plotter-10MB.svg"));
+  QFile f(path);
+  if (!f.open(QIODevice::WriteOnly) || f.write(svg) != svg.size()) return state.SkipWithError("write failed");
+  f.close();
+  fivebar::svg::ImportOptions options;
+  options.toleranceMm = 0.04;
+  double readS = 1e9;
+  for (int i = 0; i < 3; ++i) {
+    const double start = wallSeconds();
+    benchmark::DoNotOptimize(readFile(path).size());
+    readS = std::min(readS, wallSeconds() - start);
+  }
+  double generalS = wallSeconds();
+  const fivebar::svg::ImportResult reference = fivebar::svg::importSvgDataGeneral(svg, path, options);
+  generalS = wallSeconds() - generalS;
+  double total = 0.0, cpu = 0.0, best = 1e9;
+  long long points = 0;
+  for (auto _ : state) {
+    const double start = wallSeconds(), cpuStart = cpuSeconds();
+    const fivebar::svg::ImportResult r = fivebar::svg::importSvgFile(path, options);
+    const double seconds = wallSeconds() - start;
+    cpu += cpuSeconds() - cpuStart;
+    total += seconds;
+    best = std::min(best, seconds);
+    if (!r.ok()) return state.SkipWithError(r.message.c_str());
+    points = 0;
+    for (const auto& layer : r.drawing.layers)
+      for (const auto& line : layer.paths) points += static_cast<long long>(line.points.size());
+  }
+  const double n = static_cast<double>(state.iterations());
+  long long referencePoints = 0;
+  for (const auto& layer : reference.drawing.layers)
+    for (const auto& line : layer.paths) referencePoints += static_cast<long long>(line.points.size());
+  state.counters["MB"] = static_cast<double>(svg.size()) / (1 << 20);
+  state.counters["points"] = static_cast<double>(points);
+  state.counters["same_points_as_general"] = points == referencePoints ? 1 : 0;
+  state.counters["wall_s"] = total / n;
+  state.counters["best_wall_s"] = best;
+  state.counters["cpu_s"] = cpu / n;  // this process + the worker
+  state.counters["read_s"] = readS;
+  state.counters["general_s"] = generalS;
+  state.counters["vs_read"] = total / n / readS;
+  state.counters["vs_general"] = total / n / generalS;
+}
+
+BENCHMARK(BM_ImportPlotter10MbWorker)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5);
 BENCHMARK(BM_Import7kLinesInProcess)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Import7kLinesWorker)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_ImportGenerated10MbInProcess)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
@@ -169,6 +284,11 @@ BENCHMARK(BM_ImportGeneratedWorker)->Arg(10)->Arg(50)->Unit(benchmark::kMillisec
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc == 3 && std::strcmp(argv[1], "--write-svg") == 0) {  // the 10 MB plotter file
+    QFile out(QString::fromLocal8Bit(argv[2]));
+    const QByteArray svg = plotterSvg();
+    return out.open(QIODevice::WriteOnly) && out.write(svg) == svg.size() ? 0 : 1;
+  }
   qputenv("QT_QPA_PLATFORM", "offscreen");
   QGuiApplication app(argc, argv);
   benchmark::Initialize(&argc, argv);

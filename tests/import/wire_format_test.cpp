@@ -1,5 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <QTemporaryFile>
+
+#include <cstring>
+#include <functional>
+
 #include "core/import/wire_format.hpp"
 
 namespace fivebar::svg {
@@ -46,6 +51,95 @@ TEST(WireFormat, TruncatedOrForeignBytesAreRejected) {
   EXPECT_FALSE(decodeResult(QByteArray("hello world, not a result"), out));
 }
 
+// A ByteSource over a string, for the stream decoder.
+class StringSource final : public ByteSource {
+ public:
+  explicit StringSource(QByteArray bytes) : bytes_(std::move(bytes)) {}
+  bool read(void* dst, std::size_t n) override {
+    if (n > static_cast<std::size_t>(bytes_.size() - pos_)) return false;
+    std::memcpy(dst, bytes_.constData() + pos_, n);
+    pos_ += static_cast<qsizetype>(n);
+    return true;
+  }
+
+ private:
+  QByteArray bytes_;
+  qsizetype pos_ = 0;
+};
+
+// Writes a capture stream through a real pipe (as the worker does) and returns its bytes.
+QByteArray streamBytes(const std::function<void(CaptureStreamWriter&)>& write) {
+  QTemporaryFile file;
+  EXPECT_TRUE(file.open());
+  {
+    CaptureStreamWriter w(file.handle());
+    write(w);
+  }
+  file.seek(0);
+  return file.readAll();
+}
+
+Capture sampleCapture() {
+  Capture c;
+  c.runs.push_back(CapturedRun{0, 0x112233, {Polyline{{Vec2(0.5, 1e-300), Vec2(-3, 7)}, false}}});
+  c.runs.push_back(CapturedRun{1, 0x000000, {Polyline{{Vec2(1, 1), Vec2(2, 1), Vec2(2, 2)}, true}}});
+  c.topLevel.push_back(TopLevelElement{QStringLiteral("g"), QStringLiteral("L1"), QStringLiteral("Pen \u00e9"), true});
+  c.topLevel.push_back(TopLevelElement{QStringLiteral("path"), {}, {}, false});
+  c.page.sizeKnown = true;
+  c.page.widthMm = 210;
+  c.page.heightMm = 297;
+  c.warnings = {"CSS @import removed (1x, first at line 2)"};
+  return c;
+}
+
+TEST(WireFormat, CaptureStreamRoundTripsAndRestartForgetsEarlierRuns) {
+  const Capture in = sampleCapture();
+  const QByteArray bytes = streamBytes([&](CaptureStreamWriter& w) {
+    w.runs({CapturedRun{5, 0xabcdef, {Polyline{{Vec2(9, 9), Vec2(8, 8)}, false}}}});
+    w.restart();  // the direct reader declined: the general path starts over
+    w.runs({in.runs[0]});
+    Capture rest = in;
+    rest.runs.erase(rest.runs.begin());
+    EXPECT_TRUE(w.finish(rest, {"Qt (qt.svg): something"}));
+  });
+  StringSource source(bytes);
+  StreamedCapture out;
+  ASSERT_TRUE(decodeCaptureStream(source, out));
+  const Capture& c = out.capture;
+  ASSERT_EQ(c.runs.size(), 2u);
+  EXPECT_EQ(c.runs[0].topIndex, 0);
+  EXPECT_EQ(c.runs[0].rgb, 0x112233u);
+  EXPECT_EQ(c.runs[0].paths[0].points, in.runs[0].paths[0].points);
+  EXPECT_TRUE(c.runs[1].paths[0].closed);
+  ASSERT_EQ(c.topLevel.size(), 2u);
+  EXPECT_EQ(c.topLevel[0].label, QStringLiteral("Pen \u00e9"));
+  EXPECT_TRUE(c.topLevel[0].inkscapeLayer);
+  EXPECT_EQ(c.topLevel[1].tag, QStringLiteral("path"));
+  EXPECT_TRUE(c.page.sizeKnown);
+  EXPECT_EQ(c.page.heightMm, 297.0);
+  EXPECT_EQ(c.warnings, in.warnings);
+  EXPECT_EQ(out.qtMessages, std::vector<std::string>{"Qt (qt.svg): something"});
+  for (qsizetype cut : {qsizetype{0}, qsizetype{3}, bytes.size() / 2, bytes.size() - 1}) {
+    StringSource truncated(bytes.left(cut));
+    StreamedCapture partial;
+    EXPECT_FALSE(decodeCaptureStream(truncated, partial)) << "cut at " << cut;
+  }
+}
+
+TEST(WireFormat, AFailedCaptureTravelsWithItsStatusAndMessage) {
+  Capture failed;
+  failed.status = ImportStatus::MalformedXml;
+  failed.message = "x.svg: line 3, column 1: Premature end of document.";
+  StringSource source(streamBytes([&](CaptureStreamWriter& w) { EXPECT_TRUE(w.finish(failed, {})); }));
+  StreamedCapture out;
+  ASSERT_TRUE(decodeCaptureStream(source, out));
+  EXPECT_EQ(out.capture.status, ImportStatus::MalformedXml);
+  EXPECT_EQ(out.capture.message, failed.message);
+  const ImportResult r = finishImport(std::move(out.capture), QStringLiteral("x.svg"), {});
+  EXPECT_EQ(r.status, ImportStatus::MalformedXml);
+  EXPECT_EQ(r.message, failed.message);
+}
+
 TEST(WireFormat, WorkerArgumentsRoundTrip) {
   ImportOptions in;
   in.toleranceMm = 0.0123;
@@ -63,6 +157,12 @@ TEST(WireFormat, WorkerArgumentsRoundTrip) {
   EXPECT_FALSE(out.outlineFills);
   EXPECT_EQ(out.layerMode, LayerMode::ByColor);
   EXPECT_FALSE(parseWorkerArguments({QStringLiteral("--bogus"), QStringLiteral("1")}, path, out).isEmpty());
+  int fd = -1;
+  const QStringList withFd = QStringList{QString::fromLatin1(kResultFdOption), QStringLiteral("7")} +
+                             workerArguments(QStringLiteral("a.svg"), in);
+  EXPECT_EQ(parseWorkerArguments(withFd, path, out, &fd), QString());
+  EXPECT_EQ(fd, 7);
+  EXPECT_FALSE(parseWorkerArguments(withFd, path, out).isEmpty());  // only where it is expected
 }
 
 }  // namespace
