@@ -3,17 +3,23 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
+#include <string_view>
 
+#include "memory_hint.hpp"
+#include "parallel.hpp"
 #include "units.hpp"
+
 
 namespace fivebar {
 namespace {
 
 // Fixed-point text of `value` with `decimals` decimals, as printf("%.*f") writes it, but never
-// "-0.000". std::to_chars gives the same digits without locale and is several times faster on
-// the million numbers of a large job.
+// "-0.000". Used by the header and as the fallback of writeFixedFast (which gives the same text
+// without allocating).
 std::string fixed(double value, int decimals) {
   char buf[64];
   const std::to_chars_result r =
@@ -27,6 +33,198 @@ std::string fixed(double value, int decimals) {
   }
   if (s[0] == '-' && s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);
   return s;
+}
+
+constexpr int kFastMaxDecimals = 9;
+constexpr double kPow10[kFastMaxDecimals + 1] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9};
+constexpr std::uint64_t kPow10Int[kFastMaxDecimals + 1] = {
+    1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000, 1000000000};
+constexpr double kTwoPow52 = 4503599627370496.0;  // below it, doubles have a fractional bit
+// Room the fast path needs at its output: sign, 16 integer digits, '.', 9 decimals, and slack
+// for its fixed-size copy.
+constexpr size_t kFastRoom = 32;
+
+// round(magnitude * 10^decimals) to an integer, ties to even, computed on the EXACT product (what
+// printf and std::to_chars round). With p = fl(m * s) < 2^52, floor(p) and f = p - floor(p) are
+// exact; the rounding error e = m * s - p (exact by fma, s being an exact power of ten) has
+// |e| <= ulp(p) / 2. For p >= 1/2, f and 1/2 lie on p's ulp grid, so the sign of f - 1/2 decides
+// unless f == 1/2, where e decides, and e == 0 is a true tie (to even); for p < 1/2, p + e < 1/2.
+// Returns false when the fast path does not apply (too large, not finite).
+bool roundScaled(double magnitude, int decimals, std::uint64_t& rounded) {
+  const double scale = kPow10[decimals];
+  const double p = magnitude * scale;
+  if (!(p < kTwoPow52)) return false;  // also NaN and infinity
+  rounded = static_cast<std::uint64_t>(p);  // floor: p >= 0
+  const double aboveHalf = (p - static_cast<double>(rounded)) - 0.5;
+  rounded += aboveHalf > 0.0 ? 1 : 0;  // no branch: up or down is a coin toss
+  if (aboveHalf == 0.0) {  // rare: the sign of the product's rounding error decides
+    const double e = std::fma(magnitude, scale, -p);
+    if (e > 0.0 || (e == 0.0 && (rounded & 1U) != 0)) ++rounded;
+  }
+  return true;
+}
+
+// "00" .. "99": two digits per step.
+constexpr char kDigitPairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+
+// Writes the digits of v backwards so that they end at q; returns their start. At least one
+// digit; exactly `Count` digits (leading zeros) when Count > 0.
+template <int Count>
+char* digitsBackward(char* q, std::uint64_t v) {
+  auto pair = [&](std::uint64_t two) {
+    q -= 2;
+    std::memcpy(q, kDigitPairs + 2 * two, 2);
+  };
+  if constexpr (Count > 0) {
+    for (int i = 0; i + 1 < Count; i += 2) {
+      pair(v % 100);
+      v /= 100;
+    }
+    if constexpr (Count % 2 == 1) *--q = static_cast<char>('0' + v);
+  } else {
+    for (; v >= 100; v /= 100) pair(v % 100);
+    if (v >= 10) pair(v);
+    else *--q = static_cast<char>('0' + v);
+  }
+  return q;
+}
+
+// Writes n = round(|value| * 10^Decimals) as "[-]int.frac" at `out` (kFastRoom bytes of room);
+// returns the end. Decimals is a template argument so that the divisions are multiplications;
+// the integer and fraction digits are two independent chains.
+template <int Decimals>
+char* writeScaled(std::uint64_t n, bool negative, char* out) {
+  constexpr std::uint64_t kScale = kPow10Int[Decimals];
+  char digits[2 * kFastRoom];  // written backwards to end at digits + kFastRoom
+  char* const end = digits + kFastRoom;
+  char* q = end;
+  if constexpr (Decimals > 0) {
+    q = digitsBackward<Decimals>(q, n % kScale);
+    *--q = '.';
+  }
+  q = digitsBackward<0>(q, n / kScale);
+  if (negative && n != 0) *--q = '-';  // "-0.000" is written "0.000"
+  std::memcpy(out, q, kFastRoom);     // fixed size: two vector moves; bytes past `end` unused
+  return out + (end - q);
+}
+
+// The fast path of fixed(value, decimals): its text at `out` (kFastRoom bytes of room), or
+// nullptr when it does not apply (decimals outside 0..9, |value| * 10^decimals >= 2^52, not
+// finite); the caller then uses fixed().
+char* writeFixedFast(double value, int decimals, char* out) {
+  std::uint64_t n = 0;
+  if (decimals < 0 || decimals > kFastMaxDecimals || !roundScaled(std::abs(value), decimals, n))
+    return nullptr;
+  const bool negative = std::signbit(value);
+  switch (decimals) {
+    case 0: return writeScaled<0>(n, negative, out);
+    case 1: return writeScaled<1>(n, negative, out);
+    case 2: return writeScaled<2>(n, negative, out);
+    case 3: return writeScaled<3>(n, negative, out);
+    case 4: return writeScaled<4>(n, negative, out);
+    case 5: return writeScaled<5>(n, negative, out);
+    case 6: return writeScaled<6>(n, negative, out);
+    case 7: return writeScaled<7>(n, negative, out);
+    case 8: return writeScaled<8>(n, negative, out);
+    default: return writeScaled<9>(n, negative, out);
+  }
+}
+
+// The text of one number kept for comparison (the last F and S sent), without allocation.
+// Anything longer than kCapacity cannot fit in a G-code line anyway; it is kept truncated with
+// `overflow` set so that the line carrying it fails.
+struct NumberText {
+  static constexpr size_t kCapacity = 96;
+  char text[kCapacity];
+  size_t size = 0;  // 0: no number (e.g. no F sent yet)
+  bool overflow = false;
+
+  void assign(std::string_view s) {
+    size = std::min(s.size(), kCapacity);
+    overflow = s.size() > kCapacity;
+    std::memcpy(text, s.data(), size);
+  }
+  void format(double value, int decimals) {
+    if (char* end = writeFixedFast(value, decimals, text)) {
+      size = static_cast<size_t>(end - text);
+      overflow = false;
+    } else {
+      assign(fixed(value, decimals));
+    }
+  }
+  // Same text (an overflowed number never compares equal: its line throws before reuse). A plain
+  // loop over the few characters, without an early exit whose position would be a coin toss.
+  bool sameAs(const NumberText& o) const {
+    if (size != o.size || overflow || o.overflow) return false;
+    unsigned differences = 0;
+    for (size_t i = 0; i < size; ++i)
+      differences |= static_cast<unsigned char>(text[i] ^ o.text[i]);
+    return differences == 0;
+  }
+};
+
+// One output line under construction in a fixed buffer. A line longer than GRBL's 80 characters
+// is a broken invariant (logic_error naming its first 40 characters); a comment is cut at 80.
+class Line {
+ public:
+  Line& operator<<(std::string_view s) {
+    const size_t n = std::min(kCapacity - size_, s.size());
+    std::memcpy(buf_ + size_, s.data(), n);
+    size_ += n;
+    overflow_ = overflow_ || n < s.size();
+    return *this;
+  }
+  Line& operator<<(const NumberText& t) {
+    overflow_ = overflow_ || t.overflow;
+    return *this << std::string_view(t.text, t.size);
+  }
+  Line& operator<<(int value) {
+    char digits[16];
+    const char* end = std::to_chars(digits, digits + sizeof digits, value).ptr;
+    return *this << std::string_view(digits, static_cast<size_t>(end - digits));
+  }
+  // fixed(value, decimals), written in place when the fast path applies.
+  Line& number(double value, int decimals) {
+    if (kCapacity - size_ < kFastRoom) {  // the line is far too long already
+      overflow_ = true;
+      return *this;
+    }
+    if (char* end = writeFixedFast(value, decimals, buf_ + size_)) {
+      size_ = static_cast<size_t>(end - buf_);
+      return *this;
+    }
+    return *this << fixed(value, decimals);
+  }
+  // Appends the line and its '\n' to `out`.
+  void commitTo(std::string& out) {
+    if (overflow_ || size_ > static_cast<size_t>(kGcodeMaxLineLength))
+      throw std::logic_error("G-code line longer than 80 characters: " +
+                             std::string(buf_, std::min<size_t>(size_, 40)));
+    buf_[size_] = '\n';
+    out.append(buf_, size_ + 1);
+  }
+  void commitCommentTo(std::string& out) {
+    size_ = std::min(size_, static_cast<size_t>(kGcodeMaxLineLength));
+    overflow_ = false;
+    commitTo(out);
+  }
+
+ private:
+  static constexpr size_t kCapacity = 128;  // > 80 + '\n', and >= 40 + kFastRoom
+  char buf_[kCapacity + kFastRoom];
+  size_t size_ = 0;
+  bool overflow_ = false;
+};
+
+// Jobs smaller than this are written by one thread: a thread costs more than it saves.
+constexpr size_t kMinMovesToSplit = 20000;
+
+// Bytes to reserve: generous for the usual line lengths; an unusual job only reallocates.
+size_t expectedSize(const PlannedJob& job) {
+  return 4096 + 48 * job.moves.size() + 40 * job.strokes.size();
 }
 
 bool jointLimitsSet(const JointLimits& l) {
@@ -81,53 +279,79 @@ std::string settingText(const Setting& s) {
   return text;
 }
 
-// Appends lines, each checked against GRBL's line length.
-class Lines {
- public:
-  void add(std::string line) {
-    if (line.size() > static_cast<size_t>(kGcodeMaxLineLength))
-      throw std::logic_error("G-code line longer than 80 characters: " + line.substr(0, 40));
-    text_ += line;
-    text_ += '\n';
-  }
-  void comment(const std::string& text) {
-    std::string line = "; " + text;
-    if (line.size() > static_cast<size_t>(kGcodeMaxLineLength)) line.resize(kGcodeMaxLineLength);
-    add(line);
-  }
-  std::string text_;
-};
-
+// Writes the G-code of a run of moves into `out`. One writer does the whole job, or each of two
+// threads one half (see writeGcode).
 class Writer {
  public:
-  Writer(const PlannedJob& job, const MachineProfile& p, const GcodeOptions& o)
-      : job_(job), p_(p), o_(o) {}
+  Writer(const PlannedJob& job, const MachineProfile& p, const GcodeOptions& o, std::string& out)
+      : job_(job), p_(p), o_(o), out_(out) {
+    lastS_->assign("0");
+  }
 
-  std::string run() {
-    header();
-    for (size_t i = 0; i < job_.moves.size(); ++i) move(job_.moves[i]);
-    if (p_.tool.kind != ToolKind::ZAxis) out_.add("M5");
-    out_.add("M2");
-    return out_.text_;
+  void header() {
+    comment("FiveBar Studio job for GRBL 1.1, host-side kinematics");
+    comment("X = theta1 deg, Y = theta2 deg (continuous), F = joint rate deg/min");
+    comment("profile: " + job_.profileName);
+    comment("working mode " + std::string(toString(job_.mode)) + ", assembly " +
+            std::string(toString(job_.assembly)));
+    comment("start pose X" + fixed(degFromRad(job_.start.theta1), o_.angleDecimals) + " Y" +
+            fixed(degFromRad(job_.start.theta2), o_.angleDecimals));
+    comment("estimated time " + fixed(job_.summary.estimatedTimeS, 1) + " s, " +
+            std::to_string(job_.summary.segments) + " drawing segments");
+    comment("expects these GRBL settings:");
+    for (const Setting& s : settingsOf(p_)) comment(settingText(s) + " (" + s.meaning + ")");
+    (Line() << "G21 G90 G94").commitTo(out_);
+    if (p_.tool.kind == ToolKind::Laser) (Line() << "M4 S0").commitTo(out_);
+  }
+
+  // Takes up the state the moves before `begin` leave when written: the last F and S sent, the
+  // laser power, the last stroke commented. Reads back only to the moves that set them.
+  void resumeAt(size_t begin) {
+    const std::vector<JobMove>& moves = job_.moves;
+    for (size_t k = begin; o_.strokeComments && k-- > 0;) {
+      if (moves[k].kind == JobMoveKind::Travel && moves[k].strokeIndex >= 0) {
+        commentedStroke_ = moves[k].strokeIndex;
+        break;
+      }
+    }
+    bool zMoveSince = false;  // a Z move clears the modal F
+    for (size_t k = begin; k-- > 0;) {
+      const JobMove& m = moves[k];
+      if (isMotion(m.kind)) {
+        if (!zMoveSince) lastFeed_->format(feedDegPerMin(m), o_.feedDecimals);
+        if (p_.tool.kind == ToolKind::Laser && m.kind == JobMoveKind::Draw)
+          lastS_->format(laserPowerBefore(k), 0);
+        break;
+      }
+      zMoveSince = zMoveSince || (p_.tool.kind == ToolKind::ZAxis && isToolMove(m.kind));
+    }
+    laserPower_ = laserPowerBefore(begin);
+  }
+
+  void moves(size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) move(job_.moves[i]);
+  }
+
+  void trailer() {
+    if (p_.tool.kind != ToolKind::ZAxis) (Line() << "M5").commitTo(out_);
+    (Line() << "M2").commitTo(out_);
   }
 
  private:
-  void header() {
-    out_.comment("FiveBar Studio job for GRBL 1.1, host-side kinematics");
-    out_.comment("X = theta1 deg, Y = theta2 deg (continuous), F = joint rate deg/min");
-    out_.comment("profile: " + job_.profileName);
-    out_.comment("working mode " + std::string(toString(job_.mode)) + ", assembly " +
-                 std::string(toString(job_.assembly)));
-    out_.comment("start pose X" + fixed(degFromRad(job_.start.theta1), o_.angleDecimals) + " Y" +
-                 fixed(degFromRad(job_.start.theta2), o_.angleDecimals));
-    out_.comment("estimated time " + fixed(job_.summary.estimatedTimeS, 1) + " s, " +
-                 std::to_string(job_.summary.segments) + " drawing segments");
-    out_.comment("expects these GRBL settings:");
-    for (const Setting& s : settingsOf(p_))
-      out_.comment(settingText(s) + " (" + s.meaning + ")");
-    out_.add("G21 G90 G94");
-    if (p_.tool.kind == ToolKind::Laser) out_.add("M4 S0");
+  static bool isToolMove(JobMoveKind kind) {
+    return kind == JobMoveKind::PenUp || kind == JobMoveKind::PenDown;
   }
+  static double feedDegPerMin(const JobMove& m) { return degFromRad(m.jointFeedRadPerS) * 60.0; }
+  // The laser power set by the last tool move before `end` (0 when none).
+  double laserPowerBefore(size_t end) const {
+    for (size_t k = end; k-- > 0;) {
+      const JobMove& m = job_.moves[k];
+      if (isToolMove(m.kind)) return m.kind == JobMoveKind::PenDown ? m.toolValue : 0.0;
+    }
+    return 0.0;
+  }
+
+  void comment(std::string_view text) { (Line() << "; " << text).commitCommentTo(out_); }
 
   void move(const JobMove& m) {
     switch (m.kind) {
@@ -135,52 +359,67 @@ class Writer {
       case JobMoveKind::Travel: motion(m); break;
       case JobMoveKind::PenDown: tool(m, true); break;
       case JobMoveKind::PenUp: tool(m, false); break;
-      case JobMoveKind::Dwell: out_.add("G4 P" + fixed(m.dwellS, 3)); break;
+      case JobMoveKind::Dwell: dwell(m.dwellS); break;
       case JobMoveKind::Pause:
-        out_.comment("pause: change the tool, then resume (cycle start)");
-        out_.add("M0");
+        comment("pause: change the tool, then resume (cycle start)");
+        (Line() << "M0").commitTo(out_);
         break;
     }
   }
 
+  void dwell(double seconds) {
+    (Line() << "G4 P").number(seconds, 3).commitTo(out_);
+  }
+
+  // "G1 X<theta1 deg> Y<theta2 deg>", then F and (laser) S only when their text changes.
   void motion(const JobMove& m) {
     if (o_.strokeComments && m.kind == JobMoveKind::Travel && m.strokeIndex >= 0 &&
         m.strokeIndex != commentedStroke_) {
       const PlannedStroke& s = job_.strokes[static_cast<size_t>(m.strokeIndex)];
-      out_.comment("stroke " + std::to_string(m.strokeIndex) + " layer " +
-                   std::to_string(s.layerIndex) + " path " + std::to_string(s.pathIndex));
+      (Line() << "; stroke " << m.strokeIndex << " layer " << s.layerIndex << " path "
+              << s.pathIndex)
+          .commitCommentTo(out_);
       commentedStroke_ = m.strokeIndex;
     }
-    std::string line = "G1 X" + fixed(degFromRad(m.target.theta1), o_.angleDecimals) + " Y" +
-                       fixed(degFromRad(m.target.theta2), o_.angleDecimals);
-    const std::string f = fixed(degFromRad(m.jointFeedRadPerS) * 60.0, o_.feedDecimals);
-    if (f != lastFeed_) {
-      line += " F" + f;
-      lastFeed_ = f;
+    Line line;
+    (line << "G1 X").number(degFromRad(m.target.theta1), o_.angleDecimals);
+    (line << " Y").number(degFromRad(m.target.theta2), o_.angleDecimals);
+    scratch_->format(feedDegPerMin(m), o_.feedDecimals);
+    if (!scratch_->sameAs(*lastFeed_)) {
+      line << " F" << *scratch_;
+      std::swap(lastFeed_, scratch_);
     }
     if (p_.tool.kind == ToolKind::Laser) {
-      const std::string s = m.kind == JobMoveKind::Draw ? fixed(laserPower_, 0) : "0";
-      if (s != lastS_) {
-        line += " S" + s;
-        lastS_ = s;
+      if (m.kind == JobMoveKind::Draw)
+        scratch_->format(laserPower_, 0);
+      else
+        scratch_->assign("0");
+      if (!scratch_->sameAs(*lastS_)) {
+        line << " S" << *scratch_;
+        std::swap(lastS_, scratch_);
       }
     }
-    out_.add(line);
+    line.commitTo(out_);
   }
 
   void tool(const JobMove& m, bool down) {
     switch (p_.tool.kind) {
       case ToolKind::PenServo:
-        if (down || p_.tool.penUpS > 0.0)
-          out_.add("M3 S" + fixed(down ? m.toolValue : p_.tool.penUpS, 0));
-        else
-          out_.add("M5");
-        if (m.dwellS > 0.0) out_.add("G4 P" + fixed(m.dwellS, 3));
+        if (down || p_.tool.penUpS > 0.0) {
+          (Line() << "M3 S").number(down ? m.toolValue : p_.tool.penUpS, 0).commitTo(out_);
+        } else {
+          (Line() << "M5").commitTo(out_);
+        }
+        if (m.dwellS > 0.0) dwell(m.dwellS);
         break;
-      case ToolKind::ZAxis:
-        out_.add("G1 Z" + fixed(m.toolValue, 3) + " F" + fixed(p_.tool.zFeedMmPerMin, 1));
-        lastFeed_.clear();  // F is modal: the next XY move sets its own again
+      case ToolKind::ZAxis: {
+        Line line;
+        (line << "G1 Z").number(m.toolValue, 3);
+        (line << " F").number(p_.tool.zFeedMmPerMin, 1);
+        line.commitTo(out_);
+        lastFeed_->size = 0;  // F is modal: the next XY move sets its own again
         break;
+      }
       case ToolKind::Laser:
         laserPower_ = down ? m.toolValue : 0.0;  // carried by the S word of the next G1
         break;
@@ -190,8 +429,12 @@ class Writer {
   const PlannedJob& job_;
   const MachineProfile& p_;
   const GcodeOptions& o_;
-  Lines out_;
-  std::string lastFeed_, lastS_ = "0";
+  std::string& out_;
+  // The last F and S texts sent, and a scratch number; swapped as pointers, never copied.
+  NumberText texts_[3];
+  NumberText* lastFeed_ = &texts_[0];
+  NumberText* lastS_ = &texts_[1];
+  NumberText* scratch_ = &texts_[2];
   double laserPower_ = 0.0;
   int commentedStroke_ = -1;
 };
@@ -207,7 +450,25 @@ std::string grblSettings(const MachineProfile& profile) {
 
 std::string writeGcode(const PlannedJob& job, const MachineProfile& profile,
                        const GcodeOptions& options) {
-  return Writer(job, profile, options).run();
+  // Large jobs are written in two halves on up to two threads, the second half picking up the
+  // state the first leaves; the text is the same for any thread count. On an error (a line too
+  // long), the first one in the text is thrown, as a sequential writer would.
+  const size_t n = job.moves.size();
+  const size_t parts = n >= kMinMovesToSplit ? 2 : 1;
+  std::vector<std::string> texts(parts);
+  parallelFor(parts, planningThreads(), [&](size_t k) {
+    const size_t begin = n * k / parts, end = n * (k + 1) / parts;
+    std::string& out = texts[k];
+    out.reserve(k == 0 ? expectedSize(job) : expectedSize(job) * (end - begin) / n);
+    adviseHugePages(out.data(), out.capacity());
+    Writer w(job, profile, options, out);
+    if (k == 0) w.header();
+    else w.resumeAt(begin);
+    w.moves(begin, end);
+    if (k + 1 == parts) w.trailer();
+  });
+  for (size_t k = 1; k < parts; ++k) texts[0] += texts[k];
+  return std::move(texts[0]);
 }
 
 }  // namespace fivebar

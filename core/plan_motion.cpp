@@ -360,7 +360,7 @@ PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Lay
   StageClock clock(out.timings);
   MotionPlanner(strokes, layers, profile, mode, options, out).run(budget);
   clock.lap("segmentation, feeds, travel");
-  estimateJobTime(out.job, profile);
+  fillJobTimes(out.job, profile);
   clock.lap("time estimate");
   PlanReport& r = out.report;
   const JobSummary& s = out.job.summary;

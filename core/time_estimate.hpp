@@ -52,7 +52,12 @@ double distanceAt(const GrblBlockTiming& b, double t);
 std::vector<GrblBlockInput> grblInputsOf(const PlannedJob& job, const MachineProfile& profile);
 
 // Fills every move's durationS and startTimeS and job.summary.estimatedTimeS; returns the
-// per-move timings (for the trajectory).
+// per-move timings (for the trajectory). Uses up to planningThreads() threads on large jobs;
+// the figures do not depend on the thread count.
 std::vector<GrblBlockTiming> estimateJobTime(PlannedJob& job, const MachineProfile& profile);
+
+// The same figures as estimateJobTime without building the per-move timings (about 50 bytes a
+// move, tens of MB on a large job): for the planner, which only needs the moves' times.
+void fillJobTimes(PlannedJob& job, const MachineProfile& profile);
 
 }  // namespace fivebar

@@ -5,9 +5,11 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 
 #include "core/time_estimate.hpp"
 #include "test_support.hpp"
+#include "time_estimate_oracle.hpp"
 
 namespace fivebar {
 namespace {
@@ -191,6 +193,177 @@ TEST(TimeEstimate, JobTimesFillMovesInOrder) {
   EXPECT_DOUBLE_EQ(job.moves[1].startTimeS, job.moves[0].durationS);
   EXPECT_DOUBLE_EQ(job.moves[1].durationS, 0.15);
   EXPECT_DOUBLE_EQ(job.summary.estimatedTimeS, job.moves[0].durationS + 0.15);
+}
+
+
+// --- Same figures as the reference model (time_estimate_oracle.hpp) to 1e-9 relative ---
+
+bool closeRelative(double actual, double expected) {
+  return actual == expected ||
+         std::abs(actual - expected) <= 1e-9 * std::max(std::abs(actual), std::abs(expected));
+}
+
+void expectSameTimings(const std::vector<GrblBlockTiming>& actual,
+                       const std::vector<GrblBlockTiming>& expected, const std::string& what) {
+  ASSERT_EQ(actual.size(), expected.size()) << what;
+  int reported = 0;
+  for (size_t i = 0; i < actual.size() && reported < 5; ++i) {
+    const GrblBlockTiming &a = actual[i], &e = expected[i];
+    const bool same = closeRelative(a.lengthUnits, e.lengthUnits) &&
+                      closeRelative(a.entryPerS, e.entryPerS) &&
+                      closeRelative(a.nominalPerS, e.nominalPerS) &&
+                      closeRelative(a.exitPerS, e.exitPerS) &&
+                      closeRelative(a.accelPerS2, e.accelPerS2) &&
+                      closeRelative(a.durationS, e.durationS);
+    if (!same) {
+      ADD_FAILURE() << what << ", input " << i << ": duration " << a.durationS << " vs "
+                    << e.durationS << ", entry " << a.entryPerS << " vs " << e.entryPerS
+                    << ", exit " << a.exitPerS << " vs " << e.exitPerS;
+      ++reported;
+    }
+  }
+}
+
+// Random planner inputs: runs of smooth or random directions, straight runs (no junction limit,
+// so the look-ahead window decides), reversals, Z blocks, empty and tiny blocks, zero feeds,
+// synchronising commands with and without dwell.
+std::vector<GrblBlockInput> randomInputs(std::mt19937_64& rng, int n) {
+  std::uniform_real_distribution<double> u(0.0, 1.0), s(-1.0, 1.0);
+  std::vector<GrblBlockInput> inputs;
+  Eigen::Vector3d dir(1, 0, 0);
+  int style = 0;
+  for (int i = 0; i < n; ++i) {
+    if (u(rng) < 0.05) style = static_cast<int>(u(rng) * 4);
+    GrblBlockInput in;
+    const double pick = u(rng);
+    if (pick < 0.03) {
+      in.sync = true;
+      in.dwellS = u(rng) < 0.5 ? 0.0 : 0.2 * u(rng);
+    } else if (pick < 0.05) {
+      in.delta = Eigen::Vector3d(1e-10, 0, 0);  // empty: below GRBL's step resolution
+      in.feedPerS = 50;
+    } else if (pick < 0.08) {
+      in.delta = Eigen::Vector3d(0, 0, 5.0 * s(rng));  // a Z-axis pen move
+      in.feedPerS = 10;
+    } else {
+      if (style == 0) dir = (dir + 0.2 * Eigen::Vector3d(s(rng), s(rng), 0)).normalized();
+      if (style == 1) dir = Eigen::Vector3d(s(rng), s(rng), 0).normalized();
+      if (style == 3 && u(rng) < 0.3) dir = -dir;  // reversal
+      const double length = u(rng) < 0.1 ? 1e-6 * u(rng) + 1e-9 : 0.01 + 3.0 * u(rng);
+      in.delta = length * dir;
+      in.feedPerS = u(rng) < 0.05 ? 0.0 : 5.0 + 300.0 * u(rng);
+    }
+    inputs.push_back(in);
+  }
+  return inputs;
+}
+
+TEST(TimeEstimate, BlocksMatchTheReferenceModel) {
+  auto rng = test::rng();
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int window : {1, 2, 3, 15, 40, 1000000}) {
+    for (int trial = 0; trial < 4; ++trial) {
+      GrblTimeModel m;
+      m.maxRatePerS = {50 + 300 * u(rng), 50 + 300 * u(rng), 5 + 20 * u(rng)};
+      m.accelPerS2 = {100 + 2000 * u(rng), 100 + 2000 * u(rng), 100};
+      m.junctionDeviation = 0.001 + 0.05 * u(rng);
+      m.minJunctionSpeedPerS = trial % 2 ? 0.0 : 2.0 * u(rng);
+      m.lookaheadBlocks = window;
+      const std::vector<GrblBlockInput> inputs = randomInputs(rng, 3000);
+      expectSameTimings(estimateBlocks(inputs, m), oracle::estimateBlocks(inputs, m),
+                        "window " + std::to_string(window) + " trial " + std::to_string(trial));
+    }
+  }
+}
+
+// A job like a drawing: strokes of small joint steps between travels, with the tool commands of
+// the given tool kind, dwells and pauses.
+PlannedJob randomDrawingJob(std::mt19937_64& rng, int strokes) {
+  std::uniform_real_distribution<double> u(0.0, 1.0), s(-1.0, 1.0);
+  PlannedJob job;
+  job.start = {radFromDeg(100 * s(rng)), radFromDeg(100 * s(rng))};
+  JointAngles at = job.start;
+  double heading = 0.0;
+  auto add = [&](JobMoveKind kind, double feedDegPerS) {
+    JobMove m;
+    m.kind = kind;
+    m.target = at;
+    m.jointFeedRadPerS = radFromDeg(feedDegPerS);
+    m.dwellS = u(rng) < 0.2 ? 0.0 : 0.15;
+    m.toolValue = kind == JobMoveKind::PenDown ? -0.5 + u(rng) : 4.0;
+    job.moves.push_back(m);
+  };
+  for (int k = 0; k < strokes; ++k) {
+    at = {at.theta1 + radFromDeg(10 * s(rng)), at.theta2 + radFromDeg(10 * s(rng))};
+    add(JobMoveKind::Travel, 150);
+    add(JobMoveKind::PenDown, 0);
+    const int n = 5 + static_cast<int>(u(rng) * 60);
+    for (int i = 0; i < n; ++i) {
+      heading += 0.4 * s(rng);
+      const double stepDeg = u(rng) < 0.05 ? 0.0 : 0.02 + 0.3 * u(rng);  // some empty moves
+      at = {at.theta1 + radFromDeg(stepDeg * std::cos(heading)),
+            at.theta2 + radFromDeg(stepDeg * std::sin(heading))};
+      add(JobMoveKind::Draw, 10 + 80 * u(rng));
+    }
+    add(JobMoveKind::PenUp, 0);
+    if (u(rng) < 0.05) add(JobMoveKind::Dwell, 0);
+    if (u(rng) < 0.02) add(JobMoveKind::Pause, 0);
+  }
+  return job;
+}
+
+void expectSameMoveTimes(const PlannedJob& actual, const PlannedJob& expected, const std::string& what) {
+  EXPECT_TRUE(closeRelative(actual.summary.estimatedTimeS, expected.summary.estimatedTimeS))
+      << what << ": " << actual.summary.estimatedTimeS << " vs " << expected.summary.estimatedTimeS;
+  ASSERT_EQ(actual.moves.size(), expected.moves.size());
+  for (size_t i = 0; i < actual.moves.size(); ++i) {
+    ASSERT_TRUE(closeRelative(actual.moves[i].durationS, expected.moves[i].durationS) &&
+                closeRelative(actual.moves[i].startTimeS, expected.moves[i].startTimeS))
+        << what << ", move " << i << ": " << actual.moves[i].startTimeS << " + "
+        << actual.moves[i].durationS << " vs " << expected.moves[i].startTimeS << " + "
+        << expected.moves[i].durationS;
+  }
+}
+
+// Small jobs run in one part; large ones (over 20000 moves) in two, cut at a synchronising move
+// near the middle (a pen servo's M3/M5, or a dwell or pause for the other tools).
+TEST(TimeEstimate, JobTimesMatchTheReferenceModelForEveryTool) {
+  auto rng = test::rng();
+  for (int strokes : {300, 900}) {
+    for (ToolKind tool : {ToolKind::PenServo, ToolKind::ZAxis, ToolKind::Laser}) {
+      MachineProfile p = *preset("maker-plotter");
+      p.tool.kind = tool;
+      const PlannedJob job = randomDrawingJob(rng, strokes);
+      if (strokes > 300) {
+        ASSERT_GT(job.moves.size(), 20000u);
+      }
+      PlannedJob expected = job, actual = job, filled = job;
+      const auto expectedTimings = oracle::estimateJobTime(expected, p);
+      const auto actualTimings = estimateJobTime(actual, p);
+      fillJobTimes(filled, p);
+      const std::string what = std::to_string(job.moves.size()) + " moves, tool " +
+                               std::to_string(static_cast<int>(tool));
+      EXPECT_GT(actual.summary.estimatedTimeS, 1.0) << what;
+      expectSameTimings(actualTimings, expectedTimings, what);
+      expectSameMoveTimes(actual, expected, what);
+      expectSameMoveTimes(filled, expected, what + " (fillJobTimes)");
+    }
+  }
+}
+
+TEST(TimeEstimate, InputsOfAJobMatchTheReference) {
+  auto rng = test::rng();
+  MachineProfile p = *preset("maker-plotter");
+  p.tool.kind = ToolKind::ZAxis;
+  const PlannedJob job = randomDrawingJob(rng, 20);
+  const auto actual = grblInputsOf(job, p), expected = oracle::grblInputsOf(job, p);
+  ASSERT_EQ(actual.size(), expected.size());
+  for (size_t i = 0; i < actual.size(); ++i) {
+    EXPECT_EQ(actual[i].delta, expected[i].delta) << i;
+    EXPECT_EQ(actual[i].feedPerS, expected[i].feedPerS) << i;
+    EXPECT_EQ(actual[i].sync, expected[i].sync) << i;
+    EXPECT_EQ(actual[i].dwellS, expected[i].dwellS) << i;
+  }
 }
 
 }  // namespace
