@@ -248,7 +248,8 @@ OptimiseResult optimise(std::vector<Stroke> strokes, const MachineProfile& profi
   std::erase_if(strokes, [](const Stroke& s) { return s.points.empty(); });
   r.report.strokesBefore = strokes.size();
   for (const Stroke& s : strokes) r.report.pointsBefore += s.points.size();
-  r.report.travelBeforeS = travelTimeS(strokes, profile, mode, options.start);
+  if (options.measureTravel)
+    r.report.travelBeforeS = travelTimeS(strokes, profile, mode, options.start);
   // The 2-opt budget starts when the first 2-opt starts.
   std::optional<Clock::time_point> deadline;
   std::size_t stepsLeft = options.maxTwoOptSteps > 0 ? options.maxTwoOptSteps
@@ -282,7 +283,8 @@ OptimiseResult optimise(std::vector<Stroke> strokes, const MachineProfile& profi
   }
   r.report.strokesAfter = r.strokes.size();
   for (const Stroke& s : r.strokes) r.report.pointsAfter += s.points.size();
-  r.report.travelAfterS = travelTimeS(r.strokes, profile, mode, options.start);
+  if (options.measureTravel)
+    r.report.travelAfterS = travelTimeS(r.strokes, profile, mode, options.start);
   r.report.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   return r;
 }

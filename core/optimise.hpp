@@ -26,6 +26,8 @@ struct OptimiseOptions {
   // Deterministic budget: long edges the 2-opt may examine in all (0 = no limit). Unlike the
   // wall-clock budget, the same input then always gives the same order.
   std::size_t maxTwoOptSteps = 0;
+  // Fill OptimiseReport::travelBeforeS / travelAfterS (inverse kinematics of every stroke end).
+  bool measureTravel = true;
   // Pen position (joint angles) before the first stroke, e.g. the home pose; nullopt = none.
   std::optional<JointAngles> start;
 };

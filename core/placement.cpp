@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+
+#include "parallel.hpp"
 
 namespace fivebar {
 namespace {
@@ -56,22 +59,25 @@ Eigen::Affine2d machineFromWork(const Drawing& drawing, const Placement& placeme
 
 std::vector<Stroke> placeDrawing(const Drawing& drawing, const Placement& placement) {
   const Eigen::Affine2d machineFromWorkT = machineFromWork(drawing, placement);
-  std::vector<Stroke> out;
+  std::vector<std::pair<int, int>> index;  // layer and path of each stroke, in order
   for (std::size_t li = 0; li < drawing.layers.size(); ++li) {
     const Layer& layer = drawing.layers[li];
     if (!layer.visible) continue;
-    for (std::size_t pi = 0; pi < layer.paths.size(); ++pi) {
-      const Polyline& path = layer.paths[pi];
-      if (path.points.empty()) continue;
-      Stroke s;
-      s.layerIndex = static_cast<int>(li);
-      s.pathIndex = static_cast<int>(pi);
-      s.points.reserve(path.points.size() + (path.closed ? 1 : 0));
-      for (const Vec2& p : path.points) s.points.push_back(machineFromWorkT * p);
-      if (path.closed && path.points.size() > 1) s.points.push_back(s.points.front());
-      out.push_back(std::move(s));
-    }
+    for (std::size_t pi = 0; pi < layer.paths.size(); ++pi)
+      if (!layer.paths[pi].points.empty()) index.emplace_back(static_cast<int>(li), static_cast<int>(pi));
   }
+  // Copied in parallel: a large drawing is tens of MB of fresh memory.
+  std::vector<Stroke> out(index.size());
+  parallelFor(index.size(), planningThreads(), [&](std::size_t k) {
+    const auto [li, pi] = index[k];
+    const Polyline& path = drawing.layers[static_cast<std::size_t>(li)].paths[static_cast<std::size_t>(pi)];
+    Stroke& s = out[k];
+    s.layerIndex = li;
+    s.pathIndex = pi;
+    s.points.reserve(path.points.size() + (path.closed ? 1 : 0));
+    for (const Vec2& p : path.points) s.points.push_back(machineFromWorkT * p);
+    if (path.closed && path.points.size() > 1) s.points.push_back(s.points.front());
+  });
   return out;
 }
 

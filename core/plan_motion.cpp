@@ -3,9 +3,11 @@
 #include <cmath>
 #include <future>
 #include <limits>
+#include <optional>
 
 #include "feeds.hpp"
 #include "memory_hint.hpp"
+#include "move_samples.hpp"
 #include "parallel.hpp"
 #include "planner.hpp"
 #include "safety.hpp"
@@ -17,7 +19,7 @@ namespace fivebar {
 namespace {
 
 // Strokes segmented in parallel before being drawn in order (bounds the memory held).
-constexpr size_t kChunkStrokes = 512;
+constexpr size_t kChunkStrokes = 2048;
 // FK samples per travel move for its XY length.
 constexpr int kTravelLengthSamples = 16;
 // Lever arm factor for the G-code rounding share of the tolerance (docs/planning.md): a joint
@@ -63,10 +65,25 @@ class MotionPlanner {
     // segmented in parallel, the next chunk while this one is drawn in order, so the job does
     // not depend on the threads.
     const int threads = planningThreads();
+    // The end pose of the last stroke of the previous chunk, as segmented (for the travels).
+    std::optional<JointAngles> chunkEnd;
     auto prepareChunk = [&](size_t first, std::vector<Prepared>& chunk) {
       const size_t n = std::min(kChunkStrokes, strokes_.size() - first);
       chunk.assign(n, Prepared{});
       parallelFor(n, threads, [&](size_t i) { prepare(first + i, chunk[i]); });
+      // Each stroke's travel from the end of the one before, as it will be drawn unless a
+      // stroke fails or moves by whole turns (drawStroke then plans it again).
+      std::vector<std::optional<JointAngles>> from(n);
+      std::optional<JointAngles> last = first == 0 ? std::optional<JointAngles>(job_.start) : chunkEnd;
+      for (size_t i = 0; i < n; ++i) {
+        from[i] = last;
+        if (chunk[i].usable()) last = chunk[i].seg.waypoints.back().q;
+      }
+      chunkEnd = last;
+      parallelFor(n, threads, [&](size_t i) {
+        if (from[i] && chunk[i].usable())
+          chunk[i].travel = planTravel(*from[i], chunk[i].seg.waypoints.front().q);
+      });
     };
     std::vector<Prepared> chunk, next;
     if (!strokes_.empty()) prepareChunk(0, chunk);
@@ -80,7 +97,7 @@ class MotionPlanner {
       std::swap(chunk, next);
     }
     if (penDown_) penUp();
-    travelTo(job_.start, -1, -1, "travel back to the start pose");
+    travelTo(job_.start, -1, -1, nullptr, [] { return std::string("travel back to the start pose"); });
   }
 
  private:
@@ -99,10 +116,20 @@ class MotionPlanner {
   }
 
   // A stroke segmented (angles unwrapped near the home pose) with its feeds.
+  // A pen-up travel between two poses: the safe joint path with its XY lengths and feeds.
+  struct TravelPlan {
+    JointAngles from, to;
+    bool found = false;
+    std::vector<JointWaypoint> chain;  // chain[0] = from
+    std::vector<SegmentFeed> feeds;
+  };
+
   struct Prepared {
+    std::optional<TravelPlan> travel;  // from the previous stroke's end, planned ahead
     SegmentedStroke seg;
     std::vector<SegmentFeed> feeds;
     PathCheck check;  // every move of the stroke, as segmented (angles near the home pose)
+    bool usable() const { return seg.ok() && !seg.waypoints.empty() && check.ok(); }
   };
 
   void prepare(size_t k, Prepared& out) const {
@@ -176,7 +203,8 @@ class MotionPlanner {
     lastLayer_ = layer;
     if (penDown_) penUp();
     if (newLayer && k > 0 && layerTool(layer).pauseBefore) push(JobMoveKind::Pause, -1, layer);
-    if (!travelTo(seg.waypoints[0].q, static_cast<int>(k), layer, "travel to " + pathLabel(s)))
+    const TravelPlan* ahead = prepared.travel ? &*prepared.travel : nullptr;
+    if (!travelTo(seg.waypoints[0].q, static_cast<int>(k), layer, ahead, [&] { return "travel to " + pathLabel(s); }))
       return;
     penDown(static_cast<int>(k), layer);
     ps.firstMove = static_cast<int>(job_.moves.size());
@@ -205,32 +233,51 @@ class MotionPlanner {
     }
   }
 
-  bool travelTo(const JointAngles& target, int stroke, int layer, const std::string& what) {
+  // The travel from `from` to `to` (thread-safe: reads the profile only).
+  TravelPlan planTravel(const JointAngles& from, const JointAngles& to) const {
+    TravelPlan t;
+    t.from = from;
+    t.to = to;
+    const auto path = planSafeTravel(p_, from, to);
+    if (!path) return t;
+    t.found = true;
+    const FkResult start = forward(g_, from, p_.assembly);
+    t.chain.push_back({from, start.ok() ? start.p : Vec2::Zero(), 0.0, 0.0});
+    for (const JointAngles& q : *path) {
+      const auto [length, end] = travelLength(t.chain.back().q, q);
+      t.chain.push_back({q, end, 0.0, length});
+    }
+    t.feeds = planFeeds(g_, p_.assembly, t.chain, p_.travelSpeedMmPerS, limits_);
+    return t;
+  }
+
+  // Adds the travel from the current pose to `target` (the one planned ahead when it starts
+  // here); `what` names it in a problem.
+  template <typename What>
+  bool travelTo(const JointAngles& target, int stroke, int layer, const TravelPlan* ahead,
+                const What& what) {
     if (std::abs(target.theta1 - at_.theta1) < 1e-12 && std::abs(target.theta2 - at_.theta2) < 1e-12)
       return true;
-    const auto path = planSafeTravel(p_, at_, target);
-    if (!path) {
+    const bool reuse = ahead && ahead->from.theta1 == at_.theta1 &&
+                       ahead->from.theta2 == at_.theta2 && ahead->to.theta1 == target.theta1 &&
+                       ahead->to.theta2 == target.theta2;
+    const TravelPlan fresh = reuse ? TravelPlan{} : planTravel(at_, target);
+    const TravelPlan& t = reuse ? *ahead : fresh;
+    if (!t.found) {
       const FkResult fk = forward(g_, target, p_.assembly);
-      problem(what, fk.ok() ? fk.p : atXY_, "no safe pen-up travel reaches it",
+      problem(what(), fk.ok() ? fk.p : atXY_, "no safe pen-up travel reaches it",
               {"move the drawing away from singular regions (--at)", "try another --mode"});
       return false;
     }
-    std::vector<JointWaypoint> chain{{at_, atXY_, 0.0, 0.0}};
-    for (const JointAngles& q : *path) {
-      const auto [length, end] = travelLength(chain.back().q, q);
-      chain.push_back({q, end, 0.0, length});
-    }
-    const std::vector<SegmentFeed> feeds =
-        planFeeds(g_, p_.assembly, chain, p_.travelSpeedMmPerS, limits_);
-    for (size_t i = 0; i < feeds.size(); ++i) {
+    for (size_t i = 0; i < t.feeds.size(); ++i) {
       JobMove& m = push(JobMoveKind::Travel, stroke, layer);
-      m.target = chain[i + 1].q;
-      m.targetXY = chain[i + 1].p;
-      m.feedMmPerS = feeds[i].feedMmPerS;
-      m.jointFeedRadPerS = feeds[i].jointFeedRadPerS;
-      m.feedLimited = feeds[i].limited();
+      m.target = t.chain[i + 1].q;
+      m.targetXY = t.chain[i + 1].p;
+      m.feedMmPerS = t.feeds[i].feedMmPerS;
+      m.jointFeedRadPerS = t.feeds[i].jointFeedRadPerS;
+      m.feedLimited = t.feeds[i].limited();
       moved(m.target, m.targetXY);
-      job_.summary.travelMm += chain[i + 1].pathLengthMm;
+      job_.summary.travelMm += t.chain[i + 1].pathLengthMm;
       job_.summary.travelMoves += 1;
     }
     return true;
@@ -238,7 +285,14 @@ class MotionPlanner {
 
   // XY length (mm) of the joint-linear move a -> b by FK samples, and where it ends.
   std::pair<double, Vec2> travelLength(const JointAngles& a, const JointAngles& b) const {
+    Vec2 p[kTravelLengthSamples + 1];
     double length = 0.0;
+    if (sampleJointMove(g_, p_.assembly, a, b, kTravelLengthSamples, p)) {
+      for (int k = 1; k <= kTravelLengthSamples; ++k) length += (p[k] - p[k - 1]).norm();
+      return {length, p[kTravelLengthSamples]};
+    }
+    // Some sample does not close (a travel that passed the safety check always does): the
+    // samples that do.
     Vec2 prev = forward(g_, a, p_.assembly).p;
     for (int k = 1; k <= kTravelLengthSamples; ++k) {
       const double u = static_cast<double>(k) / kTravelLengthSamples;
@@ -250,6 +304,8 @@ class MotionPlanner {
     }
     return {length, prev};
   }
+
+
 
   void penDown(int stroke, int layer) {
     JobMove& m = push(JobMoveKind::PenDown, stroke, layer);

@@ -213,6 +213,7 @@ PlanResult planInMode(const Drawing& drawing, const MachineProfile& profile,
     // A deterministic 2-opt budget (the same drawing always gives the same job), under 0.1 s
     // on 40,000 strokes; the wall-clock budget only guards against a pathological case.
     oo.maxTwoOptSteps = kTwoOptSteps;
+    oo.measureTravel = false;
     oo.timeBudgetS = 2.0;
     strokes = optimise(std::move(strokes), profile, m.mode, oo).strokes;
     clock.lap("optimise");

@@ -33,7 +33,7 @@ constexpr const char* kPlanHelp =
     "  --no-optimise             keep the drawing's stroke order and direction\n"
     "  -o, --output JOB.gcode    G-code output file\n"
     "  --report REPORT.json      planning report (also written when the job is infeasible)\n"
-    "  --timings                 print the wall-clock time of each stage to stderr\n"
+    "  --timings                 print the wall-clock and CPU time of each stage to stderr\n"
     "Exits 1 when the job is infeasible, naming the first offending path and the reason.\n";
 
 constexpr const char* kSettingsHelp =
@@ -169,8 +169,9 @@ int plan(const Options& o) {
             << fixed9(rep.minSingularityMarginDeg).substr(0, 5) << " deg (planned in "
             << std::lround(wallS * 1000) << " ms)\n";
   if (o.flag("--timings"))
-    for (const auto& [stage, seconds] : times.stages)
-      std::cerr << "  " << stage << ": " << std::lround(seconds * 1000) << " ms\n";
+    for (const StageTime& stage : times.stages)
+      std::cerr << "  " << stage.name << ": " << std::lround(stage.wallS * 1000) << " ms (cpu "
+                << std::lround(stage.cpuS * 1000) << " ms)\n";
   return 0;
 }
 
