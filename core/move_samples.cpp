@@ -54,4 +54,30 @@ bool sampleJointMove(const Geometry& g, AssemblyMode assembly, const JointAngles
   return bad == 0;
 }
 
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+void motorTrigOfPoints(const Geometry& g, WorkingMode mode, const Vec2* points, std::size_t n,
+                       MotorTrig* out) {
+  // '+' puts R1 counter-clockwise of the chord M1->P, R2 clockwise of M2->P.
+  const double sign1 = arm1Sign(mode) == ArmSign::Plus ? 1.0 : -1.0;
+  const double sign2 = arm2Sign(mode) == ArmSign::Plus ? -1.0 : 1.0;
+  const Vec2 m1 = g.motor1(), m2 = g.motor2();
+  const double* xy = points[0].data();
+  double* trig = &out[0].c1;  // MotorTrig is four doubles: c1, s1, c2, s2
+  for (std::size_t k = 0; k < n; ++k) {
+    const double x = xy[2 * k], y = xy[2 * k + 1];
+    const double cx1 = x - m1.x(), cy1 = y - m1.y(), cx2 = x - m2.x(), cy2 = y - m2.y();
+    const double d1 = std::max(std::sqrt(cx1 * cx1 + cy1 * cy1), 1e-12);
+    const double d2 = std::max(std::sqrt(cx2 * cx2 + cy2 * cy2), 1e-12);
+    const double ca1 = std::clamp((g.a1 * g.a1 + d1 * d1 - g.b1 * g.b1) / (2.0 * g.a1 * d1), -1.0, 1.0);
+    const double ca2 = std::clamp((g.a2 * g.a2 + d2 * d2 - g.b2 * g.b2) / (2.0 * g.a2 * d2), -1.0, 1.0);
+    const double sa1 = std::sqrt(std::max(0.0, 1.0 - ca1 * ca1));
+    const double sa2 = std::sqrt(std::max(0.0, 1.0 - ca2 * ca2));
+    const double cc1 = cx1 / d1, sc1 = cy1 / d1, cc2 = cx2 / d2, sc2 = cy2 / d2;
+    trig[4 * k] = cc1 * ca1 - sign1 * sc1 * sa1;
+    trig[4 * k + 1] = sc1 * ca1 + sign1 * cc1 * sa1;
+    trig[4 * k + 2] = cc2 * ca2 - sign2 * sc2 * sa2;
+    trig[4 * k + 3] = sc2 * ca2 + sign2 * cc2 * sa2;
+  }
+}
+
 }  // namespace fivebar

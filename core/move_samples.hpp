@@ -46,6 +46,13 @@ inline constexpr int kMaxMoveSamples = 1024;
 bool sampleJointMove(const Geometry& g, AssemblyMode assembly, const JointAngles& qa,
                      const MotorTrig& start, const JointAngles& qb, int n, Vec2* out);
 
+// The cosines and sines of the motor angles that inverse kinematics in `mode` gives for each of
+// the n points (reachable ones; others get meaningless values), from the IK geometry without a
+// trigonometric call: theta = chord + sign * alpha with cos alpha from the law of cosines
+// (kinematics.cpp, inverseArm1/2). Vectorised like sampleJointMove.
+void motorTrigOfPoints(const Geometry& g, WorkingMode mode, const Vec2* points, std::size_t n,
+                       MotorTrig* out);
+
 inline bool sampleJointMove(const Geometry& g, AssemblyMode assembly, const JointAngles& qa,
                             const JointAngles& qb, int n, Vec2* out) {
   return sampleJointMove(g, assembly, qa, MotorTrig::of(qa), qb, n, out);

@@ -61,12 +61,11 @@ std::optional<JointAngles> unwrappedIk(const Geometry& g, WorkingMode mode, cons
                      unwrapNear(ik.angles.theta2, near.theta2)};
 }
 
-std::vector<Vec2> withoutDuplicates(std::span<const Vec2> stroke) {
-  std::vector<Vec2> pts;
+void withoutDuplicates(std::span<const Vec2> stroke, std::vector<Vec2>& pts) {
+  pts.clear();
   pts.reserve(stroke.size());
   for (const Vec2& p : stroke)
     if (pts.empty() || (p - pts.back()).norm() > kDuplicatePointMm) pts.push_back(p);
-  return pts;
 }
 
 // Inverse kinematics of every point (batch kernels), unwrapped along the stroke; sets the
@@ -74,13 +73,16 @@ std::vector<Vec2> withoutDuplicates(std::span<const Vec2> stroke) {
 bool solveAll(const Geometry& g, WorkingMode mode, const std::vector<Vec2>& pts,
               const JointAngles& reference, std::vector<JointAngles>& qs, SegmentedStroke& out) {
   const std::size_t n = pts.size();
-  std::vector<double> buf(4 * n);
+  thread_local std::vector<double> buf;  // scratch
+  thread_local std::vector<std::uint8_t> ok;
+  buf.resize(4 * n);
+  ok.resize(n);
   double *x = buf.data(), *y = x + n, *t1 = y + n, *t2 = t1 + n;
   for (std::size_t k = 0; k < n; ++k) x[k] = pts[k].x(), y[k] = pts[k].y();
-  std::vector<std::uint8_t> ok(n);
   BatchOptions single;
   single.maxThreads = 1;
   inverseBatch(g, mode, x, y, n, t1, t2, ok.data(), single);
+  qs.clear();
   qs.reserve(n);
   JointAngles prev = reference;
   for (std::size_t k = 0; k < n; ++k) {
@@ -168,9 +170,11 @@ class Segmenter {
       : g_(g), mode_(mode), assembly_(assembly), pts_(pts), qs_(qs), opt_(options), out_(out) {
     cur_ = pts[0];
     qcur_ = qs[0];
-    trigCur_ = ikTrig(g_, mode_, cur_);
-    trig_.resize(qs.size());
-    trigKnown_.assign(qs.size(), 0);
+    thread_local std::vector<MotorTrig> trig;
+    trig.resize(pts.size());
+    motorTrigOfPoints(g, mode, pts.data(), pts.size(), trig.data());
+    trig_ = trig.data();
+    trigCur_ = trig_[0];
   }
 
   void run() {
@@ -186,10 +190,7 @@ class Segmenter {
   }
 
  private:
-  const MotorTrig& trigAt(size_t j) {
-    if (!trigKnown_[j]) trig_[j] = ikTrig(g_, mode_, pts_[j]), trigKnown_[j] = 1;
-    return trig_[j];
-  }
+  const MotorTrig& trigAt(size_t j) const { return trig_[j]; }
 
   MoveEval evalTo(size_t j) {
     chain_.assign(1, cur_);
@@ -328,8 +329,7 @@ class Segmenter {
   const std::vector<JointAngles>& qs_;
   const SegmentationOptions& opt_;
   SegmentedStroke& out_;
-  std::vector<MotorTrig> trig_;          // cosines and sines of qs_, computed when first needed
-  std::vector<std::uint8_t> trigKnown_;
+  const MotorTrig* trig_ = nullptr;  // cosines and sines of qs_ (thread-local storage)
   size_t i_ = 0;
   Vec2 cur_;
   JointAngles qcur_;
@@ -349,10 +349,12 @@ SegmentedStroke segmentStroke(const Geometry& g, WorkingMode mode, AssemblyMode 
                               std::span<const Vec2> stroke, const JointAngles& reference,
                               const SegmentationOptions& options) {
   SegmentedStroke out;
-  const std::vector<Vec2> pts = withoutDuplicates(stroke);
+  thread_local std::vector<Vec2> pts;  // scratch, reused by every stroke of the thread
+  thread_local std::vector<JointAngles> qs;
+  withoutDuplicates(stroke, pts);
   if (pts.empty()) return out;
-  std::vector<JointAngles> qs;
   if (!solveAll(g, mode, pts, reference, qs, out)) return out;
+  out.waypoints.reserve(pts.size());
   out.waypoints.push_back({qs[0], pts[0], 0.0, 0.0});
   Segmenter(g, mode, assembly, pts, qs, options, out).run();
   return out;
@@ -362,9 +364,10 @@ SegmentedStroke segmentFixedLength(const Geometry& g, WorkingMode mode, Assembly
                                    std::span<const Vec2> stroke, const JointAngles& reference,
                                    double stepMm) {
   SegmentedStroke out;
-  const std::vector<Vec2> pts = withoutDuplicates(stroke);
-  if (pts.empty()) return out;
+  std::vector<Vec2> pts;
   std::vector<JointAngles> qs;
+  withoutDuplicates(stroke, pts);
+  if (pts.empty()) return out;
   if (!solveAll(g, mode, pts, reference, qs, out)) return out;
   out.waypoints.push_back({qs[0], pts[0], 0.0, 0.0});
   for (size_t i = 0; i + 1 < pts.size(); ++i) {
