@@ -222,6 +222,9 @@ class Line {
 // Jobs smaller than this are written by one thread: a thread costs more than it saves.
 constexpr size_t kMinMovesToSplit = 20000;
 
+// Moves per piece of the streaming writer (about 1.5 MB of text).
+constexpr size_t kMovesPerPiece = 50000;
+
 // Bytes to reserve: generous for the usual line lengths; an unusual job only reallocates.
 size_t expectedSize(const PlannedJob& job) {
   return 4096 + 48 * job.moves.size() + 40 * job.strokes.size();
@@ -469,6 +472,29 @@ std::string writeGcode(const PlannedJob& job, const MachineProfile& profile,
   });
   for (size_t k = 1; k < parts; ++k) texts[0] += texts[k];
   return std::move(texts[0]);
+}
+
+void writeGcode(const PlannedJob& job, const MachineProfile& profile,
+                const std::function<void(std::string_view)>& sink, const GcodeOptions& options) {
+  // Blocks of moves, written two at a time (each picking up the state the moves before it
+  // leave), handed to the sink in order: the same text as the one-string writer.
+  const size_t n = job.moves.size();
+  const size_t blocks = std::max<size_t>(1, (n + kMovesPerPiece - 1) / kMovesPerPiece);
+  std::string texts[2];
+  for (size_t first = 0; first < blocks; first += 2) {
+    const size_t count = std::min<size_t>(2, blocks - first);
+    parallelFor(count, n >= kMinMovesToSplit ? planningThreads() : 1, [&](size_t k) {
+      const size_t b = first + k, begin = n * b / blocks, end = n * (b + 1) / blocks;
+      std::string& out = texts[k];
+      out.clear();
+      Writer w(job, profile, options, out);
+      if (b == 0) w.header();
+      else w.resumeAt(begin);
+      w.moves(begin, end);
+      if (b + 1 == blocks) w.trailer();
+    });
+    for (size_t k = 0; k < count; ++k) sink(texts[k]);
+  }
 }
 
 }  // namespace fivebar

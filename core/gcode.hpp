@@ -3,7 +3,9 @@
 // lines of at most 80 characters, a header naming the profile and the $ settings it expects.
 #pragma once
 
+#include <functional>
 #include <string>
+#include <string_view>
 
 #include "job.hpp"
 #include "profile.hpp"
@@ -25,5 +27,13 @@ std::string grblSettings(const MachineProfile& profile);
 // The job as G-code text (lines end with '\n').
 std::string writeGcode(const PlannedJob& job, const MachineProfile& profile,
                        const GcodeOptions& options = {});
+
+// The same text handed to `sink` in consecutive pieces of about a megabyte (written by up to two
+// threads, handed over in order on the calling thread), so that a large job never needs the
+// whole text in memory. On an error (a line too long) the exception is thrown, and the sink may
+// have received part of the text before it: discard what it got.
+void writeGcode(const PlannedJob& job, const MachineProfile& profile,
+                const std::function<void(std::string_view)>& sink,
+                const GcodeOptions& options = {});
 
 }  // namespace fivebar

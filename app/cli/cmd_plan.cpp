@@ -2,6 +2,7 @@
 // fivebar grbl-settings: the $ lines a profile expects.
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iostream>
 
@@ -53,15 +54,39 @@ double parseNumber(const std::string& text, const std::string& option) {
   return v;
 }
 
-bool writeFile(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-  out.flush();
-  if (!out) {
-    std::cerr << "fivebar plan: cannot write '" << path << "'\n";
-    return false;
+// Writes PATH.part next to `path` with `fill`, then renames it over `path`: an interrupted or
+// failed write never leaves a truncated file under the output's name.
+template <typename Fill>
+bool writeAtomically(const std::string& path, const Fill& fill) {
+  const std::string part = path + ".part";
+  bool ok = false;
+  {
+    std::ofstream out(part, std::ios::binary | std::ios::trunc);
+    try {
+      fill(out);
+      out.flush();
+      ok = static_cast<bool>(out);
+    } catch (const std::exception& e) {
+      std::cerr << "fivebar plan: " << e.what() << "\n";
+    }
   }
-  return true;
+  if (ok && std::rename(part.c_str(), path.c_str()) == 0) return true;
+  std::remove(part.c_str());
+  std::cerr << "fivebar plan: cannot write '" << path << "'\n";
+  return false;
+}
+
+bool writeFile(const std::string& path, const std::string& text) {
+  return writeAtomically(path, [&](std::ofstream& out) { out << text; });
+}
+
+// The G-code, streamed piece by piece (a large job is never whole in memory as text).
+bool writeGcodeFile(const std::string& path, const PlannedJob& job, const MachineProfile& profile) {
+  return writeAtomically(path, [&](std::ofstream& out) {
+    writeGcode(job, profile, [&](std::string_view piece) {
+      out.write(piece.data(), static_cast<std::streamsize>(piece.size()));
+    });
+  });
 }
 
 PlanOptions planOptionsFrom(const Options& o) {
@@ -158,7 +183,7 @@ int plan(const Options& o) {
     printProblems(file, r);
     return 1;
   }
-  if (!writeFile(output, writeGcode(r.job, *machine))) return 1;
+  if (!writeGcodeFile(output, r.job, *machine)) return 1;
   clock.lap("G-code");
   const double wallS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const PlanReport& rep = r.report;

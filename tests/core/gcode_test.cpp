@@ -305,6 +305,24 @@ TEST(Gcode, LargeJobsWrittenInTwoHalvesAreByteIdenticalToTheReference) {
   }
 }
 
+TEST(Gcode, StreamedPiecesMakeTheSameTextAsTheOneString) {
+  std::mt19937_64 rng = test::rng();
+  for (int trial = 0; trial < 6; ++trial) {
+    const ToolKind tool = static_cast<ToolKind>(trial % 3);
+    const MachineProfile p = randomProfile(rng, tool);
+    GcodeOptions o;
+    o.strokeComments = trial % 2 == 0;
+    // Several pieces (an odd number in some trials), and a small job of one piece.
+    PlannedJob job = randomJob(rng, false, trial == 5 ? 500 : 120000 + 25000 * trial);
+    const std::string expected = oracle::writeGcode(job, p, o);
+    std::string streamed;
+    int pieces = 0;
+    writeGcode(job, p, [&](std::string_view piece) { streamed += piece, ++pieces; }, o);
+    ASSERT_TRUE(streamed == expected) << "trial " << trial << ", " << firstDifference(streamed, expected);
+    if (trial < 5) EXPECT_GT(pieces, 2);
+  }
+}
+
 // A laser job cut in the middle of a stroke and one cut just before a travel: the S word must
 // carry on (not be sent again, and be reset to S0 for the travel) across the cut.
 TEST(Gcode, LargeLaserJobCarriesThePowerAcrossTheCut) {
