@@ -1,7 +1,11 @@
 // planStrokes: placed strokes -> PlannedJob (segmentation, feeds, travel, tool commands, timing).
 #include <algorithm>
 #include <cmath>
+#include <atomic>
+#include <exception>
 #include <future>
+#include <memory>
+#include <mutex>
 #include <limits>
 #include <optional>
 
@@ -62,39 +66,32 @@ class MotionPlanner {
     adviseHugePages(job_.moves.data(), job_.moves.capacity() * sizeof(JobMove));
     // Segmentation and feeds of a stroke do not depend on where the pen comes from (only the
     // turn its angles are unwrapped to, fixed up in drawStroke): chunks of strokes are
-    // segmented in parallel, the next chunk while this one is drawn in order, so the job does
-    // not depend on the threads.
-    const int threads = planningThreads();
-    // The end pose of the last stroke of the previous chunk, as segmented (for the travels).
-    std::optional<JointAngles> chunkEnd;
-    auto prepareChunk = [&](size_t first, std::vector<Prepared>& chunk) {
-      const size_t n = std::min(kChunkStrokes, strokes_.size() - first);
-      chunk.assign(n, Prepared{});
-      parallelFor(n, threads, [&](size_t i) { prepare(first + i, chunk[i]); });
-      // Each stroke's travel from the end of the one before, as it will be drawn unless a
-      // stroke fails or moves by whole turns (drawStroke then plans it again).
-      std::vector<std::optional<JointAngles>> from(n);
-      std::optional<JointAngles> last = first == 0 ? std::optional<JointAngles>(job_.start) : chunkEnd;
-      for (size_t i = 0; i < n; ++i) {
-        from[i] = last;
-        if (chunk[i].usable()) last = chunk[i].seg.waypoints.back().q;
-      }
-      chunkEnd = last;
-      parallelFor(n, threads, [&](size_t i) {
-        if (from[i] && chunk[i].usable())
-          chunk[i].travel = planTravel(*from[i], chunk[i].seg.waypoints.front().q);
-      });
-    };
-    std::vector<Prepared> chunk, next;
-    if (!strokes_.empty()) prepareChunk(0, chunk);
+    // prepared by every free thread, the next chunk while this one is drawn in order (the
+    // drawing thread joins in when it is done), so the job does not depend on the threads.
+    const size_t helpers = static_cast<size_t>(std::max(1, planningThreads()));
+    ChunkWork chunks[2];
+    ChunkWork* cur = &chunks[0];
+    ChunkWork* ahead = &chunks[1];
+    if (!strokes_.empty()) {
+      cur->reset(0, std::min(kChunkStrokes, strokes_.size()), job_.start);
+      runChunk(*cur, helpers - 1);
+    }
     for (size_t first = 0; first < strokes_.size(); first += kChunkStrokes) {
-      std::future<void> ahead;
-      if (first + kChunkStrokes < strokes_.size())
-        ahead = std::async(std::launch::async, [&, first] { prepareChunk(first + kChunkStrokes, next); });
-      reserveMoves(chunk);
-      for (size_t i = 0; i < chunk.size(); ++i) drawStroke(first + i, chunk[i]);
-      if (ahead.valid()) ahead.get();
-      std::swap(chunk, next);
+      const size_t nextFirst = first + kChunkStrokes;
+      std::vector<std::future<void>> workers;
+      if (nextFirst < strokes_.size()) {
+        ahead->reset(nextFirst, std::min(kChunkStrokes, strokes_.size() - nextFirst),
+                     cur->lastEnd());
+        for (size_t t = 0; t < helpers; ++t)
+          workers.push_back(std::async(std::launch::async, [this, ahead] { work(*ahead); }));
+      }
+      reserveMoves(cur->slots);
+      for (size_t i = 0; i < cur->n; ++i) drawStroke(first + i, cur->slots[i]);
+      if (!workers.empty()) {
+        runChunk(*ahead, 0);
+        for (std::future<void>& w : workers) w.get();
+      }
+      std::swap(cur, ahead);
     }
     if (penDown_) penUp();
     travelTo(job_.start, -1, -1, nullptr, [] { return std::string("travel back to the start pose"); });
@@ -131,6 +128,72 @@ class MotionPlanner {
     PathCheck check;  // every move of the stroke, as segmented (angles near the home pose)
     bool usable() const { return seg.ok() && !seg.waypoints.empty() && check.ok(); }
   };
+
+  // One chunk of strokes prepared by whichever threads are free: each takes the next stroke; the
+  // thread that completes the second of two neighbouring strokes also plans the travel between
+  // them (as drawStroke will use it unless a stroke fails or moves by whole turns).
+  struct ChunkWork {
+    size_t first = 0, n = 0;
+    std::vector<Prepared> slots;
+    std::optional<JointAngles> before;  // end of the last usable stroke before the chunk
+    std::unique_ptr<std::atomic<int>[]> pairs;  // pairs[i] == 2: strokes i-1 and i prepared
+    std::atomic<size_t> next{0}, done{0};
+    std::mutex errorMutex;
+    std::exception_ptr error;
+
+    void reset(size_t firstStroke, size_t count, std::optional<JointAngles> endBefore) {
+      first = firstStroke;
+      n = count;
+      slots.assign(n, Prepared{});
+      before = endBefore;
+      pairs = std::make_unique<std::atomic<int>[]>(n);
+      for (size_t i = 0; i < n; ++i) pairs[i].store(i == 0 ? 1 : 0);
+      next.store(0);
+      done.store(0);
+      error = nullptr;
+    }
+    std::optional<JointAngles> lastEnd() const {
+      for (size_t i = n; i-- > 0;)
+        if (slots[i].usable()) return slots[i].seg.waypoints.back().q;
+      return before;
+    }
+  };
+
+  void work(ChunkWork& w) const {
+    for (size_t i = w.next.fetch_add(1); i < w.n; i = w.next.fetch_add(1)) {
+      try {
+        prepare(w.first + i, w.slots[i]);
+        if (w.pairs[i].fetch_add(1) == 1) travelInto(w, i);
+        if (i + 1 < w.n && w.pairs[i + 1].fetch_add(1) == 1) travelInto(w, i + 1);
+      } catch (...) {
+        const std::lock_guard lock(w.errorMutex);
+        if (!w.error) w.error = std::current_exception();
+      }
+      if (w.done.fetch_add(1) + 1 == w.n) w.done.notify_all();
+    }
+  }
+
+  // Prepares the chunk on this thread and `extra` more, and waits until it is complete.
+  void runChunk(ChunkWork& w, size_t extra) const {
+    std::vector<std::future<void>> workers;
+    for (size_t t = 0; t < extra; ++t)
+      workers.push_back(std::async(std::launch::async, [this, &w] { work(w); }));
+    work(w);
+    for (size_t d = w.done.load(); d < w.n; d = w.done.load()) w.done.wait(d);
+    for (std::future<void>& f : workers) f.get();
+    if (w.error) std::rethrow_exception(w.error);
+  }
+
+  void travelInto(ChunkWork& w, size_t i) const {
+    Prepared& p = w.slots[i];
+    if (!p.usable()) return;
+    const std::optional<JointAngles> from =
+        i == 0 ? w.before
+               : w.slots[i - 1].usable()
+                     ? std::optional<JointAngles>(w.slots[i - 1].seg.waypoints.back().q)
+                     : std::nullopt;
+    if (from) p.travel = planTravel(*from, p.seg.waypoints.front().q);
+  }
 
   void prepare(size_t k, Prepared& out) const {
     const Stroke& s = strokes_[k];
