@@ -142,6 +142,12 @@ void JobRunner::onStatus(const grbl::StatusReport& r) {
     markCompleted(ackedBlocks_);
   switch (state_) {
     case RunState::Running:
+      // A program pause (M0, e.g. a pen change between layers) or the board's hold button: the
+      // machine waits for a cycle start, which resume() sends.
+      if (r.state == MachineState::Hold && r.subState == 0) {
+        setState(RunState::Held);
+        return;
+      }
       if (allAcked && r.state == MachineState::Idle) {
         markCompleted(ackedBlocks_);
         if (!job_.lines.empty() && !errorIndex_) lastCompleted_ = job_.lines.size() - 1;
@@ -150,6 +156,9 @@ void JobRunner::onStatus(const grbl::StatusReport& r) {
       return;
     case RunState::Holding:
       if (r.state == MachineState::Hold && r.subState == 0) setState(RunState::Held);
+      return;
+    case RunState::Held:  // resumed at the board (its cycle start button)
+      if (r.state == MachineState::Run || r.state == MachineState::Idle) setState(RunState::Running);
       return;
     case RunState::Stopping:
       if (phase_ == StopPhase::WaitHold &&

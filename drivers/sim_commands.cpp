@@ -103,8 +103,9 @@ SimMachine::LineResult SimMachine::executeGcode(const std::string& line, bool jo
   const bool offsets = w.hasCode('G', 10) || w.hasCode('G', 92);
   const bool spindle = w.hasCode('M', 3) || w.hasCode('M', 4) || w.hasCode('M', 5) ||
                        (w.has('S') && spindleOn_);
-  const bool needsSync = offsets || spindle || w.hasCode('G', 4) || w.hasCode('M', 2) ||
-                         w.hasCode('M', 30);
+  const bool programPause = !jog && w.hasCode('M', 0);
+  const bool needsSync = offsets || spindle || programPause || w.hasCode('G', 4) ||
+                         w.hasCode('M', 2) || w.hasCode('M', 30);
   if (needsSync && (!syncReady() || holding_)) return LineResult::Blocked;
   if (axisWords && !offsets && planner_.full()) return LineResult::Blocked;
   if (w.hasCode('G', 4)) {
@@ -127,6 +128,12 @@ SimMachine::LineResult SimMachine::executeGcode(const std::string& line, bool jo
     if (w.hasCode('M', 5) || w.hasCode('M', 2) || w.hasCode('M', 30)) spindleOn_ = false;
     if (spindle && config_.profile.tool.kind != ToolKind::ZAxis)
       setPen(penDownFor(spindleS_, spindleOn_, 0.0));
+    // M0 (program pause), as GRBL: once the moves before it are done, a feed hold that only a
+    // cycle start (~) ends; the lines after it wait in the buffer.
+    if (programPause) {
+      holding_ = true;
+      state_ = MachineState::Hold;
+    }
   }
   if (offsets && axisWords) {
     const Axes3 m = planner_.position();

@@ -92,6 +92,33 @@ TEST(JobRunner, HoldAndResume) {
   expectStrokesCover(f.strokes, link.sim.strokes(), f.tol());
 }
 
+TEST(JobRunner, ProgramPauseIsHeldUntilResumed) {
+  RunnerFixture f;
+  // A pen change in the middle of the job, as the planner writes it between layers.
+  std::string text = jobText(f.p, f.strokes, 3000.0);
+  const size_t middle = text.find("G0", text.size() / 2);
+  ASSERT_NE(middle, std::string::npos);
+  text.insert(middle, "M0\n");
+  const job::GcodeJob withPause = job::parseJob(text, job::rulesFor(f.p));
+  ASSERT_TRUE(withPause.issues.empty());
+  for (const bool resumeAtTheBoard : {false, true}) {
+    SimLink link(f.p);
+    job::JobRunner r(link.protocol, withPause);
+    r.start(0, {}, 0.0);
+    ASSERT_TRUE(runTo(link, r, {RunState::Held, RunState::Finished, RunState::Paused}, 300.0));
+    ASSERT_EQ(r.state(), RunState::Held) << r.problem();
+    const auto at = link.sim.machinePosition();
+    link.runUntil([&] { r.tick(link.nowS); return false; }, 2.0);
+    EXPECT_EQ(r.state(), RunState::Held);
+    EXPECT_EQ(link.sim.machinePosition(), at) << "nothing moves during the pause";
+    if (resumeAtTheBoard) link.protocol.sendRealtime(grbl::realtime::kCycleStart);  // its button
+    else r.resume();
+    ASSERT_TRUE(runTo(link, r, {RunState::Finished, RunState::Paused}, 300.0));
+    ASSERT_EQ(r.state(), RunState::Finished) << r.problem();
+    expectStrokesCover(f.strokes, link.sim.strokes(), f.tol());
+  }
+}
+
 TEST(JobRunner, StopLeavesACleanMachineAndResumeCompletes) {
   RunnerFixture f;
   SimLink link(f.p);

@@ -106,6 +106,27 @@ TEST(SimMachine, ResetDuringMotionRaisesAlarm3ButNotAfterACompletedHold) {
   }
 }
 
+TEST(SimMachine, ProgramPauseHoldsAfterTheMovesBeforeItUntilCycleStart) {
+  const MachineProfile p = testProfile();
+  SimLink link(p);
+  const double x0 = degFromRad(p.homeAngles.theta1);
+  const std::string first = fmt(x0 + 5.0), second = fmt(x0 + 10.0);
+  link.protocol.enqueue("G1X" + first + "F600");
+  link.protocol.enqueue("M0");
+  link.protocol.enqueue("G1X" + second + "F600");
+  const double x1 = std::stod(first), x2 = std::stod(second);
+  const double halfStep = 0.5 / p.motors.stepsPerDeg1 + 1e-9;  // positions are whole steps
+  // The first move completes, then the machine holds (Hold:0) with the second move waiting.
+  ASSERT_TRUE(link.runUntil([&] { return link.sim.state() == MachineState::Hold; }, 5.0));
+  EXPECT_NEAR(link.sim.machinePosition()[0], x1, halfStep);
+  link.runUntil([] { return false; }, 2.0);
+  EXPECT_EQ(link.sim.state(), MachineState::Hold);
+  EXPECT_NEAR(link.sim.machinePosition()[0], x1, halfStep);
+  link.protocol.sendRealtime(grbl::realtime::kCycleStart);
+  ASSERT_TRUE(link.runUntil([&] { return std::abs(link.sim.machinePosition()[0] - x2) < halfStep &&
+                                         link.sim.state() == MachineState::Idle; }, 5.0));
+}
+
 TEST(SimMachine, BadLinesGetErrorCodes) {
   const MachineProfile p = testProfile();
   SimLink link(p);
