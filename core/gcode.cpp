@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "fixed_decimal.hpp"
 #include "memory_hint.hpp"
 #include "parallel.hpp"
 #include "units.hpp"
@@ -16,122 +17,6 @@
 
 namespace fivebar {
 namespace {
-
-// Fixed-point text of `value` with `decimals` decimals, as printf("%.*f") writes it, but never
-// "-0.000". Used by the header and as the fallback of writeFixedFast (which gives the same text
-// without allocating).
-std::string fixed(double value, int decimals) {
-  char buf[64];
-  const std::to_chars_result r =
-      std::to_chars(buf, buf + sizeof buf, value, std::chars_format::fixed, decimals);
-  std::string s;
-  if (r.ec == std::errc{}) {
-    s.assign(buf, r.ptr);
-  } else {  // too long for the buffer (|value| near 1e60 or more): let snprintf size it
-    s.resize(static_cast<size_t>(std::snprintf(nullptr, 0, "%.*f", decimals, value)) + 1);
-    s.resize(static_cast<size_t>(std::snprintf(s.data(), s.size(), "%.*f", decimals, value)));
-  }
-  if (s[0] == '-' && s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);
-  return s;
-}
-
-constexpr int kFastMaxDecimals = 9;
-constexpr double kPow10[kFastMaxDecimals + 1] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9};
-constexpr std::uint64_t kPow10Int[kFastMaxDecimals + 1] = {
-    1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000, 1000000000};
-constexpr double kTwoPow52 = 4503599627370496.0;  // below it, doubles have a fractional bit
-// Room the fast path needs at its output: sign, 16 integer digits, '.', 9 decimals, and slack
-// for its fixed-size copy.
-constexpr size_t kFastRoom = 32;
-
-// round(magnitude * 10^decimals) to an integer, ties to even, computed on the EXACT product (what
-// printf and std::to_chars round). With p = fl(m * s) < 2^52, floor(p) and f = p - floor(p) are
-// exact; the rounding error e = m * s - p (exact by fma, s being an exact power of ten) has
-// |e| <= ulp(p) / 2. For p >= 1/2, f and 1/2 lie on p's ulp grid, so the sign of f - 1/2 decides
-// unless f == 1/2, where e decides, and e == 0 is a true tie (to even); for p < 1/2, p + e < 1/2.
-// Returns false when the fast path does not apply (too large, not finite).
-bool roundScaled(double magnitude, int decimals, std::uint64_t& rounded) {
-  const double scale = kPow10[decimals];
-  const double p = magnitude * scale;
-  if (!(p < kTwoPow52)) return false;  // also NaN and infinity
-  rounded = static_cast<std::uint64_t>(p);  // floor: p >= 0
-  const double aboveHalf = (p - static_cast<double>(rounded)) - 0.5;
-  rounded += aboveHalf > 0.0 ? 1 : 0;  // no branch: up or down is a coin toss
-  if (aboveHalf == 0.0) {  // rare: the sign of the product's rounding error decides
-    const double e = std::fma(magnitude, scale, -p);
-    if (e > 0.0 || (e == 0.0 && (rounded & 1U) != 0)) ++rounded;
-  }
-  return true;
-}
-
-// "00" .. "99": two digits per step.
-constexpr char kDigitPairs[] =
-    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
-    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
-    "8081828384858687888990919293949596979899";
-
-// Writes the digits of v backwards so that they end at q; returns their start. At least one
-// digit; exactly `Count` digits (leading zeros) when Count > 0.
-template <int Count>
-char* digitsBackward(char* q, std::uint64_t v) {
-  auto pair = [&](std::uint64_t two) {
-    q -= 2;
-    std::memcpy(q, kDigitPairs + 2 * two, 2);
-  };
-  if constexpr (Count > 0) {
-    for (int i = 0; i + 1 < Count; i += 2) {
-      pair(v % 100);
-      v /= 100;
-    }
-    if constexpr (Count % 2 == 1) *--q = static_cast<char>('0' + v);
-  } else {
-    for (; v >= 100; v /= 100) pair(v % 100);
-    if (v >= 10) pair(v);
-    else *--q = static_cast<char>('0' + v);
-  }
-  return q;
-}
-
-// Writes n = round(|value| * 10^Decimals) as "[-]int.frac" at `out` (kFastRoom bytes of room);
-// returns the end. Decimals is a template argument so that the divisions are multiplications;
-// the integer and fraction digits are two independent chains.
-template <int Decimals>
-char* writeScaled(std::uint64_t n, bool negative, char* out) {
-  constexpr std::uint64_t kScale = kPow10Int[Decimals];
-  char digits[2 * kFastRoom];  // written backwards to end at digits + kFastRoom
-  char* const end = digits + kFastRoom;
-  char* q = end;
-  if constexpr (Decimals > 0) {
-    q = digitsBackward<Decimals>(q, n % kScale);
-    *--q = '.';
-  }
-  q = digitsBackward<0>(q, n / kScale);
-  if (negative && n != 0) *--q = '-';  // "-0.000" is written "0.000"
-  std::memcpy(out, q, kFastRoom);     // fixed size: two vector moves; bytes past `end` unused
-  return out + (end - q);
-}
-
-// The fast path of fixed(value, decimals): its text at `out` (kFastRoom bytes of room), or
-// nullptr when it does not apply (decimals outside 0..9, |value| * 10^decimals >= 2^52, not
-// finite); the caller then uses fixed().
-char* writeFixedFast(double value, int decimals, char* out) {
-  std::uint64_t n = 0;
-  if (decimals < 0 || decimals > kFastMaxDecimals || !roundScaled(std::abs(value), decimals, n))
-    return nullptr;
-  const bool negative = std::signbit(value);
-  switch (decimals) {
-    case 0: return writeScaled<0>(n, negative, out);
-    case 1: return writeScaled<1>(n, negative, out);
-    case 2: return writeScaled<2>(n, negative, out);
-    case 3: return writeScaled<3>(n, negative, out);
-    case 4: return writeScaled<4>(n, negative, out);
-    case 5: return writeScaled<5>(n, negative, out);
-    case 6: return writeScaled<6>(n, negative, out);
-    case 7: return writeScaled<7>(n, negative, out);
-    case 8: return writeScaled<8>(n, negative, out);
-    default: return writeScaled<9>(n, negative, out);
-  }
-}
 
 // The text of one number kept for comparison (the last F and S sent), without allocation.
 // Anything longer than kCapacity cannot fit in a G-code line anyway; it is kept truncated with
@@ -148,11 +33,11 @@ struct NumberText {
     std::memcpy(text, s.data(), size);
   }
   void format(double value, int decimals) {
-    if (char* end = writeFixedFast(value, decimals, text)) {
+    if (char* end = writeFixedDecimal(value, decimals, text)) {
       size = static_cast<size_t>(end - text);
       overflow = false;
     } else {
-      assign(fixed(value, decimals));
+      assign(fixedDecimal(value, decimals));
     }
   }
   // Same text (an overflowed number never compares equal: its line throws before reuse). A plain
@@ -186,17 +71,17 @@ class Line {
     const char* end = std::to_chars(digits, digits + sizeof digits, value).ptr;
     return *this << std::string_view(digits, static_cast<size_t>(end - digits));
   }
-  // fixed(value, decimals), written in place when the fast path applies.
+  // fixedDecimal(value, decimals), written in place when the fast path applies.
   Line& number(double value, int decimals) {
-    if (kCapacity - size_ < kFastRoom) {  // the line is far too long already
+    if (kCapacity - size_ < kFixedDecimalRoom) {  // the line is far too long already
       overflow_ = true;
       return *this;
     }
-    if (char* end = writeFixedFast(value, decimals, buf_ + size_)) {
+    if (char* end = writeFixedDecimal(value, decimals, buf_ + size_)) {
       size_ = static_cast<size_t>(end - buf_);
       return *this;
     }
-    return *this << fixed(value, decimals);
+    return *this << fixedDecimal(value, decimals);
   }
   // Appends the line and its '\n' to `out`.
   void commitTo(std::string& out) {
@@ -213,8 +98,8 @@ class Line {
   }
 
  private:
-  static constexpr size_t kCapacity = 128;  // > 80 + '\n', and >= 40 + kFastRoom
-  char buf_[kCapacity + kFastRoom];
+  static constexpr size_t kCapacity = 128;  // > 80 + '\n', and >= 40 + kFixedDecimalRoom
+  char buf_[kCapacity + kFixedDecimalRoom];
   size_t size_ = 0;
   bool overflow_ = false;
 };
@@ -247,26 +132,26 @@ std::vector<Setting> settingsOf(const MachineProfile& p) {
   const bool limits = jointLimitsSet(p.limits);
   const double maxS = std::max({p.tool.penDownS, p.tool.penUpS, p.tool.laserPowerS, 1.0});
   std::vector<Setting> s = {
-      {11, fixed(m.junctionDeviationDeg, 4), "junction deviation, deg"},
+      {11, fixedDecimal(m.junctionDeviationDeg, 4), "junction deviation, deg"},
       {20, p.hasHomingSwitches && limits ? "1" : "0", "soft limits"},
       {21, "0", "hard limits"},
       {22, p.hasHomingSwitches ? "1" : "0", "homing cycle"},
-      {30, fixed(maxS, 0), "max S"},
+      {30, fixedDecimal(maxS, 0), "max S"},
       {31, "0", "min S"},
       {32, laser ? "1" : "0", "laser mode"},
-      {100, fixed(m.stepsPerDeg1, 4), "motor 1 steps/deg"},
-      {101, fixed(m.stepsPerDeg2, 4), "motor 2 steps/deg"},
-      {110, fixed(degFromRad(m.maxSpeedRadPerS1) * 60.0, 1), "motor 1 max rate, deg/min"},
-      {111, fixed(degFromRad(m.maxSpeedRadPerS2) * 60.0, 1), "motor 2 max rate, deg/min"},
-      {120, fixed(degFromRad(m.maxAccelRadPerS2_1), 1), "motor 1 acceleration, deg/s^2"},
-      {121, fixed(degFromRad(m.maxAccelRadPerS2_2), 1), "motor 2 acceleration, deg/s^2"},
+      {100, fixedDecimal(m.stepsPerDeg1, 4), "motor 1 steps/deg"},
+      {101, fixedDecimal(m.stepsPerDeg2, 4), "motor 2 steps/deg"},
+      {110, fixedDecimal(degFromRad(m.maxSpeedRadPerS1) * 60.0, 1), "motor 1 max rate, deg/min"},
+      {111, fixedDecimal(degFromRad(m.maxSpeedRadPerS2) * 60.0, 1), "motor 2 max rate, deg/min"},
+      {120, fixedDecimal(degFromRad(m.maxAccelRadPerS2_1), 1), "motor 1 acceleration, deg/s^2"},
+      {121, fixedDecimal(degFromRad(m.maxAccelRadPerS2_2), 1), "motor 2 acceleration, deg/s^2"},
   };
   if (p.tool.kind == ToolKind::ZAxis)
-    s.push_back({112, fixed(p.tool.zFeedMmPerMin, 1), "Z max rate, mm/min"});
+    s.push_back({112, fixedDecimal(p.tool.zFeedMmPerMin, 1), "Z max rate, mm/min"});
   if (limits) {
-    s.push_back({130, fixed(degFromRad(p.limits.theta1Max - p.limits.theta1Min), 3),
+    s.push_back({130, fixedDecimal(degFromRad(p.limits.theta1Max - p.limits.theta1Min), 3),
                  "motor 1 travel, deg"});
-    s.push_back({131, fixed(degFromRad(p.limits.theta2Max - p.limits.theta2Min), 3),
+    s.push_back({131, fixedDecimal(degFromRad(p.limits.theta2Max - p.limits.theta2Min), 3),
                  "motor 2 travel, deg"});
   }
   std::sort(s.begin(), s.end(), [](const Setting& a, const Setting& b) { return a.number < b.number; });
@@ -297,9 +182,9 @@ class Writer {
     comment("profile: " + job_.profileName);
     comment("working mode " + std::string(toString(job_.mode)) + ", assembly " +
             std::string(toString(job_.assembly)));
-    comment("start pose X" + fixed(degFromRad(job_.start.theta1), o_.angleDecimals) + " Y" +
-            fixed(degFromRad(job_.start.theta2), o_.angleDecimals));
-    comment("estimated time " + fixed(job_.summary.estimatedTimeS, 1) + " s, " +
+    comment("start pose X" + fixedDecimal(degFromRad(job_.start.theta1), o_.angleDecimals) + " Y" +
+            fixedDecimal(degFromRad(job_.start.theta2), o_.angleDecimals));
+    comment("estimated time " + fixedDecimal(job_.summary.estimatedTimeS, 1) + " s, " +
             std::to_string(job_.summary.segments) + " drawing segments");
     comment("expects these GRBL settings:");
     for (const Setting& s : settingsOf(p_)) comment(settingText(s) + " (" + s.meaning + ")");
