@@ -1462,8 +1462,8 @@
         <translation>%1 von %2</translation>
     </message>
     <message>
-        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Motor angles:&lt;/td&gt;&lt;td&gt;%1 deg, %2 deg&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen:&lt;/td&gt;&lt;td&gt;x %3 mm, y %4 mm (%5)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Transmission angles:&lt;/td&gt;&lt;td&gt;%6 deg at the pen, %7 / %8 deg at the elbows&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Type II margin:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%9 deg&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
-        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Motorwinkel:&lt;/td&gt;&lt;td&gt;%1 Grad, %2 Grad&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Stift:&lt;/td&gt;&lt;td&gt;x %3 mm, y %4 mm (%5)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Übertragungswinkel:&lt;/td&gt;&lt;td&gt;%6 Grad am Stift, %7 / %8 Grad an den Ellbogen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Abstand Typ II:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%9 Grad&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Motor angles:&lt;/td&gt;&lt;td&gt;%1 deg, %2 deg&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen:&lt;/td&gt;&lt;td&gt;x %3 mm, y %4 mm (%5)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Transmission angle:&lt;/td&gt;&lt;td&gt;%6 deg at the pen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%7 / %8 deg at the elbows&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Type II margin:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%9 deg&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Motorwinkel:&lt;/td&gt;&lt;td&gt;%1 Grad, %2 Grad&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Stift:&lt;/td&gt;&lt;td&gt;x %3 mm, y %4 mm (%5)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Übertragungswinkel:&lt;/td&gt;&lt;td&gt;%6 Grad am Stift&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%7 / %8 Grad an den Ellbogen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Abstand Typ II:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%9 Grad&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>
     <message>
         <source>down</source>

@@ -105,7 +105,8 @@ void SimulationPanel::showTime() {
       tr("<table>"
          "<tr><td>Motor angles:</td><td>%1 deg, %2 deg</td></tr>"
          "<tr><td>Pen:</td><td>x %3 mm, y %4 mm (%5)</td></tr>"
-         "<tr><td>Transmission angles:</td><td>%6 deg at the pen, %7 / %8 deg at the elbows</td></tr>"
+         "<tr><td>Transmission angle:</td><td>%6 deg at the pen</td></tr>"
+         "<tr><td></td><td>%7 / %8 deg at the elbows</td></tr>"
          "<tr><td>Type II margin:</td><td><b>%9 deg</b></td></tr></table>")
           .arg(degFromRad(s.q.theta1), 0, 'f', 2)
           .arg(degFromRad(s.q.theta2), 0, 'f', 2)

@@ -15,6 +15,7 @@
 #include <QToolBar>
 #include <QUndoStack>
 
+#include "core/kinematics.hpp"
 #include "widgets/canvas_view.hpp"
 #include "widgets/import_controller.hpp"
 #include "widgets/job_layer.hpp"
@@ -250,9 +251,21 @@ void MainWindow::fitView() {
     if (const auto corners = placementTool_->cornersMm()) {
       QRectF r;
       for (const QPointF& c : *corners) r = r.isNull() ? QRectF(c, QSizeF(1e-6, 1e-6)) : r.united(QRectF(c, QSizeF(1e-6, 1e-6)));
-      // Keep the motors in view too, so the drawing is seen in relation to the machine.
+      // Keep the motors in view too, so the drawing is seen in relation to the machine, and the
+      // elbows wherever the pen reaches the drawing's corners and edge midpoints.
       const Geometry& g = doc_->profile().geometry;
       r = r.united(QRectF(QPointF(-g.w / 2.0 - 20.0, -20.0), QPointF(g.w / 2.0 + 20.0, 0.0)));
+      const QRectF drawing = r;
+      for (const QPointF& c : {drawing.topLeft(), drawing.topRight(), drawing.bottomLeft(),
+                               drawing.bottomRight(), QPointF(drawing.center().x(), drawing.top()),
+                               QPointF(drawing.center().x(), drawing.bottom()),
+                               QPointF(drawing.left(), drawing.center().y()),
+                               QPointF(drawing.right(), drawing.center().y())}) {
+        const IkResult ik = inverse(g, Vec2(c.x(), c.y()), doc_->effectiveMode());
+        if (!ik.ok()) continue;
+        for (const Vec2& e : {elbow1(g, ik.angles.theta1), elbow2(g, ik.angles.theta2)})
+          r = r.united(QRectF(QPointF(e.x() - 8.0, e.y() - 8.0), QSizeF(16.0, 16.0)));
+      }
       canvas_->fitRect(r.adjusted(-15.0, -15.0, 15.0, 15.0));
       return;
     }
