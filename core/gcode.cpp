@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <future>
 #include <stdexcept>
 #include <string_view>
 
@@ -362,23 +363,31 @@ std::string writeGcode(const PlannedJob& job, const MachineProfile& profile,
 void writeGcode(const PlannedJob& job, const MachineProfile& profile,
                 const std::function<void(std::string_view)>& sink, const GcodeOptions& options) {
   // Blocks of moves, written two at a time (each picking up the state the moves before it
-  // leave), handed to the sink in order: the same text as the one-string writer.
+  // leave) while the calling thread hands the previous two to the sink, in order: the same text
+  // as the one-string writer.
   const size_t n = job.moves.size();
   const size_t blocks = std::max<size_t>(1, (n + kMovesPerPiece - 1) / kMovesPerPiece);
-  std::string texts[2];
-  for (size_t first = 0; first < blocks; first += 2) {
+  const int threads = n >= kMinMovesToSplit ? planningThreads() : 1;
+  std::string texts[2][2];  // two pairs: one being written, one being handed over
+  auto writePair = [&](size_t first, std::string* out) {
     const size_t count = std::min<size_t>(2, blocks - first);
-    parallelFor(count, n >= kMinMovesToSplit ? planningThreads() : 1, [&](size_t k) {
+    parallelFor(count, threads, [&](size_t k) {
       const size_t b = first + k, begin = n * b / blocks, end = n * (b + 1) / blocks;
-      std::string& out = texts[k];
-      out.clear();
-      Writer w(job, profile, options, out);
+      out[k].clear();
+      Writer w(job, profile, options, out[k]);
       if (b == 0) w.header();
       else w.resumeAt(begin);
       w.moves(begin, end);
       if (b + 1 == blocks) w.trailer();
     });
-    for (size_t k = 0; k < count; ++k) sink(texts[k]);
+  };
+  writePair(0, texts[0]);
+  for (size_t first = 0, pair = 0; first < blocks; first += 2, pair ^= 1) {
+    std::future<void> next;
+    if (first + 2 < blocks)
+      next = std::async(std::launch::async, writePair, first + 2, texts[pair ^ 1]);
+    for (size_t k = 0; k < std::min<size_t>(2, blocks - first); ++k) sink(texts[pair][k]);
+    if (next.valid()) next.get();
   }
 }
 
