@@ -300,6 +300,7 @@ PlanResult planJob(const Drawing& drawing, const MachineProfile& profile,
   for (const ModeOption* m : order) {
     if (best && *m->marginBound <= best->job.summary.minTypeIIMarginRad) break;
     PlanResult r = planInMode(drawing, profile, options, *m, out.timings);
+    if (r.status == PlanStatus::BadOptions) return r;  // the options, not the drawing: say so
     if (r.ok() && (!best || r.job.summary.minTypeIIMarginRad > best->job.summary.minTypeIIMarginRad))
       best = std::move(r);
     else if (!r.ok() && !firstFailure)

@@ -300,6 +300,12 @@ class Segmenter {
       const MoveEval e2 = tryAt(t2, q2);
       if (e2.deviationMm <= budget) t = t2, e = e2, q = q2;
     }
+    if (t >= 1.0) {  // the rest of the segment fits: the waypoint is vertex i+1 itself
+      push(q, ikTrig(g_, mode_, b), b, e, length);
+      ++i_;
+      hintMm_ = kInfinity;
+      return true;
+    }
     push(q, ikTrig(g_, mode_, a + t * (b - a)), a + t * (b - a), e, t * length);
     // The next piece is predicted to use kSplitTarget of the budget too.
     hintMm_ = t * length * growth(e.deviationMm, 0.5, 1.5);

@@ -241,6 +241,29 @@ TEST_F(PlannerTest, LargestPlacementScaleIsTheScaleThePlanUses) {
   EXPECT_DOUBLE_EQ(*largestPlacementScale(d, p, o), 0.5);
 }
 
+TEST_F(PlannerTest, AFittedDiagonalLinePlans) {
+  // One straight line corner to corner, fitted: split into pieces up to its very end.
+  Drawing d;
+  d.source = "line.svg";
+  d.layers.resize(1);
+  d.layers[0].paths.push_back({{Vec2(10, 90), Vec2(90, 10)}, false});
+  for (const double tolerance : {0.1, 0.02}) {
+    PlanOptions o;
+    o.toleranceMm = tolerance;
+    o.flatteningToleranceMm = 0.0;
+    const PlanResult r = planJob(d, p, o);
+    ASSERT_TRUE(r.ok()) << r.message;
+    EXPECT_LE(r.report.maxDeviationMm, tolerance);
+  }
+  // A tolerance below the G-code rounding is the options' fault, fitted or not.
+  PlanOptions tiny;
+  tiny.toleranceMm = 0.0001;
+  tiny.flatteningToleranceMm = 0.0;
+  const PlanResult r = planJob(d, p, tiny);
+  EXPECT_EQ(r.status, PlanStatus::BadOptions);
+  EXPECT_NE(r.message.find("tolerance"), std::string::npos) << r.message;
+}
+
 TEST_F(PlannerTest, InfeasibleJobNamesThePathAndTheReason) {
   Drawing d;
   d.layers.resize(1);
