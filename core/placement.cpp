@@ -48,17 +48,24 @@ std::optional<RectMm> strokeBounds(const std::vector<Stroke>& strokes) {
   return box;
 }
 
-Eigen::Affine2d machineFromWork(const Drawing& drawing, const Placement& placement) {
-  const auto box = drawingBounds(drawing);
-  const Vec2 workCenter = box ? box->center() : Vec2::Zero();
+Eigen::Affine2d machineFromWork(const std::optional<RectMm>& workBounds,
+                                const Placement& placement) {
+  const Vec2 workCenter = workBounds ? workBounds->center() : Vec2::Zero();
   Eigen::Affine2d t = Eigen::Affine2d::Identity();
   t.linear() = linearPart(placement);
   t.translation() = placement.centerMm - t.linear() * workCenter;
   return t;
 }
 
+Eigen::Affine2d machineFromWork(const Drawing& drawing, const Placement& placement) {
+  return machineFromWork(drawingBounds(drawing), placement);
+}
+
 std::vector<Stroke> placeDrawing(const Drawing& drawing, const Placement& placement) {
-  const Eigen::Affine2d machineFromWorkT = machineFromWork(drawing, placement);
+  return placeDrawing(drawing, machineFromWork(drawing, placement));
+}
+
+std::vector<Stroke> placeDrawing(const Drawing& drawing, const Eigen::Affine2d& machineFromWorkT) {
   std::vector<std::pair<int, int>> index;  // layer and path of each stroke, in order
   for (std::size_t li = 0; li < drawing.layers.size(); ++li) {
     const Layer& layer = drawing.layers[li];
@@ -83,7 +90,11 @@ std::vector<Stroke> placeDrawing(const Drawing& drawing, const Placement& placem
 
 std::optional<Placement> fitPlacement(const Drawing& drawing, const RectMm& rect, bool keepAspect,
                                       double marginMm, double rotationRad) {
-  const auto box = drawingBounds(drawing);
+  return fitPlacement(drawingBounds(drawing), rect, keepAspect, marginMm, rotationRad);
+}
+
+std::optional<Placement> fitPlacement(const std::optional<RectMm>& box, const RectMm& rect,
+                                      bool keepAspect, double marginMm, double rotationRad) {
   const double availW = rect.width() - 2.0 * marginMm, availH = rect.height() - 2.0 * marginMm;
   if (!box || !(availW > 0.0) || !(availH > 0.0)) return std::nullopt;
   // Extent of the rotated (unscaled) drawing about its bbox centre, split by work axis so that
@@ -117,7 +128,7 @@ std::optional<Placement> fitPlacement(const Drawing& drawing, const RectMm& rect
       return pl;
     }
   }
-  return fitPlacement(drawing, rect, true, marginMm, rotationRad);
+  return fitPlacement(box, rect, true, marginMm, rotationRad);
 }
 
 }  // namespace fivebar

@@ -46,17 +46,24 @@ std::optional<RectMm> strokeBounds(const std::vector<Stroke>& strokes);
 // machine = centerMm + Rot(rotationRad) * diag(scale, scale * stretchY) * (work - workCenter),
 // with workCenter the centre of drawingBounds (origin when the drawing is empty).
 Eigen::Affine2d machineFromWork(const Drawing& drawing, const Placement& placement);
+// The same from the drawing's bounds (drawingBounds), for callers that place one drawing often.
+Eigen::Affine2d machineFromWork(const std::optional<RectMm>& workBounds, const Placement& placement);
 
 // The visible layers' polylines mapped into the machine frame, in layer order then path order.
 // Closed polylines get their first point appended so the stroke closes; polylines with no point
 // are skipped. layerIndex/pathIndex index the Drawing; reversed is false.
 std::vector<Stroke> placeDrawing(const Drawing& drawing, const Placement& placement);
+std::vector<Stroke> placeDrawing(const Drawing& drawing, const Eigen::Affine2d& machineFromWorkT);
 
 // The placement that fits the drawing (visible layers) into `rect` (machine frame) with
 // `marginMm` kept free on every side, centred in it, at the given rotation. keepAspect = false
 // stretches y independently (stretchY != 1). nullopt when the drawing has no extent or the
 // rectangle minus margins is empty.
 std::optional<Placement> fitPlacement(const Drawing& drawing, const RectMm& rect,
+                                      bool keepAspect = true, double marginMm = 0.0,
+                                      double rotationRad = 0.0);
+// The same from the drawing's bounds (drawingBounds).
+std::optional<Placement> fitPlacement(const std::optional<RectMm>& workBounds, const RectMm& rect,
                                       bool keepAspect = true, double marginMm = 0.0,
                                       double rotationRad = 0.0);
 

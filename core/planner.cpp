@@ -116,7 +116,7 @@ std::optional<Rect> safeRectangle(const MachineProfile& p, WorkingMode mode, dou
 }
 
 // The drawing fitted into the mode's largest singularity-free rectangle.
-std::optional<Placement> fittedPlacement(const Drawing& d, const MachineProfile& p,
+std::optional<Placement> fittedPlacement(const std::optional<RectMm>& bounds, const MachineProfile& p,
                                          WorkingMode mode, const PlanOptions& o,
                                          const std::optional<RectMm>& rotated) {
   const double aspect =
@@ -124,7 +124,7 @@ std::optional<Placement> fittedPlacement(const Drawing& d, const MachineProfile&
           ? rotated->width() / rotated->height() : 0.0;
   const auto rect = safeRectangle(p, mode, aspect);
   if (!rect) return std::nullopt;
-  return fitPlacement(d, RectMm{rect->xMin, rect->yMin, rect->xMax, rect->yMax}, true,
+  return fitPlacement(bounds, RectMm{rect->xMin, rect->yMin, rect->xMax, rect->yMax}, true,
                       o.fitMarginMm, o.rotationRad);
 }
 
@@ -175,9 +175,10 @@ double signedSinTypeII(const Geometry& g, const JointAngles& q, const Vec2& p, A
 }
 
 // Upper bound of the margin any plan in `mode` can have (see ModeOption::marginBound).
-std::optional<double> screenMargin(const Drawing& d, const Placement& placement,
+std::optional<double> screenMargin(const Drawing& d, const std::optional<RectMm>& bounds,
+                                   const Placement& placement,
                                    const MachineProfile& p, WorkingMode mode) {
-  const Eigen::Affine2d machineFromWorkT = machineFromWork(d, placement);
+  const Eigen::Affine2d machineFromWorkT = machineFromWork(bounds, placement);
   std::size_t total = 0;
   for (const Layer& l : d.layers)
     if (l.visible)
@@ -202,10 +203,11 @@ std::optional<double> screenMargin(const Drawing& d, const Placement& placement,
 }
 
 // The whole plan in one working mode: placed strokes, optimised, segmented and checked.
-PlanResult planInMode(const Drawing& drawing, const MachineProfile& profile,
+PlanResult planInMode(const Drawing& drawing, const std::optional<RectMm>& bounds,
+                      const MachineProfile& profile,
                       const PlanOptions& options, const ModeOption& m, StageTimes& times) {
   StageClock clock(times);
-  std::vector<Stroke> strokes = placeDrawing(drawing, m.placement);
+  std::vector<Stroke> strokes = placeDrawing(drawing, machineFromWork(bounds, m.placement));
   clock.lap("placement");
   if (options.optimise) {
     OptimiseOptions oo;
@@ -228,7 +230,8 @@ PlanResult planInMode(const Drawing& drawing, const MachineProfile& profile,
 }
 
 // Preflight of every mode that has a placement, for the report of a job no mode can plan.
-std::vector<Candidate> preflightAll(const Drawing& drawing, const MachineProfile& profile,
+std::vector<Candidate> preflightAll(const Drawing& drawing, const std::optional<RectMm>& bounds,
+                                    const MachineProfile& profile,
                                     const std::vector<ModeOption>& modes) {
   std::vector<Candidate> cands(modes.size());
   for (std::size_t i = 0; i < modes.size(); ++i) {
@@ -238,7 +241,8 @@ std::vector<Candidate> preflightAll(const Drawing& drawing, const MachineProfile
     PreflightOptions pf;
     pf.maxListedProblems = 20;
     pf.anchorMm = c.placement.centerMm;
-    c.report = preflight(placeDrawing(drawing, c.placement), profile, c.mode, pf);
+    c.report = preflight(placeDrawing(drawing, machineFromWork(bounds, c.placement)), profile,
+                         c.mode, pf);
   }
   return cands;
 }
@@ -253,7 +257,8 @@ PlanResult planJob(const Drawing& drawing, const MachineProfile& profile,
     out.message = "scale must be a positive number";
     return out;
   }
-  if (!drawingBounds(drawing)) {
+  const std::optional<RectMm> bounds = drawingBounds(drawing);  // one pass over the points
+  if (!bounds) {
     out.status = PlanStatus::EmptyDrawing;
     out.message = "nothing visible to draw in '" + drawing.source + "'";
     return out;
@@ -270,13 +275,13 @@ PlanResult planJob(const Drawing& drawing, const MachineProfile& profile,
     ModeOption m;
     m.mode = modes[i];
     if (fit) {
-      const auto placed = fittedPlacement(drawing, profile, m.mode, options, rotated);
+      const auto placed = fittedPlacement(bounds, profile, m.mode, options, rotated);
       if (!placed) return;
       m.placement = *placed;
     } else {
       m.placement = Placement{*options.atMm, options.rotationRad, options.scale};
     }
-    m.marginBound = screenMargin(drawing, m.placement, profile, m.mode);
+    m.marginBound = screenMargin(drawing, bounds, m.placement, profile, m.mode);
     slots[i] = m;
   });
   std::vector<ModeOption> candidates;
@@ -299,7 +304,7 @@ PlanResult planJob(const Drawing& drawing, const MachineProfile& profile,
   std::optional<PlanResult> firstFailure;
   for (const ModeOption* m : order) {
     if (best && *m->marginBound <= best->job.summary.minTypeIIMarginRad) break;
-    PlanResult r = planInMode(drawing, profile, options, *m, out.timings);
+    PlanResult r = planInMode(drawing, bounds, profile, options, *m, out.timings);
     if (r.status == PlanStatus::BadOptions) return r;  // the options, not the drawing: say so
     if (r.ok() && (!best || r.job.summary.minTypeIIMarginRad > best->job.summary.minTypeIIMarginRad))
       best = std::move(r);
@@ -311,7 +316,7 @@ PlanResult planJob(const Drawing& drawing, const MachineProfile& profile,
     return std::move(*best);
   }
   // No mode plans: the preflight of every mode explains what to change.
-  std::vector<Candidate> cands = preflightAll(drawing, profile, candidates);
+  std::vector<Candidate> cands = preflightAll(drawing, bounds, profile, candidates);
   clock.lap("preflight for the report");
   const bool anyFeasible = std::any_of(cands.begin(), cands.end(),
                                        [](const Candidate& c) { return c.report.feasible; });
@@ -325,14 +330,15 @@ PlanResult planJob(const Drawing& drawing, const MachineProfile& profile,
 
 std::optional<double> largestPlacementScale(const Drawing& drawing, const MachineProfile& profile,
                                             const PlanOptions& options) {
-  if (!drawingBounds(drawing)) return std::nullopt;
+  const std::optional<RectMm> bounds = drawingBounds(drawing);
+  if (!bounds) return std::nullopt;
   if (options.atMm && !options.fit) return options.scale;
   std::vector<WorkingMode> modes(kAllWorkingModes.begin(), kAllWorkingModes.end());
   if (options.mode) modes = {*options.mode};
   const auto rotated = rotatedBounds(drawing, options.rotationRad);
   std::vector<double> scales(modes.size(), 0.0);
   parallelFor(modes.size(), planningThreads(), [&](std::size_t i) {
-    if (const auto placed = fittedPlacement(drawing, profile, modes[i], options, rotated))
+    if (const auto placed = fittedPlacement(bounds, profile, modes[i], options, rotated))
       scales[i] = placed->scale;
   });
   const double largest = *std::max_element(scales.begin(), scales.end());

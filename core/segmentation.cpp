@@ -98,27 +98,6 @@ bool solveAll(const Geometry& g, WorkingMode mode, const std::vector<Vec2>& pts,
   return true;
 }
 
-// cos and sin of the motor angle that inverse kinematics gives for point p (c = p - motor), from
-// the same geometry without a trigonometric call: theta = chord + sign * alpha, with cos alpha
-// from the law of cosines (kinematics.cpp, inverseArm1/2). The batch angles differ from these by
-// at most kBatchAngleToleranceRad (a few 1e-5 mm at the pen).
-void armTrig(double a, double b, const Vec2& c, double sign, double& cosT, double& sinT) {
-  const double d = std::max(c.norm(), 1e-12);
-  const double ca = std::clamp((a * a + d * d - b * b) / (2.0 * a * d), -1.0, 1.0);
-  const double sa = std::sqrt(std::max(0.0, 1.0 - ca * ca));
-  const double cc = c.x() / d, sc = c.y() / d;
-  cosT = cc * ca - sign * sc * sa;
-  sinT = sc * ca + sign * cc * sa;
-}
-
-MotorTrig ikTrig(const Geometry& g, WorkingMode mode, const Vec2& p) {
-  MotorTrig t;
-  // '+' puts R1 counter-clockwise of the chord M1->P, R2 clockwise of M2->P.
-  armTrig(g.a1, g.b1, p - g.motor1(), arm1Sign(mode) == ArmSign::Plus ? 1.0 : -1.0, t.c1, t.s1);
-  armTrig(g.a2, g.b2, p - g.motor2(), arm2Sign(mode) == ArmSign::Plus ? -1.0 : 1.0, t.c2, t.s2);
-  return t;
-}
-
 struct MoveEval {
   double deviationMm = kInfinity;
   double peakSpeedMmPerUnit = 0.0;
@@ -191,6 +170,11 @@ class Segmenter {
 
  private:
   const MotorTrig& trigAt(size_t j) const { return trig_[j]; }
+  MotorTrig trigOf(const Vec2& p) const {
+    MotorTrig t;
+    motorTrigOfPoints(g_, mode_, &p, 1, &t);
+    return t;
+  }
 
   MoveEval evalTo(size_t j) {
     chain_.assign(1, cur_);
@@ -301,12 +285,12 @@ class Segmenter {
       if (e2.deviationMm <= budget) t = t2, e = e2, q = q2;
     }
     if (t >= 1.0) {  // the rest of the segment fits: the waypoint is vertex i+1 itself
-      push(q, ikTrig(g_, mode_, b), b, e, length);
+      push(q, trigOf(b), b, e, length);
       ++i_;
       hintMm_ = kInfinity;
       return true;
     }
-    push(q, ikTrig(g_, mode_, a + t * (b - a)), a + t * (b - a), e, t * length);
+    push(q, trigOf(a + t * (b - a)), a + t * (b - a), e, t * length);
     // The next piece is predicted to use kSplitTarget of the budget too.
     hintMm_ = t * length * growth(e.deviationMm, 0.5, 1.5);
     return true;
