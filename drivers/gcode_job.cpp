@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/units.hpp"
+#include "core/kinematics/units.hpp"
 #include "gcode_words.hpp"
 #include "grbl_protocol.hpp"
 

@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/profile.hpp"
+#include "core/machine/profile.hpp"
 
 namespace fivebar::job {
 

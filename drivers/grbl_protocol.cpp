@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
-#include "core/units.hpp"
+#include "core/kinematics/units.hpp"
 
 namespace fivebar::grbl {
 namespace {

@@ -21,7 +21,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/kinematics.hpp"
+#include "core/kinematics/kinematics.hpp"
 #include "grbl_parser.hpp"
 
 namespace fivebar::grbl {

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/safety.hpp"
-#include "core/units.hpp"
+#include "core/planning/safety.hpp"
+#include "core/kinematics/units.hpp"
 
 namespace fivebar::jog {
 namespace {

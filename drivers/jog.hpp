@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "core/kinematics.hpp"
-#include "core/profile.hpp"
+#include "core/kinematics/kinematics.hpp"
+#include "core/machine/profile.hpp"
 #include "gcode_job.hpp"
 
 namespace fivebar::jog {

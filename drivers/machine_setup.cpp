@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/gcode.hpp"
+#include "core/output/gcode.hpp"
 #include "grbl_codes.hpp"
 
 namespace fivebar::setup {

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "core/profile.hpp"
+#include "core/machine/profile.hpp"
 #include "grbl_protocol.hpp"
 
 namespace fivebar::setup {

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "core/safety.hpp"
-#include "core/units.hpp"
+#include "core/planning/safety.hpp"
+#include "core/kinematics/units.hpp"
 
 namespace fivebar::job {
 namespace {

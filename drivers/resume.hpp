@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/profile.hpp"
+#include "core/machine/profile.hpp"
 #include "gcode_job.hpp"
 
 namespace fivebar::job {

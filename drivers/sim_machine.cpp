@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/units.hpp"
+#include "core/kinematics/units.hpp"
 #include "gcode_job.hpp"
 #include "grbl_protocol.hpp"
 

@@ -14,7 +14,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/profile.hpp"
+#include "core/machine/profile.hpp"
 #include "gcode_words.hpp"
 #include "grbl_parser.hpp"
 #include "sim_planner.hpp"

@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "core/profile.hpp"
+#include "core/machine/profile.hpp"
 #include "gcode_job.hpp"
 #include "job_progress.hpp"
 #include "job_runner.hpp"

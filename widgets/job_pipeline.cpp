@@ -4,7 +4,7 @@
 #include <set>
 #include <utility>
 
-#include "core/optimise.hpp"
+#include "core/planning/optimise.hpp"
 
 namespace fivebar::widgets {
 namespace {

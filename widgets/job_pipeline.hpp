@@ -10,11 +10,11 @@
 #include <optional>
 #include <vector>
 
-#include "core/drawing.hpp"
-#include "core/placement.hpp"
-#include "core/planner.hpp"
-#include "core/profile.hpp"
-#include "core/trajectory.hpp"
+#include "core/planning/drawing.hpp"
+#include "core/planning/placement.hpp"
+#include "core/planning/planner.hpp"
+#include "core/machine/profile.hpp"
+#include "core/planning/trajectory.hpp"
 #include "widgets/job_preflight.hpp"
 #include "widgets/path_scene.hpp"
 #include "widgets/studio_document.hpp"

@@ -3,7 +3,7 @@
 #include <QCoreApplication>
 #include <algorithm>
 
-#include "core/feasibility.hpp"
+#include "core/planning/feasibility.hpp"
 #include "widgets/job_preflight.hpp"
 
 namespace fivebar::widgets {

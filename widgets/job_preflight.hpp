@@ -8,9 +8,9 @@
 #include <optional>
 #include <vector>
 
-#include "core/drawing.hpp"
-#include "core/profile.hpp"
-#include "core/strokes.hpp"
+#include "core/planning/drawing.hpp"
+#include "core/machine/profile.hpp"
+#include "core/planning/strokes.hpp"
 #include "widgets/studio_document.hpp"
 
 namespace fivebar::widgets {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/units.hpp"
+#include "core/kinematics/units.hpp"
 
 namespace fivebar::widgets {
 

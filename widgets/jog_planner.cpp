@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "core/units.hpp"
+#include "core/kinematics/units.hpp"
 #include "drivers/jog.hpp"
 
 namespace fivebar::widgets {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "core/kinematics.hpp"
-#include "core/profile.hpp"
+#include "core/kinematics/kinematics.hpp"
+#include "core/machine/profile.hpp"
 
 namespace fivebar::widgets {
 

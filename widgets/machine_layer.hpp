@@ -7,7 +7,7 @@
 #include <QObject>
 #include <optional>
 
-#include "core/kinematics.hpp"
+#include "core/kinematics/kinematics.hpp"
 #include "widgets/canvas_layer.hpp"
 #include "widgets/simulation_controller.hpp"
 #include "widgets/studio_document.hpp"

@@ -5,7 +5,7 @@
 
 #include <QPainter>
 
-#include "core/kinematics.hpp"
+#include "core/kinematics/kinematics.hpp"
 #include "widgets/view_transform.hpp"
 
 namespace fivebar::widgets {

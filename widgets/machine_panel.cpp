@@ -10,7 +10,7 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
-#include "core/units.hpp"
+#include "core/kinematics/units.hpp"
 #include "drivers/serial_transport.hpp"
 #include "widgets/machine_banner.hpp"
 

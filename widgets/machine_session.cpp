@@ -2,7 +2,7 @@
 
 #include <QTimer>
 
-#include "core/units.hpp"
+#include "core/kinematics/units.hpp"
 #include "drivers/gcode_job.hpp"
 #include "drivers/grbl_codes.hpp"
 #include "drivers/jog.hpp"

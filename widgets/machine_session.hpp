@@ -11,7 +11,7 @@
 #include <optional>
 #include <set>
 
-#include "core/kinematics.hpp"
+#include "core/kinematics/kinematics.hpp"
 #include "drivers/grbl_protocol.hpp"
 #include "drivers/machine_link.hpp"
 #include "drivers/sim_machine.hpp"

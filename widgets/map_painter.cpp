@@ -8,7 +8,7 @@
 #include <limits>
 #include <vector>
 
-#include "core/units.hpp"
+#include "core/kinematics/units.hpp"
 #include "widgets/studio_palette.hpp"
 
 namespace fivebar::widgets {

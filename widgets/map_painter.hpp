@@ -7,7 +7,7 @@
 #include <QPainter>
 #include <QString>
 
-#include "core/workspace.hpp"
+#include "core/workspace/workspace.hpp"
 
 namespace fivebar::widgets {
 

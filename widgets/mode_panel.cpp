@@ -11,7 +11,7 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
-#include "core/units.hpp"
+#include "core/kinematics/units.hpp"
 #include "widgets/preview_controller.hpp"
 #include "widgets/studio_document.hpp"
 #include "widgets/workspace_layer.hpp"

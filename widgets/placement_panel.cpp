@@ -6,7 +6,7 @@
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 
-#include "core/units.hpp"
+#include "core/kinematics/units.hpp"
 #include "widgets/import_controller.hpp"
 #include "widgets/studio_document.hpp"
 #include "widgets/workspace_cache.hpp"

@@ -5,7 +5,7 @@
 #include <QPolygonF>
 #include <cmath>
 
-#include "core/units.hpp"
+#include "core/kinematics/units.hpp"
 #include "widgets/studio_palette.hpp"
 
 namespace fivebar::widgets {

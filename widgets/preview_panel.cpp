@@ -12,7 +12,7 @@
 #include <QVBoxLayout>
 #include <cmath>
 
-#include "core/units.hpp"
+#include "core/kinematics/units.hpp"
 #include "widgets/job_layer.hpp"
 #include "widgets/path_scene.hpp"
 #include "widgets/preview_controller.hpp"

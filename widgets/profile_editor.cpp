@@ -15,8 +15,8 @@
 #include <QVBoxLayout>
 #include <cmath>
 
-#include "core/profile.hpp"
-#include "core/units.hpp"
+#include "core/machine/profile.hpp"
+#include "core/kinematics/units.hpp"
 
 namespace fivebar::widgets {
 namespace {

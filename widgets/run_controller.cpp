@@ -6,7 +6,7 @@
 #include <QSaveFile>
 #include <QStandardPaths>
 
-#include "core/gcode.hpp"
+#include "core/output/gcode.hpp"
 
 namespace fivebar::widgets {
 namespace {

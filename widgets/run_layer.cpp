@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "core/units.hpp"
+#include "core/kinematics/units.hpp"
 
 namespace fivebar::widgets {
 

@@ -8,7 +8,7 @@
 #include <QTimer>
 #include <memory>
 
-#include "core/trajectory.hpp"
+#include "core/planning/trajectory.hpp"
 
 namespace fivebar::widgets {
 

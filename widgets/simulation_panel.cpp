@@ -10,8 +10,8 @@
 #include <QVBoxLayout>
 #include <cmath>
 
-#include "core/singularity.hpp"
-#include "core/units.hpp"
+#include "core/kinematics/singularity.hpp"
+#include "core/kinematics/units.hpp"
 #include "widgets/preview_panel.hpp"
 #include "widgets/simulation_controller.hpp"
 #include "widgets/studio_document.hpp"

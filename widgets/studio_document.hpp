@@ -9,10 +9,10 @@
 #include <QUndoStack>
 #include <optional>
 
-#include "core/drawing.hpp"
-#include "core/modes.hpp"
-#include "core/placement.hpp"
-#include "core/profile.hpp"
+#include "core/planning/drawing.hpp"
+#include "core/kinematics/modes.hpp"
+#include "core/planning/placement.hpp"
+#include "core/machine/profile.hpp"
 
 namespace fivebar::widgets {
 

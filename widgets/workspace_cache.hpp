@@ -9,7 +9,7 @@
 #include <memory>
 #include <optional>
 
-#include "core/workspace.hpp"
+#include "core/workspace/workspace.hpp"
 #include "widgets/studio_document.hpp"
 
 namespace fivebar::widgets {

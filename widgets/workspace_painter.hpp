@@ -7,7 +7,7 @@
 #include <QPointF>
 #include <QTransform>
 
-#include "core/workspace.hpp"
+#include "core/workspace/workspace.hpp"
 
 namespace fivebar::widgets {
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "commands.hpp"
-#include "core/kinematics.hpp"
+#include "core/kinematics/kinematics.hpp"
 #include "machine_arg.hpp"
 #include "options.hpp"
 

@@ -7,8 +7,8 @@
 #include <iostream>
 
 #include "commands.hpp"
-#include "core/gcode.hpp"
-#include "core/planner.hpp"
+#include "core/output/gcode.hpp"
+#include "core/planning/planner.hpp"
 #include "machine_arg.hpp"
 #include "options.hpp"
 

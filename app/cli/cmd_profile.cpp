@@ -5,7 +5,7 @@
 #include <iostream>
 
 #include "commands.hpp"
-#include "core/profile.hpp"
+#include "core/machine/profile.hpp"
 #include "machine_arg.hpp"
 #include "options.hpp"
 

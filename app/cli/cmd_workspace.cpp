@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "commands.hpp"
-#include "core/workspace.hpp"
+#include "core/workspace/workspace.hpp"
 #include "machine_arg.hpp"
 #include "options.hpp"
 #ifdef FIVEBAR_HAVE_QT

@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "core/profile.hpp"
+#include "core/machine/profile.hpp"
 
 namespace fivebar::cli {
 

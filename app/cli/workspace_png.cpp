@@ -6,7 +6,7 @@
 #include <memory>
 #include <optional>
 
-#include "core/kinematics.hpp"
+#include "core/kinematics/kinematics.hpp"
 #include "widgets/machine_painter.hpp"
 #include "widgets/studio_palette.hpp"
 #include "widgets/view_transform.hpp"

@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "core/profile.hpp"
-#include "core/workspace.hpp"
+#include "core/machine/profile.hpp"
+#include "core/workspace/workspace.hpp"
 
 namespace fivebar::cli {
 

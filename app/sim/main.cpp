@@ -22,7 +22,7 @@
 #include <iostream>
 #include <string>
 
-#include "core/profile.hpp"
+#include "core/machine/profile.hpp"
 #include "pty.hpp"
 #include "wire.hpp"
 #include "record.hpp"

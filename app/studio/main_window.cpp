@@ -15,7 +15,7 @@
 #include <QToolBar>
 #include <QUndoStack>
 
-#include "core/kinematics.hpp"
+#include "core/kinematics/kinematics.hpp"
 #include "widgets/canvas_view.hpp"
 #include "widgets/import_controller.hpp"
 #include "widgets/job_layer.hpp"

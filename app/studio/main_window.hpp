@@ -8,7 +8,7 @@
 #include <QMainWindow>
 #include <memory>
 
-#include "core/profile.hpp"
+#include "core/machine/profile.hpp"
 
 class QDockWidget;
 class QLabel;

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "core/profile.hpp"
+#include "core/machine/profile.hpp"
 
 namespace fivebar::studio {
 

@@ -22,7 +22,7 @@
 #include <memory>
 #include <vector>
 
-#include "core/drawing.hpp"
+#include "core/planning/drawing.hpp"
 
 namespace fivebar::svg {
 

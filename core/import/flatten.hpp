@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "core/geometry.hpp"
+#include "core/kinematics/geometry.hpp"
 
 namespace fivebar::svg {
 

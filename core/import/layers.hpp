@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "capture_engine.hpp"
-#include "core/drawing.hpp"
+#include "core/planning/drawing.hpp"
 #include "svg_import.hpp"
 #include "svg_sanitize.hpp"
 

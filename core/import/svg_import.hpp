@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "core/drawing.hpp"
+#include "core/planning/drawing.hpp"
 
 namespace fivebar::svg {
 

@@ -14,7 +14,7 @@
 #include <memory>
 #include <random>
 
-#include "core/kinematics.hpp"
+#include "core/kinematics/kinematics.hpp"
 #include "widgets/machine_painter.hpp"
 #include "widgets/path_scene.hpp"
 #include "widgets/scene_renderer.hpp"

@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "core/batch.hpp"
-#include "core/kinematics.hpp"
+#include "core/kinematics/batch.hpp"
+#include "core/kinematics/kinematics.hpp"
 
 namespace fivebar {
 namespace {

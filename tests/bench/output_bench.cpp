@@ -22,9 +22,9 @@
 #include <random>
 #include <string>
 
-#include "core/gcode.hpp"
-#include "core/time_estimate.hpp"
-#include "core/units.hpp"
+#include "core/output/gcode.hpp"
+#include "core/planning/time_estimate.hpp"
+#include "core/kinematics/units.hpp"
 
 namespace fivebar {
 namespace {

@@ -16,9 +16,9 @@
 #include <iostream>
 #include <random>
 
-#include "core/gcode.hpp"
-#include "core/planner.hpp"
-#include "core/segmentation.hpp"
+#include "core/output/gcode.hpp"
+#include "core/planning/planner.hpp"
+#include "core/planning/segmentation.hpp"
 
 namespace fivebar {
 namespace {

@@ -23,10 +23,10 @@
 #include <string_view>
 #include <string>
 
-#include "core/gcode.hpp"
+#include "core/output/gcode.hpp"
 #include "core/import/svg_import.hpp"
-#include "core/planner.hpp"
-#include "core/profile.hpp"
+#include "core/planning/planner.hpp"
+#include "core/machine/profile.hpp"
 #include "plotter_svg.hpp"
 
 namespace fivebar {

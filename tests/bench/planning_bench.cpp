@@ -10,8 +10,8 @@
 #include <random>
 #include <vector>
 
-#include "core/feasibility.hpp"
-#include "core/optimise.hpp"
+#include "core/planning/feasibility.hpp"
+#include "core/planning/optimise.hpp"
 
 namespace fivebar {
 namespace {

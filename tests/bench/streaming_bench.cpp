@@ -20,8 +20,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "core/profile.hpp"
-#include "core/units.hpp"
+#include "core/machine/profile.hpp"
+#include "core/kinematics/units.hpp"
 #include "drivers/machine_link.hpp"
 #include "drivers/serial_transport.hpp"
 

@@ -11,9 +11,9 @@
 #include <cmath>
 #include <limits>
 
-#include "core/kinematics.hpp"
-#include "core/singularity.hpp"
-#include "core/workspace.hpp"
+#include "core/kinematics/kinematics.hpp"
+#include "core/kinematics/singularity.hpp"
+#include "core/workspace/workspace.hpp"
 
 namespace fivebar {
 namespace {

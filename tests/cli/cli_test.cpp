@@ -12,9 +12,9 @@
 #include <regex>
 #include <sstream>
 
-#include "core/kinematics.hpp"
-#include "core/profile.hpp"
-#include "core/singularity.hpp"
+#include "core/kinematics/kinematics.hpp"
+#include "core/machine/profile.hpp"
+#include "core/kinematics/singularity.hpp"
 #include "test_support.hpp"
 
 namespace fivebar {

@@ -1,7 +1,7 @@
 // Batch kinematics (core/batch.hpp) against the exact scalar API: same reach verdicts, angles
 // within kBatchAngleToleranceRad, positions within kBatchPositionToleranceMm, NaN where not ok,
 // on seeded random points including reach-boundary and out-of-reach ones.
-#include "core/batch.hpp"
+#include "core/kinematics/batch.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,8 +9,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/kinematics.hpp"
-#include "core/singularity.hpp"
+#include "core/kinematics/kinematics.hpp"
+#include "core/kinematics/singularity.hpp"
 #include "test_support.hpp"
 
 namespace fivebar {

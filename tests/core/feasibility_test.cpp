@@ -4,9 +4,9 @@
 #include <chrono>
 #include <cmath>
 
-#include "core/feasibility.hpp"
-#include "core/placement.hpp"
-#include "core/singularity.hpp"
+#include "core/planning/feasibility.hpp"
+#include "core/planning/placement.hpp"
+#include "core/kinematics/singularity.hpp"
 #include "test_support.hpp"
 
 namespace fivebar {

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <random>
 
-#include "core/feeds.hpp"
-#include "core/profile.hpp"
+#include "core/planning/feeds.hpp"
+#include "core/machine/profile.hpp"
 #include "test_support.hpp"
 
 namespace fivebar {

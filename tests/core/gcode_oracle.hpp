@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "core/gcode.hpp"
-#include "core/units.hpp"
+#include "core/output/gcode.hpp"
+#include "core/kinematics/units.hpp"
 
 namespace fivebar::oracle {
 namespace {

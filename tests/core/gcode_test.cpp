@@ -9,8 +9,8 @@
 #include <random>
 #include <sstream>
 
-#include "core/gcode.hpp"
-#include "core/planner.hpp"
+#include "core/output/gcode.hpp"
+#include "core/planning/planner.hpp"
 #include "gcode_oracle.hpp"
 #include "test_support.hpp"
 

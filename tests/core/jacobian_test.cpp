@@ -6,8 +6,8 @@
 #include <Eigen/Dense>
 #include <cmath>
 
-#include "core/kinematics.hpp"
-#include "core/singularity.hpp"
+#include "core/kinematics/kinematics.hpp"
+#include "core/kinematics/singularity.hpp"
 #include "test_support.hpp"
 
 namespace fivebar {

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "core/kinematics.hpp"
-#include "core/singularity.hpp"
+#include "core/kinematics/kinematics.hpp"
+#include "core/kinematics/singularity.hpp"
 #include "test_support.hpp"
 
 namespace fivebar {

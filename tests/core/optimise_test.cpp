@@ -6,7 +6,7 @@
 #include <cmath>
 #include <map>
 
-#include "core/optimise.hpp"
+#include "core/planning/optimise.hpp"
 #include "test_support.hpp"
 
 namespace fivebar {

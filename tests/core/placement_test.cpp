@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "core/placement.hpp"
+#include "core/planning/placement.hpp"
 #include "test_support.hpp"
 
 namespace fivebar {

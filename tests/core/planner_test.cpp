@@ -7,9 +7,9 @@
 #include <cmath>
 #include <random>
 
-#include "core/placement.hpp"
-#include "core/planner.hpp"
-#include "core/safety.hpp"
+#include "core/planning/placement.hpp"
+#include "core/planning/planner.hpp"
+#include "core/planning/safety.hpp"
 #include "test_support.hpp"
 
 namespace fivebar {

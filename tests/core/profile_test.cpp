@@ -7,7 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "core/profile.hpp"
+#include "core/machine/profile.hpp"
 
 namespace fivebar {
 namespace {

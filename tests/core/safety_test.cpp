@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "core/safety.hpp"
-#include "core/singularity.hpp"
+#include "core/planning/safety.hpp"
+#include "core/kinematics/singularity.hpp"
 #include "test_support.hpp"
 
 namespace fivebar {

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <random>
 
-#include "core/move_samples.hpp"
-#include "core/profile.hpp"
-#include "core/segmentation.hpp"
+#include "core/kinematics/move_samples.hpp"
+#include "core/machine/profile.hpp"
+#include "core/planning/segmentation.hpp"
 #include "test_support.hpp"
 
 namespace fivebar {

@@ -9,8 +9,8 @@
 #include <cmath>
 #include <vector>
 
-#include "core/time_estimate.hpp"
-#include "core/units.hpp"
+#include "core/planning/time_estimate.hpp"
+#include "core/kinematics/units.hpp"
 
 namespace fivebar::oracle {
 namespace {

@@ -7,7 +7,7 @@
 #include <random>
 #include <string>
 
-#include "core/time_estimate.hpp"
+#include "core/planning/time_estimate.hpp"
 #include "test_support.hpp"
 #include "time_estimate_oracle.hpp"
 

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "core/planner.hpp"
-#include "core/trajectory.hpp"
+#include "core/planning/planner.hpp"
+#include "core/planning/trajectory.hpp"
 #include "test_support.hpp"
 
 namespace fivebar {

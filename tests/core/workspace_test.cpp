@@ -6,9 +6,9 @@
 #include <cmath>
 #include <random>
 
-#include "core/kinematics.hpp"
-#include "core/singularity.hpp"
-#include "core/workspace.hpp"
+#include "core/kinematics/kinematics.hpp"
+#include "core/kinematics/singularity.hpp"
+#include "core/workspace/workspace.hpp"
 #include "test_support.hpp"
 
 namespace fivebar {

@@ -1,7 +1,7 @@
 // Jog, go-to, frame and machine setup planning.
 #include <gtest/gtest.h>
 
-#include "core/safety.hpp"
+#include "core/planning/safety.hpp"
 #include "drivers/jog.hpp"
 #include "drivers/machine_setup.hpp"
 #include "sim_harness.hpp"

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "core/kinematics.hpp"
-#include "core/profile.hpp"
-#include "core/units.hpp"
+#include "core/kinematics/kinematics.hpp"
+#include "core/machine/profile.hpp"
+#include "core/kinematics/units.hpp"
 #include "drivers/gcode_job.hpp"
 #include "drivers/grbl_protocol.hpp"
 #include "drivers/sim_machine.hpp"

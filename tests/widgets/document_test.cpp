@@ -6,7 +6,7 @@
 #include <QSignalSpy>
 #include <cmath>
 
-#include "core/units.hpp"
+#include "core/kinematics/units.hpp"
 #include "widgets/placement_tool.hpp"
 #include "widgets/studio_document.hpp"
 

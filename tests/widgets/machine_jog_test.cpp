@@ -7,8 +7,8 @@
 #include <cmath>
 #include <random>
 
-#include "core/safety.hpp"
-#include "core/units.hpp"
+#include "core/planning/safety.hpp"
+#include "core/kinematics/units.hpp"
 #include "machine_test_support.hpp"
 #include "test_support.hpp"
 #include "widgets/jog_panel.hpp"

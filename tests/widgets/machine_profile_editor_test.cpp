@@ -7,7 +7,7 @@
 #include <QLabel>
 #include <QTemporaryDir>
 
-#include "core/profile.hpp"
+#include "core/machine/profile.hpp"
 #include "machine_test_support.hpp"
 #include "widgets/profile_editor.hpp"
 

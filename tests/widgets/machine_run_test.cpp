@@ -10,7 +10,7 @@
 #include <QTemporaryDir>
 #include <cmath>
 
-#include "core/units.hpp"
+#include "core/kinematics/units.hpp"
 #include "drivers/job_progress.hpp"
 #include "drivers/simulated_transport.hpp"
 #include "machine_test_support.hpp"

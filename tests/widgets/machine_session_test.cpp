@@ -9,7 +9,7 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 
-#include "core/units.hpp"
+#include "core/kinematics/units.hpp"
 #include "drivers/grbl_codes.hpp"
 #include "machine_test_support.hpp"
 #include "widgets/console_panel.hpp"

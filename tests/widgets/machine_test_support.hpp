@@ -8,7 +8,7 @@
 #include <functional>
 #include <memory>
 
-#include "core/profile.hpp"
+#include "core/machine/profile.hpp"
 #include "widgets/machine_session.hpp"
 #include "widgets/studio_document.hpp"
 

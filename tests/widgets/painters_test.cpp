@@ -7,7 +7,7 @@
 #include <cmath>
 #include <random>
 
-#include "core/placement.hpp"
+#include "core/planning/placement.hpp"
 #include "test_support.hpp"
 #include "widgets/job_layer.hpp"
 #include "widgets/machine_painter.hpp"

@@ -16,7 +16,7 @@
 #include <set>
 
 #include "app/studio/main_window.hpp"
-#include "core/profile.hpp"
+#include "core/machine/profile.hpp"
 #include "widgets/console_panel.hpp"
 #include "widgets/import_controller.hpp"
 #include "widgets/jog_controller.hpp"

@@ -1,0 +1,50 @@
+// Internal helpers of the profile JSON reader (core/profile.cpp): a strict object reader that
+// records a ValidationIssue for every missing, mistyped or unknown field, naming its path.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/kinematics/geometry.hpp"
+
+namespace fivebar::detail {
+
+// Reads the members of one JSON object. Every accessor marks its key as known; finish() reports
+// the keys nobody asked for (typos must not pass silently).
+class ObjectReader {
+ public:
+  ObjectReader(const nlohmann::json& object, std::string path, std::vector<ValidationIssue>& issues);
+
+  // Each reader leaves `out` unchanged when the key is absent (and reports it when required).
+  void number(const char* key, double& out, bool required = false);
+  void integer(const char* key, int& out, bool required = false);
+  void boolean(const char* key, bool& out, bool required = false);
+  void string(const char* key, std::string& out, bool required = false);
+  // A sub-object; nullptr (with an issue when present but not an object, or when required).
+  const nlohmann::json* object(const char* key, bool required = false);
+  // Path of a member, e.g. "geometry.a1".
+  std::string pathOf(const char* key) const;
+  // Reports unknown members; call after all accessors.
+  void finish();
+
+ private:
+  const nlohmann::json* member(const char* key, bool required);
+  void typeError(const char* key, const char* expected, const nlohmann::json& value);
+
+  const nlohmann::json& object_;
+  std::string path_;
+  std::vector<ValidationIssue>& issues_;
+  std::set<std::string> known_;
+  bool isObject_ = false;
+};
+
+// Line and column (1-based) of a byte offset into `text`.
+struct TextPosition {
+  std::size_t line = 1;
+  std::size_t column = 1;
+};
+TextPosition positionOf(const std::string& text, std::size_t byteOffset);
+
+}  // namespace fivebar::detail

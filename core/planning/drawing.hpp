@@ -1,0 +1,41 @@
+// The drawing model shared by import, planning and the studio: layers of polylines in the work
+// frame (millimetres, y up). Import produces it; placement maps it into the machine frame.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/kinematics/geometry.hpp"
+
+namespace fivebar {
+
+struct Polyline {
+  std::vector<Vec2> points;  // mm; consecutive points are joined by straight segments
+  bool closed = false;       // true when the last point joins back to the first
+};
+
+// Tool settings a layer may override; unset values fall back to the machine profile.
+struct LayerToolSettings {
+  double drawSpeedMmPerS = 0.0;  // 0 = profile default
+  double power = -1.0;           // laser S value or pen-down servo S; < 0 = profile default
+  bool pauseBefore = false;      // pen change: pause the job before this layer
+};
+
+struct Layer {
+  std::string id;           // stable identifier (SVG id, Inkscape layer id, or "color:#rrggbb")
+  std::string name;         // what the user sees
+  std::uint32_t rgb = 0;    // stroke colour 0xRRGGBB
+  bool visible = true;      // hidden layers are neither drawn nor planned
+  LayerToolSettings tool;
+  std::vector<Polyline> paths;
+};
+
+struct Drawing {
+  std::string source;      // file name it came from, for messages
+  double widthMm = 0.0;    // physical page size
+  double heightMm = 0.0;
+  std::vector<Layer> layers;  // in plotting order
+};
+
+}  // namespace fivebar

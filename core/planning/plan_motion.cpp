@@ -1,0 +1,499 @@
+// planStrokes: placed strokes -> PlannedJob (segmentation, feeds, travel, tool commands, timing).
+#include <algorithm>
+#include <cmath>
+#include <atomic>
+#include <exception>
+#include <future>
+#include <memory>
+#include <mutex>
+#include <limits>
+#include <optional>
+
+#include "core/planning/feeds.hpp"
+#include "core/support/memory_hint.hpp"
+#include "core/kinematics/move_samples.hpp"
+#include "core/support/parallel.hpp"
+#include "core/planning/planner.hpp"
+#include "core/planning/safety.hpp"
+#include "core/planning/segmentation.hpp"
+#include "core/kinematics/singularity.hpp"
+#include "core/planning/time_estimate.hpp"
+
+namespace fivebar {
+namespace {
+
+// Strokes segmented in parallel before being drawn in order (bounds the memory held).
+constexpr size_t kChunkStrokes = 2048;
+// FK samples per travel move for its XY length.
+constexpr int kTravelLengthSamples = 16;
+// Lever arm factor for the G-code rounding share of the tolerance (docs/planning.md): a joint
+// rounding error moves P by at most |J| * dtheta; with the type II margin kept, |J| stays below
+// a few times the longest leg.
+constexpr double kRoundingLeverFactor = 4.0;
+constexpr int kGcodeAngleDecimals = 4;
+
+std::string layerLabel(const std::vector<Layer>& layers, int layerIndex) {
+  if (layerIndex >= 0 && static_cast<size_t>(layerIndex) < layers.size()) {
+    const Layer& l = layers[static_cast<size_t>(layerIndex)];
+    return "layer '" + (l.name.empty() ? l.id : l.name) + "'";
+  }
+  return "layer " + std::to_string(layerIndex);
+}
+
+class MotionPlanner {
+ public:
+  MotionPlanner(const std::vector<Stroke>& strokes, const std::vector<Layer>& layers,
+                const MachineProfile& profile, WorkingMode mode, const PlanOptions& options,
+                PlanResult& out)
+      : strokes_(strokes), layers_(layers), p_(profile), g_(profile.geometry), mode_(mode),
+        opt_(options), out_(out), job_(out.job) {
+    limits_ = feedLimitsOf(profile);
+    limits_.minSegmentDurationS = options.minSegmentDurationS;
+  }
+
+  void run(double jointBudgetMm) {
+    segOpt_.deviationBudgetMm = jointBudgetMm;
+    job_.profileName = p_.name;
+    job_.mode = mode_;
+    job_.assembly = p_.assembly;
+    if (!startPose()) return;
+    job_.strokes.resize(strokes_.size());
+    // One allocation for the moves in the usual case: a move per point at most when strokes are
+    // merged, plus tool and travel moves (reserveMoves grows it when long lines are split).
+    size_t points = 0;
+    for (const Stroke& s : strokes_) points += s.points.size();
+    job_.moves.reserve(points + 8 * strokes_.size());
+    adviseHugePages(job_.moves.data(), job_.moves.capacity() * sizeof(JobMove));
+    // Segmentation and feeds of a stroke do not depend on where the pen comes from (only the
+    // turn its angles are unwrapped to, fixed up in drawStroke): chunks of strokes are
+    // prepared by every free thread, the next chunk while this one is drawn in order (the
+    // drawing thread joins in when it is done), so the job does not depend on the threads.
+    const size_t helpers = static_cast<size_t>(std::max(1, planningThreads()));
+    ChunkWork chunks[2];
+    ChunkWork* cur = &chunks[0];
+    ChunkWork* ahead = &chunks[1];
+    if (!strokes_.empty()) {
+      cur->reset(0, std::min(kChunkStrokes, strokes_.size()), job_.start);
+      runChunk(*cur, helpers - 1);
+    }
+    for (size_t first = 0; first < strokes_.size(); first += kChunkStrokes) {
+      const size_t nextFirst = first + kChunkStrokes;
+      std::vector<std::future<void>> workers;
+      if (nextFirst < strokes_.size()) {
+        ahead->reset(nextFirst, std::min(kChunkStrokes, strokes_.size() - nextFirst),
+                     cur->lastEnd());
+        for (size_t t = 0; t < helpers; ++t)
+          workers.push_back(std::async(std::launch::async, [this, ahead] { work(*ahead); }));
+      }
+      reserveMoves(cur->slots);
+      for (size_t i = 0; i < cur->n; ++i) drawStroke(first + i, cur->slots[i]);
+      if (!workers.empty()) {
+        runChunk(*ahead, 0);
+        for (std::future<void>& w : workers) w.get();
+      }
+      std::swap(cur, ahead);
+    }
+    if (penDown_) penUp();
+    travelTo(job_.start, -1, -1, nullptr, [] { return std::string("travel back to the start pose"); });
+  }
+
+ private:
+  bool startPose() {
+    job_.start = p_.homeAngles;
+    const FkResult fk = forward(g_, job_.start, p_.assembly);
+    if (!fk.ok()) {
+      problem("start pose", Vec2::Zero(), "the profile's home pose does not close the linkage",
+              {"set a reachable home pose in the profile"});
+      return false;
+    }
+    job_.startXY = fk.p;
+    at_ = job_.start;
+    atXY_ = fk.p;
+    return true;
+  }
+
+  // A stroke segmented (angles unwrapped near the home pose) with its feeds.
+  // A pen-up travel between two poses: the safe joint path with its XY lengths and feeds.
+  struct TravelPlan {
+    JointAngles from, to;
+    bool found = false;
+    std::vector<JointWaypoint> chain;  // chain[0] = from
+    std::vector<SegmentFeed> feeds;
+  };
+
+  struct Prepared {
+    std::optional<TravelPlan> travel;  // from the previous stroke's end, planned ahead
+    SegmentedStroke seg;
+    std::vector<SegmentFeed> feeds;
+    PathCheck check;  // every move of the stroke, as segmented (angles near the home pose)
+    bool usable() const { return seg.ok() && !seg.waypoints.empty() && check.ok(); }
+  };
+
+  // One chunk of strokes prepared by whichever threads are free: each takes the next stroke; the
+  // thread that completes the second of two neighbouring strokes also plans the travel between
+  // them (as drawStroke will use it unless a stroke fails or moves by whole turns).
+  struct ChunkWork {
+    size_t first = 0, n = 0;
+    std::vector<Prepared> slots;
+    std::optional<JointAngles> before;  // end of the last usable stroke before the chunk
+    std::unique_ptr<std::atomic<int>[]> pairs;  // pairs[i] == 2: strokes i-1 and i prepared
+    std::atomic<size_t> next{0}, done{0};
+    std::mutex errorMutex;
+    std::exception_ptr error;
+
+    void reset(size_t firstStroke, size_t count, std::optional<JointAngles> endBefore) {
+      first = firstStroke;
+      n = count;
+      slots.assign(n, Prepared{});
+      before = endBefore;
+      pairs = std::make_unique<std::atomic<int>[]>(n);
+      for (size_t i = 0; i < n; ++i) pairs[i].store(i == 0 ? 1 : 0);
+      next.store(0);
+      done.store(0);
+      error = nullptr;
+    }
+    std::optional<JointAngles> lastEnd() const {
+      for (size_t i = n; i-- > 0;)
+        if (slots[i].usable()) return slots[i].seg.waypoints.back().q;
+      return before;
+    }
+  };
+
+  void work(ChunkWork& w) const {
+    for (size_t i = w.next.fetch_add(1); i < w.n; i = w.next.fetch_add(1)) {
+      try {
+        prepare(w.first + i, w.slots[i]);
+        if (w.pairs[i].fetch_add(1) == 1) travelInto(w, i);
+        if (i + 1 < w.n && w.pairs[i + 1].fetch_add(1) == 1) travelInto(w, i + 1);
+      } catch (...) {
+        const std::lock_guard lock(w.errorMutex);
+        if (!w.error) w.error = std::current_exception();
+      }
+      if (w.done.fetch_add(1) + 1 == w.n) w.done.notify_all();
+    }
+  }
+
+  // Prepares the chunk on this thread and `extra` more, and waits until it is complete.
+  void runChunk(ChunkWork& w, size_t extra) const {
+    std::vector<std::future<void>> workers;
+    for (size_t t = 0; t < extra; ++t)
+      workers.push_back(std::async(std::launch::async, [this, &w] { work(w); }));
+    work(w);
+    for (size_t d = w.done.load(); d < w.n; d = w.done.load()) w.done.wait(d);
+    for (std::future<void>& f : workers) f.get();
+    if (w.error) std::rethrow_exception(w.error);
+  }
+
+  void travelInto(ChunkWork& w, size_t i) const {
+    Prepared& p = w.slots[i];
+    if (!p.usable()) return;
+    const std::optional<JointAngles> from =
+        i == 0 ? w.before
+               : w.slots[i - 1].usable()
+                     ? std::optional<JointAngles>(w.slots[i - 1].seg.waypoints.back().q)
+                     : std::nullopt;
+    if (from) p.travel = planTravel(*from, p.seg.waypoints.front().q);
+  }
+
+  void prepare(size_t k, Prepared& out) const {
+    const Stroke& s = strokes_[k];
+    if (s.points.empty()) return;
+    out.seg = segmentStroke(g_, mode_, p_.assembly, s.points, job_.start, segOpt_);
+    if (!out.seg.ok()) return;
+    out.check = checkWaypoints(out.seg);
+    if (!out.check.ok()) return;
+    out.feeds = planFeeds(g_, p_.assembly, out.seg.waypoints, drawSpeed(s.layerIndex), limits_);
+  }
+
+  // The safety rule on the moves that will be sent: every joint-linear move between waypoints.
+  PathCheck checkWaypoints(const SegmentedStroke& seg) const {
+    std::vector<JointAngles> poses;
+    poses.reserve(seg.waypoints.size());
+    for (const JointWaypoint& w : seg.waypoints) poses.push_back(w.q);
+    return checkJointPath(p_, poses);
+  }
+
+  // Room for a chunk's moves (draws plus a few tool and travel moves per stroke), growing the
+  // job geometrically so that the moves are not copied once per chunk.
+  void reserveMoves(const std::vector<Prepared>& chunk) {
+    size_t need = job_.moves.size();
+    for (const Prepared& p : chunk) need += p.feeds.size() + 6;
+    if (need > job_.moves.capacity()) {
+      job_.moves.reserve(std::max(need, 2 * job_.moves.capacity()));
+      adviseHugePages(job_.moves.data(), job_.moves.capacity() * sizeof(JobMove));
+    }
+  }
+
+  // Shifts the stroke's angles by whole turns so that it starts nearest the current pose.
+  // Returns whether the angles changed (joint limits then need a new check).
+  bool unwrapNearCurrent(SegmentedStroke& seg) const {
+    if (seg.waypoints.empty()) return false;
+    const JointAngles q0 = seg.waypoints[0].q;
+    const double d1 = unwrapNear(q0.theta1, at_.theta1) - q0.theta1;
+    const double d2 = unwrapNear(q0.theta2, at_.theta2) - q0.theta2;
+    if (d1 == 0.0 && d2 == 0.0) return false;
+    for (JointWaypoint& w : seg.waypoints) w.q = {w.q.theta1 + d1, w.q.theta2 + d2};
+    return true;
+  }
+
+  void drawStroke(size_t k, Prepared& prepared) {
+    const Stroke& s = strokes_[k];
+    PlannedStroke& ps = job_.strokes[k];
+    ps.layerIndex = s.layerIndex;
+    ps.pathIndex = s.pathIndex;
+    ps.reversed = s.reversed;
+    if (s.points.empty()) return;
+    SegmentedStroke& seg = prepared.seg;
+    if (unwrapNearCurrent(seg) && seg.ok()) prepared.check = checkWaypoints(seg);
+    if (!seg.ok()) {
+      problem(pathLabel(s), seg.failedAt,
+              seg.status == SegmentStatus::OutOfReach
+                  ? "a point is out of reach in working mode " + std::string(toString(mode_))
+                  : "the drawn curve cannot follow the stroke here (singular region)",
+              {"move or shrink the drawing (--at, --scale, --fit)", "try another --mode"});
+      return;
+    }
+    if (!prepared.check.ok()) {
+      const MoveCheck& c = prepared.check.problems.front().check;
+      problem(pathLabel(s), c.where,
+              c.status == MoveStatus::NearTypeI ? describe(c) : "the drawn line " + describe(c),
+              {"move or shrink the drawing (--at, --scale, --fit)", "try another --mode"});
+      return;
+    }
+    minMargin_ = std::min(minMargin_, prepared.check.minTypeIIMarginRad);
+    const int layer = s.layerIndex;
+    const bool newLayer = layer != lastLayer_;
+    lastLayer_ = layer;
+    if (penDown_) penUp();
+    if (newLayer && k > 0 && layerTool(layer).pauseBefore) push(JobMoveKind::Pause, -1, layer);
+    const TravelPlan* ahead = prepared.travel ? &*prepared.travel : nullptr;
+    if (!travelTo(seg.waypoints[0].q, static_cast<int>(k), layer, ahead, [&] { return "travel to " + pathLabel(s); }))
+      return;
+    penDown(static_cast<int>(k), layer);
+    ps.firstMove = static_cast<int>(job_.moves.size());
+    draw(seg, prepared, static_cast<int>(k), layer);
+    ps.moveCount = static_cast<int>(job_.moves.size()) - ps.firstMove;
+    for (const JointWaypoint& w : seg.waypoints) ps.lengthMm += w.pathLengthMm;
+    job_.summary.penDownMm += ps.lengthMm;
+  }
+
+  void draw(const SegmentedStroke& seg, const Prepared& prepared, int stroke, int layer) {
+    const std::vector<SegmentFeed>& feeds = prepared.feeds;
+    for (size_t i = 0; i < feeds.size(); ++i) {
+      const JointWaypoint& w = seg.waypoints[i + 1];
+      JobMove& m = push(JobMoveKind::Draw, stroke, layer);
+      m.target = w.q;
+      m.targetXY = w.p;
+      m.feedMmPerS = feeds[i].feedMmPerS;
+      m.jointFeedRadPerS = feeds[i].jointFeedRadPerS;
+      m.feedLimited = feeds[i].limited();
+      m.maxDeviationMm = w.deviationMm;
+      m.toolValue = toolDownValue(layer);
+      moved(w.q, w.p, kPi / 2.0);  // margins: the stroke's check
+      job_.summary.segments += 1;
+      job_.summary.feedLimitedSegments += m.feedLimited ? 1 : 0;
+      job_.summary.maxDeviationMm = std::max(job_.summary.maxDeviationMm, w.deviationMm);
+    }
+  }
+
+  // The travel from `from` to `to` (thread-safe: reads the profile only).
+  TravelPlan planTravel(const JointAngles& from, const JointAngles& to) const {
+    TravelPlan t;
+    t.from = from;
+    t.to = to;
+    const auto path = planSafeTravel(p_, from, to);
+    if (!path) return t;
+    t.found = true;
+    const FkResult start = forward(g_, from, p_.assembly);
+    t.chain.push_back({from, start.ok() ? start.p : Vec2::Zero(), 0.0, 0.0});
+    for (const JointAngles& q : *path) {
+      const auto [length, end] = travelLength(t.chain.back().q, q);
+      t.chain.push_back({q, end, 0.0, length});
+    }
+    t.feeds = planFeeds(g_, p_.assembly, t.chain, p_.travelSpeedMmPerS, limits_);
+    return t;
+  }
+
+  // Adds the travel from the current pose to `target` (the one planned ahead when it starts
+  // here); `what` names it in a problem.
+  template <typename What>
+  bool travelTo(const JointAngles& target, int stroke, int layer, const TravelPlan* ahead,
+                const What& what) {
+    if (std::abs(target.theta1 - at_.theta1) < 1e-12 && std::abs(target.theta2 - at_.theta2) < 1e-12)
+      return true;
+    const bool reuse = ahead && ahead->from.theta1 == at_.theta1 &&
+                       ahead->from.theta2 == at_.theta2 && ahead->to.theta1 == target.theta1 &&
+                       ahead->to.theta2 == target.theta2;
+    const TravelPlan fresh = reuse ? TravelPlan{} : planTravel(at_, target);
+    const TravelPlan& t = reuse ? *ahead : fresh;
+    if (!t.found) {
+      const FkResult fk = forward(g_, target, p_.assembly);
+      problem(what(), fk.ok() ? fk.p : atXY_, "no safe pen-up travel reaches it",
+              {"move the drawing away from singular regions (--at)", "try another --mode"});
+      return false;
+    }
+    for (size_t i = 0; i < t.feeds.size(); ++i) {
+      JobMove& m = push(JobMoveKind::Travel, stroke, layer);
+      m.target = t.chain[i + 1].q;
+      m.targetXY = t.chain[i + 1].p;
+      m.feedMmPerS = t.feeds[i].feedMmPerS;
+      m.jointFeedRadPerS = t.feeds[i].jointFeedRadPerS;
+      m.feedLimited = t.feeds[i].limited();
+      moved(m.target, m.targetXY);
+      job_.summary.travelMm += t.chain[i + 1].pathLengthMm;
+      job_.summary.travelMoves += 1;
+    }
+    return true;
+  }
+
+  // XY length (mm) of the joint-linear move a -> b by FK samples, and where it ends.
+  std::pair<double, Vec2> travelLength(const JointAngles& a, const JointAngles& b) const {
+    Vec2 p[kTravelLengthSamples + 1];
+    double length = 0.0;
+    if (sampleJointMove(g_, p_.assembly, a, b, kTravelLengthSamples, p)) {
+      for (int k = 1; k <= kTravelLengthSamples; ++k) length += (p[k] - p[k - 1]).norm();
+      return {length, p[kTravelLengthSamples]};
+    }
+    // Some sample does not close (a travel that passed the safety check always does): the
+    // samples that do.
+    Vec2 prev = forward(g_, a, p_.assembly).p;
+    for (int k = 1; k <= kTravelLengthSamples; ++k) {
+      const double u = static_cast<double>(k) / kTravelLengthSamples;
+      const FkResult fk = forward(g_, {a.theta1 + u * (b.theta1 - a.theta1),
+                                       a.theta2 + u * (b.theta2 - a.theta2)}, p_.assembly);
+      if (!fk.ok()) continue;
+      length += (fk.p - prev).norm();
+      prev = fk.p;
+    }
+    return {length, prev};
+  }
+
+
+
+  void penDown(int stroke, int layer) {
+    JobMove& m = push(JobMoveKind::PenDown, stroke, layer);
+    m.toolValue = toolDownValue(layer);
+    m.dwellS = p_.tool.kind == ToolKind::PenServo ? p_.tool.penDownDelayS : 0.0;
+    penDown_ = true;
+  }
+
+  void penUp() {
+    JobMove& m = push(JobMoveKind::PenUp, -1, lastLayer_);
+    m.toolValue = p_.tool.kind == ToolKind::ZAxis ? p_.tool.zUpMm
+                  : p_.tool.kind == ToolKind::Laser ? 0.0 : p_.tool.penUpS;
+    m.dwellS = p_.tool.kind == ToolKind::PenServo ? p_.tool.penUpDelayS : 0.0;
+    penDown_ = false;
+  }
+
+  JobMove& push(JobMoveKind kind, int stroke, int layer) {
+    JobMove& m = job_.moves.emplace_back();
+    m.kind = kind;
+    m.target = at_;
+    m.targetXY = atXY_;
+    m.strokeIndex = stroke;
+    m.layerIndex = layer;
+    return m;
+  }
+
+  double typeIIMarginAt(const JointAngles& q, const Vec2& p) const {
+    return singularityMargins(g_, makePose(g_, q, p)).typeII;
+  }
+
+  void moved(const JointAngles& q, const Vec2& p) { moved(q, p, typeIIMarginAt(q, p)); }
+  void moved(const JointAngles& q, const Vec2& p, double typeIIRad) {
+    at_ = q;
+    atXY_ = p;
+    minMargin_ = std::min(minMargin_, typeIIRad);
+    job_.summary.minTypeIIMarginRad = minMargin_;
+  }
+
+  LayerToolSettings layerTool(int layer) const {
+    if (layer >= 0 && static_cast<size_t>(layer) < layers_.size())
+      return layers_[static_cast<size_t>(layer)].tool;
+    return {};
+  }
+  double drawSpeed(int layer) const {
+    const double v = layerTool(layer).drawSpeedMmPerS;
+    return v > 0.0 ? v : p_.drawSpeedMmPerS;
+  }
+  double toolDownValue(int layer) const {
+    const double power = layerTool(layer).power;
+    switch (p_.tool.kind) {
+      case ToolKind::PenServo: return power >= 0.0 ? power : p_.tool.penDownS;
+      case ToolKind::Laser: return power >= 0.0 ? power : p_.tool.laserPowerS;
+      case ToolKind::ZAxis: return p_.tool.zDownMm;
+    }
+    return 0.0;
+  }
+
+  std::string pathLabel(const Stroke& s) const {
+    return layerLabel(layers_, s.layerIndex) + " path " + std::to_string(s.pathIndex);
+  }
+
+  void problem(std::string path, const Vec2& where, std::string why, std::vector<std::string> fixes) {
+    out_.report.problems.push_back({std::move(path), where, std::move(why), std::move(fixes)});
+  }
+
+  const std::vector<Stroke>& strokes_;
+  const std::vector<Layer>& layers_;
+  const MachineProfile& p_;
+  const Geometry& g_;
+  WorkingMode mode_;
+  const PlanOptions& opt_;
+  PlanResult& out_;
+  PlannedJob& job_;
+  FeedLimits limits_;
+  SegmentationOptions segOpt_;
+  JointAngles at_;
+  Vec2 atXY_ = Vec2::Zero();
+  bool penDown_ = false;
+  int lastLayer_ = std::numeric_limits<int>::min();
+  double minMargin_ = kPi / 2.0;
+};
+
+}  // namespace
+
+// Tolerance left for the joint-linear deviation once flattening and G-code rounding are paid.
+double jointDeviationBudgetMm(const MachineProfile& profile, const PlanOptions& options) {
+  const Geometry& g = profile.geometry;
+  const double lever = std::max(g.a1 + g.b1, g.a2 + g.b2);
+  const double roundingRad = radFromDeg(0.5 * std::pow(10.0, -kGcodeAngleDecimals));
+  return options.toleranceMm - options.flatteningToleranceMm -
+         kRoundingLeverFactor * lever * roundingRad;
+}
+
+PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Layer>& layers,
+                       const MachineProfile& profile, WorkingMode mode,
+                       const PlanOptions& options) {
+  PlanResult out;
+  out.report.mode = mode;
+  out.report.toleranceMm = options.toleranceMm;
+  const double budget = jointDeviationBudgetMm(profile, options);
+  if (!(budget > 0.0) || !(options.toleranceMm > 0.0)) {
+    out.status = PlanStatus::BadOptions;
+    out.message = "tolerance " + std::to_string(options.toleranceMm) +
+                  " mm leaves nothing for the moves after flattening (" +
+                  std::to_string(options.flatteningToleranceMm) + " mm) and G-code rounding";
+    return out;
+  }
+  StageClock clock(out.timings);
+  MotionPlanner(strokes, layers, profile, mode, options, out).run(budget);
+  clock.lap("segmentation, feeds, travel");
+  fillJobTimes(out.job, profile);
+  clock.lap("time estimate");
+  PlanReport& r = out.report;
+  const JobSummary& s = out.job.summary;
+  r.feasible = r.problems.empty();
+  r.estimatedTimeS = s.estimatedTimeS;
+  r.penDownMm = s.penDownMm;
+  r.travelMm = s.travelMm;
+  r.segments = s.segments;
+  r.maxDeviationMm = s.maxDeviationMm;
+  r.minSingularityMarginDeg = degFromRad(s.minTypeIIMarginRad);
+  r.feedLimitedSegments = s.feedLimitedSegments;
+  out.status = r.feasible ? PlanStatus::Ok : PlanStatus::Infeasible;
+  if (!r.feasible) out.message = r.problems.front().path + ": " + r.problems.front().why;
+  return out;
+}
+
+}  // namespace fivebar

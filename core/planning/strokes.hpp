@@ -1,0 +1,19 @@
+// Strokes: the drawing's polylines placed in the machine frame (mm), in plotting order. The
+// boundary between placement/optimisation (placement.hpp, optimise.hpp) and motion planning
+// (segmentation, feeds, G-code).
+#pragma once
+
+#include <vector>
+
+#include "core/kinematics/geometry.hpp"
+
+namespace fivebar {
+
+struct Stroke {
+  std::vector<Vec2> points;  // machine frame, mm; drawn pen-down from first to last
+  int layerIndex = 0;        // index into Drawing::layers
+  int pathIndex = 0;         // index of the source polyline within its layer (for messages)
+  bool reversed = false;     // drawn from the source polyline's end to its start
+};
+
+}  // namespace fivebar

@@ -1,0 +1,50 @@
+#include "core/planning/trajectory.hpp"
+
+#include <algorithm>
+
+namespace fivebar {
+
+Trajectory::Trajectory(const PlannedJob& job, const MachineProfile& profile)
+    : job_(job), geometry_(profile.geometry) {
+  timings_ = estimateJobTime(job_, profile);
+  durationS_ = job_.summary.estimatedTimeS;
+  from_.reserve(job_.moves.size());
+  penDownAfter_.reserve(job_.moves.size());
+  JointAngles at = job_.start;
+  bool down = false;
+  for (const JobMove& m : job_.moves) {
+    from_.push_back(at);
+    if (isMotion(m.kind)) at = m.target;
+    if (m.kind == JobMoveKind::PenDown) down = true;
+    if (m.kind == JobMoveKind::PenUp) down = false;
+    penDownAfter_.push_back(down);
+  }
+}
+
+TrajectorySample Trajectory::at(double timeS) const {
+  TrajectorySample s;
+  s.timeS = std::clamp(timeS, 0.0, durationS_);
+  const auto& moves = job_.moves;
+  const auto it = std::upper_bound(moves.begin(), moves.end(), s.timeS,
+                                   [](double t, const JobMove& m) { return t < m.startTimeS; });
+  if (it == moves.begin()) {
+    s.q = job_.start;
+  } else {
+    const size_t i = static_cast<size_t>(it - moves.begin()) - 1;
+    const JobMove& m = moves[i];
+    s.moveIndex = static_cast<int>(i);
+    s.penDown = penDownAfter_[i];
+    if (isMotion(m.kind) && timings_[i].lengthUnits > 0.0) {
+      const double u = distanceAt(timings_[i], s.timeS - m.startTimeS) / timings_[i].lengthUnits;
+      const JointAngles& a = from_[i];
+      s.q = {a.theta1 + u * (m.target.theta1 - a.theta1), a.theta2 + u * (m.target.theta2 - a.theta2)};
+    } else {
+      s.q = isMotion(m.kind) ? m.target : from_[i];
+    }
+  }
+  const FkResult fk = forward(geometry_, s.q, job_.assembly);
+  s.p = fk.ok() ? fk.p : job_.startXY;
+  return s;
+}
+
+}  // namespace fivebar
