@@ -27,12 +27,12 @@
         <translation>Nichts zu planen: Die Zeichnung hat keinen sichtbaren Pfad.</translation>
     </message>
     <message>
-        <source>The job is not feasible in this working mode.</source>
-        <translation>Der Auftrag ist in diesem Arbeitsmodus nicht ausführbar.</translation>
+        <source>Planning cancelled.</source>
+        <translation>Planung abgebrochen.</translation>
     </message>
     <message>
-        <source>No working mode can draw the whole job.</source>
-        <translation>Kein Arbeitsmodus kann den ganzen Auftrag zeichnen.</translation>
+        <source>Planned in working mode %1.</source>
+        <translation>Geplant im Arbeitsmodus %1.</translation>
     </message>
 </context>
 <context>
@@ -101,6 +101,69 @@
     </message>
 </context>
 <context>
+    <name>fivebar::studio::FileActions</name>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>%1 has changes that are not saved. Save them first?</source>
+        <translation>%1 hat ungespeicherte Änderungen. Zuerst speichern?</translation>
+    </message>
+    <message>
+        <source>Cannot save %1: %2</source>
+        <translation>%1 kann nicht gespeichert werden: %2</translation>
+    </message>
+    <message>
+        <source>Nothing to save: open a drawing first.</source>
+        <translation>Nichts zu speichern: zuerst eine Zeichnung öffnen.</translation>
+    </message>
+    <message>
+        <source>Save failed</source>
+        <translation>Speichern fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Save project</source>
+        <translation>Projekt speichern</translation>
+    </message>
+    <message>
+        <source>FiveBar projects (*.fivebar)</source>
+        <translation>FiveBar-Projekte (*.fivebar)</translation>
+    </message>
+    <message>
+        <source>The job is still being planned; export it when planning is done.</source>
+        <translation>Der Auftrag wird noch geplant; exportieren Sie ihn, wenn die Planung fertig ist.</translation>
+    </message>
+    <message>
+        <source>There is no planned job to export (see the job preview).</source>
+        <translation>Es gibt keinen geplanten Auftrag zum Exportieren (siehe Auftragsvorschau).</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>Export G-code</source>
+        <translation>G-Code exportieren</translation>
+    </message>
+    <message>
+        <source>G-code (*.gcode *.nc);;All files (*)</source>
+        <translation>G-Code (*.gcode *.nc);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>%1 exportiert</translation>
+    </message>
+    <message>
+        <source>Clear list</source>
+        <translation>Liste leeren</translation>
+    </message>
+</context>
+<context>
     <name>fivebar::studio::MainWindow</name>
     <message>
         <source>FiveBar Studio</source>
@@ -137,10 +200,6 @@
     <message>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
-    </message>
-    <message>
-        <source>&amp;Open drawing...</source>
-        <translation>Zeichnung ö&amp;ffnen …</translation>
     </message>
     <message>
         <source>Open &amp;recent</source>
@@ -247,8 +306,36 @@
         <translation>Haupt</translation>
     </message>
     <message>
-        <source>Clear list</source>
-        <translation>Liste leeren</translation>
+        <source>&amp;Open drawing or project...</source>
+        <translation>Zeichnung oder Projekt &amp;öffnen...</translation>
+    </message>
+    <message>
+        <source>&amp;Save project</source>
+        <translation>Projekt &amp;speichern</translation>
+    </message>
+    <message>
+        <source>Save project &amp;as...</source>
+        <translation>Projekt speichern &amp;unter...</translation>
+    </message>
+    <message>
+        <source>&amp;Export G-code...</source>
+        <translation>G-Code &amp;exportieren...</translation>
+    </message>
+    <message>
+        <source>Ctrl+E</source>
+        <translation>Ctrl+E</translation>
+    </message>
+    <message>
+        <source>&amp;Actual size (100 %)</source>
+        <translation>&amp;Originalgröße (100 %)</translation>
+    </message>
+    <message>
+        <source>Ctrl+1</source>
+        <translation>Ctrl+1</translation>
+    </message>
+    <message>
+        <source>%1[*] - FiveBar Studio</source>
+        <translation>%1[*] - FiveBar Studio</translation>
     </message>
 </context>
 <context>
@@ -284,14 +371,6 @@
 <context>
     <name>fivebar::widgets::ImportController</name>
     <message>
-        <source>Open drawing</source>
-        <translation>Zeichnung öffnen</translation>
-    </message>
-    <message>
-        <source>SVG drawings (*.svg);;All files (*)</source>
-        <translation>SVG-Zeichnungen (*.svg);;Alle Dateien (*)</translation>
-    </message>
-    <message>
         <source>%1: another import is still running.</source>
         <translation>%1: Ein anderer Import läuft noch.</translation>
     </message>
@@ -322,6 +401,14 @@
     <message>
         <source>%1 contains nothing to draw.</source>
         <translation>%1 enthält nichts zu zeichnen.</translation>
+    </message>
+    <message>
+        <source>Open drawing or project</source>
+        <translation>Zeichnung oder Projekt öffnen</translation>
+    </message>
+    <message>
+        <source>Drawings and projects (*.svg *.fivebar);;SVG drawings (*.svg);;FiveBar projects (*.fivebar);;All files (*)</source>
+        <translation>Zeichnungen und Projekte (*.svg *.fivebar);;SVG-Zeichnungen (*.svg);;FiveBar-Projekte (*.fivebar);;Alle Dateien (*)</translation>
     </message>
 </context>
 <context>
@@ -965,8 +1052,36 @@
         <translation>In Arbeitsraum einpassen</translation>
     </message>
     <message>
-        <source>Fit the drawing into the largest singularity-free rectangle</source>
-        <translation>Die Zeichnung in das größte singularitätsfreie Rechteck einpassen</translation>
+        <source>Keep aspect ratio</source>
+        <translation>Seitenverhältnis beibehalten</translation>
+    </message>
+    <message>
+        <source>Width:</source>
+        <translation>Breite:</translation>
+    </message>
+    <message>
+        <source>Height:</source>
+        <translation>Höhe:</translation>
+    </message>
+    <message>
+        <source>Actual size</source>
+        <translation>Originalgröße</translation>
+    </message>
+    <message>
+        <source>Draw the drawing at its true size (100 %)</source>
+        <translation>Die Zeichnung in ihrer wahren Größe zeichnen (100 %)</translation>
+    </message>
+    <message>
+        <source>Scale the drawing to fill the largest singularity-free rectangle</source>
+        <translation>Die Zeichnung so skalieren, dass sie das größte singularitätsfreie Rechteck füllt</translation>
+    </message>
+    <message>
+        <source>No singularity-free area to fit the drawing into.</source>
+        <translation>Kein singularitätsfreier Bereich, in den die Zeichnung passt.</translation>
+    </message>
+    <message>
+        <source>Fitted: %1 %</source>
+        <translation>Eingepasst: %1 %</translation>
     </message>
 </context>
 <context>
@@ -1030,6 +1145,10 @@
     <message>
         <source>No problems: every move is reachable and safe.</source>
         <translation>Keine Probleme: Jede Bewegung ist erreichbar und sicher.</translation>
+    </message>
+    <message>
+        <source>What to do: %1</source>
+        <translation>Was zu tun ist: %1</translation>
     </message>
 </context>
 <context>
@@ -1515,10 +1634,6 @@
         <translation>Die Demo-Zeichnung auf dem Standard-Maker-Plotter öffnen.</translation>
     </message>
     <message>
-        <source>Machine profile: a preset name or a profile JSON file.</source>
-        <translation>Maschinenprofil: ein Vorgabename oder eine Profil-JSON-Datei.</translation>
-    </message>
-    <message>
         <source>User interface language (e.g. de, en); default: system.</source>
         <translation>Sprache der Oberfläche (z. B. de, en); Vorgabe: System.</translation>
     </message>
@@ -1527,16 +1642,24 @@
         <translation>Ein Bild des Fensters speichern, sobald der Auftrag geplant ist, dann beenden.</translation>
     </message>
     <message>
-        <source>SVG drawing to open.</source>
-        <translation>Zu öffnende SVG-Zeichnung.</translation>
-    </message>
-    <message>
         <source>With --screenshot: show the workspace legend (legend) or a map (transmission, conditioning or resolution).</source>
         <translation>Mit --screenshot: die Arbeitsraum-Legende (legend) oder eine Karte (transmission, conditioning oder resolution) zeigen.</translation>
     </message>
     <message>
         <source>With --screenshot: simulation position as a fraction of the job (0 to 1).</source>
         <translation>Mit --screenshot: Position der Simulation als Anteil des Auftrags (0 bis 1).</translation>
+    </message>
+    <message>
+        <source>Machine profile: a preset name or a profile JSON file (default: the last one used, else maker-plotter).</source>
+        <translation>Maschinenprofil: ein Vorgabename oder eine Profil-JSON-Datei (Standard: das zuletzt verwendete, sonst maker-plotter).</translation>
+    </message>
+    <message>
+        <source>Plan the drawing or project as the studio does, write the G-code and exit (no window).</source>
+        <translation>Die Zeichnung oder das Projekt wie im Studio planen, den G-Code schreiben und beenden (ohne Fenster).</translation>
+    </message>
+    <message>
+        <source>SVG drawing or project to open.</source>
+        <translation>SVG-Zeichnung oder Projekt zum Öffnen.</translation>
     </message>
 </context>
 </TS>

@@ -9,23 +9,26 @@ QString trCmd(const char* text) { return QCoreApplication::translate("DocumentCo
 }  // namespace
 
 ReplaceDrawingCommand::ReplaceDrawingCommand(StudioDocument& doc, Drawing drawing,
-                                             QString fileName, Placement placement)
+                                             QString fileName, Placement placement,
+                                             DrawingSource source)
     : QUndoCommand(trCmd(QT_TRANSLATE_NOOP("DocumentCommands", "Import drawing"))),
       doc_(doc),
       before_(doc.drawing()),
       after_(std::move(drawing)),
       fileBefore_(doc.fileName()),
       fileAfter_(std::move(fileName)),
+      sourceBefore_(doc.source()),
+      sourceAfter_(std::move(source)),
       placementBefore_(doc.placement()),
       placementAfter_(placement) {}
 
 void ReplaceDrawingCommand::undo() {
-  doc_.applyDrawing(before_, fileBefore_);
+  doc_.applyDrawing(before_, fileBefore_, sourceBefore_);
   doc_.applyPlacement(placementBefore_);
 }
 
 void ReplaceDrawingCommand::redo() {
-  doc_.applyDrawing(after_, fileAfter_);
+  doc_.applyDrawing(after_, fileAfter_, sourceAfter_);
   doc_.applyPlacement(placementAfter_);
 }
 

@@ -10,7 +10,8 @@ namespace fivebar::widgets {
 
 class ReplaceDrawingCommand : public QUndoCommand {
  public:
-  ReplaceDrawingCommand(StudioDocument& doc, Drawing drawing, QString fileName, Placement placement);
+  ReplaceDrawingCommand(StudioDocument& doc, Drawing drawing, QString fileName, Placement placement,
+                        DrawingSource source);
   void undo() override;
   void redo() override;
 
@@ -18,6 +19,7 @@ class ReplaceDrawingCommand : public QUndoCommand {
   StudioDocument& doc_;
   Drawing before_, after_;
   QString fileBefore_, fileAfter_;
+  DrawingSource sourceBefore_, sourceAfter_;
   Placement placementBefore_, placementAfter_;
 };
 

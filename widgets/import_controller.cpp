@@ -6,29 +6,26 @@
 #include <QSettings>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include "widgets/job_pipeline.hpp"
+
 namespace fivebar::widgets {
 namespace {
 const char* const kRecentKey = "import/recentFiles";
 const char* const kLastDirKey = "import/lastDirectory";
+
+// The options a fresh drawing is loaded with: the document's mode and tolerance, no placement
+// (autoPlacement at true size).
+PlanOptions importOptions(const StudioDocument& doc) {
+  PlanOptions o;
+  o.mode = doc.modeSelection();
+  o.toleranceMm = doc.toleranceMm();
+  return o;
+}
 }  // namespace
 
-Placement initialPlacement(const Drawing& drawing, const std::optional<RectMm>& rect,
-                           const Geometry& geometry) {
-  if (rect) {
-    if (auto fitted = fitPlacement(drawing, *rect, true, ImportController::kFitMarginMm)) {
-      return *fitted;
-    }
-  }
-  Placement p;
-  p.centerMm = Vec2(0.0, 0.5 * (geometry.a1 + geometry.b1));
-  return p;
-}
-
-ImportController::ImportController(StudioDocument& doc, WorkspaceCache& workspace,
-                                   QWidget* dialogParent, QObject* parent)
-    : QObject(parent), doc_(doc), workspace_(workspace), dialogParent_(dialogParent) {
-  connect(&watcher_, &QFutureWatcher<svg::ImportResult>::finished, this,
-          &ImportController::onFinished);
+ImportController::ImportController(StudioDocument& doc, QWidget* dialogParent, QObject* parent)
+    : QObject(parent), doc_(doc), dialogParent_(dialogParent) {
+  connect(&watcher_, &QFutureWatcher<ImportOutcome>::finished, this, &ImportController::onFinished);
 }
 
 QStringList ImportController::recentFiles() const {
@@ -55,20 +52,37 @@ void ImportController::addRecent(const QString& path) {
 void ImportController::showOpenDialog() {
   const QString dir = QSettings().value(kLastDirKey).toString();
   const QString path = QFileDialog::getOpenFileName(
-      dialogParent_, tr("Open drawing"), dir, tr("SVG drawings (*.svg);;All files (*)"));
+      dialogParent_, tr("Open drawing or project"), dir,
+      tr("Drawings and projects (*.svg *.fivebar);;SVG drawings (*.svg);;FiveBar projects (*.fivebar);;All files (*)"));
   if (!path.isEmpty()) openFile(path);
 }
 
 void ImportController::openFile(const QString& path) {
-  start([path](const svg::ImportOptions& o, const svg::ProgressFn& f) {
-          return svg::importSvgFile(path, o, f);
+  // A project brings its own machine; a drawing is placed for the document's.
+  const std::optional<MachineProfile> profile =
+      isProjectPath(path) ? std::nullopt : std::optional<MachineProfile>(doc_.profile());
+  const PlanOptions options = importOptions(doc_);
+  start([path, profile, options](const std::atomic<bool>* cancel) {
+          ImportOutcome out;
+          PlanOptions o = options;
+          o.cancel = cancel;
+          out.job = loadJob(path, profile, o, out.error);
+          if (out.job) out.job->options.cancel = nullptr;
+          return out;
         },
         path, true);
 }
 
 void ImportController::openData(const QByteArray& svg, const QString& name) {
-  start([svg, name](const svg::ImportOptions& o, const svg::ProgressFn& f) {
-          return svg::importSvgData(svg, name, o, f);
+  const MachineProfile profile = doc_.profile();
+  const PlanOptions options = importOptions(doc_);
+  start([svg, name, profile, options](const std::atomic<bool>* cancel) {
+          ImportOutcome out;
+          PlanOptions o = options;
+          o.cancel = cancel;
+          out.job = loadDrawing(DrawingSource{svg, name}, profile, o, out.error);
+          if (out.job) out.job->options.cancel = nullptr;
+          return out;
         },
         name, false);
 }
@@ -77,9 +91,8 @@ void ImportController::cancel() {
   if (cancel_) cancel_->store(true);
 }
 
-void ImportController::start(
-    std::function<svg::ImportResult(const svg::ImportOptions&, const svg::ProgressFn&)> job,
-    const QString& name, bool remember) {
+void ImportController::start(std::function<ImportOutcome(const std::atomic<bool>*)> job,
+                             const QString& name, bool remember) {
   if (busy()) {
     emit finished(false, tr("%1: another import is still running.").arg(name));
     return;
@@ -89,7 +102,7 @@ void ImportController::start(
   cancel_ = std::make_shared<std::atomic<bool>>(false);
   if (interactive_) {
     dialog_ = new QProgressDialog(tr("Importing %1...").arg(QFileInfo(name).fileName()),
-                                  tr("Cancel"), 0, 1000, dialogParent_);
+                                  tr("Cancel"), 0, 0, dialogParent_);
     dialog_->setWindowTitle(tr("Import"));
     dialog_->setMinimumDuration(300);
     dialog_->setWindowModality(Qt::WindowModal);
@@ -98,56 +111,55 @@ void ImportController::start(
     connect(dialog_, &QProgressDialog::canceled, this, &ImportController::cancel);
   }
   auto cancelFlag = cancel_;
-  QPointer<ImportController> self(this);
-  watcher_.setFuture(QtConcurrent::run([job = std::move(job), cancelFlag, self] {
-    svg::ImportOptions options;
-    options.cancel = cancelFlag.get();
-    const svg::ProgressFn onProgress = [self](double fraction) {
-      // Called on this worker thread: hand the value to the UI thread.
-      QMetaObject::invokeMethod(
-          self, [self, fraction] { if (self) emit self->progress(fraction); },
-          Qt::QueuedConnection);
-    };
+  watcher_.setFuture(QtConcurrent::run([job = std::move(job), cancelFlag] {
     try {
-      return job(options, onProgress);
+      ImportOutcome out = job(cancelFlag.get());
+      out.cancelled = cancelFlag->load();
+      return out;
     } catch (const std::exception& e) {
-      svg::ImportResult failed;
-      failed.status = svg::ImportStatus::RenderFailed;
-      failed.message = e.what();
+      ImportOutcome failed;
+      failed.error = e.what();
       return failed;
     }
   }));
-  if (dialog_) {
-    connect(this, &ImportController::progress, dialog_,
-            [d = dialog_](double f) { if (d) d->setValue(static_cast<int>(f * 1000.0)); });
-  }
 }
 
 void ImportController::onFinished() {
   if (dialog_) dialog_->deleteLater();
-  const svg::ImportResult result = watcher_.result();
+  ImportOutcome result = watcher_.result();
   const QString name = pendingName_;
-  if (!result.ok()) {
-    QString message = QString::fromStdString(result.message);
-    if (result.status == svg::ImportStatus::Cancelled) message = tr("Import of %1 cancelled.").arg(name);
+  if (result.cancelled || !result.job) {
+    QString message = QString::fromStdString(result.error);
+    if (result.cancelled) message = tr("Import of %1 cancelled.").arg(name);
     if (message.isEmpty()) message = tr("%1 could not be imported.").arg(name);
-    if (interactive_ && result.status != svg::ImportStatus::Cancelled) {
+    if (interactive_ && !result.cancelled)
       QMessageBox::warning(dialogParent_, tr("Import failed"), message);
-    }
     emit finished(false, message);
     return;
   }
-  if (result.drawing.layers.empty()) {
+  LoadedJob& job = *result.job;
+  if (job.drawing.layers.empty()) {
     const QString message = tr("%1 contains nothing to draw.").arg(name);
     if (interactive_) QMessageBox::warning(dialogParent_, tr("Import failed"), message);
     emit finished(false, message);
     return;
   }
-  const Placement placement = initialPlacement(
-      result.drawing, workspace_.fitRectangle(doc_.effectiveMode()), doc_.profile().geometry);
-  doc_.replaceDrawing(result.drawing, name, placement);
+  Placement placement;
+  if (job.options.atMm) {
+    placement = Placement{*job.options.atMm, job.options.rotationRad, job.options.scale,
+                          job.options.stretchY};
+  } else {  // no singularity-free area: in front of the motors, true size
+    placement.centerMm = Vec2(0.0, 0.5 * (doc_.profile().geometry.a1 + doc_.profile().geometry.b1));
+  }
+  note_ = QString::fromStdString(job.note);
+  if (job.isProject) {
+    doc_.loadProject(job.drawing, job.source, placement, job.options.mode, job.options.toleranceMm,
+                     job.profile, name);
+  } else {
+    doc_.replaceDrawing(job.drawing, name, placement, job.source);
+  }
   if (pendingRemember_) addRecent(name);
-  emit finished(true, QString());
+  emit finished(true, note_);
 }
 
 }  // namespace fivebar::widgets

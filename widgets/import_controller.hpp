@@ -1,7 +1,9 @@
-// Importing drawings into the document: runs the SVG import off the UI thread (the import
-// library parses in its worker process) with a progress dialog and cancel, places the result
-// fitted into the largest singularity-free rectangle of the document's mode, and keeps the
-// recent-files list (QSettings). Errors are reported in a message naming the file.
+// Importing drawings and opening projects into the document: runs the SVG import off the UI
+// thread (the import library parses in its worker process) with a progress dialog and cancel,
+// places a drawing by core's autoPlacement (true size when it fits, centred in the largest
+// singularity-free rectangle; widgets/job_source.hpp, as `fivebar plan` does), and keeps the
+// recent-files list (drawings and projects, QSettings). Errors are reported in a message naming
+// the file.
 #pragma once
 
 #include <QFutureWatcher>
@@ -10,61 +12,65 @@
 #include <QProgressDialog>
 #include <QStringList>
 #include <atomic>
+#include <functional>
 #include <memory>
+#include <string>
 
-#include "core/import/svg_import.hpp"
+#include "widgets/job_source.hpp"
 #include "widgets/studio_document.hpp"
-#include "widgets/workspace_cache.hpp"
 
 namespace fivebar::widgets {
 
-// Placement of `drawing` fitted into `rect` with a small margin; when the fit is impossible
-// (empty drawing or no rectangle) the drawing is centred at true size in front of the motors.
-Placement initialPlacement(const Drawing& drawing, const std::optional<RectMm>& rect,
-                           const Geometry& geometry);
+// What an import gives back: the loaded job or the error.
+struct ImportOutcome {
+  std::optional<LoadedJob> job;
+  std::string error;
+  bool cancelled = false;
+};
 
 class ImportController : public QObject {
   Q_OBJECT
  public:
   static constexpr int kMaxRecentFiles = 8;
-  static constexpr double kFitMarginMm = 2.0;
 
-  ImportController(StudioDocument& doc, WorkspaceCache& workspace, QWidget* dialogParent,
-                   QObject* parent = nullptr);
+  ImportController(StudioDocument& doc, QWidget* dialogParent, QObject* parent = nullptr);
 
   // false: no dialogs (tests, --screenshot); results only through the signals.
   void setInteractive(bool on) { interactive_ = on; }
   bool busy() const { return watcher_.isRunning(); }
   QStringList recentFiles() const;
+  // Puts a file at the top of the recent list (drawings on import, projects on save).
+  void addRecent(const QString& path);
+  // The last placement note ("scaled to 62 % to fit the workspace"), empty when true size.
+  QString placementNote() const { return note_; }
 
  public slots:
   void showOpenDialog();
-  // Imports a file through the isolated worker process.
+  // Imports a drawing (SVG) or opens a project (.fivebar) through the isolated worker process.
   void openFile(const QString& path);
-  // Imports an in-memory SVG that the application trusts (the built-in demo), in this process.
+  // Imports an in-memory SVG (the built-in demo).
   void openData(const QByteArray& svg, const QString& name);
   void cancel();
   void clearRecentFiles();
 
  signals:
-  // ok = the drawing is in the document; message = the error otherwise (names the file).
+  // ok = the drawing is in the document; message = the error otherwise (names the file), or
+  // the placement note when ok.
   void finished(bool ok, const QString& message);
   void recentFilesChanged();
-  void progress(double fraction);
 
  private:
-  void start(std::function<svg::ImportResult(const svg::ImportOptions&, const svg::ProgressFn&)> job,
-             const QString& name, bool remember);
+  void start(std::function<ImportOutcome(const std::atomic<bool>*)> job, const QString& name,
+             bool remember);
   void onFinished();
-  void addRecent(const QString& path);
 
   StudioDocument& doc_;
-  WorkspaceCache& workspace_;
   QPointer<QWidget> dialogParent_;
-  QFutureWatcher<svg::ImportResult> watcher_;
+  QFutureWatcher<ImportOutcome> watcher_;
   std::shared_ptr<std::atomic<bool>> cancel_;
   QPointer<QProgressDialog> dialog_;
   QString pendingName_;
+  QString note_;
   bool pendingRemember_ = false;
   bool interactive_ = true;
 };

@@ -4,10 +4,13 @@
 #include <set>
 #include <utility>
 
-#include "core/planning/optimise.hpp"
+#include "core/kinematics/units.hpp"
 
 namespace fivebar::widgets {
 namespace {
+
+// Problems listed in the studio (the CLI lists 20).
+constexpr int kListedProblems = 200;
 
 QString trPipe(const char* text) { return QCoreApplication::translate("JobPipeline", text); }
 
@@ -63,51 +66,71 @@ std::shared_ptr<PathScene> jobSceneOf(const PlannedJob& job) {
   return std::make_shared<PathScene>(paths);
 }
 
+PlanOptions studioPlanOptions(const Placement& placement, ModeSelection mode, double toleranceMm) {
+  PlanOptions options;
+  options.mode = mode;
+  options.toleranceMm = toleranceMm;
+  setFixedPlacement(options, placement);
+  return options;
+}
+
 PreviewResult runPipeline(const PipelineInput& input) {
   PreviewResult out;
-  std::vector<Stroke> strokes = placeDrawing(input.drawing, input.placement);
+  Drawing drawing = input.drawing;
+  std::vector<Stroke> strokes = placeDrawing(drawing, input.placement);
   if (strokes.empty()) {
     out.status = PreviewStatus::Empty;
     out.message = trPipe(QT_TRANSLATE_NOOP("JobPipeline", "Nothing to plan: the drawing has no visible path."));
     out.drawingScene = std::make_shared<PathScene>();
     return out;
   }
-  const PreflightSummary pre =
-      runPreflight(strokes, input.drawing, input.profile, input.modeSelection);
-  out.mode = pre.mode;
-  out.minMarginRad = pre.minMarginRad;
-  out.problems = pre.problems;
-  out.drawingScene = drawingSceneOf(strokes, pre.problems);
-  if (!pre.mode || !pre.feasible) {
-    out.status = PreviewStatus::Infeasible;
-    out.message = pre.mode ? trPipe(QT_TRANSLATE_NOOP("JobPipeline", "The job is not feasible in this working mode."))
-                           : trPipe(QT_TRANSLATE_NOOP("JobPipeline", "No working mode can draw the whole job."));
-    return out;
+  PlanOptions options = studioPlanOptions(input.placement, input.modeSelection, input.toleranceMm);
+  options.maxListedProblems = kListedProblems;
+  options.cancel = input.cancel.get();
+  std::string importError;
+  PlanResult plan = planRefining(drawing, input.source, input.profile, options, importError);
+  if (drawing.flatteningToleranceMm != input.drawing.flatteningToleranceMm) {
+    out.refinedDrawing = std::make_shared<const Drawing>(drawing);
+    strokes = placeDrawing(drawing, input.placement);
   }
-  OptimiseOptions optimiseOptions;
-  optimiseOptions.start = input.profile.homeAngles;
-  OptimiseResult optimised =
-      optimise(std::move(strokes), input.profile, *pre.mode, optimiseOptions);
-  PlanOptions options;
-  options.mode = pre.mode;
-  options.toleranceMm = input.toleranceMm;
-  PlanResult plan = planStrokes(optimised.strokes, input.drawing.layers, input.profile,
-                                *pre.mode, options);
   out.report = plan.report;
-  if (!plan.ok()) {
-    out.status = plan.status == PlanStatus::Infeasible ? PreviewStatus::Infeasible
-                                                        : PreviewStatus::Failed;
-    out.message = QString::fromStdString(plan.message);
-    for (const PlanProblem& p : plan.report.problems) {
-      out.problems.push_back({QString::fromStdString(p.path + ": " + p.why), toQ(p.whereMm)});
-    }
-    return out;
+  out.mode = plan.report.mode;
+  out.minMarginRad = radFromDeg(plan.report.minSingularityMarginDeg);
+  for (const PlanProblem& p : plan.report.problems) {
+    PreviewProblem q;
+    q.text = QString::fromStdString(p.path + ": " + p.why);
+    for (const std::string& f : p.fixes) q.fixes << QString::fromStdString(f);
+    q.whereMm = toQ(p.whereMm);
+    q.layerIndex = p.layerIndex;
+    q.pathIndex = p.pathIndex;
+    out.problems.push_back(std::move(q));
+  }
+  out.drawingScene = drawingSceneOf(strokes, out.problems);
+  switch (plan.status) {
+    case PlanStatus::Ok: break;
+    case PlanStatus::Cancelled:
+      out.status = PreviewStatus::Cancelled;
+      out.message = trPipe(QT_TRANSLATE_NOOP("JobPipeline", "Planning cancelled."));
+      return out;
+    case PlanStatus::Infeasible:
+      out.status = PreviewStatus::Infeasible;
+      out.message = QString::fromStdString(plan.message);
+      return out;
+    case PlanStatus::EmptyDrawing:
+      out.status = PreviewStatus::Empty;
+      out.message = QString::fromStdString(plan.message);
+      return out;
+    default:
+      out.status = PreviewStatus::Failed;
+      out.message = QString::fromStdString(importError.empty() ? plan.message : importError);
+      return out;
   }
   auto job = std::make_shared<PlannedJob>(std::move(plan.job));
   out.trajectory = std::make_shared<Trajectory>(*job, input.profile);
   out.jobScene = jobSceneOf(*job);
   out.job = std::move(job);
   out.status = PreviewStatus::Planned;
+  out.message = trPipe(QT_TRANSLATE_NOOP("JobPipeline", "Planned in working mode %1.")).arg(QString::fromUtf8(toString(*out.mode).data(), static_cast<int>(toString(*out.mode).size())));
   return out;
 }
 

@@ -10,14 +10,24 @@ PreviewController::PreviewController(StudioDocument& doc, QObject* parent)
   debounce_.setSingleShot(true);
   debounce_.setInterval(kDebounceMs);
   connect(&debounce_, &QTimer::timeout, this, &PreviewController::startPlanning);
-  connect(&doc_, &StudioDocument::jobInputsChanged, &debounce_, qOverload<>(&QTimer::start));
-  connect(&watcher_, &QFutureWatcher<PreviewResult>::finished, this,
-          &PreviewController::onFinished);
+  connect(&doc_, &StudioDocument::jobInputsChanged, this, [this] {
+    if (cancel_) cancel_->store(true);  // the running plan is outdated already
+    debounce_.start();
+  });
+}
+
+PreviewController::~PreviewController() {
+  if (cancel_) cancel_->store(true);
 }
 
 void PreviewController::replanNow() {
   debounce_.stop();
   startPlanning();
+}
+
+void PreviewController::cancel() {
+  debounce_.stop();
+  if (cancel_) cancel_->store(true);
 }
 
 void PreviewController::setScrubLimit(int moveLimit) {
@@ -27,14 +37,18 @@ void PreviewController::setScrubLimit(int moveLimit) {
 }
 
 void PreviewController::startPlanning() {
-  if (watcher_.isRunning()) {
-    pendingRestart_ = true;  // plan again with the newest inputs when this run ends
-    return;
-  }
-  PipelineInput input{doc_.drawing(), doc_.placement(), doc_.profile(), doc_.modeSelection()};
-  runningPlacement_ = input.placement;
+  if (cancel_) cancel_->store(true);  // an older run stops at its next chunk; its result is dropped
+  cancel_ = std::make_shared<std::atomic<bool>>(false);
+  const int generation = ++generation_;
+  PipelineInput input{doc_.drawing(), doc_.source(), doc_.placement(), doc_.profile(),
+                      doc_.modeSelection(), doc_.toleranceMm(), cancel_};
+  const Placement placement = input.placement;
+  running_ = 1;
   emit planningStarted();
-  watcher_.setFuture(QtConcurrent::run([input = std::move(input)]() {
+  auto* watcher = new QFutureWatcher<PreviewResult>(this);
+  connect(watcher, &QFutureWatcher<PreviewResult>::finished, this,
+          [this, watcher, generation, placement] { onFinished(watcher, generation, placement); });
+  watcher->setFuture(QtConcurrent::run([input = std::move(input)]() {
     try {
       return runPipeline(input);
     } catch (const std::exception& e) {
@@ -47,14 +61,19 @@ void PreviewController::startPlanning() {
   }));
 }
 
-void PreviewController::onFinished() {
-  if (pendingRestart_) {
-    pendingRestart_ = false;
-    startPlanning();  // the finished result is already stale
+void PreviewController::onFinished(QFutureWatcher<PreviewResult>* watcher, int generation,
+                                   Placement placement) {
+  watcher->deleteLater();
+  if (generation != generation_) return;  // a newer plan was asked for
+  running_ = 0;
+  PreviewResult r = watcher->result();
+  if (r.status == PreviewStatus::Cancelled) {
+    emit resultChanged();  // busy() changed: the views stop showing "planning"
     return;
   }
-  result_ = watcher_.result();
-  resultPlacement_ = runningPlacement_;
+  if (r.refinedDrawing) doc_.applyRefinedDrawing(*r.refinedDrawing);
+  result_ = std::move(r);
+  resultPlacement_ = placement;
   scrubLimit_ = -1;
   doc_.setAutoResolvedMode(result_.mode);
   emit resultChanged();

@@ -86,6 +86,7 @@ PreviewPanel::PreviewPanel(PreviewController& preview, JobLayer& layer, QWidget*
   problems_ = new QListWidget(this);
   problems_->setObjectName(QStringLiteral("previewProblems"));
   problems_->setWordWrap(true);
+  problems_->setMinimumHeight(160);  // room to read a problem and what to do about it
   layout->addWidget(problems_, 1);
 
   bySpeed_->setChecked(layer_.colourBySpeed());
@@ -119,8 +120,10 @@ void PreviewPanel::showResult() {
     case PreviewStatus::Planned: status_->setText(tr("Planned.")); break;
     case PreviewStatus::Empty: status_->setText(tr("Open a drawing to plan a job.")); break;
     case PreviewStatus::Infeasible:
-    case PreviewStatus::Failed: status_->setText(r.message); break;
+    case PreviewStatus::Failed:
+    case PreviewStatus::Cancelled: status_->setText(r.message); break;
   }
+  if (preview_.busy()) showPlanning();
   const QString mode = r.mode ? QString::fromLatin1(toString(*r.mode).data(), 2)
                               : QStringLiteral("-");
   if (r.status == PreviewStatus::Planned) {
@@ -137,7 +140,7 @@ void PreviewPanel::showResult() {
                         .arg(s.penDownMm, 0, 'f', 0)
                         .arg(s.travelMm, 0, 'f', 0)
                         .arg(s.segments)
-                        .arg(s.maxDeviationMm, 0, 'f', 3)
+                        .arg(r.report.maxDeviationMm, 0, 'f', 3)
                         .arg(degFromRad(s.minTypeIIMarginRad), 0, 'f', 1));
   } else {
     stats_->setText(tr("Working mode: <b>%1</b>").arg(mode));
@@ -154,8 +157,11 @@ void PreviewPanel::showResult() {
   scrubLabel_->setText(tr("Moves shown: %1 of %2").arg(moves).arg(moves));
   problems_->clear();
   for (const PreviewProblem& p : r.problems) {
-    auto* item = new QListWidgetItem(p.text, problems_);
+    QString text = p.text;
+    if (!p.fixes.isEmpty()) text += QStringLiteral("\n") + tr("What to do: %1").arg(p.fixes.join(QStringLiteral("; ")));
+    auto* item = new QListWidgetItem(text, problems_);
     item->setForeground(palette::problem());
+    item->setToolTip(text);
   }
   if (r.problems.empty() && r.status == PreviewStatus::Planned) {
     auto* item = new QListWidgetItem(tr("No problems: every move is reachable and safe."), problems_);

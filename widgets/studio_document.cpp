@@ -8,7 +8,40 @@
 namespace fivebar::widgets {
 
 StudioDocument::StudioDocument(MachineProfile profile, QObject* parent)
-    : QObject(parent), profile_(std::move(profile)) {}
+    : QObject(parent), profile_(std::move(profile)) {
+  connect(&undo_, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
+}
+
+void StudioDocument::loadProject(const Drawing& drawing, const DrawingSource& source,
+                                 const Placement& placement, ModeSelection mode, double toleranceMm,
+                                 const MachineProfile& profile, const QString& projectPath) {
+  undo_.clear();
+  toleranceMm_ = toleranceMm;
+  applyProfile(profile);
+  applyModeSelection(mode);
+  applyDrawing(drawing, projectPath, source);
+  applyPlacement(placement);
+  markSaved(projectPath);
+}
+
+void StudioDocument::applyRefinedDrawing(const Drawing& drawing) {
+  Drawing refined = drawing;
+  // The settings the user has now win over those the plan was made with.
+  for (std::size_t i = 0; i < refined.layers.size() && i < drawing_.layers.size(); ++i) {
+    if (refined.layers[i].id != drawing_.layers[i].id) return;  // a different drawing by now
+    refined.layers[i].visible = drawing_.layers[i].visible;
+    refined.layers[i].tool = drawing_.layers[i].tool;
+  }
+  drawing_ = std::move(refined);
+}
+
+void StudioDocument::markSaved(const QString& path) {
+  undo_.setClean();
+  if (path != projectPath_) {
+    projectPath_ = path;
+    emit projectPathChanged();
+  }
+}
 
 WorkingMode StudioDocument::effectiveMode() const {
   if (modeSelection_) return *modeSelection_;
@@ -16,8 +49,8 @@ WorkingMode StudioDocument::effectiveMode() const {
 }
 
 void StudioDocument::replaceDrawing(const Drawing& drawing, const QString& fileName,
-                                    const Placement& placement) {
-  undo_.push(new ReplaceDrawingCommand(*this, drawing, fileName, placement));
+                                    const Placement& placement, const DrawingSource& source) {
+  undo_.push(new ReplaceDrawingCommand(*this, drawing, fileName, placement, source));
 }
 
 void StudioDocument::setPlacement(const Placement& placement, int gestureId) {
@@ -83,9 +116,11 @@ void StudioDocument::setAutoResolvedMode(std::optional<WorkingMode> mode) {
   if (effectiveMode() != before) emit effectiveModeChanged();
 }
 
-void StudioDocument::applyDrawing(const Drawing& drawing, const QString& fileName) {
+void StudioDocument::applyDrawing(const Drawing& drawing, const QString& fileName,
+                                  const DrawingSource& source) {
   drawing_ = drawing;
   fileName_ = fileName;
+  source_ = source;
   emit drawingChanged();
   emit layersChanged();
   emit jobInputsChanged();

@@ -13,6 +13,7 @@
 #include "core/kinematics/modes.hpp"
 #include "core/planning/placement.hpp"
 #include "core/machine/profile.hpp"
+#include "widgets/job_source.hpp"
 
 namespace fivebar::widgets {
 
@@ -34,6 +35,10 @@ class StudioDocument : public QObject {
   const Drawing& drawing() const { return drawing_; }
   const Placement& placement() const { return placement_; }
   const MachineProfile& profile() const { return profile_; }
+  // The SVG text the drawing was imported from (embedded in a saved project).
+  const DrawingSource& source() const { return source_; }
+  // Total tolerance of the drawn line (mm), shared by flattening, rounding and segmentation.
+  double toleranceMm() const { return toleranceMm_; }
   ModeSelection modeSelection() const { return modeSelection_; }
   // The mode the canvas shows: the chosen one, or for Auto the planner's last pick (the
   // profile's default mode until a plan exists).
@@ -44,7 +49,8 @@ class StudioDocument : public QObject {
 
   // --- edits, each one undoable ---
   // Replaces the drawing (an import) and places it.
-  void replaceDrawing(const Drawing& drawing, const QString& fileName, const Placement& placement);
+  void replaceDrawing(const Drawing& drawing, const QString& fileName, const Placement& placement,
+                      const DrawingSource& source = {});
   // Sets the placement. Calls with the same non-zero `gestureId` merge into one undo step (a
   // drag); see beginGesture().
   void setPlacement(const Placement& placement, int gestureId = 0);
@@ -62,8 +68,23 @@ class StudioDocument : public QObject {
   void setAutoResolvedMode(std::optional<WorkingMode> mode);
   std::optional<WorkingMode> autoResolvedMode() const { return autoResolved_; }
 
+  // Not an edit: the document becomes a loaded project (drawing, placement, layers, mode,
+  // tolerance, machine); the undo history is cleared and the state counts as saved.
+  void loadProject(const Drawing& drawing, const DrawingSource& source, const Placement& placement,
+                   ModeSelection mode, double toleranceMm, const MachineProfile& profile,
+                   const QString& projectPath);
+  // Not an edit: the same drawing flattened more finely (the planner asked for it); keeps the
+  // layers' settings, the placement and the undo history.
+  void applyRefinedDrawing(const Drawing& drawing);
+  // The project file the document was last saved to or opened from ("" if none).
+  QString projectPath() const { return projectPath_; }
+  // Marks the current state as saved to `path`.
+  void markSaved(const QString& path);
+  // Something changed since the last save (or since the document was opened empty).
+  bool isModified() const { return !undo_.isClean(); }
+
   // --- raw setters used only by the undo commands ---
-  void applyDrawing(const Drawing& drawing, const QString& fileName);
+  void applyDrawing(const Drawing& drawing, const QString& fileName, const DrawingSource& source);
   void applyPlacement(const Placement& placement);
   void applyModeSelection(ModeSelection choice);
   // Reorders the layers (`order[i]` = current index of the layer moving to i), then sets the
@@ -79,6 +100,8 @@ class StudioDocument : public QObject {
   void modeSelectionChanged();
   void profileChanged();
   void effectiveModeChanged();
+  void modifiedChanged(bool modified);
+  void projectPathChanged();
   // Anything that changes the planned job (all of the above except effectiveModeChanged).
   void jobInputsChanged();
 
@@ -89,6 +112,9 @@ class StudioDocument : public QObject {
   ModeSelection modeSelection_;
   std::optional<WorkingMode> autoResolved_;
   QString fileName_;
+  DrawingSource source_;
+  double toleranceMm_ = 0.1;
+  QString projectPath_;
   QUndoStack undo_;
   int lastGesture_ = 0;
 };

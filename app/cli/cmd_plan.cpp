@@ -15,7 +15,7 @@
 #ifdef FIVEBAR_HAVE_IMPORT
 #include <QCoreApplication>
 
-#include "core/import/svg_import.hpp"
+#include "widgets/job_source.hpp"
 #endif
 
 namespace fivebar::cli {
@@ -23,18 +23,22 @@ namespace {
 
 constexpr const char* kPlanHelp =
     "usage: fivebar plan DRAWING.svg --machine PRESET|FILE -o JOB.gcode [options]\n"
+    "       fivebar plan PROJECT.fivebar [--machine PRESET|FILE] -o JOB.gcode\n"
     "  --mode auto|++|+-|-+|--   working mode (auto: the feasible one with the best margin)\n"
     "  --at X,Y                  put the drawing's bbox centre at machine point X,Y (mm), true\n"
-    "                            size times --scale; without --at the drawing is fitted into\n"
-    "                            the mode's largest singularity-free rectangle\n"
+    "                            size times --scale; without --at the drawing is drawn at true\n"
+    "                            size (scaled down only when it does not fit), centred in the\n"
+    "                            largest singularity-free rectangle of the chosen mode\n"
     "  --scale S                 scale factor with --at (default 1)\n"
     "  --rotate DEG              rotate the drawing counter-clockwise (default 0)\n"
-    "  --fit                     fit into the singularity-free rectangle even with --at\n"
+    "  --fit                     scale the drawing up or down to fill that rectangle\n"
     "  --tolerance MM            max distance of the drawn line from the drawing (default 0.1)\n"
     "  --no-optimise             keep the drawing's stroke order and direction\n"
     "  -o, --output JOB.gcode    G-code output file\n"
     "  --report REPORT.json      planning report (also written when the job is infeasible)\n"
     "  --timings                 print the wall-clock and CPU time of each stage to stderr\n"
+    "A project (saved by the studio) brings its drawing, placement, layers, mode, tolerance and\n"
+    "machine; --machine replaces the machine. The G-code is byte-identical to the studio's.\n"
     "Exits 1 when the job is infeasible, naming the first offending path and the reason.\n";
 
 constexpr const char* kSettingsHelp =
@@ -121,31 +125,24 @@ void printProblems(const std::string& file, const PlanResult& r) {
     for (const std::string& fix : problems.front().fixes) std::cerr << "  fix: " << fix << "\n";
 }
 
-// The SVG in the work frame, flattened within toleranceMm; errors go to stderr.
-std::optional<Drawing> importDrawing(const std::string& file, double toleranceMm) {
-#ifdef FIVEBAR_HAVE_IMPORT
-  svg::ImportOptions io;
-  io.toleranceMm = toleranceMm;
-  svg::ImportResult r = svg::importSvgFile(QString::fromStdString(file), io);
-  if (!r.ok()) {
-    std::cerr << "fivebar plan: " << r.message << "\n";
-    return std::nullopt;
-  }
-  return std::move(r.drawing);
-#else
-  (void)toleranceMm;
-  std::cerr << "fivebar plan: " << file << ": this build has no SVG import (configured with "
-               "FIVEBAR_BUILD_GUI=OFF)\n";
-  return std::nullopt;
-#endif
+bool endsWith(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
 int plan(const Options& o) {
-  if (o.positional().size() != 1) throw UsageError("plan needs exactly one DRAWING.svg");
+  if (o.positional().size() != 1) throw UsageError("plan needs exactly one DRAWING.svg or PROJECT.fivebar");
   const std::string file = o.positional()[0];
   const std::string output = o.required("--output");
-  const auto machine = loadMachine(o.required("--machine"), "plan", std::cerr);
-  if (!machine) return 1;
+  const bool project = endsWith(file, ".fivebar");
+  std::optional<MachineProfile> machine;
+  if (!project || o.value("--machine")) {
+    machine = loadMachine(o.required("--machine"), "plan", std::cerr);
+    if (!machine) return 1;
+  }
+  if (project)
+    for (const char* option : {"--mode", "--at", "--scale", "--rotate", "--tolerance"})
+      if (o.value(option)) throw UsageError(std::string(option) + " does not apply to a project (it has its own)");
+  if (project && o.flag("--fit")) throw UsageError("--fit does not apply to a project (it has its own placement)");
   PlanOptions opt = planOptionsFrom(o);
 #ifdef FIVEBAR_HAVE_IMPORT
   int argc = 1;
@@ -153,44 +150,42 @@ int plan(const Options& o) {
   char* argv[] = {name, nullptr};
   std::optional<QCoreApplication> app;  // the import's worker process needs one
   if (!QCoreApplication::instance()) app.emplace(argc, argv);
-#endif
   const auto start = std::chrono::steady_clock::now();
   StageTimes times;
   StageClock clock(times);
-  // Flatten with the tolerance's share, in work-frame mm (the placement scales it).
-  const double share = kFlatteningShare * opt.toleranceMm;
-  double importTol = share / (opt.atMm && !opt.fit ? opt.scale : 1.0);
-  auto drawing = importDrawing(file, importTol);
-  if (!drawing) return 1;
-  clock.lap("import");
-  // Fitting may enlarge the drawing: flatten again, finer, before planning.
-  const std::optional<double> scale = largestPlacementScale(*drawing, *machine, opt);
-  clock.lap("placement and mode screening");
-  if (o.flag("--timings") && scale) std::cerr << "  placement scale " << *scale << "\n";
-  if (scale && *scale * importTol > share * 1.000001) {
-    importTol = share / *scale;
-    drawing = importDrawing(file, importTol);
-    if (!drawing) return 1;
-    clock.lap("import");
+  // The same steps as the studio (widgets/job_source.hpp): import, place, plan (importing again
+  // more finely when the placement enlarges the drawing).
+  std::string error;
+  auto job = widgets::loadJob(QString::fromStdString(file), machine, opt, error);
+  if (!job) {
+    std::cerr << "fivebar plan: " << error << "\n";
+    return 1;
   }
-  opt.flatteningToleranceMm = importTol;
-  PlanResult r = planJob(*drawing, *machine, opt);
+  clock.lap("import and placement");
+  if (!job->note.empty()) std::cerr << "fivebar plan: " << file << ": " << job->note << "\n";
+  if (o.flag("--timings")) std::cerr << "  placement scale " << job->options.scale << "\n";
+  PlanResult r = widgets::planRefining(job->drawing, job->source, job->profile, job->options, error);
   times.append(r.timings);
   clock.restart();
+  if (!error.empty()) {
+    std::cerr << "fivebar plan: " << error << "\n";
+    return 1;
+  }
   if (const auto report = o.value("--report"); report && !writeFile(*report, reportToJson(r.report)))
     return 1;
   if (!r.ok()) {
     printProblems(file, r);
     return 1;
   }
-  if (!writeGcodeFile(output, r.job, *machine)) return 1;
+  if (!writeGcodeFile(output, r.job, job->profile)) return 1;
   clock.lap("G-code");
   const double wallS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const PlanReport& rep = r.report;
   std::cout << output << ": mode " << toString(rep.mode) << ", " << rep.segments << " segments, "
             << "pen down " << std::lround(rep.penDownMm) << " mm, travel "
             << std::lround(rep.travelMm) << " mm, estimated " << std::lround(rep.estimatedTimeS)
-            << " s, max deviation " << fixed9(rep.maxDeviationMm).substr(0, 6) << " mm, margin "
+            << " s, scale " << fixed9(r.placementScale * 100.0).substr(0, 5) << " %, max deviation "
+            << fixed9(rep.maxDeviationMm).substr(0, 6) << " mm, margin "
             << fixed9(rep.minSingularityMarginDeg).substr(0, 5) << " deg (planned in "
             << std::lround(wallS * 1000) << " ms)\n";
   if (o.flag("--timings"))
@@ -198,6 +193,12 @@ int plan(const Options& o) {
       std::cerr << "  " << stage.name << ": " << std::lround(stage.wallS * 1000) << " ms (cpu "
                 << std::lround(stage.cpuS * 1000) << " ms)\n";
   return 0;
+#else
+  (void)opt;
+  std::cerr << "fivebar plan: " << file << ": this build has no SVG import (configured with "
+               "FIVEBAR_BUILD_GUI=OFF)\n";
+  return 1;
+#endif
 }
 
 }  // namespace

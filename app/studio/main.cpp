@@ -1,5 +1,8 @@
 // fivebar-studio: the desktop application. Composition and start-up only:
-//   fivebar-studio [--demo] [--machine PRESET|FILE] [--lang LANG] [--screenshot FILE.png] [FILE.svg]
+//   fivebar-studio [--demo] [--machine PRESET|FILE] [--lang LANG] [--screenshot FILE.png]
+//                  [FILE.svg|PROJECT.fivebar]
+//   fivebar-studio FILE.svg|PROJECT.fivebar [--machine PRESET|FILE] --export-gcode OUT.gcode
+//     (headless: no display needed; app/studio/headless.hpp)
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
@@ -11,6 +14,8 @@
 #include <QTranslator>
 #include <cstdio>
 
+#include "app/studio/file_actions.hpp"
+#include "app/studio/headless.hpp"
 #include "app/studio/main_window.hpp"
 #include "app/studio/startup.hpp"
 #include "widgets/import_controller.hpp"
@@ -19,6 +24,7 @@
 using fivebar::studio::MainWindow;
 
 int main(int argc, char** argv) {
+  if (fivebar::studio::wantsHeadlessExport(argc, argv)) return fivebar::studio::runHeadlessExport(argc, argv);
   QApplication app(argc, argv);
   QApplication::setOrganizationName(QStringLiteral("FiveBar"));
   QApplication::setApplicationName(QStringLiteral("FiveBar Studio"));
@@ -36,8 +42,9 @@ int main(int argc, char** argv) {
                                                                 "default maker plotter."));
   const QCommandLineOption machine(
       QStringLiteral("machine"),
-      QApplication::translate("main", "Machine profile: a preset name or a profile JSON file."),
-      QStringLiteral("PRESET|FILE"), QStringLiteral("maker-plotter"));
+      QApplication::translate("main", "Machine profile: a preset name or a profile JSON file "
+                                      "(default: the last one used, else maker-plotter)."),
+      QStringLiteral("PRESET|FILE"));
   const QCommandLineOption lang(
       QStringLiteral("lang"),
       QApplication::translate("main", "User interface language (e.g. de, en); default: system."),
@@ -58,10 +65,15 @@ int main(int argc, char** argv) {
       QApplication::translate("main", "With --screenshot: simulation position as a fraction "
                                       "of the job (0 to 1)."),
       QStringLiteral("FRACTION"));
-  parser.addOptions({demo, machine, lang, screenshot, overlay, atTime});
+  const QCommandLineOption exportGcode(
+      QStringLiteral("export-gcode"),
+      QApplication::translate("main", "Plan the drawing or project as the studio does, write the "
+                                      "G-code and exit (no window)."),
+      QStringLiteral("OUT.gcode"));
+  parser.addOptions({demo, machine, lang, screenshot, overlay, atTime, exportGcode});
   parser.addPositionalArgument(QStringLiteral("drawing"),
-                               QApplication::translate("main", "SVG drawing to open."),
-                               QStringLiteral("[FILE.svg]"));
+                               QApplication::translate("main", "SVG drawing or project to open."),
+                               QStringLiteral("[FILE.svg|PROJECT.fivebar]"));
   parser.process(app);
 
   QTranslator translator;
@@ -77,7 +89,16 @@ int main(int argc, char** argv) {
   }
 
   std::string error;
-  const auto profile = fivebar::studio::resolveProfile(parser.value(machine).toStdString(), error);
+  std::optional<fivebar::MachineProfile> profile;
+  if (!parser.isSet(machine)) {  // the profile of the last session, edits included
+    const QString remembered = fivebar::studio::FileActions::rememberedProfileJson();
+    if (!remembered.isEmpty())
+      profile = fivebar::profileFromJson(remembered.toStdString(), "remembered profile").profile;
+  }
+  if (!profile) {
+    const QString name = parser.isSet(machine) ? parser.value(machine) : QStringLiteral("maker-plotter");
+    profile = fivebar::studio::resolveProfile(name.toStdString(), error);
+  }
   if (!profile) {
     std::fprintf(stderr, "fivebar-studio: %s\n", error.c_str());
     return 2;

@@ -15,6 +15,7 @@
 #include <QToolBar>
 #include <QUndoStack>
 
+#include "app/studio/file_actions.hpp"
 #include "core/kinematics/kinematics.hpp"
 #include "widgets/canvas_view.hpp"
 #include "widgets/import_controller.hpp"
@@ -53,7 +54,8 @@ MainWindow::MainWindow(const MachineProfile& profile, QWidget* parent) : QMainWi
   workspace_ = new WorkspaceCache(*doc_, this);
   preview_ = new PreviewController(*doc_, this);
   simulation_ = new SimulationController(this);
-  importer_ = new ImportController(*doc_, *workspace_, this, this);
+  importer_ = new ImportController(*doc_, this, this);
+  files_ = new FileActions(*doc_, *preview_, *importer_, this);
   connect(preview_, &PreviewController::resultChanged, this,
           [this] { simulation_->setTrajectory(preview_->result().trajectory); });
   createCanvas();
@@ -76,13 +78,19 @@ MainWindow::MainWindow(const MachineProfile& profile, QWidget* parent) : QMainWi
           [this] { statusBar()->showMessage(preview_->result().message, 8000); });
   connect(importer_, &ImportController::finished, this, [this](bool ok, const QString& message) {
     if (ok) {
-      setWindowFilePath(doc_->fileName());
+      updateTitle();
       fitView();
       preview_->replanNow();
+      if (auto* panel = findChild<PlacementPanel*>()) panel->setNote(message);
+      if (!message.isEmpty()) statusBar()->showMessage(message, 10000);
     } else {
       statusBar()->showMessage(message, 10000);
     }
   });
+  connect(files_, &FileActions::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+  connect(doc_, &StudioDocument::modifiedChanged, this, &MainWindow::updateTitle);
+  connect(doc_, &StudioDocument::projectPathChanged, this, &MainWindow::updateTitle);
+  updateTitle();
   connect(workspace_, &WorkspaceCache::ready, this, [this] {
     if (!doc_->hasDrawing()) fitView();
   });
@@ -145,7 +153,7 @@ QDockWidget* MainWindow::addMachinePanel(QWidget* panel, const QString& title,
 void MainWindow::createDocks() {
   auto* mode = addDock(new ModePanel(*doc_, *workspaceLayer_, *preview_, this),
                        tr("Workspace"), QStringLiteral("dockWorkspace"), Qt::LeftDockWidgetArea);
-  auto* placement = addDock(new PlacementPanel(*doc_, *workspace_, this), tr("Placement"),
+  auto* placement = addDock(new PlacementPanel(*doc_, this), tr("Placement"),
                             QStringLiteral("dockPlacement"), Qt::LeftDockWidgetArea);
   auto* layers = addDock(new LayersPanel(*doc_, this), tr("Layers"), QStringLiteral("dockLayers"),
                          Qt::LeftDockWidgetArea);
@@ -163,12 +171,22 @@ void MainWindow::createDocks() {
 
 void MainWindow::createMenus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
-  QAction* open = file->addAction(tr("&Open drawing..."), importer_,
-                                  &ImportController::showOpenDialog);
+  QAction* open = file->addAction(tr("&Open drawing or project..."), files_, &FileActions::open);
   open->setShortcut(QKeySequence::Open);
   recentMenu_ = file->addMenu(tr("Open &recent"));
   connect(importer_, &ImportController::recentFilesChanged, this, &MainWindow::rebuildRecentMenu);
   rebuildRecentMenu();
+  file->addSeparator();
+  QAction* save = file->addAction(tr("&Save project"), files_, &FileActions::save);
+  save->setShortcut(QKeySequence::Save);
+  save->setObjectName(QStringLiteral("actionSave"));
+  QAction* saveAs = file->addAction(tr("Save project &as..."), files_, &FileActions::saveAs);
+  saveAs->setShortcut(QKeySequence::SaveAs);
+  saveAs->setObjectName(QStringLiteral("actionSaveAs"));
+  file->addSeparator();
+  QAction* exportGcode = file->addAction(tr("&Export G-code..."), files_, &FileActions::exportGcode);
+  exportGcode->setShortcut(QKeySequence(tr("Ctrl+E")));
+  exportGcode->setObjectName(QStringLiteral("actionExportGcode"));
   file->addSeparator();
   QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
   quit->setShortcut(QKeySequence::Quit);
@@ -185,6 +203,9 @@ void MainWindow::createMenus() {
     if (auto* panel = findChild<PlacementPanel*>()) panel->fitToWorkspace();
   });
   fit->setShortcut(QKeySequence(tr("Ctrl+F")));
+  edit->addAction(tr("&Actual size (100 %)"), this, [this] {
+    if (auto* panel = findChild<PlacementPanel*>()) panel->actualSize();
+  })->setShortcut(QKeySequence(tr("Ctrl+1")));
 
   viewMenu_ = menuBar()->addMenu(tr("&View"));
   QAction* zoomIn = viewMenu_->addAction(tr("Zoom &in"), canvas_, &CanvasView::zoomIn);
@@ -221,6 +242,7 @@ void MainWindow::createMenus() {
   QToolBar* bar = addToolBar(tr("Main"));
   bar->setObjectName(QStringLiteral("toolbarMain"));
   bar->addAction(open);
+  bar->addAction(save);
   bar->addAction(undo);
   bar->addAction(redo);
   bar->addSeparator();
@@ -232,18 +254,14 @@ void MainWindow::createMenus() {
   bar->setToolButtonStyle(Qt::ToolButtonTextOnly);
 }
 
-void MainWindow::rebuildRecentMenu() {
-  recentMenu_->clear();
-  const QStringList files = importer_->recentFiles();
-  for (const QString& path : files) {
-    recentMenu_->addAction(QFileInfo(path).fileName(), importer_,
-                           [this, path] { importer_->openFile(path); })
-        ->setToolTip(path);
-  }
-  if (!files.isEmpty()) recentMenu_->addSeparator();
-  QAction* clear = recentMenu_->addAction(tr("Clear list"), importer_,
-                                          &ImportController::clearRecentFiles);
-  clear->setEnabled(!files.isEmpty());
+void MainWindow::rebuildRecentMenu() { files_->fillRecentMenu(recentMenu_); }
+
+void MainWindow::updateTitle() {
+  const QString path = doc_->projectPath().isEmpty() ? doc_->fileName() : doc_->projectPath();
+  setWindowFilePath(path);
+  setWindowTitle(path.isEmpty() ? tr("FiveBar Studio")
+                                : tr("%1[*] - FiveBar Studio").arg(QFileInfo(path).fileName()));
+  setWindowModified(doc_->isModified() && doc_->hasDrawing());
 }
 
 void MainWindow::fitView() {
@@ -294,6 +312,10 @@ void MainWindow::restoreLayout() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+  if (!files_->maybeSave()) {
+    event->ignore();
+    return;
+  }
   QSettings settings;
   settings.setValue(kGeometryKey, saveGeometry());
   settings.setValue(kStateKey, saveState(kStateVersion));
@@ -307,7 +329,7 @@ void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
 void MainWindow::dropEvent(QDropEvent* event) {
   const auto urls = event->mimeData()->urls();
   if (!urls.isEmpty() && urls.front().isLocalFile()) {
-    importer_->openFile(urls.front().toLocalFile());
+    files_->openPath(urls.front().toLocalFile());
     event->acceptProposedAction();
   }
 }

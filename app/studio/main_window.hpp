@@ -30,6 +30,8 @@ class WorkspaceLegendLayer;
 
 namespace fivebar::studio {
 
+class FileActions;
+
 class MainWindow : public QMainWindow {
   Q_OBJECT
  public:
@@ -45,6 +47,7 @@ class MainWindow : public QMainWindow {
   widgets::MachineLayer& machineLayer() { return *machineLayer_; }
   widgets::JobLayer& jobLayer() { return *jobLayer_; }
   widgets::WorkspaceLayer& workspaceLayer() { return *workspaceLayer_; }
+  FileActions& files() { return *files_; }
 
   // The machine side's place in the window: the panel goes into a dock (restored with the
   // others), its toggle into the Machine menu.
@@ -65,6 +68,7 @@ class MainWindow : public QMainWindow {
   void createDocks();
   void createMenus();
   void rebuildRecentMenu();
+  void updateTitle();
   QDockWidget* addDock(QWidget* panel, const QString& title, const QString& objectName,
                        Qt::DockWidgetArea area);
   void restoreLayout();
@@ -79,6 +83,7 @@ class MainWindow : public QMainWindow {
   widgets::JobLayer* jobLayer_ = nullptr;
   widgets::MachineLayer* machineLayer_ = nullptr;
   widgets::PlacementTool* placementTool_ = nullptr;
+  FileActions* files_ = nullptr;
   std::unique_ptr<widgets::WorkspaceLegendLayer> legendLayer_;
   QDockWidget* leftTabs_ = nullptr;   // tab group machine panels join on each side
   QDockWidget* rightTabs_ = nullptr;

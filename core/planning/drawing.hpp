@@ -35,6 +35,10 @@ struct Drawing {
   std::string source;      // file name it came from, for messages
   double widthMm = 0.0;    // physical page size
   double heightMm = 0.0;
+  // Largest distance (work-frame mm) between the polylines and the curves they were flattened
+  // from: the tolerance the import was asked for; 0 when the polylines are the geometry. The
+  // planner scales it by the placement and spends the rest of the tolerance on the moves.
+  double flatteningToleranceMm = 0.0;
   std::vector<Layer> layers;  // in plotting order
 };
 

@@ -250,8 +250,6 @@ OptimiseResult optimise(std::vector<Stroke> strokes, const MachineProfile& profi
   for (const Stroke& s : strokes) r.report.pointsBefore += s.points.size();
   if (options.measureTravel)
     r.report.travelBeforeS = travelTimeS(strokes, profile, mode, options.start);
-  // The 2-opt budget starts when the first 2-opt starts.
-  std::optional<Clock::time_point> deadline;
   std::size_t stepsLeft = options.maxTwoOptSteps > 0 ? options.maxTwoOptSteps
                                                      : std::numeric_limits<std::size_t>::max();
   std::optional<JointAngles> at = options.start;
@@ -270,11 +268,8 @@ OptimiseResult optimise(std::vector<Stroke> strokes, const MachineProfile& profi
       std::optional<Vec2> start;
       if (at) start = Vec2(ref.theta1 / profile.motors.maxSpeedRadPerS1, ref.theta2 / profile.motors.maxSpeedRadPerS2);
       Tour tour = order::greedyTour(ends, run.size(), start, options.allowReverse);
-      if (!deadline)
-        deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                      std::chrono::duration<double>(options.timeBudgetS));
-      if (options.allowReverse) order::twoOpt(ends, tour, start, options.maxTwoOptPasses, stepsLeft,
-                                                *deadline);
+      if (options.allowReverse)
+        order::twoOpt(ends, tour, start, options.maxTwoOptPasses, stepsLeft);
       if (order::tourCost(ends, tour, start) <= order::inputCost(ends, start)) applyTour(run, tour);
     }
     if (!run.empty()) at = endAngles(profile.geometry, run.back().points.back(), mode);

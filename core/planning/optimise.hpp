@@ -21,11 +21,10 @@ struct OptimiseOptions {
   double simplifyToleranceMm = 0.0; // RDP tolerance; 0 keeps every point
   bool reorder = true;              // greedy nearest neighbour + 2-opt
   bool allowReverse = true;         // strokes may be drawn backwards
-  double timeBudgetS = 0.3;         // wall-clock budget for the 2-opt improvement
   int maxTwoOptPasses = 50;
-  // Deterministic budget: long edges the 2-opt may examine in all (0 = no limit). Unlike the
-  // wall-clock budget, the same input then always gives the same order.
-  std::size_t maxTwoOptSteps = 0;
+  // The 2-opt's budget: long edges it may examine in all (0 = no limit). There is no wall-clock
+  // budget: the same input always gives the same order, whatever the machine's load.
+  std::size_t maxTwoOptSteps = 150000;
   // Fill OptimiseReport::travelBeforeS / travelAfterS (inverse kinematics of every stroke end).
   bool measureTravel = true;
   // Pen position (joint angles) before the first stroke, e.g. the home pose; nullopt = none.

@@ -10,7 +10,6 @@
 namespace fivebar::order {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 constexpr int kNeighbours = 5;  // neighbour-list length of the 2-opt
 
 // Uniform bucket grid over a set of scaled nodes in one flat array (bucket b holds
@@ -131,9 +130,9 @@ class TwoOpt {
       : e_(e), t_(t), start_(start), n_(static_cast<int>(t.order.size())), pos_(t.order.size()) {
     for (int p = 0; p < n_; ++p) pos_[t.order[p]] = p;
   }
-  // Runs passes until none improves, or the pass / step / time budget ends. Only edges longer than
+  // Runs passes until none improves, or the pass / step budget ends. Only edges longer than
   // the median edge of the starting tour are worked on: greedy leaves its waste in long jumps.
-  void run(int maxPasses, std::size_t& stepsLeft, Clock::time_point deadline) {
+  void run(int maxPasses, std::size_t& stepsLeft) {
     if (maxPasses <= 0 || n_ < 3) return;
     std::vector<double> edges;
     for (int p = 0; p + 1 < n_; ++p) edges.push_back(cost(exit(p), entry(p + 1)));
@@ -143,7 +142,6 @@ class TwoOpt {
     for (int pass = 0; pass < maxPasses; ++pass) {
       bool improved = false;
       for (int p = 0; p + 1 < n_; ++p) {
-        if ((p & 255) == 0 && Clock::now() > deadline) return;
         if (cost(exit(p), entry(p + 1)) <= longEdge) continue;
         if (stepsLeft == 0) return;
         --stepsLeft;
@@ -251,8 +249,8 @@ Tour greedyTour(const Ends& e, std::size_t n, const std::optional<Vec2>& start, 
 }
 
 void twoOpt(const Ends& e, Tour& t, const std::optional<Vec2>& start, int maxPasses,
-            std::size_t& stepsLeft, std::chrono::steady_clock::time_point deadline) {
-  TwoOpt(e, t, start).run(maxPasses, stepsLeft, deadline);
+            std::size_t& stepsLeft) {
+  TwoOpt(e, t, start).run(maxPasses, stepsLeft);
 }
 
 // Travel cost (s) of a tour in the scaled joint space, and of the input order.

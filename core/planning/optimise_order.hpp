@@ -3,7 +3,6 @@
 // optimiser; the public API is core/optimise.hpp.
 #pragma once
 
-#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <optional>
@@ -34,7 +33,7 @@ Tour greedyTour(const Ends& e, std::size_t n, const std::optional<Vec2>& start, 
 // 2-opt with segment reversal (strokes in a reversed segment flip) until no move improves or
 // the pass / step / time budget ends; stepsLeft counts down the long edges examined.
 void twoOpt(const Ends& e, Tour& t, const std::optional<Vec2>& start, int maxPasses,
-            std::size_t& stepsLeft, std::chrono::steady_clock::time_point deadline);
+            std::size_t& stepsLeft);
 
 // Travel time of a tour, and of the input order (stroke i p-th, unflipped), s.
 double tourCost(const Ends& e, const Tour& t, const std::optional<Vec2>& start);

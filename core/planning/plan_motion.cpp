@@ -77,6 +77,7 @@ class MotionPlanner {
       runChunk(*cur, helpers - 1);
     }
     for (size_t first = 0; first < strokes_.size(); first += kChunkStrokes) {
+      if (cancelled()) return;
       const size_t nextFirst = first + kChunkStrokes;
       std::vector<std::future<void>> workers;
       if (nextFirst < strokes_.size()) {
@@ -93,11 +94,14 @@ class MotionPlanner {
       }
       std::swap(cur, ahead);
     }
+    if (cancelled()) return;
     if (penDown_) penUp();
     travelTo(job_.start, -1, -1, nullptr, [] { return std::string("travel back to the start pose"); });
   }
 
  private:
+  bool cancelled() const { return opt_.cancel != nullptr && opt_.cancel->load(); }
+
   bool startPose() {
     job_.start = p_.homeAngles;
     const FkResult fk = forward(g_, job_.start, p_.assembly);
@@ -250,14 +254,16 @@ class MotionPlanner {
               seg.status == SegmentStatus::OutOfReach
                   ? "a point is out of reach in working mode " + std::string(toString(mode_))
                   : "the drawn curve cannot follow the stroke here (singular region)",
-              {"move or shrink the drawing (--at, --scale, --fit)", "try another --mode"});
+              {"move or shrink the drawing (--at, --scale, --fit)", "try another working mode (--mode)"},
+              s.layerIndex, s.pathIndex);
       return;
     }
     if (!prepared.check.ok()) {
       const MoveCheck& c = prepared.check.problems.front().check;
       problem(pathLabel(s), c.where,
               c.status == MoveStatus::NearTypeI ? describe(c) : "the drawn line " + describe(c),
-              {"move or shrink the drawing (--at, --scale, --fit)", "try another --mode"});
+              {"move or shrink the drawing (--at, --scale, --fit)", "try another working mode (--mode)"},
+              s.layerIndex, s.pathIndex);
       return;
     }
     minMargin_ = std::min(minMargin_, prepared.check.minTypeIIMarginRad);
@@ -430,8 +436,10 @@ class MotionPlanner {
     return layerLabel(layers_, s.layerIndex) + " path " + std::to_string(s.pathIndex);
   }
 
-  void problem(std::string path, const Vec2& where, std::string why, std::vector<std::string> fixes) {
-    out_.report.problems.push_back({std::move(path), where, std::move(why), std::move(fixes)});
+  void problem(std::string path, const Vec2& where, std::string why, std::vector<std::string> fixes,
+               int layerIndex = -1, int pathIndex = -1) {
+    out_.report.problems.push_back(
+        {std::move(path), where, std::move(why), std::move(fixes), layerIndex, pathIndex});
   }
 
   const std::vector<Stroke>& strokes_;
@@ -453,13 +461,16 @@ class MotionPlanner {
 
 }  // namespace
 
-// Tolerance left for the joint-linear deviation once flattening and G-code rounding are paid.
-double jointDeviationBudgetMm(const MachineProfile& profile, const PlanOptions& options) {
+double gcodeRoundingBoundMm(const MachineProfile& profile) {
   const Geometry& g = profile.geometry;
   const double lever = std::max(g.a1 + g.b1, g.a2 + g.b2);
   const double roundingRad = radFromDeg(0.5 * std::pow(10.0, -kGcodeAngleDecimals));
-  return options.toleranceMm - options.flatteningToleranceMm -
-         kRoundingLeverFactor * lever * roundingRad;
+  return kRoundingLeverFactor * lever * roundingRad;
+}
+
+// Tolerance left for the joint-linear deviation once flattening and G-code rounding are paid.
+double jointDeviationBudgetMm(const MachineProfile& profile, const PlanOptions& options) {
+  return options.toleranceMm - options.flatteningToleranceMm - gcodeRoundingBoundMm(profile);
 }
 
 PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Layer>& layers,
@@ -479,6 +490,12 @@ PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Lay
   StageClock clock(out.timings);
   MotionPlanner(strokes, layers, profile, mode, options, out).run(budget);
   clock.lap("segmentation, feeds, travel");
+  if (options.cancel != nullptr && options.cancel->load()) {
+    out.status = PlanStatus::Cancelled;
+    out.message = "planning cancelled";
+    out.job = PlannedJob();
+    return out;
+  }
   fillJobTimes(out.job, profile);
   clock.lap("time estimate");
   PlanReport& r = out.report;
@@ -488,7 +505,10 @@ PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Lay
   r.penDownMm = s.penDownMm;
   r.travelMm = s.travelMm;
   r.segments = s.segments;
-  r.maxDeviationMm = s.maxDeviationMm;
+  r.jointDeviationMm = s.maxDeviationMm;
+  r.flatteningMm = options.flatteningToleranceMm;
+  r.roundingMm = gcodeRoundingBoundMm(profile);
+  r.maxDeviationMm = s.segments > 0 ? r.jointDeviationMm + r.flatteningMm + r.roundingMm : 0.0;
   r.minSingularityMarginDeg = degFromRad(s.minTypeIIMarginRad);
   r.feedLimitedSegments = s.feedLimitedSegments;
   out.status = r.feasible ? PlanStatus::Ok : PlanStatus::Infeasible;

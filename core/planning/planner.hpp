@@ -3,12 +3,14 @@
 // commands -> GRBL time estimate -> PlannedJob + PlanReport. Design: docs/planning.md.
 #pragma once
 
+#include <atomic>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/planning/drawing.hpp"
 #include "core/planning/job.hpp"
+#include "core/planning/placement.hpp"
 #include "core/machine/profile.hpp"
 #include "core/planning/stage_times.hpp"
 #include "core/planning/strokes.hpp"
@@ -17,32 +19,48 @@ namespace fivebar {
 
 struct PlanOptions {
   std::optional<WorkingMode> mode;  // nullopt: auto (the feasible mode with the best margin)
-  // Placement: with atMm the centre of the drawing's bounding box goes to that machine point at
-  // true size times `scale`; without it (or with fit) the drawing is fitted into the chosen
-  // mode's largest singularity-free rectangle (then `scale` is ignored).
+  // Placement. With atMm (and not fit) it is fixed: the centre of the drawing's bounding box
+  // goes to that machine point, scaled by `scale` (y by scale * stretchY) and rotated. Without
+  // atMm the drawing is placed by autoPlacement (auto_placement.hpp): at true size when it
+  // fits, scaled down when not; with fit it is scaled up or down to fill the rectangle.
   std::optional<Vec2> atMm;
   double scale = 1.0;
+  double stretchY = 1.0;
   double rotationRad = 0.0;
   bool fit = false;
-  double fitMarginMm = 1.0;
   // Total allowed distance (mm, machine frame) between the drawn curve and the true geometry,
-  // shared by the import flattening, the G-code rounding and the joint-linear deviation of the
-  // moves (the rest). flatteningToleranceMm is what the importer was asked for, in the frame of
-  // the input: work-frame mm for planJob (scaled by the placement), machine mm for planStrokes.
+  // spent on the import flattening (Drawing::flatteningToleranceMm times the placement scale),
+  // the G-code rounding, and the joint-linear deviation of the moves (all the rest).
   double toleranceMm = 0.1;
-  double flatteningToleranceMm = 0.04;
+  // planStrokes only: the flattening error of its (machine-frame) strokes. planJob sets it from
+  // the drawing and the placement.
+  double flatteningToleranceMm = 0.0;
   bool optimise = true;     // join, reverse and reorder strokes to cut travel time
   double minSegmentDurationS = 0.005;
+  int maxListedProblems = 20;  // problems listed in an infeasible report
+  // Set from another thread to stop planning early (status Cancelled); may be null.
+  const std::atomic<bool>* cancel = nullptr;
 };
 
-// Share of the tolerance the importer should flatten curves with (docs/planning.md).
+// Share of the tolerance the importer should flatten curves with (docs/planning.md); a drawing
+// flattened more coarsely than this share (at its placement scale) is refused with
+// PlanStatus::CoarseDrawing, naming the flattening tolerance to import it with.
 inline constexpr double kFlatteningShare = 0.4;
+
+// The flattening tolerance (work-frame mm) to import a drawing with, for a total tolerance and
+// the placement's largest scale (max(scale, scale * stretchY); 1 before the placement is known).
+double importToleranceMm(double toleranceMm, double placementScale = 1.0);
+
+// Options that plan at this fixed placement.
+void setFixedPlacement(PlanOptions& options, const Placement& placement);
 
 struct PlanProblem {
   std::string path;   // "layer 'ink' path 3", "travel before layer 'ink' path 3", ...
   Vec2 whereMm = Vec2::Zero();
   std::string why;
   std::vector<std::string> fixes;
+  int layerIndex = -1;  // the offending path (drawing indices); -1 for travels and the job
+  int pathIndex = -1;
 };
 
 struct PlanReport {
@@ -52,7 +70,12 @@ struct PlanReport {
   double penDownMm = 0.0;
   double travelMm = 0.0;
   int segments = 0;
-  double maxDeviationMm = 0.0;       // joint-linear deviation of the drawn moves
+  // Bound of the distance between the drawn line and the drawing: joint-linear deviation of the
+  // drawn moves + flattening error at the placement scale + G-code rounding bound.
+  double maxDeviationMm = 0.0;
+  double jointDeviationMm = 0.0;     // the joint-linear part alone (measured)
+  double flatteningMm = 0.0;         // the flattening part (machine frame)
+  double roundingMm = 0.0;           // the G-code rounding bound
   double toleranceMm = 0.0;
   double minSingularityMarginDeg = 0.0;  // smallest type II margin at any planned target
   int feedLimitedSegments = 0;
@@ -64,6 +87,9 @@ enum class PlanStatus {
   EmptyDrawing = -1,  // nothing visible to draw
   Infeasible = -2,    // some stroke or travel cannot be planned safely (see report.problems)
   BadOptions = -3,    // tolerance, scale or profile not usable (message says which)
+  CoarseDrawing = -4, // flattened too coarsely for the placement: import again with
+                      // PlanResult::requiredFlatteningToleranceMm
+  Cancelled = -5,     // PlanOptions::cancel was set
 };
 
 struct PlanResult {
@@ -72,15 +98,12 @@ struct PlanResult {
   PlannedJob job;        // complete when status == Ok
   PlanReport report;
   double placementScale = 1.0;  // work mm -> machine mm of the placement used (planJob)
+  Placement placement;          // the placement used (planJob)
+  std::string placementNote;    // "scaled to 62 % to fit the workspace" when planJob scaled down
+  double requiredFlatteningToleranceMm = 0.0;  // CoarseDrawing: work-frame mm to import with
   StageTimes timings;           // wall-clock seconds per pipeline stage
   bool ok() const { return status == PlanStatus::Ok; }
 };
-
-// The largest placement scale planJob can use for the drawing (the fitted scale of the best
-// candidate mode; options.scale without fitting), so that a caller can flatten curves finely
-// enough before planning. nullopt when nothing can be placed.
-std::optional<double> largestPlacementScale(const Drawing& drawing, const MachineProfile& profile,
-                                            const PlanOptions& options);
 
 // The whole pipeline from a drawing in the work frame.
 PlanResult planJob(const Drawing& drawing, const MachineProfile& profile,
@@ -93,8 +116,11 @@ PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Lay
                        const PlanOptions& options);
 
 // The share of options.toleranceMm left for the joint-linear deviation of the moves: the total
-// minus the flattening share minus a bound on the G-code rounding error (4 decimals of a degree).
+// minus the flattening error (options.flatteningToleranceMm, machine frame) minus the bound on
+// the G-code rounding error (gcodeRoundingBoundMm).
 double jointDeviationBudgetMm(const MachineProfile& profile, const PlanOptions& options);
+// Bound (mm) of how far the 4-decimal rounding of the G-code angles can move the pen.
+double gcodeRoundingBoundMm(const MachineProfile& profile);
 
 // REPORT.json text: mode, estimated_time_s, pen_down_mm, travel_mm, segments, max_deviation_mm,
 // min_singularity_margin (deg), problems [{path, where, why, fixes}], and a few more fields.

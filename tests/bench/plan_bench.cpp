@@ -70,21 +70,14 @@ struct EndToEnd {
 EndToEnd planFile(const QString& path, const MachineProfile& p, const std::string& output) {
   EndToEnd e;
   PlanOptions o;
-  const double share = kFlatteningShare * o.toleranceMm;
   double t = wallSeconds();
-  double tolerance = share;
+  const double tolerance = importToleranceMm(o.toleranceMm);
   auto drawing = importAt(path, tolerance);
   if (!drawing) return e;
-  const auto scale = largestPlacementScale(*drawing, p, o);
-  if (scale && *scale * tolerance > share * 1.000001) {
-    tolerance = share / *scale;
-    drawing = importAt(path, tolerance);
-    if (!drawing) return e;
-  }
+  drawing->flatteningToleranceMm = tolerance;
   e.importS = wallSeconds() - t;
   t = wallSeconds();
-  o.flatteningToleranceMm = tolerance;
-  const PlanResult r = planJob(*drawing, p, o);
+  const PlanResult r = planJob(*drawing, p, o);  // true size: no finer import needed
   e.planS = wallSeconds() - t;
   if (!r.ok()) return e;
   t = wallSeconds();

@@ -107,7 +107,6 @@ void BM_Optimise100kStrokes(benchmark::State& state) {
   OptimiseOptions o;
   o.join = state.range(0) != 0;
   o.maxTwoOptPasses = static_cast<int>(state.range(1));
-  o.timeBudgetS = 0.3;
   double cpu = 0.0;
   OptimiseReport r;
   for (auto _ : state) {

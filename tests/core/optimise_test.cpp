@@ -170,7 +170,6 @@ TEST(Optimise, HundredThousandStrokesWithinBudget) {
   const std::vector<Stroke> in = randomStrokes(rng, 100000, 1);
   OptimiseOptions o;
   o.join = false;
-  o.timeBudgetS = 0.3;
   const OptimiseResult r = optimise(in, pr, WorkingMode::PlusPlus, o);
   EXPECT_EQ(r.strokes.size(), in.size());
   EXPECT_LT(r.report.travelAfterS, 0.1 * r.report.travelBeforeS);

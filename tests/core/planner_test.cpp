@@ -58,7 +58,6 @@ PlanOptions atOptions() {
   PlanOptions o;
   o.atMm = Vec2(0, 170);
   o.toleranceMm = 0.1;
-  o.flatteningToleranceMm = 0.04;
   return o;
 }
 
@@ -69,13 +68,14 @@ class PlannerTest : public ::testing::Test {
 
 TEST_F(PlannerTest, DrawMovesStayWithinToleranceAndFeedsWithinLimits) {
   auto rng = test::rng();
-  const Drawing d = randomDrawing(rng, 16);
+  Drawing d = randomDrawing(rng, 16);
+  d.flatteningToleranceMm = 0.04;  // as if imported at the flattening share
   PlanOptions o = atOptions();
   o.optimise = false;  // keep stroke order = placement order to compare with placeDrawing
   const PlanResult r = planJob(d, p, o);
   ASSERT_TRUE(r.ok()) << r.message;
   const std::vector<Stroke> strokes = placeDrawing(d, Placement{*o.atMm, 0.0, 1.0});
-  const double budget = o.toleranceMm - o.flatteningToleranceMm;
+  const double budget = o.toleranceMm - d.flatteningToleranceMm;
   JointAngles at = r.job.start;
   int draws = 0;
   for (const JobMove& m : r.job.moves) {
@@ -103,7 +103,11 @@ TEST_F(PlannerTest, DrawMovesStayWithinToleranceAndFeedsWithinLimits) {
     }
   }
   EXPECT_EQ(draws, r.report.segments);
-  EXPECT_LE(r.report.maxDeviationMm, budget);
+  EXPECT_LE(r.report.jointDeviationMm, budget);
+  // The reported deviation counts every source: the moves, the flattening and the rounding.
+  EXPECT_NEAR(r.report.maxDeviationMm,
+              r.report.jointDeviationMm + 0.04 + gcodeRoundingBoundMm(p), 1e-12);
+  EXPECT_LE(r.report.maxDeviationMm, o.toleranceMm);
   EXPECT_NEAR(at.theta1, r.job.start.theta1, 1e-12);  // ends where it started
   EXPECT_GT(r.report.estimatedTimeS, 0.0);
 }
@@ -161,9 +165,9 @@ TEST_F(PlannerTest, AtPutsTheBoundingBoxCentreThere) {
 
 TEST_F(PlannerTest, FitWithoutAtStaysInTheSingularityFreeRegion) {
   auto rng = test::rng();
-  const Drawing d = randomDrawing(rng, 8);
+  const Drawing d = randomDrawing(rng, 8);  // flatteningToleranceMm 0: the fit may enlarge it
   PlanOptions o;
-  o.flatteningToleranceMm = 0.0;  // the polylines are the geometry: the fit may enlarge them
+  o.fit = true;
   const PlanResult r = planJob(d, p, o);
   EXPECT_GT(r.placementScale, 1.0);  // 80 x 60 mm fitted into maker-plotter's rectangle
   ASSERT_TRUE(r.ok()) << r.message;
@@ -174,7 +178,6 @@ TEST_F(PlannerTest, EveryDrawAndTravelMovePassesTheSafetyCheck) {
   auto rng = test::rng();
   const Drawing d = randomDrawing(rng, 12);
   PlanOptions o;
-  o.flatteningToleranceMm = 0.0;
   const PlanResult r = planJob(d, p, o);
   ASSERT_TRUE(r.ok()) << r.message;
   JointAngles at = r.job.start;
@@ -194,7 +197,6 @@ TEST_F(PlannerTest, AutoPicksTheFeasibleModeWithTheLargestMargin) {
   auto rng = test::rng();
   const Drawing d = randomDrawing(rng, 6);
   PlanOptions o;
-  o.flatteningToleranceMm = 0.0;
   const PlanResult autoPlan = planJob(d, p, o);
   ASSERT_TRUE(autoPlan.ok()) << autoPlan.message;
   double best = -1.0;
@@ -214,7 +216,6 @@ TEST_F(PlannerTest, TheSameDrawingAlwaysGivesTheSameJob) {
   auto rng = test::rng();
   const Drawing d = randomDrawing(rng, 60);  // enough strokes for the 2-opt to work
   PlanOptions o;
-  o.flatteningToleranceMm = 0.0;
   const PlanResult a = planJob(d, p, o), b = planJob(d, p, o);
   ASSERT_TRUE(a.ok() && b.ok()) << a.message << b.message;
   ASSERT_EQ(a.job.moves.size(), b.job.moves.size());
@@ -225,20 +226,61 @@ TEST_F(PlannerTest, TheSameDrawingAlwaysGivesTheSameJob) {
   }
 }
 
-TEST_F(PlannerTest, LargestPlacementScaleIsTheScaleThePlanUses) {
+TEST_F(PlannerTest, TrueSizeByDefaultEnlargingOnlyWithFit) {
   auto rng = test::rng();
-  const Drawing d = randomDrawing(rng, 6);
+  const Drawing d = randomDrawing(rng, 6);  // about 80 x 60 mm: fits maker-plotter at 100 %
   PlanOptions o;
-  o.flatteningToleranceMm = 0.0;
-  o.mode = WorkingMode::PlusPlus;
-  const auto scale = largestPlacementScale(d, p, o);
-  ASSERT_TRUE(scale.has_value());
   const PlanResult r = planJob(d, p, o);
   ASSERT_TRUE(r.ok()) << r.message;
-  EXPECT_DOUBLE_EQ(*scale, r.placementScale);
-  o.atMm = Vec2(0, 170);
-  o.scale = 0.5;
-  EXPECT_DOUBLE_EQ(*largestPlacementScale(d, p, o), 0.5);
+  EXPECT_DOUBLE_EQ(r.placementScale, 1.0);
+  EXPECT_TRUE(r.placementNote.empty()) << r.placementNote;
+  o.fit = true;
+  const PlanResult fitted = planJob(d, p, o);
+  ASSERT_TRUE(fitted.ok()) << fitted.message;
+  EXPECT_GT(fitted.placementScale, 1.5);
+  // The placement planJob chose, given as a fixed placement, gives the same job.
+  PlanOptions fixedAt;
+  setFixedPlacement(fixedAt, r.placement);
+  const PlanResult again = planJob(d, p, fixedAt);
+  ASSERT_TRUE(again.ok()) << again.message;
+  ASSERT_EQ(again.job.moves.size(), r.job.moves.size());
+  for (size_t i = 0; i < r.job.moves.size(); ++i)
+    ASSERT_EQ(again.job.moves[i].target.theta1, r.job.moves[i].target.theta1) << i;
+}
+
+TEST_F(PlannerTest, ADrawingTooBigIsScaledDownAndSaysSo) {
+  Drawing d;
+  d.layers.resize(1);
+  d.layers[0].paths.push_back({{{0, 0}, {2000, 0}, {2000, 1000}, {0, 1000}}, true});
+  const PlanResult r = planJob(d, p, PlanOptions{});
+  EXPECT_LT(r.placementScale, 1.0);
+  EXPECT_NE(r.placementNote.find("% to fit the workspace"), std::string::npos) << r.placementNote;
+  EXPECT_EQ(r.placementNote.find("scaled to "), 0u) << r.placementNote;
+}
+
+TEST_F(PlannerTest, ACoarseDrawingAsksForAFinerImport) {
+  auto rng = test::rng();
+  Drawing d = randomDrawing(rng, 6);
+  d.flatteningToleranceMm = 0.04;  // fine at 100 % with 0.1 mm
+  PlanOptions o = atOptions();
+  o.scale = 2.0;                   // 0.08 mm at twice the size: too coarse
+  const PlanResult r = planJob(d, p, o);
+  EXPECT_EQ(r.status, PlanStatus::CoarseDrawing);
+  EXPECT_DOUBLE_EQ(r.requiredFlatteningToleranceMm, 0.02);
+  EXPECT_NE(r.message.find("import it again"), std::string::npos) << r.message;
+  d.flatteningToleranceMm = r.requiredFlatteningToleranceMm;
+  EXPECT_TRUE(planJob(d, p, o).ok());
+}
+
+TEST_F(PlannerTest, ACancelledPlanStops) {
+  auto rng = test::rng();
+  const Drawing d = randomDrawing(rng, 20);
+  std::atomic<bool> cancel{true};
+  PlanOptions o = atOptions();
+  o.cancel = &cancel;
+  const PlanResult r = planJob(d, p, o);
+  EXPECT_EQ(r.status, PlanStatus::Cancelled);
+  EXPECT_TRUE(r.job.moves.empty());
 }
 
 TEST_F(PlannerTest, AFittedDiagonalLinePlans) {
@@ -250,15 +292,13 @@ TEST_F(PlannerTest, AFittedDiagonalLinePlans) {
   for (const double tolerance : {0.1, 0.02}) {
     PlanOptions o;
     o.toleranceMm = tolerance;
-    o.flatteningToleranceMm = 0.0;
-    const PlanResult r = planJob(d, p, o);
+      const PlanResult r = planJob(d, p, o);
     ASSERT_TRUE(r.ok()) << r.message;
     EXPECT_LE(r.report.maxDeviationMm, tolerance);
   }
   // A tolerance below the G-code rounding is the options' fault, fitted or not.
   PlanOptions tiny;
   tiny.toleranceMm = 0.0001;
-  tiny.flatteningToleranceMm = 0.0;
   const PlanResult r = planJob(d, p, tiny);
   EXPECT_EQ(r.status, PlanStatus::BadOptions);
   EXPECT_NE(r.message.find("tolerance"), std::string::npos) << r.message;
@@ -291,7 +331,7 @@ TEST_F(PlannerTest, EmptyDrawingAndBadToleranceAreRefusedWithAReason) {
   d.layers.resize(1);
   d.layers[0].paths.push_back({{{0, 0}, {10, 0}}, false});
   PlanOptions o = atOptions();
-  o.toleranceMm = 0.03;  // below the flattening share
+  o.toleranceMm = 0.0005;  // below the G-code rounding bound
   const PlanResult b = planJob(d, p, o);
   EXPECT_EQ(b.status, PlanStatus::BadOptions);
   EXPECT_NE(b.message.find("tolerance"), std::string::npos);

@@ -19,6 +19,7 @@
 #include "widgets/simulation_controller.hpp"
 #include "widgets/studio_document.hpp"
 #include "widgets/studio_palette.hpp"
+#include "core/planning/auto_placement.hpp"
 #include "widgets/workspace_cache.hpp"
 
 namespace fivebar::widgets {
@@ -49,7 +50,7 @@ struct Studio {
   WorkspaceCache workspace{doc};
   PreviewController preview{doc};
   SimulationController sim;
-  ImportController importer{doc, workspace, nullptr};
+  ImportController importer{doc, nullptr};
   Studio() { importer.setInteractive(false); }
 };
 
@@ -68,24 +69,27 @@ PreviewResult planAndWait(Studio& s) {
   return s.preview.result();
 }
 
-TEST(StudioFlow, ImportPlacesTheDrawingInsideTheSafeRectangle) {
+TEST(StudioFlow, ImportPlacesTheDrawingAtTrueSizeInsideTheSafeRectangle) {
   QTemporaryDir dir;
   Studio s;
-  ASSERT_TRUE(importAndWait(s, writeDrawing(dir)));
+  QString note;
+  ASSERT_TRUE(importAndWait(s, writeDrawing(dir), &note));
+  EXPECT_TRUE(note.isEmpty()) << note.toStdString();  // it fits: nothing to say
   EXPECT_EQ(s.doc.drawing().layers.size(), 2u);
-  const auto rect = s.workspace.fitRectangle(s.doc.effectiveMode());
-  ASSERT_TRUE(rect);
+  EXPECT_DOUBLE_EQ(s.doc.placement().scale, 1.0);  // true size, not blown up to the rectangle
+  const auto rule = autoPlacement(s.doc.drawing(), s.doc.profile(), std::nullopt, 0.0,
+                                    PlacementSizing::TrueSize);
+  ASSERT_TRUE(rule);
+  const RectMm rect = rule->rectMm;
+  EXPECT_EQ(s.doc.placement().centerMm, rect.center());  // centred in the rule's rectangle
   const auto strokes = placeDrawing(s.doc.drawing(), s.doc.placement());
   const auto bounds = strokeBounds(strokes);
   ASSERT_TRUE(bounds);
-  EXPECT_GE(bounds->x0, rect->x0 - 1e-6);
-  EXPECT_LE(bounds->x1, rect->x1 + 1e-6);
-  EXPECT_GE(bounds->y0, rect->y0 - 1e-6);
-  EXPECT_LE(bounds->y1, rect->y1 + 1e-6);
-  // Fitted: one side touches the rectangle minus the margin.
-  const double fill = std::max(bounds->width() / (rect->width() - 2.0 * ImportController::kFitMarginMm),
-                               bounds->height() / (rect->height() - 2.0 * ImportController::kFitMarginMm));
-  EXPECT_NEAR(fill, 1.0, 0.02);
+  EXPECT_GE(bounds->x0, rect.x0 - 1e-6);
+  EXPECT_LE(bounds->x1, rect.x1 + 1e-6);
+  EXPECT_GE(bounds->y0, rect.y0 - 1e-6);
+  EXPECT_LE(bounds->y1, rect.y1 + 1e-6);
+  EXPECT_NEAR(bounds->width(), 36.0, 0.05);  // the 36 mm rectangle (centre line), not enlarged
   // Undo removes the import; redo restores it with its placement.
   const Placement placed = s.doc.placement();
   s.doc.undoStack()->undo();

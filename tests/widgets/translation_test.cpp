@@ -32,6 +32,7 @@
 #include "widgets/placement_panel.hpp"
 #include "widgets/preview_panel.hpp"
 #include "widgets/profile_editor.hpp"
+#include "app/studio/file_actions.hpp"
 #include "widgets/run_controller.hpp"
 #include "widgets/run_panel.hpp"
 #include "widgets/simulation_panel.hpp"
@@ -45,7 +46,8 @@ std::set<QString> runtimeContexts() {
   using namespace fivebar::widgets;
   std::set<QString> names;
   for (const QMetaObject* m :
-       {&fivebar::studio::MainWindow::staticMetaObject, &ConsolePanel::staticMetaObject,
+       {&fivebar::studio::MainWindow::staticMetaObject, &fivebar::studio::FileActions::staticMetaObject,
+        &ConsolePanel::staticMetaObject,
         &ImportController::staticMetaObject, &JogController::staticMetaObject,
         &GoToTool::staticMetaObject, &JogPanel::staticMetaObject, &LayersPanel::staticMetaObject,
         &MachineBanner::staticMetaObject, &MachinePanel::staticMetaObject,
