@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <cstring>
 
-#include "app/studio/file_actions.hpp"
 #include "app/studio/startup.hpp"
 #include "core/output/gcode.hpp"
 #include "widgets/job_pipeline.hpp"
@@ -14,8 +13,6 @@
 
 namespace fivebar::studio {
 namespace {
-
-constexpr const char* kDefaultMachine = "maker-plotter";
 
 int fail(const std::string& text, int code = 1) {
   std::fprintf(stderr, "fivebar-studio: %s\n", text.c_str());
@@ -49,13 +46,10 @@ int runHeadlessExport(int argc, char** argv) {
   // remembered profile, else the default preset.
   std::optional<MachineProfile> profile;
   std::string error;
-  if (parser.isSet(machine)) {
-    profile = resolveProfile(parser.value(machine).toStdString(), error);
+  if (parser.isSet(machine) || !widgets::isProjectPath(input)) {
+    profile = startupProfile(parser.isSet(machine) ? std::optional<QString>(parser.value(machine))
+                                                   : std::nullopt, error);
     if (!profile) return fail(error, 2);
-  } else if (!widgets::isProjectPath(input)) {
-    const QString remembered = FileActions::rememberedProfileJson();
-    if (!remembered.isEmpty()) profile = profileFromJson(remembered.toStdString(), "remembered profile").profile;
-    if (!profile) profile = preset(kDefaultMachine);
   }
   PlanOptions defaults;  // the document's defaults: Auto mode, 0.1 mm
   auto job = widgets::loadJob(input, profile, defaults, error);

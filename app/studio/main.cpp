@@ -14,7 +14,6 @@
 #include <QTranslator>
 #include <cstdio>
 
-#include "app/studio/file_actions.hpp"
 #include "app/studio/headless.hpp"
 #include "app/studio/main_window.hpp"
 #include "app/studio/startup.hpp"
@@ -89,16 +88,8 @@ int main(int argc, char** argv) {
   }
 
   std::string error;
-  std::optional<fivebar::MachineProfile> profile;
-  if (!parser.isSet(machine)) {  // the profile of the last session, edits included
-    const QString remembered = fivebar::studio::FileActions::rememberedProfileJson();
-    if (!remembered.isEmpty())
-      profile = fivebar::profileFromJson(remembered.toStdString(), "remembered profile").profile;
-  }
-  if (!profile) {
-    const QString name = parser.isSet(machine) ? parser.value(machine) : QStringLiteral("maker-plotter");
-    profile = fivebar::studio::resolveProfile(name.toStdString(), error);
-  }
+  const auto profile = fivebar::studio::startupProfile(
+      parser.isSet(machine) ? std::optional<QString>(parser.value(machine)) : std::nullopt, error);
   if (!profile) {
     std::fprintf(stderr, "fivebar-studio: %s\n", error.c_str());
     return 2;

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "app/studio/file_actions.hpp"
 #include "app/studio/main_window.hpp"
 #include "widgets/import_controller.hpp"
 #include "widgets/preview_controller.hpp"
@@ -32,6 +33,16 @@ std::optional<MachineProfile> resolveProfile(const std::string& presetOrPath, st
   }
   if (error.empty()) error = presetOrPath + ": cannot load the machine profile";
   return std::nullopt;
+}
+
+std::optional<MachineProfile> startupProfile(const std::optional<QString>& machineArg,
+                                             std::string& error) {
+  if (machineArg) return resolveProfile(machineArg->toStdString(), error);
+  const QString remembered = FileActions::rememberedProfileJson();
+  if (!remembered.isEmpty()) {
+    if (auto p = profileFromJson(remembered.toStdString(), "remembered profile").profile) return p;
+  }
+  return resolveProfile("maker-plotter", error);
 }
 
 void screenshotWhenReady(MainWindow& window, const QString& path, bool expectDrawing,

@@ -17,6 +17,11 @@ class MainWindow;
 // A preset name or a profile file; on failure `error` says why (field names included).
 std::optional<MachineProfile> resolveProfile(const std::string& presetOrPath, std::string& error);
 
+// The machine the studio starts with: --machine when given, else the profile of the last
+// session (edits included, QSettings), else the maker-plotter preset.
+std::optional<MachineProfile> startupProfile(const std::optional<QString>& machineArg,
+                                             std::string& error);
+
 // Once the workspace is computed, the import (if `expectDrawing`) has finished and the first
 // plan is done, calls `beforeGrab` (to set up what the picture shows), grabs the window into
 // `path` (PNG) and quits the application with 0, or with 1 when saving fails or nothing got

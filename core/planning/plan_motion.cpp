@@ -26,9 +26,8 @@ namespace {
 constexpr size_t kChunkStrokes = 2048;
 // FK samples per travel move for its XY length.
 constexpr int kTravelLengthSamples = 16;
-// Lever arm factor for the G-code rounding share of the tolerance (docs/planning.md): a joint
-// rounding error moves P by at most |J| * dtheta; with the type II margin kept, |J| stays below
-// a few times the longest leg.
+// Lever arm factor of the older estimate of the G-code rounding error, used when it is smaller
+// than the bound from the type II margin (gcodeRoundingBoundMm).
 constexpr double kRoundingLeverFactor = 4.0;
 constexpr int kGcodeAngleDecimals = 4;
 
@@ -462,10 +461,19 @@ class MotionPlanner {
 }  // namespace
 
 double gcodeRoundingBoundMm(const MachineProfile& profile) {
+  // Each angle is rounded to kGcodeAngleDecimals of a degree: |dtheta|_2 <= sqrt(2) * half a unit.
+  // The pen moves by dP = A^-1 B dtheta (conventions.md, Hoang eq. 7): the rows of A are
+  // (P - R_i), of length b_i, det A = b1 b2 sin(phi) with phi the angle between the distal links
+  // (|sin phi| >= sin(type II margin) at every planned target), so |A^-1| <= sqrt(b1^2 + b2^2) /
+  // (b1 b2 sin(margin)); |B_ii| <= a_i b_i. Without a usable margin the older lever estimate.
   const Geometry& g = profile.geometry;
-  const double lever = std::max(g.a1 + g.b1, g.a2 + g.b2);
-  const double roundingRad = radFromDeg(0.5 * std::pow(10.0, -kGcodeAngleDecimals));
-  return kRoundingLeverFactor * lever * roundingRad;
+  const double dThetaRad = std::sqrt(2.0) * radFromDeg(0.5 * std::pow(10.0, -kGcodeAngleDecimals));
+  const double lever = kRoundingLeverFactor * std::max(g.a1 + g.b1, g.a2 + g.b2);
+  const double sinMargin = std::sin(std::min(profile.typeIIMarginRad, kPi / 2.0));
+  if (!(sinMargin > 0.0)) return lever * dThetaRad;
+  const double jacobian = std::hypot(g.b1, g.b2) / (g.b1 * g.b2 * sinMargin) *
+                          std::max(g.a1 * g.b1, g.a2 * g.b2);
+  return std::min(lever, jacobian) * dThetaRad;
 }
 
 // Tolerance left for the joint-linear deviation once flattening and G-code rounding are paid.

@@ -20,7 +20,7 @@ constexpr int kMinSamples = 4;
 constexpr int kMaxSamples = 512;
 // Share of the deviation budget a split piece is aimed at, and the share below which one longer
 // piece is tried.
-constexpr double kSplitTarget = 0.9;
+constexpr double kSplitTarget = 0.97;
 constexpr double kSplitGrowBelow = 0.7;
 
 double pointSegmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {

@@ -1,0 +1,210 @@
+// One truth, end to end: the studio window's G-code (File > Export G-code, what Run streams) is
+// byte-identical to `fivebar plan` and to `fivebar-studio --export-gcode` for corpus drawings;
+// a project saved, reopened and exported gives the same G-code; the unsaved-changes question;
+// the machine profile remembered across restarts.
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QProcess>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+
+#include "app/studio/file_actions.hpp"
+#include "app/studio/main_window.hpp"
+#include "app/studio/startup.hpp"
+#include "core/project/project.hpp"
+#include "widgets/import_controller.hpp"
+#include "widgets/preview_controller.hpp"
+#include "widgets/studio_document.hpp"
+
+namespace fivebar::widgets {
+namespace {
+
+constexpr int kWaitMs = 60000;
+
+MachineProfile makerPlotter() { return preset("maker-plotter").value_or(MachineProfile{}); }
+
+QString corpus(const char* relative) {
+  return QStringLiteral(FIVEBAR_SHARED_DIR "/corpus/svg/") + QString::fromLatin1(relative);
+}
+
+QByteArray slurp(const QString& path) {
+  QFile f(path);
+  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+// Opens a file in the window and waits for its plan; false with the reason on failure.
+::testing::AssertionResult openAndPlan(studio::MainWindow& w, const QString& path) {
+  w.importer().setInteractive(false);
+  QSignalSpy imported(&w.importer(), &ImportController::finished);
+  w.importer().openFile(path);
+  if (!imported.wait(kWaitMs)) return ::testing::AssertionFailure() << "import timed out";
+  if (!imported.front().at(0).toBool())
+    return ::testing::AssertionFailure() << imported.front().at(1).toString().toStdString();
+  QSignalSpy planned(&w.preview(), &PreviewController::resultChanged);
+  while (w.preview().busy() || w.preview().result().status == PreviewStatus::Empty)
+    if (!planned.wait(kWaitMs)) return ::testing::AssertionFailure() << "planning timed out";
+  if (w.preview().result().status != PreviewStatus::Planned)
+    return ::testing::AssertionFailure() << w.preview().result().message.toStdString();
+  return ::testing::AssertionSuccess();
+}
+
+int runTool(const QString& program, const QStringList& args, QString* err = nullptr) {
+  QProcess p;
+  p.start(program, args);
+  if (!p.waitForFinished(120000)) return -1;
+  if (err) *err = QString::fromLocal8Bit(p.readAllStandardError());
+  return p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+}
+
+class OneTruth : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(OneTruth, StudioExportEqualsFivebarPlanByteForByte) {
+  const QString svg = corpus(GetParam());
+  if (!QFileInfo::exists(svg)) GTEST_SKIP() << "corpus not present: " << svg.toStdString();
+  QTemporaryDir dir;
+  const QString cli = dir.filePath(QStringLiteral("cli.gcode"));
+  const QString headless = dir.filePath(QStringLiteral("headless.gcode"));
+  const QString window = dir.filePath(QStringLiteral("window.gcode"));
+  QString err;
+  ASSERT_EQ(runTool(QStringLiteral(FIVEBAR_CLI), {QStringLiteral("plan"), svg, QStringLiteral("--machine"),
+                                                  QStringLiteral("maker-plotter"), QStringLiteral("-o"), cli}, &err), 0)
+      << err.toStdString();
+  ASSERT_EQ(runTool(QStringLiteral(FIVEBAR_STUDIO), {svg, QStringLiteral("--machine"), QStringLiteral("maker-plotter"),
+                                                     QStringLiteral("--export-gcode"), headless}, &err), 0)
+      << err.toStdString();
+  studio::MainWindow w(makerPlotter());
+  ASSERT_TRUE(openAndPlan(w, svg));
+  QString error;
+  ASSERT_TRUE(w.files().exportGcodeTo(window, &error)) << error.toStdString();
+  const QByteArray expected = slurp(cli);
+  ASSERT_GT(expected.size(), 100);
+  EXPECT_TRUE(slurp(headless) == expected) << "fivebar-studio --export-gcode differs from fivebar plan";
+  EXPECT_TRUE(slurp(window) == expected) << "the window's export differs from fivebar plan";
+}
+
+INSTANTIATE_TEST_SUITE_P(Corpus, OneTruth,
+                         ::testing::Values("vpype-plotter/arc_with_rotate/arc_with_rotate.svg",
+                                           "vpype-plotter/benchmark/300_beziers.svg",
+                                           "vpype-plotter/benchmark/500_circles.svg"));
+
+// An A5 landscape page (210 x 148 mm) with a frame and a curve in another colour.
+QString writeA5(const QTemporaryDir& dir) {
+  const QString path = dir.filePath(QStringLiteral("a5.svg"));
+  QFile f(path);
+  EXPECT_TRUE(f.open(QIODevice::WriteOnly));
+  f.write(R"(<svg xmlns="http://www.w3.org/2000/svg" width="210mm" height="148mm" viewBox="0 0 210 148">
+  <rect x="0" y="0" width="210" height="148" fill="none" stroke="#000" stroke-width="0.3"/>
+  <path d="M 20 74 C 50 10, 150 10, 190 74 S 80 140, 20 74" fill="none" stroke="#c00" stroke-width="0.3"/>
+</svg>)");
+  return path;
+}
+
+TEST(ProjectFlow, SavedReopenedAndExportedGivesTheSameGcode) {
+  QTemporaryDir dir;
+  const QString svg = writeA5(dir);
+  const QString project = dir.filePath(QStringLiteral("a5.fivebar"));
+  const QString first = dir.filePath(QStringLiteral("first.gcode"));
+  const QString second = dir.filePath(QStringLiteral("second.gcode"));
+  {
+    studio::MainWindow w(makerPlotter());
+    ASSERT_TRUE(openAndPlan(w, svg));
+    EXPECT_DOUBLE_EQ(w.document().placement().scale, 1.0);  // A5 fits maker-plotter at 100 %
+    // Edits a maker would make: a layer hidden, a mode chosen, the drawing moved.
+    w.document().setLayerVisible(1, false);
+    Placement moved = w.document().placement();
+    moved.centerMm += Vec2(3.0, -2.0);
+    w.document().setPlacement(moved);
+    QSignalSpy replanned(&w.preview(), &PreviewController::resultChanged);
+    w.preview().replanNow();
+    while (w.preview().busy()) ASSERT_TRUE(replanned.wait(kWaitMs));
+    ASSERT_EQ(w.preview().result().status, PreviewStatus::Planned) << w.preview().result().message.toStdString();
+    EXPECT_TRUE(w.document().isModified());
+    QString error;
+    ASSERT_TRUE(w.files().saveTo(project, &error)) << error.toStdString();
+    EXPECT_FALSE(w.document().isModified());
+    ASSERT_TRUE(w.files().exportGcodeTo(first, &error)) << error.toStdString();
+  }
+  // The project embeds the drawing: it opens with the SVG gone.
+  ASSERT_TRUE(QFile::remove(svg));
+  studio::MainWindow w(preset("hoang2015").value_or(MachineProfile{}));  // another machine open
+  ASSERT_TRUE(openAndPlan(w, project));
+  EXPECT_EQ(w.document().profile().name, makerPlotter().name);  // the project's machine
+  EXPECT_FALSE(w.document().drawing().layers[1].visible);
+  EXPECT_FALSE(w.document().isModified());
+  QString error;
+  ASSERT_TRUE(w.files().exportGcodeTo(second, &error)) << error.toStdString();
+  EXPECT_TRUE(slurp(first) == slurp(second));
+  // fivebar plan PROJECT gives the same job too.
+  const QString cli = dir.filePath(QStringLiteral("cli.gcode"));
+  QString err;
+  ASSERT_EQ(runTool(QStringLiteral(FIVEBAR_CLI), {QStringLiteral("plan"), project, QStringLiteral("-o"), cli}, &err), 0)
+      << err.toStdString();
+  EXPECT_TRUE(slurp(cli) == slurp(first));
+}
+
+TEST(ProjectFlow, UnsavedChangesAskBeforeClosing) {
+  QTemporaryDir dir;
+  studio::MainWindow w(makerPlotter());
+  ASSERT_TRUE(openAndPlan(w, writeA5(dir)));
+  int asked = 0;
+  QMessageBox::StandardButton answer = QMessageBox::Cancel;
+  w.files().setAsk([&](const QString&) {
+    ++asked;
+    return answer;
+  });
+  const QString saved = dir.filePath(QStringLiteral("saved.fivebar"));
+  w.files().setAskPath([&](const QString&, const QString&, const QString&) { return saved; });
+  QCloseEvent cancelled;
+  QApplication::sendEvent(&w, &cancelled);
+  EXPECT_EQ(asked, 1);
+  EXPECT_FALSE(cancelled.isAccepted());  // Cancel keeps the window open
+  answer = QMessageBox::Save;
+  QCloseEvent save;
+  QApplication::sendEvent(&w, &save);
+  EXPECT_EQ(asked, 2);
+  EXPECT_TRUE(save.isAccepted());
+  EXPECT_TRUE(QFileInfo::exists(saved));  // saved through Save As
+  EXPECT_FALSE(w.document().isModified());
+  QCloseEvent clean;
+  QApplication::sendEvent(&w, &clean);
+  EXPECT_EQ(asked, 2);  // nothing unsaved: no question
+  EXPECT_TRUE(clean.isAccepted());
+  const ProjectLoad load = projectFromJson(slurp(saved).toStdString(), "saved.fivebar");
+  ASSERT_TRUE(load.project) << (load.issues.empty() ? "" : load.issues.front().message);
+  EXPECT_NE(load.project->drawingSvg.find("210mm"), std::string::npos);
+}
+
+TEST(ProjectFlow, TheMachineProfileIsRememberedAcrossRestarts) {
+  QSettings().remove(QStringLiteral("machine/profileJson"));
+  MachineProfile edited = makerPlotter();
+  edited.name = "my plotter";
+  edited.geometry.a1 += 1.0;
+  {
+    studio::MainWindow w(makerPlotter());
+    w.document().setProfile(edited);
+  }
+  const QString json = studio::FileActions::rememberedProfileJson();
+  ASSERT_FALSE(json.isEmpty());
+  const ProfileLoad load = profileFromJson(json.toStdString(), "remembered");
+  ASSERT_TRUE(load.profile);
+  EXPECT_EQ(load.profile->name, "my plotter");
+  EXPECT_DOUBLE_EQ(load.profile->geometry.a1, edited.geometry.a1);
+  // The studio started without --machine uses it; --machine still wins.
+  std::string error;
+  const auto atStart = studio::startupProfile(std::nullopt, error);
+  ASSERT_TRUE(atStart) << error;
+  EXPECT_EQ(atStart->name, "my plotter");
+  EXPECT_EQ(studio::startupProfile(QStringLiteral("hoang2015"), error)->name,
+            preset("hoang2015")->name);
+  QSettings().remove(QStringLiteral("machine/profileJson"));
+  EXPECT_EQ(studio::startupProfile(std::nullopt, error)->name, makerPlotter().name);
+}
+
+}  // namespace
+}  // namespace fivebar::widgets
