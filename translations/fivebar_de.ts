@@ -34,6 +34,10 @@
         <source>Planned in working mode %1.</source>
         <translation>Geplant im Arbeitsmodus %1.</translation>
     </message>
+    <message>
+        <source>This job is long: about %1 hours and %2 pen-down moves. The machine will be busy all that time. Start it anyway?</source>
+        <translation>Dieser Auftrag ist lang: etwa %1 Stunden und %2 Zeichenbewegungen. Die Maschine ist die ganze Zeit beschäftigt. Trotzdem starten?</translation>
+    </message>
 </context>
 <context>
     <name>MapPainter</name>
@@ -409,6 +413,13 @@
     <message>
         <source>Drawings and projects (*.svg *.fivebar);;SVG drawings (*.svg);;FiveBar projects (*.fivebar);;All files (*)</source>
         <translation>Zeichnungen und Projekte (*.svg *.fivebar);;SVG-Zeichnungen (*.svg);;FiveBar-Projekte (*.fivebar);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::JobLayer</name>
+    <message>
+        <source>Planning...</source>
+        <translation>Planung läuft...</translation>
     </message>
 </context>
 <context>
@@ -1548,6 +1559,10 @@
     <message>
         <source>%1 left</source>
         <translation>noch %1</translation>
+    </message>
+    <message>
+        <source>Long job</source>
+        <translation>Langer Auftrag</translation>
     </message>
 </context>
 <context>

@@ -35,6 +35,7 @@ JobLayer::JobLayer(const StudioDocument& doc, const PreviewController& preview,
                    const SimulationController& sim, QObject* parent)
     : QObject(parent), doc_(doc), preview_(preview), sim_(sim) {
   connect(&preview_, &PreviewController::resultChanged, this, &JobLayer::changed);
+  connect(&preview_, &PreviewController::planningStarted, this, &JobLayer::changed);
   connect(&preview_, &PreviewController::scrubLimitChanged, this, &JobLayer::changed);
   connect(&sim_, &SimulationController::timeChanged, this, &JobLayer::changed);
   connect(&doc_, &StudioDocument::placementChanged, this, &JobLayer::changed);
@@ -71,7 +72,10 @@ quint64 JobLayer::optionsKey() const {
 
 void JobLayer::paint(QPainter& painter, const ViewTransform& view) {
   const PreviewResult& r = preview_.result();
-  const bool fresh = samePlacement(preview_.resultPlacement(), doc_.placement());
+  // While a plan is on its way, the last result is not the document's: show its drawing moved to
+  // the current placement, unflagged and faded, with "Planning..." (no old numbers, no red).
+  const bool planning = preview_.busy() && doc_.hasDrawing();
+  const bool fresh = !planning && samePlacement(preview_.resultPlacement(), doc_.placement());
   ScenePaintOptions o;
   o.colourBySpeed = colourBySpeed_;
   o.showTravel = showTravel_;
@@ -93,12 +97,27 @@ void JobLayer::paint(QPainter& painter, const ViewTransform& view) {
     if (mainRenderer_.stale()) settle_.start();
   } else if (r.drawingScene) {
     o.machineFromScene = placementDelta(preview_.resultPlacement(), doc_.placement());
+    if (planning) {
+      o.opacity = kFadedJobOpacity;
+      o.showFlags = false;
+    }
     // Any change of the delta must re-render: fold it into the key.
     const quint64 deltaKey = std::hash<double>{}(o.machineFromScene.m11() * 7.0 +
                                                  o.machineFromScene.dx() * 13.0 +
                                                  o.machineFromScene.dy() * 17.0 +
                                                  o.machineFromScene.m12() * 19.0);
-    mainRenderer_.paint(painter, view, r.drawingScene, o, (deltaKey << 8) | 64u);
+    mainRenderer_.paint(painter, view, r.drawingScene, o, (deltaKey << 8) | 64u | (planning ? 128u : 0u));
+  }
+  if (planning) {
+    painter.save();
+    QFont font = painter.font();
+    font.setPointSizeF(font.pointSizeF() * 1.4);
+    font.setBold(true);
+    painter.setFont(font);
+    painter.setPen(palette::trace());
+    const QRectF area(0, 0, painter.device()->width(), 48);
+    painter.drawText(area, Qt::AlignCenter, tr("Planning..."));
+    painter.restore();
   }
   if (marker_) {
     const QPointF c = view.widgetFromMachine(*marker_);

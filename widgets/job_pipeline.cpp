@@ -66,6 +66,16 @@ std::shared_ptr<PathScene> jobSceneOf(const PlannedJob& job) {
   return std::make_shared<PathScene>(paths);
 }
 
+QString longJobQuestion(const PlannedJob& job) {
+  const JobSummary& s = job.summary;
+  if (s.estimatedTimeS <= kLongJobS && s.segments <= kLongJobSegments) return {};
+  return trPipe(QT_TRANSLATE_NOOP("JobPipeline",
+                                  "This job is long: about %1 hours and %2 pen-down moves. The "
+                                  "machine will be busy all that time. Start it anyway?"))
+      .arg(s.estimatedTimeS / 3600.0, 0, 'f', 1)
+      .arg(s.segments);
+}
+
 PlanOptions studioPlanOptions(const Placement& placement, ModeSelection mode, double toleranceMm) {
   PlanOptions options;
   options.mode = mode;

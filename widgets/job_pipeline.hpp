@@ -64,6 +64,13 @@ struct PreviewResult {
 
 PreviewResult runPipeline(const PipelineInput& input);
 
+// A job is long when estimated over kLongJobS or over kLongJobSegments pen-down moves: Run asks
+// before it starts one.
+inline constexpr double kLongJobS = 8.0 * 3600.0;
+inline constexpr int kLongJobSegments = 2000000;
+// The question to ask before running `job`, empty when it is not long.
+QString longJobQuestion(const PlannedJob& job);
+
 // Paint-ready scene of a planned job: one path per run of Draw or Travel moves, order = move
 // index, per-segment speed = planned feed.
 std::shared_ptr<PathScene> jobSceneOf(const PlannedJob& job);

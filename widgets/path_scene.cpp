@@ -240,7 +240,7 @@ void PathScene::paint(QPainter& painter, const ViewTransform& view,
       currentClass = run.colourClass;
       QColor c = drawColour;
       if (currentClass == kTravelClass) c = palette::travel();
-      else if (currentClass == kProblemClass) c = palette::problem();
+      else if (currentClass == kProblemClass) c = options.showFlags ? palette::problem() : drawColour;
       else if (options.colourBySpeed)
         c = speedColour((currentClass - 2 + 0.5) / kSpeedClasses);
       QPen pen(c, options.penWidthPx);

@@ -41,6 +41,7 @@ struct ScenePaintOptions {
   double opacity = 1.0;
   QColor drawColour;          // invalid = palette::drawing()
   double penWidthPx = 1.0;    // cosmetic width
+  bool showFlags = true;      // flagged (offending) paths in the problem colour
 };
 
 class PathScene {

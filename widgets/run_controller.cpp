@@ -68,6 +68,10 @@ bool RunController::canStart() const {
          preview_.result().status == PreviewStatus::Planned && preview_.result().job != nullptr;
 }
 
+const PlannedJob* RunController::plannedJob() const {
+  return preview_.result().status == PreviewStatus::Planned ? preview_.result().job.get() : nullptr;
+}
+
 bool RunController::canResume() const {
   return session_.isConnected() && !running() && session_.state() == grbl::MachineState::Idle &&
          savedProgress().has_value();

@@ -38,6 +38,8 @@ class RunController : public QObject {
   bool running() const;         // streaming (not yet finished)
   bool canStart() const;        // connected, idle machine, a planned job, nothing running
   bool canResume() const;       // canStart and a saved progress beside the job file
+  // The planned job Start would stream (the preview's), nullptr when there is none.
+  const PlannedJob* plannedJob() const;
   // The saved progress beside the job file, when there is one that can be read.
   std::optional<job::JobProgress> savedProgress() const;
 

@@ -1,5 +1,9 @@
 #include "widgets/run_panel.hpp"
 
+#include <QMessageBox>
+
+#include "widgets/job_pipeline.hpp"
+
 #include <QCoreApplication>
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -99,7 +103,17 @@ RunPanel::RunPanel(RunController& run, MachineSession& session, QWidget* parent)
   refresh();
 }
 
-void RunPanel::startClicked() { run_.start(); }
+void RunPanel::startClicked() {
+  // A very long job is worth a second thought before the machine is busy for hours.
+  if (const PlannedJob* job = run_.plannedJob()) {
+    const QString question = longJobQuestion(*job);
+    if (!question.isEmpty() &&
+        QMessageBox::question(this, tr("Long job"), question, QMessageBox::Yes | QMessageBox::No,
+                              QMessageBox::No) != QMessageBox::Yes)
+      return;
+  }
+  run_.start();
+}
 
 void RunPanel::resumeClicked() { run_.resume(); }
 

@@ -208,3 +208,21 @@ TEST(ProjectFlow, TheMachineProfileIsRememberedAcrossRestarts) {
 
 }  // namespace
 }  // namespace fivebar::widgets
+
+namespace fivebar::widgets {
+namespace {
+
+TEST(ProjectFlow, RunAsksBeforeAJobOverEightHoursOrTwoMillionMoves) {
+  PlannedJob job;
+  job.summary.estimatedTimeS = 7.9 * 3600.0;
+  job.summary.segments = 1999999;
+  EXPECT_TRUE(longJobQuestion(job).isEmpty());
+  job.summary.estimatedTimeS = 8.5 * 3600.0;
+  EXPECT_TRUE(longJobQuestion(job).contains(QStringLiteral("8.5 hours"))) << longJobQuestion(job).toStdString();
+  job.summary.estimatedTimeS = 60.0;
+  job.summary.segments = 2500000;
+  EXPECT_TRUE(longJobQuestion(job).contains(QStringLiteral("2500000"))) << longJobQuestion(job).toStdString();
+}
+
+}  // namespace
+}  // namespace fivebar::widgets

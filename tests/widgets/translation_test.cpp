@@ -33,6 +33,7 @@
 #include "widgets/preview_panel.hpp"
 #include "widgets/profile_editor.hpp"
 #include "app/studio/file_actions.hpp"
+#include "widgets/job_layer.hpp"
 #include "widgets/run_controller.hpp"
 #include "widgets/run_panel.hpp"
 #include "widgets/simulation_panel.hpp"
@@ -47,7 +48,7 @@ std::set<QString> runtimeContexts() {
   std::set<QString> names;
   for (const QMetaObject* m :
        {&fivebar::studio::MainWindow::staticMetaObject, &fivebar::studio::FileActions::staticMetaObject,
-        &ConsolePanel::staticMetaObject,
+        &ConsolePanel::staticMetaObject, &JobLayer::staticMetaObject,
         &ImportController::staticMetaObject, &JogController::staticMetaObject,
         &GoToTool::staticMetaObject, &JogPanel::staticMetaObject, &LayersPanel::staticMetaObject,
         &MachineBanner::staticMetaObject, &MachinePanel::staticMetaObject,
