@@ -223,7 +223,7 @@ void ProfileEditor::addNumber(QFormLayout* form, const std::string& path, const 
   box->setRange(min, max);
   box->setDecimals(decimals);
   box->setSuffix(suffix);
-  box->setKeyboardTracking(true);
+  box->setKeyboardTracking(false);  // applied when editing finishes: one undo step per change
   form->addRow(label, box);
   addMessage(form, path);
   numbers_.push_back({path, box, std::move(get), std::move(set)});

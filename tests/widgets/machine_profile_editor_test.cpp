@@ -6,6 +6,7 @@
 #include <QFile>
 #include <QLabel>
 #include <QTemporaryDir>
+#include <QTest>
 
 #include "core/machine/profile.hpp"
 #include "machine_test_support.hpp"
@@ -97,6 +98,31 @@ TEST(ProfileEditor, ExportThenImportRoundTripsAndBadFilesAreNamed) {
   f.close();
   EXPECT_FALSE(editor.importFrom(broken, &error));
   EXPECT_TRUE(error.contains(broken)) << error.toStdString();
+}
+
+}  // namespace
+}  // namespace fivebar
+
+namespace fivebar {
+namespace {
+
+// Typing a number is one change (one undo step), applied when editing finishes, not one per key.
+TEST(ProfileEditor, TypedValueIsAppliedWhenEditingFinishesAsOneUndoStep) {
+  widgets::StudioDocument doc(test::makerPlotter());
+  widgets::ProfileEditor editor(doc);
+  editor.show();
+  QDoubleSpinBox* a1 = editor.numberField("geometry.a1");
+  ASSERT_NE(a1, nullptr);
+  const int steps = doc.undoStack()->count();
+  a1->setFocus();
+  a1->selectAll();
+  QTest::keyClicks(a1, QStringLiteral("104.5"));
+  EXPECT_EQ(doc.undoStack()->count(), steps);  // nothing applied while typing
+  QTest::keyClick(a1, Qt::Key_Return);
+  EXPECT_EQ(doc.undoStack()->count(), steps + 1);
+  EXPECT_DOUBLE_EQ(doc.profile().geometry.a1, 104.5);
+  doc.undoStack()->undo();
+  EXPECT_DOUBLE_EQ(doc.profile().geometry.a1, test::makerPlotter().geometry.a1);
 }
 
 }  // namespace
