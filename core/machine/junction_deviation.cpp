@@ -12,8 +12,9 @@ namespace {
 
 // Grid points per side over the square that holds every reachable point.
 constexpr int kLeverGridPoints = 200;
-// $11 goes to GRBL with this many decimals (core/output/gcode.cpp).
-constexpr double kJunctionDecimalsScale = 1e4;
+// GRBL 1.1 reports its settings with 3 decimals ($$): a $11 with more would never read back
+// equal to the profile's (fivebar setup would keep writing it).
+constexpr double kJunctionDecimalsScale = 1e3;
 
 // Largest singular value of a 2x2 matrix.
 double largestSingularValue(const Eigen::Matrix2d& m) {

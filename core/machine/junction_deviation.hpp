@@ -18,7 +18,7 @@ inline constexpr double kCorneringToleranceMm = 0.1;
 // type II margins (a grid over the reach, 200 x 200 points).
 double largestLeverMmPerRad(const MachineProfile& profile);
 
-// $11 (deg, rounded down to the 4 decimals GRBL is sent) that keeps the corner cut within
+// $11 (deg, rounded down to the 3 decimals GRBL reports) that keeps the corner cut within
 // `toleranceMm` everywhere in the safe workspace.
 double junctionDeviationDegFor(const MachineProfile& profile, double toleranceMm);
 
