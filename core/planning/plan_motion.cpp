@@ -482,10 +482,12 @@ PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Lay
   clock.lap("segmentation, feeds, travel");
   fillJobTimes(out.job, profile);
   clock.lap("time estimate");
-  std::vector<double> layerSpeeds;
-  for (const Layer& l : layers) layerSpeeds.push_back(l.tool.drawSpeedMmPerS);
-  out.job.summary.timeOptimalS = timeOptimalJob(out.job, profile, layerSpeeds).totalS();
-  clock.lap("time-optimal reference");
+  if (out.job.moves.size() <= kTimeOptimalMaxMoves) {
+    std::vector<double> layerSpeeds;
+    for (const Layer& l : layers) layerSpeeds.push_back(l.tool.drawSpeedMmPerS);
+    out.job.summary.timeOptimalS = timeOptimalJob(out.job, profile, layerSpeeds).totalS();
+    clock.lap("time-optimal reference");
+  }
   PlanReport& r = out.report;
   const JobSummary& s = out.job.summary;
   r.feasible = r.problems.empty();

@@ -4,21 +4,21 @@
 #include <cmath>
 #include <limits>
 
+#include "core/kinematics/singularity.hpp"
 #include "core/kinematics/units.hpp"
+#include "core/support/parallel.hpp"
 
 namespace fivebar {
 namespace {
 
 // Consecutive points closer than this (mm) are one point.
 constexpr double kSamePointMm = 1e-9;
-// Step (mm) of the central difference that gives q'(s) = dq/ds from the inverse kinematics.
-constexpr double kDerivativeStepMm = 1e-3;
 // A motor whose |dq/ds| is below this (rad/mm) does not bound the path acceleration.
 constexpr double kStillMotor = 1e-12;
+// Grid points added towards each end of a smooth piece, halving the step each time.
+constexpr int kEndRefinements = 12;
 // Z acceleration assumed for a Z-axis pen (mm/s^2), as the GRBL time model.
 constexpr double kZAccelMmPerS2 = 100.0;
-
-double wrapped(double a) { return std::remainder(a, 2.0 * kPi); }
 
 // One point of the phase-plane grid: dq/ds there, and d2q/ds2 over the interval that follows.
 struct GridPoint {
@@ -27,32 +27,45 @@ struct GridPoint {
   double ddq[2] = {0.0, 0.0};
 };
 
-// dq/ds at p along the unit tangent t, or false where the point (or a neighbour) is out of reach.
+// dq/ds at p along the unit tangent t (A t = B dq/ds, Hoang 2015 eq. 7, B diagonal), or false
+// where the point is out of reach or a leg is stretched (B singular).
 bool jointRate(const Geometry& g, WorkingMode mode, const Vec2& p, const Vec2& t, double out[2]) {
-  const IkResult a = inverse(g, p - kDerivativeStepMm * t, mode);
-  const IkResult b = inverse(g, p + kDerivativeStepMm * t, mode);
-  if (!a.ok() || !b.ok()) return false;
-  out[0] = wrapped(b.angles.theta1 - a.angles.theta1) / (2.0 * kDerivativeStepMm);
-  out[1] = wrapped(b.angles.theta2 - a.angles.theta2) / (2.0 * kDerivativeStepMm);
+  const IkResult ik = inverse(g, p, mode);
+  if (!ik.ok()) return false;
+  const Jacobians j = jacobians(g, makePose(g, ik.angles, p));
+  const Eigen::Vector2d at = j.A * t;
+  if (std::abs(j.B(0, 0)) < kStillMotor || std::abs(j.B(1, 1)) < kStillMotor) return false;
+  out[0] = at[0] / j.B(0, 0);
+  out[1] = at[1] / j.B(1, 1);
   return true;
 }
 
 // The grid of one smooth piece v[0..m] (no sharp corner inside): the tangent at an inner vertex
 // bisects its two segments and is interpolated along each segment, so that q'(s) is continuous.
-std::vector<GridPoint> gridOf(const Geometry& g, WorkingMode mode, std::span<const Vec2> v,
-                              double stepMm) {
+void gridOf(const Geometry& g, WorkingMode mode, std::span<const Vec2> v, double stepMm,
+            std::vector<Vec2>& dir, std::vector<double>& fractions, std::vector<GridPoint>& grid) {
   const size_t m = v.size() - 1;
-  std::vector<Vec2> dir(m);
+  dir.resize(m);
   for (size_t j = 0; j < m; ++j) dir[j] = (v[j + 1] - v[j]).normalized();
-  std::vector<GridPoint> grid;
+  grid.clear();
   double s = 0.0;
   for (size_t j = 0; j < m; ++j) {
     const Vec2 tA = j == 0 ? dir[j] : (dir[j - 1] + dir[j]).normalized();
     const Vec2 tB = j + 1 == m ? dir[j] : (dir[j] + dir[j + 1]).normalized();
     const double length = (v[j + 1] - v[j]).norm();
     const int n = std::max(1, static_cast<int>(std::ceil(length / stepMm)));
-    for (int k = (j == 0 ? 0 : 1); k <= n; ++k) {
-      const double f = static_cast<double>(k) / n;
+    // Fractions along the segment: uniform, and geometrically finer towards the piece's ends
+    // (the path starts and ends at rest: a first or last interval of the plain grid would be
+    // crossed at half speed however fast the motors can accelerate).
+    fractions.clear();
+    for (int k = (j == 0 ? 0 : 1); k <= n; ++k) fractions.push_back(static_cast<double>(k) / n);
+    for (int i = 1; i <= kEndRefinements; ++i) {
+      const double f = std::ldexp(1.0, -i) / n;
+      if (j == 0) fractions.push_back(f);
+      if (j + 1 == m) fractions.push_back(1.0 - f);
+    }
+    std::sort(fractions.begin(), fractions.end());
+    for (const double f : fractions) {
       const Vec2 p = v[j] + f * (v[j + 1] - v[j]);
       const Vec2 t = ((1.0 - f) * tA + f * tB).normalized();
       GridPoint gp;
@@ -65,7 +78,6 @@ std::vector<GridPoint> gridOf(const Geometry& g, WorkingMode mode, std::span<con
     const double ds = grid[k + 1].s - grid[k].s;
     for (int i = 0; i < 2; ++i) grid[k].ddq[i] = (grid[k + 1].dq[i] - grid[k].dq[i]) / ds;
   }
-  return grid;
 }
 
 // The admissible path accelerations u = sddot at one grid point are an interval
@@ -115,14 +127,25 @@ struct Stage {
   }
 };
 
-double timeOfGrid(const std::vector<GridPoint>& grid, double askedMmPerS, const MotorLimits& lim) {
+// Buffers reused from piece to piece (one per thread).
+struct Scratch {
+  std::vector<Vec2> points, dir;
+  std::vector<double> fractions;
+  std::vector<GridPoint> grid;
+  std::vector<Stage> stages;
+  std::vector<double> x;
+};
+
+double timeOfGrid(const std::vector<GridPoint>& grid, double askedMmPerS, const MotorLimits& lim,
+                  Scratch& scratch) {
   const size_t n = grid.size();
   if (n < 2) return 0.0;
   const double askedSq = askedMmPerS * askedMmPerS;
-  std::vector<Stage> stages;
-  stages.reserve(n);
+  std::vector<Stage>& stages = scratch.stages;
+  stages.clear();
   for (const GridPoint& gp : grid) stages.emplace_back(gp, askedSq, lim);
-  std::vector<double> x(n, 0.0);  // backward pass: the largest x that can still stop at the end
+  std::vector<double>& x = scratch.x;  // backward pass: the largest x that can still stop at the end
+  x.assign(n, 0.0);
   for (size_t k = n - 1; k-- > 0;)
     x[k] = stages[k].maxXReaching(x[k + 1], grid[k + 1].s - grid[k].s);
   x[0] = 0.0;  // forward pass from rest, at the largest admissible acceleration
@@ -159,11 +182,13 @@ double restToRestS(double distanceRad, double maxSpeed, double maxAccel) {
   return d / maxSpeed + maxSpeed / maxAccel;
 }
 
-double timeOptimalPathS(const Geometry& g, WorkingMode mode, std::span<const Vec2> pointsMm,
-                        double askedMmPerS, const MotorLimits& limits,
-                        const TimeOptimalOptions& options) {
-  std::vector<Vec2> v;
-  v.reserve(pointsMm.size());
+namespace {
+
+double pathTimeS(const Geometry& g, WorkingMode mode, std::span<const Vec2> pointsMm,
+                 double askedMmPerS, const MotorLimits& limits, const TimeOptimalOptions& options,
+                 Scratch& scratch) {
+  std::vector<Vec2>& v = scratch.points;
+  v.clear();
   for (const Vec2& p : pointsMm)
     if (v.empty() || (p - v.back()).norm() > kSamePointMm) v.push_back(p);
   if (v.size() < 2 || !(askedMmPerS > 0.0)) return 0.0;
@@ -174,10 +199,20 @@ double timeOptimalPathS(const Geometry& g, WorkingMode mode, std::span<const Vec
         j + 1 < v.size() && turnRad(v[j] - v[j - 1], v[j + 1] - v[j]) > options.sharpCornerRad;
     if (!corner && j + 1 < v.size()) continue;
     const std::span<const Vec2> piece(v.data() + first, j - first + 1);
-    timeS += timeOfGrid(gridOf(g, mode, piece, options.gridStepMm), askedMmPerS, limits);
+    gridOf(g, mode, piece, options.gridStepMm, scratch.dir, scratch.fractions, scratch.grid);
+    timeS += timeOfGrid(scratch.grid, askedMmPerS, limits, scratch);
     first = j;
   }
   return timeS;
+}
+
+}  // namespace
+
+double timeOptimalPathS(const Geometry& g, WorkingMode mode, std::span<const Vec2> pointsMm,
+                        double askedMmPerS, const MotorLimits& limits,
+                        const TimeOptimalOptions& options) {
+  Scratch scratch;
+  return pathTimeS(g, mode, pointsMm, askedMmPerS, limits, options, scratch);
 }
 
 TimeOptimalJob timeOptimalJob(const PlannedJob& job, const MachineProfile& profile,
@@ -191,18 +226,26 @@ TimeOptimalJob timeOptimalJob(const PlannedJob& job, const MachineProfile& profi
     return v > 0.0 ? v : profile.drawSpeedMmPerS;
   };
   TimeOptimalJob out;
+  // Strokes are collected (points and asked speed) and timed afterwards on every planning
+  // thread, in chunks summed in job order (the figure does not depend on the thread count).
+  std::vector<Vec2> points;
+  struct StrokeRange {
+    size_t begin, end;
+    double askedMmPerS;
+  };
+  std::vector<StrokeRange> strokes;
+  points.reserve(job.moves.size() + 1);
   JointAngles at = job.start;
   Vec2 atXY = job.startXY;
   double z = profile.tool.zUpMm;
   const double zFeed = profile.tool.zFeedMmPerMin / 60.0;
-  std::vector<Vec2> stroke;
+  size_t strokeBegin = 0;
   int strokeLayer = -1;
   double travel[2] = {0.0, 0.0};  // each motor's rotation along the current travel
   const auto closeStroke = [&] {
-    if (stroke.size() > 1)
-      out.drawS += timeOptimalPathS(profile.geometry, job.mode, stroke, askedOf(strokeLayer), lim,
-                                    options);
-    stroke.clear();
+    if (points.size() > strokeBegin + 1)
+      strokes.push_back({strokeBegin, points.size(), askedOf(strokeLayer)});
+    strokeBegin = points.size();
   };
   const auto closeTravel = [&] {
     out.travelS += std::max(restToRestS(travel[0], lim.maxSpeedRadPerS[0], lim.maxAccelRadPerS2[0]),
@@ -214,8 +257,8 @@ TimeOptimalJob timeOptimalJob(const PlannedJob& job, const MachineProfile& profi
     if (m.kind != JobMoveKind::Travel) closeTravel();
     switch (m.kind) {
       case JobMoveKind::Draw:
-        if (stroke.empty()) stroke.push_back(atXY);
-        stroke.push_back(m.targetXY);
+        if (points.size() == strokeBegin) points.push_back(atXY);
+        points.push_back(m.targetXY);
         strokeLayer = m.layerIndex;
         break;
       case JobMoveKind::Travel:
@@ -238,6 +281,20 @@ TimeOptimalJob timeOptimalJob(const PlannedJob& job, const MachineProfile& profi
   }
   closeStroke();
   closeTravel();
+  constexpr size_t kStrokesPerChunk = 256;
+  const size_t chunks = (strokes.size() + kStrokesPerChunk - 1) / kStrokesPerChunk;
+  std::vector<double> chunkS(chunks, 0.0);
+  parallelFor(chunks, planningThreads(), [&](size_t c) {
+    Scratch scratch;
+    const size_t end = std::min(strokes.size(), (c + 1) * kStrokesPerChunk);
+    for (size_t k = c * kStrokesPerChunk; k < end; ++k) {
+      const StrokeRange& s = strokes[k];
+      chunkS[c] += pathTimeS(profile.geometry, job.mode,
+                             std::span<const Vec2>(points.data() + s.begin, s.end - s.begin),
+                             s.askedMmPerS, lim, options, scratch);
+    }
+  });
+  for (double s : chunkS) out.drawS += s;
   return out;
 }
 

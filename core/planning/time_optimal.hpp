@@ -16,6 +16,7 @@
 // - The job's own dwells (pen settle times, G4), Z moves of a Z-axis pen as rest-to-rest moves.
 #pragma once
 
+#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -24,6 +25,11 @@
 #include "core/planning/job.hpp"
 
 namespace fivebar {
+
+// The planner fills PlannedJob::summary.timeOptimalS for jobs of at most this many moves (about
+// 0.1 s on the 2-core target); larger jobs are left at 0 (not computed): on the 1.8 M-move
+// benchmark job it would cost about as much as the rest of the planning.
+inline constexpr size_t kTimeOptimalMaxMoves = 200000;
 
 // A turn of the drawn path sharper than this (rad) is a corner the pen stops at.
 inline constexpr double kSharpCornerRad = 0.7854;  // 45 deg
@@ -35,7 +41,7 @@ struct MotorLimits {
 MotorLimits motorLimitsOf(const MachineProfile& profile);
 
 struct TimeOptimalOptions {
-  double gridStepMm = 0.25;  // largest step of the phase-plane grid along the path
+  double gridStepMm = 2.0;  // largest step of the phase-plane grid along the path
   double sharpCornerRad = kSharpCornerRad;
 };
 
