@@ -1,6 +1,6 @@
 // Feeds: how fast each joint-linear move may run. GRBL plans what it can know itself: the
 // acceleration along every block, the speed through each junction (junction deviation $11,
-// core/machine/grbl_settings.hpp) and each motor's rate limit along a block. The feeds set only
+// core/machine/junction_deviation.hpp) and each motor's rate limit along a block. The feeds set only
 // what it cannot know: the joint rate (the G-code F, GRBL's joint-space vector rate) that gives
 // the asked XY speed on this five-bar, and never more than the XY speed peaks at the asked one
 // inside the move; at most each motor's speed limit; and at least the minimum block duration the
