@@ -10,6 +10,7 @@
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 
 #include "core/kinematics/units.hpp"
@@ -28,6 +29,16 @@ QString formatJobTime(double seconds) {
   if (h > 0) return PreviewPanel::tr("%1 h %2 min").arg(h).arg(m, 2, 10, QLatin1Char('0'));
   return PreviewPanel::tr("%1 min %2 s").arg(m).arg(s, 2, 10, QLatin1Char('0'));
 }
+
+// The job time against the time-optimal reference (core/planning/time_optimal.hpp), as a share
+// of what the machine can do (GRBL can beat the reference slightly at corners: shown as 100 %).
+namespace {
+QString speedShare(const JobSummary& s) {
+  if (!(s.timeOptimalS > 0.0) || !(s.estimatedTimeS > 0.0)) return {};
+  const int percent = static_cast<int>(std::lround(100.0 * s.timeOptimalS / s.estimatedTimeS));
+  return PreviewPanel::tr("%1 % of what this machine can do").arg(std::min(percent, 100));
+}
+}  // namespace
 
 SpeedLegend::SpeedLegend(QWidget* parent) : QWidget(parent) { setMinimumHeight(34); }
 
@@ -131,6 +142,7 @@ void PreviewPanel::showResult() {
     stats_->setText(tr("<table>"
                        "<tr><td>Working mode:</td><td><b>%1</b></td></tr>"
                        "<tr><td>Estimated time:</td><td><b>%2</b></td></tr>"
+                       "<tr><td></td><td>%8</td></tr>"
                        "<tr><td>Pen down:</td><td>%3 mm</td></tr>"
                        "<tr><td>Pen up:</td><td>%4 mm</td></tr>"
                        "<tr><td>Segments:</td><td>%5</td></tr>"
@@ -141,7 +153,8 @@ void PreviewPanel::showResult() {
                         .arg(s.travelMm, 0, 'f', 0)
                         .arg(s.segments)
                         .arg(r.report.maxDeviationMm, 0, 'f', 3)
-                        .arg(degFromRad(s.minTypeIIMarginRad), 0, 'f', 1));
+                        .arg(degFromRad(s.minTypeIIMarginRad), 0, 'f', 1)
+                        .arg(speedShare(s)));
   } else {
     stats_->setText(tr("Working mode: <b>%1</b>").arg(mode));
   }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/kinematics/kinematics.hpp"
+#include "core/machine/junction_deviation.hpp"
 #include "core/machine/profile.hpp"
 
 namespace fivebar {
@@ -36,8 +37,9 @@ constexpr PresetSpec kPresets[] = {
     // A hobby pen plotter with NEMA17 steppers, 16 microsteps and 4:1 belt reduction
     // (200*16*4/360 = 35.56 steps/deg). Its ++ singularity-free workspace (15 deg type II
     // margin) holds an A5 sheet (210 x 148 mm) in landscape: docs/profile-schema.md.
+    // Pen-up travel at 400 mm/s: the motors' limits set the travel speed (issue 16).
     {"maker-plotter", {100, 180, 100, 180, 90}, -45, 270, -90, 225, 0, 170, 35.5556, 9000, 600,
-     40, 80},
+     40, 400},
 };
 
 MachineProfile build(const PresetSpec& s) {
@@ -60,6 +62,7 @@ MachineProfile build(const PresetSpec& s) {
   // The home point is chosen inside every preset's workspace; keep the angles inside the limits.
   p.homeAngles.theta1 = unwrapNear(home.angles.theta1, 0.5 * (p.limits.theta1Min + p.limits.theta1Max));
   p.homeAngles.theta2 = unwrapNear(home.angles.theta2, 0.5 * (p.limits.theta2Min + p.limits.theta2Max));
+  p.motors.junctionDeviationDeg = junctionDeviationDegFor(p, kCorneringToleranceMm);
   return p;
 }
 
@@ -72,8 +75,14 @@ std::vector<std::string> presetNames() {
 }
 
 std::optional<MachineProfile> preset(const std::string& name) {
-  for (const PresetSpec& s : kPresets)
-    if (name == s.name) return build(s);
+  // Built once (the $11 derivation samples the workspace, a few ms).
+  static const std::vector<MachineProfile> built = [] {
+    std::vector<MachineProfile> all;
+    for (const PresetSpec& s : kPresets) all.push_back(build(s));
+    return all;
+  }();
+  for (const MachineProfile& p : built)
+    if (name == p.name) return p;
   return std::nullopt;
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/machine/junction_deviation.hpp"
 #include "core/machine/profile_json.hpp"
 
 namespace fivebar {
@@ -259,7 +260,8 @@ void readSections(ObjectReader& root, MachineProfile& p, std::vector<ValidationI
     r.finish();
   }
   readModes(root, p, issues);
-  readMotors(root.object("motors"), p, issues);
+  const json* motors = root.object("motors");
+  readMotors(motors, p, issues);
   readTool(root.object("tool"), p, issues);
   if (const json* o = root.object("motion")) {
     ObjectReader r(*o, "motion", issues);
@@ -285,6 +287,9 @@ void readSections(ObjectReader& root, MachineProfile& p, std::vector<ValidationI
     degrees(r, "theta2Deg", p.homeAngles.theta2);
     r.finish();
   }
+  // A profile without $11 gets the one that keeps corners within the default tolerance.
+  if ((!motors || !motors->contains("junctionDeviationDeg")) && validate(p.geometry).empty())
+    p.motors.junctionDeviationDeg = junctionDeviationDegFor(p, kCorneringToleranceMm);
 }
 
 // Checks "schema" and "version"; false when the rest of the document must not be read.

@@ -1,9 +1,12 @@
-// Feeds: how fast each joint-linear move may run. The asked XY speed (mm/s) is turned into a
-// duration per move; the duration grows where a motor would exceed its speed limit (joint speed =
-// J^-1 v, large near singular regions), where the XY speed would peak above the asked one inside
-// the move, where the move would be shorter than the firmware can stream (minimum duration), and
-// where consecutive moves change joint velocity faster than the motors can accelerate.
-// The G-code F of a move is |dtheta| / duration in deg/min (GRBL's joint-space vector rate).
+// Feeds: how fast each joint-linear move may run. GRBL plans what it can know itself: the
+// acceleration along every block, the speed through each junction (junction deviation $11,
+// core/machine/junction_deviation.hpp) and each motor's rate limit along a block. The feeds set only
+// what it cannot know: the joint rate (the G-code F, GRBL's joint-space vector rate) that gives
+// the asked XY speed on this five-bar, and never more than the XY speed peaks at the asked one
+// inside the move; at most each motor's speed limit; and at least the minimum block duration the
+// firmware can plan. A move's feed depends on that move only (no coupling to its neighbours: the
+// velocity changes at junctions are GRBL's, docs/planning.md "Feeds").
+// The G-code F of a move is |dtheta| / duration in deg/min.
 #pragma once
 
 #include <span>
@@ -22,8 +25,6 @@ inline constexpr double kMinSegmentDurationS = 0.005;
 struct FeedLimits {
   double maxSpeedRadPerS1 = 3.0;
   double maxSpeedRadPerS2 = 3.0;
-  double maxAccelRadPerS2_1 = 20.0;
-  double maxAccelRadPerS2_2 = 20.0;
   double minSegmentDurationS = kMinSegmentDurationS;
 };
 FeedLimits feedLimitsOf(const MachineProfile& profile);
@@ -33,7 +34,6 @@ enum class FeedLimit {
   MotorSpeed,       // a motor's speed limit
   PeakXYSpeed,      // the XY speed would peak above the asked one inside the move
   MinDuration,      // shorter than the firmware can stream
-  Acceleration,     // joint velocity change to a neighbour beyond the motors' acceleration
 };
 
 struct SegmentFeed {
@@ -46,7 +46,6 @@ struct SegmentFeed {
 
 // Feeds of the moves waypoints[k-1] -> waypoints[k] (k >= 1) at the asked XY speed; the result
 // has waypoints.size() - 1 entries. pathLengthMm of each waypoint is the XY length of its move.
-// The chain is treated as one continuous motion (acceleration coupling between neighbours).
 std::vector<SegmentFeed> planFeeds(const Geometry& g, AssemblyMode assembly,
                                    std::span<const JointWaypoint> waypoints, double askedMmPerS,
                                    const FeedLimits& limits);

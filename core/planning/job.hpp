@@ -65,6 +65,7 @@ struct PlannedStroke {
 
 struct JobSummary {
   double estimatedTimeS = 0.0;
+  double timeOptimalS = 0.0;    // the time-optimal reference (core/planning/time_optimal.hpp)
   double penDownMm = 0.0;       // drawn length (sum of stroke lengths)
   double travelMm = 0.0;        // pen-up XY path length (FK along the travel moves)
   int segments = 0;             // number of Draw moves

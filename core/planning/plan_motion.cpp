@@ -18,6 +18,7 @@
 #include "core/planning/segmentation.hpp"
 #include "core/kinematics/singularity.hpp"
 #include "core/planning/time_estimate.hpp"
+#include "core/planning/time_optimal.hpp"
 
 namespace fivebar {
 namespace {
@@ -506,10 +507,17 @@ PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Lay
   }
   fillJobTimes(out.job, profile);
   clock.lap("time estimate");
+  if (out.job.moves.size() <= kTimeOptimalMaxMoves) {
+    std::vector<double> layerSpeeds;
+    for (const Layer& l : layers) layerSpeeds.push_back(l.tool.drawSpeedMmPerS);
+    out.job.summary.timeOptimalS = timeOptimalJob(out.job, profile, layerSpeeds).totalS();
+    clock.lap("time-optimal reference");
+  }
   PlanReport& r = out.report;
   const JobSummary& s = out.job.summary;
   r.feasible = r.problems.empty();
   r.estimatedTimeS = s.estimatedTimeS;
+  r.timeOptimalS = s.timeOptimalS;
   r.penDownMm = s.penDownMm;
   r.travelMm = s.travelMm;
   r.segments = s.segments;

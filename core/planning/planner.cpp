@@ -268,6 +268,7 @@ std::string reportToJson(const PlanReport& r) {
       {"feasible", r.feasible},
       {"mode", std::string(toString(r.mode))},
       {"estimated_time_s", r.estimatedTimeS},
+      {"time_optimal_s", r.timeOptimalS},
       {"pen_down_mm", r.penDownMm},
       {"travel_mm", r.travelMm},
       {"segments", r.segments},

@@ -67,6 +67,10 @@ struct PlanReport {
   bool feasible = false;
   WorkingMode mode = WorkingMode::PlusPlus;
   double estimatedTimeS = 0.0;
+  // Time-optimal reference of the same strokes, travels and dwells under the motors' limits
+  // (core/planning/time_optimal.hpp): estimatedTimeS / timeOptimalS is how far the job is from
+  // what the machine can do. 0 when not computed (jobs over kTimeOptimalMaxMoves moves).
+  double timeOptimalS = 0.0;
   double penDownMm = 0.0;
   double travelMm = 0.0;
   int segments = 0;

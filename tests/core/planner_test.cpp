@@ -95,10 +95,16 @@ TEST_F(PlannerTest, DrawMovesStayWithinToleranceAndFeedsWithinLimits) {
       const double t = m.durationS;
       ASSERT_GT(t, 0.0);
       // The GRBL-timed duration is at least the cruise one, so motor speeds stay below limits.
-      EXPECT_LE(std::abs(m.target.theta1 - at.theta1) / t, p.motors.maxSpeedRadPerS1 * (1 + 1e-9));
-      EXPECT_LE(std::abs(m.target.theta2 - at.theta2) / t, p.motors.maxSpeedRadPerS2 * (1 + 1e-9));
+      // GRBL plans the step-rounded move (time_estimate.cpp, StepGrid): up to one step per
+      // motor shorter or longer than the exact one.
+      const double step1 = radFromDeg(1.0 / p.motors.stepsPerDeg1);
+      const double step2 = radFromDeg(1.0 / p.motors.stepsPerDeg2);
+      EXPECT_LE(std::abs(m.target.theta1 - at.theta1) - step1,
+                p.motors.maxSpeedRadPerS1 * t * (1 + 1e-9));
+      EXPECT_LE(std::abs(m.target.theta2 - at.theta2) - step2,
+                p.motors.maxSpeedRadPerS2 * t * (1 + 1e-9));
       const double dq = std::hypot(m.target.theta1 - at.theta1, m.target.theta2 - at.theta2);
-      EXPECT_LE(dq / m.jointFeedRadPerS, t * (1 + 1e-9));
+      EXPECT_LE((dq - std::hypot(step1, step2)) / m.jointFeedRadPerS, t * (1 + 1e-9));
       at = m.target;
     }
   }

@@ -2,7 +2,9 @@
 // (core/time_estimate.cpp, 2026-11-22), in namespace fivebar::oracle. The optimised model must
 // give the same per-move durations, start times and totals to 1e-9 relative;
 // time_estimate_test.cpp compares the two on seeded random inputs and jobs.
-// Do not "fix" this file: it is the reference.
+// Do not "fix" this file: it is the reference. One amendment (issue 16, measured on the GRBL
+// 1.1h firmware): grblInputsOf gives the step-rounded deltas GRBL plans (lround of the target as
+// printed, 4 decimals, relative to the job start, times $100/$101).
 #pragma once
 
 #include <algorithm>
@@ -164,14 +166,23 @@ inline std::vector<GrblBlockInput> grblInputsOf(const PlannedJob& job, const Mac
   std::vector<GrblBlockInput> inputs(job.moves.size());
   JointAngles at = job.start;
   double z = profile.tool.zUpMm;
+  const auto printedDeg = [](double rad) { return std::round(degFromRad(rad) * 1e4) / 1e4; };
+  const auto stepDeltaDeg = [&](double fromRad, double toRad, double startRad, double stepsPerDeg) {
+    const long long a = std::llround((printedDeg(fromRad) - printedDeg(startRad)) * stepsPerDeg);
+    const long long b = std::llround((printedDeg(toRad) - printedDeg(startRad)) * stepsPerDeg);
+    return static_cast<double>(b - a) / stepsPerDeg;
+  };
   for (size_t i = 0; i < job.moves.size(); ++i) {
     const JobMove& mv = job.moves[i];
     GrblBlockInput& in = inputs[i];
     switch (mv.kind) {
       case JobMoveKind::Draw:
       case JobMoveKind::Travel:
-        in.delta = {degFromRad(mv.target.theta1 - at.theta1),
-                    degFromRad(mv.target.theta2 - at.theta2), 0.0};
+        in.delta = {stepDeltaDeg(at.theta1, mv.target.theta1, job.start.theta1,
+                                 profile.motors.stepsPerDeg1),
+                    stepDeltaDeg(at.theta2, mv.target.theta2, job.start.theta2,
+                                 profile.motors.stepsPerDeg2),
+                    0.0};
         in.feedPerS = degFromRad(mv.jointFeedRadPerS);
         at = mv.target;
         break;
