@@ -25,7 +25,7 @@ bool StreamSession::begin(std::string* error) {
   const job::JobRules rules = options_.profile ? job::rulesFor(*options_.profile) : job::JobRules{};
   job_ = job::parseJob(*text, rules);
   if (!job_.issues.empty()) {
-    *error = options_.jobPath + ": " + job_.issues.front() +
+    *error = options_.jobPath + ": refused, nothing was sent: " + job_.issues.front() +
              (job_.issues.size() > 1 ? " (and " + std::to_string(job_.issues.size() - 1) + " more)" : "");
     return false;
   }

@@ -23,10 +23,20 @@ namespace fivebar::cli {
 namespace {
 
 constexpr const char* kStreamHelp =
-    "usage: fivebar stream JOB.gcode --port DEVICE [--baud 115200] [--machine PRESET|FILE]\n"
-    "                      [--resume]\n"
+    "usage: fivebar stream JOB.gcode --port DEVICE --machine PRESET|FILE [--baud 115200]\n"
+    "                      [--resume] [--force-profile] [--unchecked]\n"
     "Streams the job with GRBL character counting (128-byte buffer). Progress goes to stderr.\n"
-    "Exit 0 once every line is acknowledged and the machine is Idle. On an error, alarm or\n"
+    "What is checked, before the first byte: every line of the file is read as GRBL reads it\n"
+    "and every joint move is checked along the path from the job's start (its header's start\n"
+    "pose, else its first target): workspace, joint limits and the type II singularity margin\n"
+    "of --machine. G2/G3, G10/G92/G55-G59, G20, G28/G30 and $ commands are refused. The first\n"
+    "offending line is named and nothing is sent. A job planned for another profile (its\n"
+    "'; profile:' header) is refused unless --force-profile. Then the board's real pose is read\n"
+    "($# for the work offset): when it differs from the job's start (or the resume point), a\n"
+    "checked pen-up travel gets there first, or the stream is refused with the reason (e.g. a\n"
+    "board just powered up reads 0,0 until 'fivebar reference'). --unchecked skips the checks\n"
+    "(a warning is printed): for experts only.\n"
+    "Exit 0 once every line is acknowledged and the machine is Idle. On an error, alarm, stall or\n"
     "disconnect the machine is brought to a clean state, JOB.gcode.progress is saved and the\n"
     "exit code is 1; --resume continues from the last completed pen-down point with a safe\n"
     "pen-up approach (needs --machine, or the machine recorded in the progress file).\n";
@@ -58,13 +68,17 @@ std::optional<MachineProfile> streamMachine(const Options& o, const std::string&
 }  // namespace
 
 int runStream(const Args& args) {
-  const Options o(args, {"--port", "--baud", "--machine"}, {"--resume", "--help"});
+  const Options o(args, {"--port", "--baud", "--machine"},
+                  {"--resume", "--help", "--unchecked", "--force-profile"});
   if (o.flag("--help")) { std::cout << kStreamHelp; return 0; }
   if (o.positional().size() != 1) throw UsageError("stream needs exactly one JOB.gcode");
   QtApp qt;
   StreamOptions options;
   options.jobPath = o.positional()[0];
   options.resume = o.flag("--resume");
+  options.checked = !o.flag("--unchecked");
+  options.forceProfile = o.flag("--force-profile");
+  if (!options.checked) std::cerr << "fivebar stream: " << kUncheckedWarning;
   bool failed = false;
   options.profile = streamMachine(o, options.jobPath, options.machineName, failed);
   if (failed) return 1;
