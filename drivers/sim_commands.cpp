@@ -85,6 +85,16 @@ SimMachine::LineResult SimMachine::executeGcode(const std::string& line, bool jo
     if (dwellLeftS_ > 0.0) return LineResult::Blocked;
     dwellStarted_ = false;
   }
+  // A line answered with an error leaves the modal state as it was (gcode.c checks before it
+  // changes anything).
+  const bool absoluteBefore = absolute_;
+  const int motionBefore = motionMode_;
+  const double feedBefore = feedPerMin_;
+  const auto restoreModal = [&] {
+    absolute_ = absoluteBefore;
+    motionMode_ = motionBefore;
+    feedPerMin_ = feedBefore;
+  };
   if (!jog) {
     if (w.hasCode('G', 90)) absolute_ = true;
     if (w.hasCode('G', 91)) absolute_ = false;
@@ -114,6 +124,7 @@ SimMachine::LineResult SimMachine::executeGcode(const std::string& line, bool jo
       absolute_ = true;
       coordSelect_ = 0;
       updateWco();
+      wcoCounter_ = 0;  // system_flag_wco_change: WCO in the next report
       reply("[MSG:Pgm End]");
     }
   }
@@ -139,13 +150,13 @@ SimMachine::LineResult SimMachine::executeGcode(const std::string& line, bool jo
   } else if (goHome) {
     if (axisWords && !motion(w, jog, true)) return LineResult::Done;
     const Axes3 home = w.hasCode('G', 28) ? g28_ : g30_;
-    if (!checkMode_ && !withinLimits(home)) { raiseAlarm(2, true); return LineResult::Done; }
+    if (!checkMode_ && !withinLimits(home)) { raiseAlarm(2, true); okOwed_ = true; return LineResult::Done; }
     if (!checkMode_) addBlock(home, 0.0, true, false);
   } else if (axisWords && !jog && (motionMode_ == 2 || motionMode_ == 3)) {
-    if (!arc(w, motionMode_ == 2)) return LineResult::Done;
+    if (!arc(w, motionMode_ == 2)) { restoreModal(); return LineResult::Done; }
     if (!arcSegments_.empty()) return executeGcode(line, jog);  // waits for planner room
   } else if (axisWords) {
-    if (!motion(w, jog, motionMode_ == 0)) return LineResult::Done;
+    if (!motion(w, jog, motionMode_ == 0)) { restoreModal(); return LineResult::Done; }
   }
   reply("ok");
   return LineResult::Done;
@@ -168,7 +179,7 @@ bool SimMachine::motion(const gcode::Words& w, bool jog, bool rapidMove) {
       target[i] = machineCoords ? *v : absolute ? *v + wco_[i] : end[i] + *v;
   if (!withinLimits(target)) {
     if (jog) reply("error:15");
-    else raiseAlarm(2, true);
+    else { raiseAlarm(2, true); okOwed_ = true; }
     return false;
   }
   if (checkMode_) return true;
@@ -228,7 +239,7 @@ bool SimMachine::arc(const gcode::Words& w, bool clockwise) {
   const double tol = settings_[12];
   const auto segments = std::size_t(std::floor(std::abs(0.5 * travel * radius) /
                                                std::sqrt(tol * (2.0 * radius - tol))));
-  if (!withinLimits(target)) { raiseAlarm(2, true); return false; }
+  if (!withinLimits(target)) { raiseAlarm(2, true); okOwed_ = true; return false; }
   if (checkMode_) return true;
   arcFeedPerMin_ = feedPerMin_;
   for (std::size_t k = 1; k < segments; ++k) {

@@ -110,6 +110,7 @@ void SimMachine::receive(std::string_view bytes) {
 void SimMachine::realtimeByte(char c) {
   namespace rt = grbl::realtime;
   if (c == rt::kStatus) {
+    if (criticalAlarm_) return;  // a hard or soft limit alarm: silent until the reset
     // protocol.c reports at its next real-time check point: after the lines received before
     // the '?' are executed (or while one waits for planner room).
     serviceLines();
@@ -151,6 +152,9 @@ void SimMachine::softReset() {
   const bool moving = planner_.moving() ||
                       ((state_ == MachineState::Run || state_ == MachineState::Jog) &&
                        !planner_.empty());
+  // mc_line waits in the soft-limit alarm for the reset, then its line returns: "ok".
+  if (okOwed_) reply("ok");
+  okOwed_ = false;
   setPen(false);
   planner_.clear();
   rx_.clear();

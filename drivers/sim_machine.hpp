@@ -117,6 +117,7 @@ class SimMachine {
   bool holding_ = false;
   bool jogCancel_ = false;
   bool criticalAlarm_ = false;  // waits for a soft reset
+  bool okOwed_ = false;  // the line that raised a soft-limit alarm is answered ok at the reset
   bool linkDropped_ = false;
   double dwellLeftS_ = 0.0;
   bool dwellStarted_ = false;
