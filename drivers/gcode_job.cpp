@@ -90,7 +90,8 @@ GcodeJob parseJob(std::string_view text, const JobRules& rules) {
     }
     const std::string where = "line " + std::to_string(fileLine) + ": ";
     if (int(compacted.size()) > grbl::kMaxLineChars)
-      job.issues.push_back(where + "longer than 80 characters after removing comments");
+      job.issues.push_back(where + "longer than GRBL's " + std::to_string(grbl::kMaxLineChars) +
+                           " characters after removing comments and spaces");
     const gcode::Words w = gcode::parseWords(raw);
     if (!w.ok()) job.issues.push_back(where + "not valid G-code ('" + compacted + "')");
     if (w.hasCode('G', 2) || w.hasCode('G', 3))

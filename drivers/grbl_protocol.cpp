@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "core/kinematics/units.hpp"
+#include "gcode_words.hpp"
 
 namespace fivebar::grbl {
 namespace {
@@ -25,7 +26,8 @@ std::string describe(EnqueueStatus status) {
   switch (status) {
     case EnqueueStatus::Queued: return "queued";
     case EnqueueStatus::TooLong:
-      return "line longer than GRBL's " + std::to_string(kMaxLineChars) + " characters";
+      return "line longer than GRBL's " + std::to_string(kMaxLineChars) +
+             " characters (spaces and comments not counted)";
     case EnqueueStatus::Empty: return "empty line";
     case EnqueueStatus::ForbiddenCharacter:
       return "line contains a real-time character (? ! ~ or a byte >= 0x80) or a line break";
@@ -53,7 +55,7 @@ void GrblProtocol::removeListener(ProtocolListener* listener) {
 EnqueueResult GrblProtocol::enqueue(std::string line) {
   while (!line.empty() && (line.back() == ' ' || line.back() == '\r')) line.pop_back();
   if (line.empty()) return {EnqueueStatus::Empty, 0};
-  if (int(line.size()) > kMaxLineChars) return {EnqueueStatus::TooLong, 0};
+  if (int(gcode::compact(line).size()) > kMaxLineChars) return {EnqueueStatus::TooLong, 0};
   for (char c : line)
     if (realtime::isRealtime(c) || c == '\n' || c == '\r')
       return {EnqueueStatus::ForbiddenCharacter, 0};
@@ -119,6 +121,10 @@ void GrblProtocol::handleLine(std::string_view raw) {
     case LineKind::Ok:
     case LineKind::Error: {
       if (inFlight_.empty()) return;  // stray answer after a reset or alarm: nothing to release
+      if (inFlight_.front().id == parametersId_) {
+        parametersId_ = 0;
+        if (p.kind == LineKind::Ok) offsetFromParameters();
+      }
       Ack ack{inFlight_.front().id, std::move(inFlight_.front().text),
               p.kind == LineKind::Error ? p.code : 0};
       bytesInFlight_ -= int(ack.line.size()) + 1;
@@ -138,11 +144,31 @@ void GrblProtocol::handleLine(std::string_view raw) {
       std::vector<std::uint64_t> lost, dropped;
       resetCounters(&lost, &dropped);
       statusOutstanding_ = false;
+      // A reset restores G54 and clears G92: the offset is known again from the next report
+      // (GRBL sends WCO: on the first report after a reset) or from "$#".
+      activeSystem_ = "G54";
+      params_.erase("G92");
+      wco_.reset();
       version_ = p.text;
       for (auto* l : listeners_) l->onReset(version_, lost, dropped);
       return;
     }
     case LineKind::Version: version_ = p.text.substr(0, p.text.find(':')); return;
+    case LineKind::Feedback: {
+      const size_t colon = p.text.find(':');
+      if (colon == std::string::npos) return;
+      const std::string name = p.text.substr(0, colon);
+      std::string values = p.text.substr(colon + 1);
+      if (name == "TLO") values += ",0,0";
+      if (name == "PRB") values = values.substr(0, values.find(':'));
+      if (auto a = parseAxes(values)) params_[name] = *a;
+      return;
+    }
+    case LineKind::GcodeState: {
+      for (const char* g : {"G54", "G55", "G56", "G57", "G58", "G59"})
+        if (p.text.find(g) != std::string::npos) activeSystem_ = g;
+      return;
+    }
     case LineKind::Status: handleStatus(p.status); return;
     default: return;
   }
@@ -162,6 +188,7 @@ void GrblProtocol::resetCounters(std::vector<std::uint64_t>* lost,
     if (lost) lost->push_back(l.id);
   inFlight_.clear();
   bytesInFlight_ = 0;
+  parametersId_ = 0;
   if (dropped) *dropped = dropQueued();
 }
 
@@ -186,15 +213,41 @@ void GrblProtocol::disconnected(const std::string& reason) {
   for (auto* l : listeners_) l->onDisconnected(reason);
 }
 
+std::optional<Axes> GrblProtocol::workPositionDeg() const {
+  if (lastStatus_.wpos) return lastStatus_.wpos;
+  if (!lastStatus_.mpos || !wco_) return std::nullopt;
+  Axes w = *lastStatus_.mpos;
+  for (int i = 0; i < 3; ++i) w.v[size_t(i)] -= wco_->v[size_t(i)];
+  return w;
+}
+
 std::optional<JointAngles> GrblProtocol::motorAngles() const {
-  std::optional<Axes> w = lastStatus_.wpos;
-  if (!w && lastStatus_.mpos) {
-    w = lastStatus_.mpos;
-    if (wco_)
-      for (int i = 0; i < 3; ++i) w->v[size_t(i)] -= wco_->v[size_t(i)];
-  }
+  const std::optional<Axes> w = workPositionDeg();
   if (!w) return std::nullopt;
   return JointAngles{radFromDeg(w->x()), radFromDeg(w->y())};
+}
+
+std::uint64_t GrblProtocol::requestParameters() {
+  const EnqueueResult r = enqueue("$#");
+  parametersId_ = r.ok() ? r.id : 0;
+  return parametersId_;
+}
+
+std::optional<Axes> GrblProtocol::parameter(const std::string& name) const {
+  const auto it = params_.find(name);
+  return it == params_.end() ? std::nullopt : std::optional<Axes>(it->second);
+}
+
+// WCO = active G5x offset + G92 offset (+ tool length offset on Z), as GRBL computes it.
+void GrblProtocol::offsetFromParameters() {
+  const auto system = parameter(activeSystem_);
+  if (!system) return;
+  Axes w = *system;
+  w.count = 3;
+  if (const auto g92 = parameter("G92"))
+    for (size_t i = 0; i < 3; ++i) w.v[i] += g92->v[i];
+  if (const auto tlo = parameter("TLO")) w.v[2] += tlo->v[0];
+  wco_ = w;
 }
 
 std::optional<Axes> GrblProtocol::machinePositionDeg() const {

@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <map>
 #include <functional>
 #include <optional>
 #include <string>
@@ -27,7 +28,9 @@
 namespace fivebar::grbl {
 
 inline constexpr int kRxBufferBytes = 128;  // GRBL 1.1 serial receive buffer
-inline constexpr int kMaxLineChars = 80;    // longest line accepted (without the '\n')
+// Longest line GRBL 1.1h accepts: its line buffer holds 80 bytes with the terminator, and it
+// stores neither spaces nor comments, so this counts the characters of the compacted line.
+inline constexpr int kMaxLineChars = 79;
 inline constexpr int kPlannerBlocks = 15;   // usable planner blocks (Bf reports 15 when empty)
 inline constexpr double kMinPollIntervalS = 0.2;  // 5 Hz: polling never faster than this
 
@@ -118,8 +121,21 @@ class GrblProtocol {
   const std::string& version() const { return version_; }
   std::uint64_t statusReportsSeen() const { return statusReports_; }
   // Motor angles (rad) from the last report's work position (WPos, or MPos - WCO): the frame in
-  // which the G-code's X/Y are theta1/theta2. nullopt before the first report.
+  // which the G-code's X/Y are theta1/theta2. nullopt before the first report, and while the
+  // reports carry MPos but the work offset is not known yet (GRBL sends WCO: only on some
+  // reports; requestParameters() asks for it).
   std::optional<JointAngles> motorAngles() const;
+  // Work position (X, Y deg, Z mm), under the same rule as motorAngles().
+  std::optional<Axes> workPositionDeg() const;
+  // The work coordinate offset, from a WCO: report or from `$#` (G54..G59 active + G92, TLO).
+  const std::optional<Axes>& workOffset() const { return wco_; }
+  // Sends "$#" (the board's coordinate parameters: G54..G59, G28, G30, G92, TLO); its answer
+  // sets the work offset and the stored G28 / G30 positions. Returns the line's id (0 when it
+  // could not be queued). Only valid in Idle or Alarm (GRBL answers error:8 otherwise).
+  std::uint64_t requestParameters();
+  bool parametersPending() const { return parametersId_ != 0; }
+  // Stored positions (machine coordinates) from the last "$#": "G28", "G30", "G54".., "G92".
+  std::optional<Axes> parameter(const std::string& name) const;
   // Raw machine position (MPos) in degrees, when known.
   std::optional<Axes> machinePositionDeg() const;
 
@@ -132,6 +148,7 @@ class GrblProtocol {
   void pump();
   void handleLine(std::string_view raw);
   void handleStatus(const StatusReport& r);
+  void offsetFromParameters();
   void resetCounters(std::vector<std::uint64_t>* lost, std::vector<std::uint64_t>* dropped);
 
   Writer write_;
@@ -148,6 +165,9 @@ class GrblProtocol {
   bool statusOutstanding_ = false;
   StatusReport lastStatus_;
   std::optional<Axes> wco_;
+  std::map<std::string, Axes> params_;
+  std::string activeSystem_ = "G54";
+  std::uint64_t parametersId_ = 0;
   std::string version_;
   std::uint64_t statusReports_ = 0;
   bool connected_ = true;

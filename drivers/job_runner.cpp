@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "gcode_words.hpp"
 #include "grbl_codes.hpp"
 
 namespace fivebar::job {
@@ -50,6 +51,14 @@ void JobRunner::start(std::size_t fromIndex, std::vector<std::string> preamble, 
   fromIndex_ = std::min(fromIndex, job_.lines.size());
   if (fromIndex_ > 0) lastCompleted_ = lastAcked_ = fromIndex_ - 1;
   completedAtStart_ = fromIndex_;
+  maxDwellS_ = 0.0;
+  const auto dwellOf = [](const std::string& t) {
+    if (t.find("G4") == std::string::npos) return 0.0;
+    const gcode::Words w = gcode::parseWords(t);
+    return w.hasCode('G', 4) ? w.get('P').value_or(0.0) : 0.0;
+  };
+  for (const std::string& t : preamble_) maxDwellS_ = std::max(maxDwellS_, dwellOf(t));
+  for (const JobLine& l : job_.lines) maxDwellS_ = std::max(maxDwellS_, dwellOf(l.text));
   nextSeq_ = 0;
   startS_ = nowS_ = nowS;
   problem_.clear();
@@ -105,7 +114,34 @@ void JobRunner::markCompleted(std::uint64_t completedBlocks) {
   }
 }
 
+// A board that stops answering while lines are outstanding: no status report for
+// kSilentTimeoutS although polled, or Idle for kIdleStallS with lines unanswered (bytes lost on
+// the wire, or a board that dropped them).
+void JobRunner::checkStall(double nowS) {
+  if (lastAckS_ < startS_) lastAckS_ = startS_;
+  if (lastStatusS_ < startS_) lastStatusS_ = startS_;
+  if (protocol_.linesInFlight() == 0) {
+    lastAckS_ = nowS;
+    return;
+  }
+  const double unansweredS = nowS - lastAckS_;
+  if (nowS - lastStatusS_ > kSilentTimeoutS && unansweredS > kSilentTimeoutS) {
+    disconnected_ = true;  // nothing can be sent that it would hear: stop without the sequence
+    pause("The board stopped answering: no answer and no status report for " +
+          std::to_string(int(unansweredS)) + " s with " + std::to_string(protocol_.linesInFlight()) +
+          " line(s) outstanding. Check the cable and the board's power, reconnect, then resume "
+          "from the last drawn point.");
+  } else if (idleSinceS_ && nowS - *idleSinceS_ > kIdleStallS + maxDwellS_ &&
+             unansweredS > kIdleStallS + maxDwellS_) {  // a dwell (G4) answers only when done
+    pause("The board stays Idle with " + std::to_string(protocol_.linesInFlight()) +
+          " line(s) unanswered for " + std::to_string(int(unansweredS)) +
+          " s: it lost them (noise on the cable?). The job was stopped; resume from the last "
+          "drawn point.");
+  }
+}
+
 void JobRunner::onAck(const grbl::Ack& ack) {
+  lastAckS_ = nowS_;
   if (unlockId_ && ack.id == *unlockId_) {
     unlockId_.reset();
     phase_ = StopPhase::None;
@@ -124,7 +160,10 @@ void JobRunner::onAck(const grbl::Ack& ack) {
       const int fileLine = idx ? job_.lines[*idx].fileLine : 0;
       pause((idx ? "line " + std::to_string(fileLine) : std::string("resume preamble line")) +
             " '" + ack.line + "' was rejected: " + grbl::describeError(ack.errorCode) +
-            " The job was paused; after the stop, fix the line if needed and resume.");
+            " The job was paused and stopped; what was drawn stays. To continue: fix the line "
+            "in the file and stream it again with --resume: it continues after the last drawn "
+            "point as long as that point is unchanged in the file (otherwise stream it from the "
+            "start).");
     }
   } else if (isMotion(seq)) {
     pendingMotions_.emplace_back(seq, ++ackedBlocks_);
@@ -133,10 +172,16 @@ void JobRunner::onAck(const grbl::Ack& ack) {
 }
 
 void JobRunner::onStatus(const grbl::StatusReport& r) {
-  if (r.plannerBlocksFree) {
-    const int queued = std::max(0, grbl::kPlannerBlocks - *r.plannerBlocksFree);
+  lastStatusS_ = nowS_;
+  if (r.state != MachineState::Idle) idleSinceS_.reset();
+  else if (!idleSinceS_) idleSinceS_ = nowS_;
+  // Executed progress: an acknowledged motion sits in the planner until it is executed. With
+  // Bf: the planner's depth is reported; without it (a stock board, $10=1) at most all 15
+  // planner blocks can still be queued: a lower bound that keeps the resume point safe.
+  const int queued = r.plannerBlocksFree ? std::max(0, grbl::kPlannerBlocks - *r.plannerBlocksFree)
+                                         : grbl::kPlannerBlocks;
+  if (r.plannerBlocksFree || r.state != MachineState::Idle)
     markCompleted(ackedBlocks_ > std::uint64_t(queued) ? ackedBlocks_ - std::uint64_t(queued) : 0);
-  }
   const bool allAcked = inFlight_.empty() && nextSeq_ >= sequenceLength();
   if (r.state == MachineState::Idle && inFlight_.empty() && protocol_.idleLink())
     markCompleted(ackedBlocks_);
@@ -260,6 +305,7 @@ void JobRunner::stop(double nowS) {
 
 void JobRunner::tick(double nowS) {
   nowS_ = nowS;
+  if (state_ == RunState::Running) checkStall(nowS);
   if (state_ != RunState::Stopping || nowS < deadlineS_) return;
   if (phase_ == StopPhase::WaitHold) {
     problem_ += " The hold did not complete in time; the reset may have lost the position.";

@@ -1,6 +1,7 @@
 // JobRunner: streams a job through GrblProtocol (character counting) and follows it on the
 // machine: progress by acknowledged line and by executed line (acknowledged motions minus the
-// planner blocks still queued, from the Bf field of status reports), ETA, hold (!) and resume
+// planner blocks still queued, from the Bf field of status reports, or without Bf: minus the
+// planner's 15 blocks, all executed once the board is Idle), ETA, a stall watchdog, hold (!) and resume
 // (~), the stop sequence (hold, wait for Hold:0, soft reset, wait for the banner, re-sync with a
 // status report, $X when the board is in alarm), and pausing with a plain explanation when an
 // error, an alarm, an unexpected reset or a disconnect happens. Pure logic: time comes in by
@@ -49,6 +50,8 @@ class JobRunner : public grbl::ProtocolListener {
   static constexpr std::size_t kQueueAhead = 16;
   static constexpr double kHoldTimeoutS = 20.0;   // stop: longest wait for Hold:0
   static constexpr double kResetTimeoutS = 5.0;   // stop: longest wait for the banner
+  static constexpr double kSilentTimeoutS = 10.0; // no answer and no status report: stalled
+  static constexpr double kIdleStallS = 3.0;      // Idle with lines unanswered: stalled
 
   JobRunner(grbl::GrblProtocol& protocol, const GcodeJob& job);
   ~JobRunner() override;
@@ -92,6 +95,7 @@ class JobRunner : public grbl::ProtocolListener {
   void forgetInFlight();
   void markCompleted(std::uint64_t completedBlocks);
   void sendReset(double nowS);
+  void checkStall(double nowS);
 
   grbl::GrblProtocol& protocol_;
   const GcodeJob& job_;
@@ -115,6 +119,10 @@ class JobRunner : public grbl::ProtocolListener {
   double startS_ = 0.0;
   double deadlineS_ = 0.0;
   std::size_t completedAtStart_ = 0;
+  double lastAckS_ = 0.0;
+  double maxDwellS_ = 0.0;  // longest G4 of the run: an Idle board answers it only when done
+  double lastStatusS_ = 0.0;
+  std::optional<double> idleSinceS_;
 };
 
 }  // namespace fivebar::job

@@ -20,6 +20,10 @@ Settings expectedSettings(const MachineProfile& profile) {
     if (p.kind == grbl::LineKind::Setting) s[p.settingId] = p.settingValue;
     start = end + 1;
   }
+  // $10=3: status reports carry MPos (GRBL's default, bit 0) and Bf: (bit 1), the planner and
+  // receive-buffer room from which executed progress, the ETA and the resume point are exact.
+  // (Without it progress is derived from the acknowledgements, see JobRunner.)
+  s[10] = 3;
   return s;
 }
 
@@ -66,6 +70,7 @@ void SettingsSync::read() {
   board_.clear();
   problem_.clear();
   state_ = SetupState::Reading;
+  protocol_.enqueue("$I");  // [VER:...] names the firmware in the backup's header
   pending_ = {protocol_.enqueue("$$").id};
 }
 

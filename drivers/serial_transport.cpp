@@ -1,5 +1,6 @@
 #include "serial_transport.hpp"
 
+#include <QFileInfo>
 #include <QSerialPortInfo>
 #include <QTimer>
 
@@ -52,7 +53,17 @@ void SerialTransport::onError(QSerialPort::SerialPortError error) {
                      error == QSerialPort::WriteError || error == QSerialPort::PermissionError;
   if (!fatal || lost_) return;
   lost_ = true;
-  const QString reason = QString("serial port %1: %2").arg(portPath_, port_.errorString());
+  // QSerialPort's errorString() is the errno text of the last system call ("File exists",
+  // "Input/output error"), which tells a user nothing: name what happened instead.
+  const bool vanished = !QFileInfo::exists(portPath_) ||
+                        error == QSerialPort::ResourceError || error == QSerialPort::ReadError;
+  const QString reason =
+      error == QSerialPort::PermissionError
+          ? QString("no permission to use %1 any more").arg(portPath_)
+      : vanished ? QString("the port %1 vanished or stopped working (cable unplugged, board powered "
+                           "off or reset by the USB host, simulator ended)")
+                       .arg(portPath_)
+                 : QString("writing to %1 failed (the board may have been unplugged)").arg(portPath_);
   // Closing inside the error handler re-enters QSerialPort; close on the next event loop turn.
   QTimer::singleShot(0, this, [this] { close(); });
   emit disconnected(reason);

@@ -6,6 +6,8 @@
 
 #include "core/kinematics/units.hpp"
 #include "gcode_job.hpp"
+#include "gcode_words.hpp"
+#include "machine_setup.hpp"
 #include "grbl_protocol.hpp"
 
 namespace fivebar::sim {
@@ -15,8 +17,8 @@ using grbl::MachineState;
 
 constexpr const char* kBanner = "Grbl 1.1h ['$' for help]";
 constexpr std::size_t kRxCapacity = 128;
-constexpr std::size_t kMaxLine = 80;
-constexpr int kWcoEveryReports = 10;
+constexpr std::size_t kMaxLine = 79;  // LINE_BUFFER_SIZE 80 with the terminator
+constexpr double kResetBannerDelayS = 0.6;  // after ALARM:3, as the real board
 
 std::string fmt3(double v) {
   char buf[48];
@@ -26,8 +28,8 @@ std::string fmt3(double v) {
 
 std::string axes(const Axes3& a) { return fmt3(a[0]) + "," + fmt3(a[1]) + "," + fmt3(a[2]); }
 
-bool isIntegerSetting(int id) {
-  return id < 100 && id != 11 && id != 12 && !(id >= 24 && id <= 27);
+bool isIntegerSetting(int id) {  // settings.c: the rest print with 3 decimals
+  return id < 100 && id != 11 && id != 12 && id != 24 && id != 25 && id != 27;
 }
 
 }  // namespace
@@ -46,31 +48,26 @@ std::optional<Fault> parseFault(std::string_view text) {
 }
 
 SimMachine::SimMachine(const SimConfig& config) : config_(config), planner_(MotionLimits{}) {
-  const MachineProfile& p = config.profile;
-  const bool limited = p.limits.theta1Max < 1e8 && p.limits.theta2Max < 1e8;
-  const double zRate = p.tool.zFeedMmPerMin;
-  settings_ = {{0, 10},   {1, 25},   {2, 0},    {3, 0},    {4, 0},    {5, 0},   {6, 0},
-               {10, 1},   {11, p.motors.junctionDeviationDeg},
-               {12, 0.002}, {13, 0}, {20, limited ? 1 : 0}, {21, 0},
-               {22, p.hasHomingSwitches ? 1 : 0}, {23, 0}, {24, 25}, {25, 500}, {26, 250},
-               {27, 1},   {30, 1000}, {31, 0},  {32, p.tool.kind == ToolKind::Laser ? 1 : 0},
-               {100, p.motors.stepsPerDeg1}, {101, p.motors.stepsPerDeg2}, {102, 100},
-               {110, degFromRad(p.motors.maxSpeedRadPerS1) * 60.0},
-               {111, degFromRad(p.motors.maxSpeedRadPerS2) * 60.0}, {112, zRate},
-               {120, degFromRad(p.motors.maxAccelRadPerS2_1)},
-               {121, degFromRad(p.motors.maxAccelRadPerS2_2)}, {122, 200},
-               {130, limited ? degFromRad(p.limits.theta1Max - p.limits.theta1Min) : 360},
-               {131, limited ? degFromRad(p.limits.theta2Max - p.limits.theta2Min) : 360},
-               {132, 50}};
+  settings_ = firmwareDefaultSettings();
+  if (config.setUp)
+    for (const auto& [id, value] : setup::expectedSettings(config.profile)) settings_[id] = value;
   applySettings();
-  const double z = p.tool.kind == ToolKind::ZAxis ? p.tool.zUpMm : 0.0;
-  planner_.setPosition(planner_.quantize(
-      {degFromRad(p.homeAngles.theta1), degFromRad(p.homeAngles.theta2), z}));
-  out_ += std::string("\r\n") + kBanner + "\r\n";
-  if (settings_[22] == 1) {
-    state_ = MachineState::Alarm;
-    reply("[MSG:'$H'|'$X' to unlock]");
+  // A board after power-up: MPos 0,0,0, nothing sent when the port opens (the banner went out
+  // at power-up, before anyone listened); locked in alarm when homing is enabled.
+  planner_.setPosition({0.0, 0.0, 0.0});
+  if (config.referenced) {
+    const MachineProfile& p = config.profile;
+    const double z = p.tool.kind == ToolKind::ZAxis ? p.tool.zUpMm : 0.0;
+    coords_[0] = planner_.quantize({-degFromRad(p.homeAngles.theta1), -degFromRad(p.homeAngles.theta2), -z});
+    updateWco();
   }
+  if (settings_[22] == 1) state_ = MachineState::Alarm;
+}
+
+void SimMachine::updateWco() {
+  const Axes3 before = wco_;
+  for (size_t i = 0; i < 3; ++i) wco_[i] = coords_[size_t(coordSelect_)][i] + g92_[i];
+  if (wco_ != before) wcoCounter_ = 0;  // system_flag_wco_change: in the very next report
 }
 
 void SimMachine::applySettings() {
@@ -97,7 +94,7 @@ std::string SimMachine::takeOutput() {
 }
 
 void SimMachine::receive(std::string_view bytes) {
-  if (linkDropped_) return;
+  if (linkDropped_ || resetLeftS_ > 0.0) return;  // a resetting board drops what arrives
   for (char c : bytes) {
     if (grbl::realtime::isRealtime(c)) {
       realtimeByte(c);
@@ -113,6 +110,10 @@ void SimMachine::receive(std::string_view bytes) {
 void SimMachine::realtimeByte(char c) {
   namespace rt = grbl::realtime;
   if (c == rt::kStatus) {
+    if (criticalAlarm_) return;  // a hard or soft limit alarm: silent until the reset
+    // protocol.c reports at its next real-time check point: after the lines received before
+    // the '?' are executed (or while one waits for planner room).
+    serviceLines();
     reportStatus();
   } else if (c == rt::kFeedHold) {
     if (state_ == MachineState::Run) {
@@ -151,21 +152,55 @@ void SimMachine::softReset() {
   const bool moving = planner_.moving() ||
                       ((state_ == MachineState::Run || state_ == MachineState::Jog) &&
                        !planner_.empty());
-  const bool alarmAfter = moving || state_ == MachineState::Alarm;
+  // mc_line waits in the soft-limit alarm for the reset, then its line returns: "ok".
+  if (okOwed_) reply("ok");
+  okOwed_ = false;
   setPen(false);
   planner_.clear();
   rx_.clear();
+  arcSegments_.clear();
   haveCurrent_ = false;
   holding_ = jogCancel_ = criticalAlarm_ = false;
   dwellLeftS_ = 0.0;
   dwellStarted_ = false;
-  absolute_ = rapidMode_ = true;
+  // gc_init: G0 G54 G17 G21 G90 G94 M5 M9, G92 cleared.
+  absolute_ = true;
+  motionMode_ = 0;
+  coordSelect_ = 0;
+  g92_ = {};
   feedPerMin_ = spindleS_ = 0.0;
   spindleOn_ = false;
-  if (moving) reply("ALARM:3");
+  checkMode_ = false;
+  resetAlarm_ = moving || state_ == MachineState::Alarm;
+  if (moving) {
+    reply("ALARM:3");
+    state_ = MachineState::Alarm;
+    resetLeftS_ = config_.instant ? 1e-9 : kResetBannerDelayS;
+    return;
+  }
+  finishReset();
+}
+
+void SimMachine::finishReset() {
+  resetLeftS_ = -1.0;
+  updateWco();
+  wcoCounter_ = ovrCounter_ = 0;  // main.c clears sys: WCO on the first report
   out_ += std::string("\r\n") + kBanner + "\r\n";
-  state_ = alarmAfter ? MachineState::Alarm : MachineState::Idle;
-  if (alarmAfter) reply("[MSG:'$H'|'$X' to unlock]");
+  if (resetAlarm_) {
+    state_ = MachineState::Alarm;
+    reply("[MSG:'$H'|'$X' to unlock]");
+    return;
+  }
+  state_ = MachineState::Idle;
+  for (const std::string& line : startupLines_) {  // system_execute_startup: ">line:ok"
+    if (line.empty()) continue;
+    const std::string before = out_;
+    out_.clear();
+    executeGcode(line, false);
+    std::string answer = out_;
+    while (!answer.empty() && (answer.back() == '\n' || answer.back() == '\r')) answer.pop_back();
+    out_ = before + ">" + line + ":" + answer + "\r\n";
+  }
 }
 
 void SimMachine::raiseAlarm(int code, bool critical) {
@@ -192,8 +227,10 @@ void SimMachine::serviceLines() {
     if (!haveCurrent_) {
       const size_t end = rx_.find_first_of("\r\n");
       if (end == std::string::npos) return;
-      current_ = rx_.substr(0, end);
+      // protocol.c stores neither spaces, control characters nor comments, upper-cased.
+      const std::string raw = rx_.substr(0, end);
       rx_.erase(0, end + 1);
+      current_ = gcode::compact(raw);
       ++linesReceived_;
       haveCurrent_ = true;
       if (fireFault(FaultKind::DropAfter)) { faultFired_ = linkDropped_ = true; return; }
@@ -223,6 +260,11 @@ SimMachine::LineResult SimMachine::executeLine(const std::string& line) {
 }
 
 void SimMachine::advance(double machineDtS) {
+  if (resetLeftS_ > 0.0) {
+    resetLeftS_ -= machineDtS;
+    if (resetLeftS_ <= 0.0) finishReset();
+    return;
+  }
   if (linkDropped_ || criticalAlarm_) return;
   const bool hadBlocks = !planner_.empty();
   planner_.advance(machineDtS, holding_ || jogCancel_, config_.instant,
@@ -260,27 +302,51 @@ bool SimMachine::penDownFor(double spindleS, bool spindleOn, double z) const {
   return job::penDownFor(config_.profile.tool, spindleOn, spindleS, z);
 }
 
+// limits.c / system.c: with soft limits on, every target must lie within -$13x..0 in machine
+// coordinates (homing direction mask 0, HOMING_FORCE_SET_ORIGIN off).
 bool SimMachine::withinLimits(const Axes3& machineTarget) const {
   if (settings_.at(20) != 1) return true;
-  const JointLimits& l = config_.profile.limits;
-  const double slack = 0.5 / planner_.limits().stepsPerUnit[0];
-  return machineTarget[0] >= degFromRad(l.theta1Min) - slack &&
-         machineTarget[0] <= degFromRad(l.theta1Max) + slack &&
-         machineTarget[1] >= degFromRad(l.theta2Min) - slack &&
-         machineTarget[1] <= degFromRad(l.theta2Max) + slack;
+  for (int i = 0; i < 3; ++i) {
+    const double slack = 0.5 / planner_.limits().stepsPerUnit[size_t(i)];
+    if (machineTarget[size_t(i)] > slack || machineTarget[size_t(i)] < -settings_.at(130 + i) - slack)
+      return false;
+  }
+  return true;
 }
 
 void SimMachine::reportStatus() {
+  // report.c report_realtime_status, field by field.
+  if (resetLeftS_ > 0.0) return;
+  const int mask = int(settings_[10]);
+  const bool busy = state_ == MachineState::Run || state_ == MachineState::Hold ||
+                    state_ == MachineState::Jog || state_ == MachineState::Home;
   std::string s = "<";
   s += grbl::toString(state_);
   if (state_ == MachineState::Hold) s += planner_.moving() ? ":1" : ":0";
-  s += "|MPos:" + axes(planner_.position());
-  s += "|Bf:" + std::to_string(int(Planner::kCapacity - planner_.size())) + "," +
-       std::to_string(int(kRxCapacity - rx_.size()));
+  Axes3 p = planner_.position();
+  if (!(mask & 1))
+    for (size_t i = 0; i < 3; ++i) p[i] -= wco_[i];
+  s += (mask & 1) ? "|MPos:" : "|WPos:";
+  s += axes(p);
+  if (mask & 2)
+    s += "|Bf:" + std::to_string(int(Planner::kCapacity - planner_.size())) + "," +
+         std::to_string(int(kRxCapacity - rx_.size()));
   s += "|FS:" + std::to_string(long(std::lround(planner_.speed() * 60.0))) + "," +
        std::to_string(long(std::lround(spindleOn_ ? spindleS_ : 0.0)));
-  if (reportsSinceWco_ == 0) s += "|WCO:" + axes(wco_) + "|Ov:100,100,100";
-  reportsSinceWco_ = (reportsSinceWco_ + 1) % kWcoEveryReports;
+  if (wcoCounter_ > 0) {
+    --wcoCounter_;
+  } else {
+    wcoCounter_ = busy ? 29 : 9;
+    if (ovrCounter_ == 0) ovrCounter_ = 1;
+    s += "|WCO:" + axes(wco_);
+  }
+  if (ovrCounter_ > 0) {
+    --ovrCounter_;
+  } else {
+    ovrCounter_ = busy ? 19 : 9;
+    s += "|Ov:100,100,100";
+    if (spindleOn_) s += "|A:S";
+  }
   reply(s + ">");
 }
 

@@ -1,13 +1,21 @@
-// SimMachine: a GRBL 1.1-compatible simulated five-bar controller, pure logic. Bytes in through
-// receive(), bytes out through takeOutput(), machine time through advance(). It implements the
-// subset the studio uses: G0/G1/G4/G90/G91/G10 L20/G92/M3/M4/M5/S/F, $J=, $H, $X, $$, $N=V,
-// $I, $G and the real-time bytes ? ! ~ 0x18 0x85; a 128-byte receive buffer; a 15-block
-// planner with trapezoidal timing (sim_planner.hpp); soft-limit alarms from the profile's
-// joint limits; error:N for bad lines; ALARM:3 after a reset during motion; injected faults.
-// It records the pen-down joint-space path. Units: X, Y degrees (theta1, theta2), Z mm.
+// SimMachine: a simulated GRBL 1.1h board driving a five-bar, pure logic. Bytes in through
+// receive(), bytes out through takeOutput(), machine time through advance(). It answers as the
+// firmware does (gnea/grbl 1.1h: protocol.c, report.c, settings.c, system.c, limits.c; checked
+// against the real firmware in tests/drivers/replay_test.cpp): it starts at MPos 0,0,0 like a
+// board after power-up and sends nothing when the port opens; status reports follow $10 (MPos
+// or WPos, Bf: only with bit 1), WCO: on the first report after power-up, a reset or an offset
+// change and then every 10th (idle) / 30th (busy) report, Ov: on the report after; a '?' is
+// answered after the lines before it are executed; $I, $#, $N, $C, $G, $$ (firmware defaults,
+// or the profile's settings when the board was set up), $20=1 refused without $22=1, soft limits
+// -$13x..0 in machine coordinates, the 79-character line buffer without spaces, G0/G1/G4,
+// G2/G3 arcs, G10 L2/L20, G28/G30 (.1), G53, G54-G59, G90/G91, G92 (.1), M0/M2/M30/M3/M4/M5,
+// M2 with [MSG:Pgm End]; a 15-block planner with trapezoidal timing (sim_planner.hpp); ALARM:3
+// at once on a reset during motion and the banner 0.6 s later; injected faults. It records the
+// pen-down joint-space path. Units: X, Y degrees (theta1, theta2), Z mm.
 #pragma once
 
 #include <array>
+#include <deque>
 #include <map>
 #include <optional>
 #include <string>
@@ -38,7 +46,17 @@ struct SimConfig {
   MachineProfile profile;
   Fault fault;
   bool instant = false;  // every move completes at once (acks as fast as lines arrive)
+  // false: the EEPROM of a new board (the firmware's default $$ values); true: a board on which
+  // `fivebar setup --write` ran for the profile (its expected settings, $10=3 included).
+  bool setUp = false;
+  // false: EEPROM offsets all zero (work = machine coordinates). true: the G54 offset of a board
+  // referenced at the pose it was powered up in (`fivebar reference` at the home pose, then a
+  // power cycle there): MPos 0,0 reads as the profile's home pose.
+  bool referenced = false;
 };
+
+// The firmware's default settings (defaults.h, DEFAULTS_GENERIC).
+std::map<int, double> firmwareDefaultSettings();
 
 class SimMachine {
  public:
@@ -66,7 +84,14 @@ class SimMachine {
   LineResult executeLine(const std::string& line);
   LineResult executeSystem(const std::string& line);
   LineResult executeGcode(const std::string& line, bool jog);
-  bool motion(const gcode::Words& w, bool jog);  // false when it replied an error/alarm
+  LineResult setSetting(const std::string& line);
+  bool arc(const gcode::Words& w, bool clockwise);  // false when it replied an error
+  void reportParameters();
+  void finishReset();
+  Axes3 coordSystem(int index) const;  // G54 = 0 .. G59 = 5, machine offsets
+  bool motion(const gcode::Words& w, bool jog, bool rapidMove);  // false: replied an error/alarm
+  void addBlock(const Axes3& target, double feedPerMin, bool rapid, bool jog);
+  void updateWco();
   bool syncReady() const { return planner_.empty(); }
   void realtimeByte(char c);
   void softReset();
@@ -92,11 +117,23 @@ class SimMachine {
   bool holding_ = false;
   bool jogCancel_ = false;
   bool criticalAlarm_ = false;  // waits for a soft reset
+  bool okOwed_ = false;  // the line that raised a soft-limit alarm is answered ok at the reset
   bool linkDropped_ = false;
   double dwellLeftS_ = 0.0;
   bool dwellStarted_ = false;
   bool absolute_ = true;
-  bool rapidMode_ = true;
+  int coordSelect_ = 0;             // G54
+  std::array<Axes3, 6> coords_{};   // G54..G59 (EEPROM)
+  Axes3 g28_{}, g30_{}, g92_{};
+  std::array<std::string, 2> startupLines_;
+  bool checkMode_ = false;
+  double resetLeftS_ = -1.0;        // > 0: a reset in motion, banner when it reaches 0
+  bool resetAlarm_ = false;
+  int wcoCounter_ = 0, ovrCounter_ = 0;
+  bool statusRequested_ = false;
+  int motionMode_ = 0;  // G0..G3
+  std::deque<Axes3> arcSegments_;
+  double arcFeedPerMin_ = 0.0;
   double feedPerMin_ = 0.0;
   double spindleS_ = 0.0;
   bool spindleOn_ = false;
@@ -105,7 +142,6 @@ class SimMachine {
   long linesReceived_ = 0;
   long rxOverflow_ = 0;
   long starvations_ = 0;
-  int reportsSinceWco_ = 0;
   bool faultFired_ = false;
   std::vector<std::vector<Point2>> strokes_;
 };

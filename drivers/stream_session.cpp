@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/kinematics/units.hpp"
+#include "core/planning/safety.hpp"
+#include "motion_check.hpp"
 #include "resume.hpp"
 
 namespace fivebar {
@@ -22,16 +25,18 @@ bool StreamSession::begin(std::string* error) {
   const job::JobRules rules = options_.profile ? job::rulesFor(*options_.profile) : job::JobRules{};
   job_ = job::parseJob(*text, rules);
   if (!job_.issues.empty()) {
-    *error = options_.jobPath + ": " + job_.issues.front() +
+    *error = options_.jobPath + ": refused, nothing was sent: " + job_.issues.front() +
              (job_.issues.size() > 1 ? " (and " + std::to_string(job_.issues.size() - 1) + " more)" : "");
     return false;
   }
+  if (options_.checked && !checkJob(*text, error)) return false;
   if (options_.resume) {
     resumeFrom_ = job::loadProgress(progressPath(), error);
     if (!resumeFrom_) return false;
-    if (resumeFrom_->jobHash != jobHash_) {
-      *error = progressPath() + " belongs to a different version of " + options_.jobPath +
-               " (the file changed since it was saved); stream it from the start instead";
+    if (resumeFrom_->jobHash != jobHash_ && !sameResumePoint(*resumeFrom_)) {
+      *error = progressPath() + " was saved for another version of " + options_.jobPath +
+               " and the resume point (line " + std::to_string(resumeFrom_->lastPenDownLine) +
+               ") is not the same in the changed file; stream it from the start instead";
       return false;
     }
     if (!options_.profile) {
@@ -42,26 +47,60 @@ bool StreamSession::begin(std::string* error) {
   runner_ = std::make_unique<job::JobRunner>(link_.protocol(), job_);
   runner_->changed = [this] { onRunnerChanged(); };
   phase_ = Phase::Sync;
-  syncDeadlineS_ = link_.nowS() + options_.syncTimeoutS;
-  link_.protocol().sendRealtime(grbl::realtime::kStatus);
+  poseSync_ = std::make_unique<grbl::PoseSync>(link_.protocol(), options_.syncTimeoutS);
   return true;
+}
+
+bool StreamSession::checkJob(const std::string& text, std::string* error) {
+  if (!options_.profile) {
+    *error = "the job's moves are checked against the machine profile before the first byte: "
+             "give --machine PRESET|FILE (or --unchecked to stream without the check)";
+    return false;
+  }
+  const MachineProfile& p = *options_.profile;
+  const motion::JobHeader header = motion::readJobHeader(text);
+  if (header.profileName && *header.profileName != p.name && !options_.forceProfile) {
+    *error = options_.jobPath + " was planned for the profile '" + *header.profileName +
+             "', not '" + p.name + "': plan it again for this machine (or --force-profile if the "
+             "machines are the same)";
+    return false;
+  }
+  std::optional<motion::Axes3> start;
+  if (header.startDeg) start = motion::Axes3{(*header.startDeg)[0], (*header.startDeg)[1], 0.0};
+  const motion::FileCheck c = motion::checkFile(p, text, start);
+  if (!c.ok) {
+    *error = options_.jobPath + ": refused, nothing was sent: " + c.reason;
+    return false;
+  }
+  if (start) jobStart_ = *start;
+  else if (c.firstTargetWork) jobStart_ = *c.firstTargetWork;
+  return true;
+}
+
+bool StreamSession::sameResumePoint(const job::JobProgress& saved) const {
+  if (saved.lastPenDownLine == 0) return true;  // starts over anyway
+  const auto i = job::indexOfFileLine(job_, saved.lastPenDownLine);
+  if (!i || !job_.lines[*i].penDownPoint) return false;
+  const job::Point2& a = job_.lines[*i].endDeg;
+  return std::abs(a[0] - saved.penDownAnglesDeg[0]) < 1e-3 &&
+         std::abs(a[1] - saved.penDownAnglesDeg[1]) < 1e-3;
 }
 
 void StreamSession::onTick(double nowS) {
   if (phase_ == Phase::Sync) {
-    if (link_.protocol().statusReportsSeen() > 0) {
-      if (link_.protocol().state() == grbl::MachineState::Alarm) {
-        finish(false, "the machine is in alarm: check it, then unlock with "
-                      "'fivebar send --port " + link_.transport().name().toStdString() +
-                      " $X' (or home with $H) and stream again");
-        return;
-      }
-      startStreaming(nowS);
-    } else if (nowS > syncDeadlineS_) {
-      finish(false, "no status report from " + link_.transport().name().toStdString() +
-                        " within " + std::to_string(int(options_.syncTimeoutS)) +
-                        " s: is it a GRBL 1.1 board at the right baud rate?");
+    const auto st = poseSync_->step(nowS);
+    if (st == grbl::PoseSync::State::Failed) {
+      finish(false, link_.transport().name().toStdString() + ": " + poseSync_->problem());
+      return;
     }
+    if (st == grbl::PoseSync::State::Waiting) return;
+    if (link_.protocol().state() == grbl::MachineState::Alarm) {
+      finish(false, "the machine is in alarm: check it, then unlock with "
+                    "'fivebar send --port " + link_.transport().name().toStdString() +
+                    " $X' (or home with 'fivebar home') and stream again");
+      return;
+    }
+    startStreaming(nowS);
     return;
   }
   if (phase_ != Phase::Streaming) return;
@@ -87,7 +126,9 @@ void StreamSession::startStreaming(double nowS) {
   phase_ = Phase::Streaming;
   nextSaveS_ = nowS + options_.saveEveryS;
   if (!resumeFrom_) {
-    runner_->start(0, {}, nowS);
+    std::vector<std::string> approach;
+    if (options_.checked && !planApproach(approach)) return;
+    runner_->start(0, approach, nowS);
     return;
   }
   std::optional<std::size_t> point;
@@ -99,14 +140,64 @@ void StreamSession::startStreaming(double nowS) {
       return;
     }
   }
-  const auto current = link_.protocol().motorAngles();
-  const job::ResumePlan plan = job::planResume(job_, point, *options_.profile,
-                                               current.value_or(options_.profile->homeAngles));
+  const auto current = link_.protocol().motorAngles();  // known: PoseSync is Ready
+  if (!current) {
+    finish(false, "cannot resume: the machine's pose is not known");
+    return;
+  }
+  if (const MoveCheck here = checkPose(*options_.profile, *current); !here.ok()) {
+    finish(false, "cannot resume: the machine reports " +
+                      motion::anglesText(degFromRad(current->theta1), degFromRad(current->theta2)) +
+                      ", which is not a safe pose (" + describe(here) + "); if the board lost its "
+                      "position (power cut), put the arms in the home pose and run 'fivebar "
+                      "reference', then resume");
+    return;
+  }
+  const job::ResumePlan plan = job::planResume(job_, point, *options_.profile, *current);
   if (!plan.ok()) {
     finish(false, "cannot resume: " + plan.message);
     return;
   }
   runner_->start(plan.continueFrom, plan.preamble, nowS);
+}
+
+bool StreamSession::planApproach(std::vector<std::string>& preamble) {
+  const auto pose = link_.protocol().workPositionDeg();
+  if (!pose || !jobStart_) return true;  // a job without joint motion
+  const MachineProfile& p = *options_.profile;
+  const double tolDeg = 0.5 / std::max(1.0, std::min(p.motors.stepsPerDeg1, p.motors.stepsPerDeg2));
+  const std::string here = motion::anglesText(pose->x(), pose->y());
+  const std::string start = motion::anglesText((*jobStart_)[0], (*jobStart_)[1]);
+  if (std::abs(pose->x() - (*jobStart_)[0]) <= std::max(tolDeg, 1e-3) &&
+      std::abs(pose->y() - (*jobStart_)[1]) <= std::max(tolDeg, 1e-3))
+    return true;
+  const JointAngles from{radFromDeg(pose->x()), radFromDeg(pose->y())};
+  const JointAngles to{radFromDeg((*jobStart_)[0]), radFromDeg((*jobStart_)[1])};
+  if (const MoveCheck c = checkPose(p, from); !c.ok()) {
+    finish(false, "refused before the first move: the machine reports " + here +
+                      ", which is not a safe pose of " + p.name + " (" + describe(c) +
+                      "); its reference is probably not set: put the arms in the home pose and "
+                      "run 'fivebar reference' (or 'fivebar home'), then stream again");
+    return false;
+  }
+  const auto travel = planSafeTravel(p, from, to);
+  if (!travel) {
+    finish(false, "refused before the first move: the machine is at " + here +
+                      " and the job starts at " + start +
+                      ", and no safe pen-up travel joins them. A board just powered up reads "
+                      "0,0 until its reference is set: put the arms in the home pose and run "
+                      "'fivebar reference'; otherwise bring it closer ('fivebar home') and "
+                      "stream again");
+    return false;
+  }
+  preamble.push_back("G90");
+  for (const std::string& s : job::penUpCommands(p.tool)) preamble.push_back(s);
+  for (const JointAngles& q : *travel)
+    preamble.push_back(job::moveTo({degFromRad(q.theta1), degFromRad(q.theta2)}, true));
+  emit progress(QString::fromStdString("approach: the machine is at " + here +
+                                       ", the job starts at " + start + ": pen-up travel in " +
+                                       std::to_string(travel->size()) + " checked move(s)"));
+  return true;
 }
 
 void StreamSession::onRunnerChanged() {

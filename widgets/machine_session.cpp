@@ -36,6 +36,7 @@ bool MachineSession::connectSimulated(double speedup, const sim::Fault& fault, Q
   sim::SimConfig config;
   config.profile = doc_.profile();
   config.fault = fault;
+  config.setUp = true;  // a board set up for the profile; it starts at MPos 0,0 (no reference)
   auto transport = std::make_unique<SimulatedTransport>(config, speedup);
   SimulatedTransport* simulated = transport.get();
   if (!openLink(std::move(transport), error)) return false;

@@ -71,7 +71,11 @@ MachineSettingsDialog* MachineUi::openSettingsDialog() {
 
 bool MachineUi::connectSimulated(double speedup) {
   QString error;
-  return session_.connectSimulated(speedup, sim::Fault{}, &error);
+  if (!session_.connectSimulated(speedup, sim::Fault{}, &error)) return false;
+  // The simulated board starts at MPos 0,0 like a real one after power-up: the demo declares
+  // the pose it stands in the home pose (G10 L20, shown in the machine console).
+  session_.setReferencePose();
+  return true;
 }
 
 }  // namespace fivebar::widgets

@@ -16,8 +16,10 @@ int runProfile(const Args& args);        // cmd_profile.cpp
 int runPlan(const Args& args);           // cmd_plan.cpp
 int runGrblSettings(const Args& args);   // cmd_plan.cpp
 int runStream(const Args& args);         // cmd_machine.cpp (Qt builds only)
-int runSend(const Args& args);           // cmd_machine.cpp (Qt builds only)
+int runSend(const Args& args);           // cmd_send.cpp (Qt builds only)
 int runSetup(const Args& args);          // cmd_machine.cpp (Qt builds only)
+int runReference(const Args& args);      // cmd_reference.cpp (Qt builds only)
+int runHome(const Args& args);           // cmd_reference.cpp (Qt builds only)
 // Further commands are declared here as they land (plan, grbl-settings, stream, send).
 
 }  // namespace fivebar::cli

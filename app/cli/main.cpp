@@ -24,6 +24,8 @@ constexpr Command kCommands[] = {
 #ifdef FIVEBAR_HAVE_DRIVERS
     {"stream", "stream a G-code job to a GRBL board (character counting, resume)", fivebar::cli::runStream},
     {"send", "send one-off lines or settings to a GRBL board", fivebar::cli::runSend},
+    {"reference", "declare the machine's current pose its home pose (G10 L20)", fivebar::cli::runReference},
+    {"home", "home the machine ($H, or a checked move to the home pose)", fivebar::cli::runHome},
     {"setup", "compare a GRBL board's settings with a profile; --write applies them", fivebar::cli::runSetup},
 #endif
 };

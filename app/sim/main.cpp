@@ -1,9 +1,9 @@
 // fivebar-sim: the simulated GRBL 1.1 five-bar controller on a pseudo-terminal, so that
 // QSerialPort (the studio, `fivebar stream`) or any other sender opens it like a real board.
 //
-//   fivebar-sim --pty PATH [--machine PRESET|FILE] [--speedup N] [--instant]
-//               [--fault drop-after=N|reset-after=N|error-on=N|alarm-after=N] [--record FILE]
-//               [--baud N]
+//   fivebar-sim --pty PATH [--machine PRESET|FILE] [--set-up] [--referenced] [--speedup N]
+//               [--instant] [--fault drop-after=N|reset-after=N|error-on=N|alarm-after=N]
+//               [--record FILE] [--baud N]
 //
 // PATH becomes a symlink to the pty's slave device. --record writes the pen-down joint path
 // and counters as JSON on exit (SIGTERM / SIGINT) and when an injected drop closes the link.
@@ -38,16 +38,30 @@ struct Args {
   std::string machine = "maker-plotter";
   double speedup = 1.0;
   bool instant = false;
+  bool setUp = false;
+  bool referenced = false;
+  bool help = false;
   fivebar::sim::Fault fault;
   std::string recordPath;
   double baud = 0.0;  // 0: no wire emulation
 };
 
+constexpr const char* kUsage =
+    "usage: fivebar-sim --pty PATH [--machine PRESET|FILE] [--set-up] [--referenced]\n"
+    "                   [--speedup N] [--instant] [--baud N] [--record FILE]\n"
+    "                   [--fault drop-after=N|reset-after=N|error-on=N|alarm-after=N]\n"
+    "A simulated GRBL 1.1h board driving the five-bar of --machine (default maker-plotter) on a\n"
+    "pseudo-terminal; PATH becomes a symlink to it. Like a board after power-up it stands at\n"
+    "MPos 0,0,0, sends nothing when the port opens and has the firmware's default settings.\n"
+    "  --set-up       settings as after 'fivebar setup --write' for the machine\n"
+    "  --referenced   G54 as after 'fivebar reference' at the power-up pose (reads as home)\n"
+    "  --speedup N    machine seconds per wall second; --instant: moves complete at once\n"
+    "  --baud N       time the bytes as on a serial wire of N baud\n"
+    "  --record FILE  the pen-down joint path and counters as JSON on exit\n"
+    "  --fault ...    one injected fault after N received lines\n";
+
 int usage(const std::string& problem) {
-  std::cerr << "fivebar-sim: " << problem << "\n"
-            << "usage: fivebar-sim --pty PATH [--machine PRESET|FILE] [--speedup N] [--instant]\n"
-            << "                   [--fault drop-after=N|reset-after=N|error-on=N|alarm-after=N]\n"
-            << "                   [--record FILE] [--baud N]\n";
+  std::cerr << "fivebar-sim: " << problem << "\n" << kUsage;
   return 2;
 }
 
@@ -56,6 +70,9 @@ std::string parseArgs(int argc, char** argv, Args& a) {
   for (int i = 1; i < argc; ++i) {
     const std::string opt = argv[i];
     if (opt == "--instant") { a.instant = true; continue; }
+    if (opt == "--set-up") { a.setUp = true; continue; }
+    if (opt == "--referenced") { a.referenced = true; continue; }
+    if (opt == "--help" || opt == "-h") { a.help = true; return ""; }
     if (i + 1 >= argc) return "option " + opt + " needs a value";
     const std::string value = argv[++i];
     if (opt == "--pty") a.ptyPath = value;
@@ -84,6 +101,10 @@ int main(int argc, char** argv) {
   QCoreApplication app(argc, argv);
   Args args;
   if (const std::string problem = parseArgs(argc, argv, args); !problem.empty()) return usage(problem);
+  if (args.help) {
+    std::cout << kUsage;
+    return 0;
+  }
   const fivebar::ProfileLoad load = fivebar::resolveMachine(args.machine);
   if (!load.profile) {
     std::cerr << "fivebar-sim: --machine " << args.machine << ": "
@@ -97,7 +118,7 @@ int main(int argc, char** argv) {
     std::cerr << "fivebar-sim: " << error << "\n";
     return 1;
   }
-  fivebar::sim::SimMachine machine({*load.profile, args.fault, args.instant});
+  fivebar::sim::SimMachine machine({*load.profile, args.fault, args.instant, args.setUp, args.referenced});
   std::signal(SIGTERM, onSignal);
   std::signal(SIGINT, onSignal);
 

@@ -40,7 +40,8 @@ class SimProcess {
  public:
   SimProcess(const QString& dir, const QStringList& extra, const QString& tag = "a")
       : pty_(dir + "/tty-" + tag), record_(dir + "/record-" + tag + ".json") {
-    QStringList args{"--pty", pty_, "--machine", "maker-plotter", "--record", record_};
+    // A board set up and referenced for the machine, as a user leaves it.
+    QStringList args{"--pty", pty_, "--machine", "maker-plotter", "--record", record_, "--set-up", "--referenced"};
     args += extra;
     process_.setProcessChannelMode(QProcess::ForwardedErrorChannel);
     process_.start(FIVEBAR_SIM_EXE, args);
@@ -241,7 +242,7 @@ TEST(FakeTransport, TranscriptReplayThroughMachineLinkAndOneDisconnect) {
 // times 20): the transport seam swaps without changing anything above it.
 TEST(SimulatedTransport, StreamsAJobInProcess) {
   PtyJob job;
-  SimulatedTransport transport({job.p, {}, false}, 20.0);
+  SimulatedTransport transport({job.p, {}, false, true, true}, 20.0);
   MachineLink link(transport);
   StreamSession session(link, job.options(false));
   QString error;
@@ -266,14 +267,17 @@ TEST(SimulatedTransport, StreamsAJobInProcess) {
 TEST(PtyEndToEnd, ResumeRefusesAChangedJob) {
   PtyJob job;
   job::JobProgress p;
-  p.jobHash = "0000";
+  p.jobHash = "0000";  // saved for another version of the file...
   p.totalLines = 3;
+  p.lastPenDownLine = 12;  // ...whose resume point is not the same in this one
+  p.penDownAnglesDeg = {1.0, 2.0};
   ASSERT_EQ(job::saveProgress(p, job::progressPathFor(job.jobPath)), "");
   SimProcess sim(job.dir.path(), {"--instant"});
   ASSERT_TRUE(sim.ready());
   const Outcome o = runSession(sim.pty(), job.options(true), 10.0);
   EXPECT_FALSE(o.ok);
-  EXPECT_NE(o.message.find("different version"), std::string::npos) << o.message;
+  EXPECT_NE(o.message.find("another version"), std::string::npos) << o.message;
+  EXPECT_NE(o.message.find("line 12"), std::string::npos) << o.message;
 }
 
 // Soak: 200,000 lines through the pty to a simulator that acknowledges at once. Memory must
@@ -286,8 +290,8 @@ TEST(PtyEndToEnd, SoakTwoHundredThousandLines) {
   {
     std::ofstream out(jobPath);
     const double t1 = degFromRad(p.homeAngles.theta1), t2 = degFromRad(p.homeAngles.theta2);
-    out << "G90\n";
-    for (int i = 1; i < kLines; ++i)
+    out << "G90\nG0X" << fmt(t1) << "Y" << fmt(t2) << "\n";  // starts where the machine stands
+    for (int i = 2; i < kLines; ++i)
       out << "G1X" << fmt(t1 + 0.5 * (i % 7)) << "Y" << fmt(t2 - 0.5 * (i % 5)) << "F6000\n";
   }
   SimProcess sim(dir.path(), {"--instant"});

@@ -31,8 +31,12 @@ inline MachineProfile testProfile() {
 
 // Protocol and simulated machine joined by byte queues; time advances only in step().
 struct SimLink {
+  // A board set up for the profile (fivebar setup --write) and referenced at its home pose, as
+  // a user leaves it; tests of the factory-fresh board build their own SimConfig.
   explicit SimLink(const MachineProfile& profile, sim::Fault fault = {}, bool instant = false)
-      : sim({profile, fault, instant}),
+      : SimLink(sim::SimConfig{profile, fault, instant, true, true}) {}
+  explicit SimLink(const sim::SimConfig& config)
+      : sim(config),
         protocol([this](std::string_view b) { toSim.append(b); }) {
     protocol.receive(sim.takeOutput());
   }

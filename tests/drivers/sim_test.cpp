@@ -63,17 +63,27 @@ TEST(SimMachine, TrapezoidalTimingOfOneMove) {
 
 TEST(SimMachine, SoftLimitAlarmLocksUntilResetAndUnlock) {
   const MachineProfile p = testProfile();
-  SimLink link(p);
+  SimLink link(sim::SimConfig{p, {}, false, false, false});  // a factory-fresh board
   LineLog log;
   link.protocol.addListener(&log);
-  const double beyond = degFromRad(p.limits.theta1Max) + 5.0;
-  link.protocol.enqueue("G1X" + fmt(beyond) + "F1000");
-  link.runUntil([&] { return log.saw(grbl::LineKind::Alarm); }, 1.0);
+  link.protocol.enqueue("$20=1");  // GRBL 1.1h: soft limits need homing enabled
+  link.runUntil([&] { return log.saw(grbl::LineKind::Error, 10); }, 1.0);
+  ASSERT_TRUE(log.saw(grbl::LineKind::Error, 10));
+  for (const char* s : {"$22=1", "$20=1", "$X"}) link.protocol.enqueue(s);
+  link.protocol.enqueue("G1X-150F1000");  // inside -$130..0 (200)
+  link.protocol.enqueue("G1X-201F1000");  // beyond: ALARM:2 before it moves
+  link.runUntil([&] { return log.saw(grbl::LineKind::Alarm); }, 30.0);
   EXPECT_TRUE(log.saw(grbl::LineKind::Alarm, 2));
   EXPECT_TRUE(log.sawText("Reset to continue"));
+  const auto answers = [&] {
+    return std::count_if(log.lines.begin(), log.lines.end(), [](const grbl::ParsedLine& l) {
+      return l.kind == grbl::LineKind::Ok || l.kind == grbl::LineKind::Error;
+    });
+  };
+  const auto answersBefore = answers();
   link.protocol.enqueue("G1X0");  // ignored until the reset
   link.runUntil([] { return false; }, 0.2);
-  EXPECT_FALSE(log.saw(grbl::LineKind::Ok));
+  EXPECT_EQ(answers(), answersBefore);
   link.protocol.sendRealtime(grbl::realtime::kSoftReset);
   link.runUntil([&] { return log.saw(grbl::LineKind::Banner); }, 1.0);
   EXPECT_EQ(link.sim.state(), MachineState::Alarm);
@@ -118,12 +128,12 @@ TEST(SimMachine, ProgramPauseHoldsAfterTheMovesBeforeItUntilCycleStart) {
   const double halfStep = 0.5 / p.motors.stepsPerDeg1 + 1e-9;  // positions are whole steps
   // The first move completes, then the machine holds (Hold:0) with the second move waiting.
   ASSERT_TRUE(link.runUntil([&] { return link.sim.state() == MachineState::Hold; }, 5.0));
-  EXPECT_NEAR(link.sim.machinePosition()[0], x1, halfStep);
+  EXPECT_NEAR(link.sim.workPosition()[0], x1, halfStep);
   link.runUntil([] { return false; }, 2.0);
   EXPECT_EQ(link.sim.state(), MachineState::Hold);
-  EXPECT_NEAR(link.sim.machinePosition()[0], x1, halfStep);
+  EXPECT_NEAR(link.sim.workPosition()[0], x1, halfStep);
   link.protocol.sendRealtime(grbl::realtime::kCycleStart);
-  ASSERT_TRUE(link.runUntil([&] { return std::abs(link.sim.machinePosition()[0] - x2) < halfStep &&
+  ASSERT_TRUE(link.runUntil([&] { return std::abs(link.sim.workPosition()[0] - x2) < halfStep &&
                                          link.sim.state() == MachineState::Idle; }, 5.0));
 }
 
@@ -140,7 +150,8 @@ TEST(SimMachine, BadLinesGetErrorCodes) {
   for (const char* line : {"G1X1", "G2X1Y1I1", "G1X1..2F100", "$999=1", "Q5", "$J=X1", "G4"})
     link.protocol.enqueue(line);
   link.runUntil([&] { return codes.size() == 7; }, 2.0);
-  EXPECT_EQ(codes, (std::vector<int>{22, 20, 2, 3, 20, 22, 28}));
+  // As GRBL 1.1h: G1 and G2 without a feed rate error:22 (an arc is parsed, not refused).
+  EXPECT_EQ(codes, (std::vector<int>{22, 22, 2, 3, 20, 22, 28}));
 }
 
 TEST(SimMachine, JogMovesAndCancelStopsItShort) {
@@ -162,9 +173,12 @@ TEST(SimMachine, JogMovesAndCancelStopsItShort) {
   } acks;
   acks.out = &codes;
   link.protocol.addListener(&acks);
-  link.protocol.enqueue("$J=G90X" + fmt(degFromRad(p.limits.theta1Max) + 10.0) + "F600");
-  link.runUntil([&] { return !codes.empty(); }, 1.0);
-  EXPECT_EQ(codes, std::vector<int>{15}) << "a jog beyond the soft limits is refused, not an alarm";
+  // Soft limits (-$130..0 in machine coordinates; $20=1 needs $22=1): a jog past MPos 0 is
+  // refused, not an alarm.
+  for (const char* s : {"$22=1", "$20=1", "$130=300"}) link.protocol.enqueue(s);
+  link.protocol.enqueue("$J=G53X10F600");
+  link.runUntil([&] { return codes.size() == 4; }, 1.0);
+  EXPECT_EQ(codes, (std::vector<int>{0, 0, 0, 15})) << "a jog beyond the soft limits is refused";
   EXPECT_EQ(link.sim.state(), MachineState::Idle);
 }
 
@@ -202,7 +216,7 @@ std::vector<std::string> wcoFieldsOf(const std::string& out) {
 // not only on its periodic refresh.
 TEST(SimMachine, ChangedWorkOffsetIsInTheNextStatusReport) {
   sim::SimMachine sim({testProfile(), {}, true});
-  sim.takeOutput();
+  EXPECT_EQ(sim.takeOutput(), "") << "GRBL sends nothing when the port opens";
   const auto status = [&] {
     sim.receive("?");
     sim.advance(0.001);
@@ -221,10 +235,11 @@ TEST(SimMachine, ChangedWorkOffsetIsInTheNextStatusReport) {
   ASSERT_FALSE(wco.empty()) << "no WCO right after G10 L20";
   double x = 0, y = 0, z = 0;
   ASSERT_EQ(std::sscanf(wco.c_str(), "%lf,%lf,%lf", &x, &y, &z), 3) << wco;
-  // G10 L20: the current machine position becomes work X10 Y-5, so WCO = MPos - (10, -5).
-  const auto home = testProfile().homeAngles;
-  EXPECT_NEAR(x, degFromRad(home.theta1) - 10.0, 1e-2) << wco;
-  EXPECT_NEAR(y, degFromRad(home.theta2) + 5.0, 1e-2) << wco;
+  // G10 L20: the current machine position (0,0 after power-up) becomes work X10 Y-5, so
+  // WCO = MPos - (10, -5).
+  EXPECT_NEAR(x, sim.machinePosition()[0] - 10.0, 1e-2) << wco;
+  EXPECT_NEAR(y, sim.machinePosition()[1] + 5.0, 1e-2) << wco;
+  EXPECT_EQ(sim.machinePosition()[0], 0.0);
   // Unchanged afterwards: back to the periodic schedule (not in the following report).
   EXPECT_EQ(status(), "");
 }

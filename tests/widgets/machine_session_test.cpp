@@ -37,7 +37,11 @@ TEST(MachinePanel, ConnectsTheSimulatedMachineAndShowsItsStatus) {
   EXPECT_TRUE(panel.disconnectButton()->isEnabled());
   ASSERT_TRUE(rig.waitIdle());
   EXPECT_EQ(panel.stateLabel()->text(), widgets::stateName(grbl::MachineState::Idle));
-  // The reported pose is the profile's home pose (the simulator starts there), within a step.
+  // The simulator starts at MPos 0,0 like a board after power-up; once its reference is set the
+  // reported pose is the profile's home pose, within a step.
+  const JointAngles raw = *rig.session.motorAngles();
+  EXPECT_EQ(raw.theta1, 0.0);
+  ASSERT_TRUE(rig.setReference());
   const JointAngles q = *rig.session.motorAngles();
   const MachineProfile& p = rig.doc.profile();
   EXPECT_NEAR(degFromRad(q.theta1), degFromRad(p.homeAngles.theta1), 1.0 / p.motors.stepsPerDeg1);
@@ -78,11 +82,11 @@ TEST(MachineBanner, RejectedLineShowsTheErrorTextAndCanBeDismissed) {
   ASSERT_TRUE(rig.connect(4.0));
   ASSERT_TRUE(rig.waitIdle());
   widgets::MachineBanner banner(rig.session);
-  // A jog to a target beyond the soft limits: GRBL answers error:15 (travel exceeded).
-  ASSERT_TRUE(rig.session.sendLine(QStringLiteral("$J=G90X9000Y0F100")));
+  // A move without a feed rate: GRBL answers error:22 and nothing moves.
+  ASSERT_TRUE(rig.session.sendLine(QStringLiteral("G1X150")));
   ASSERT_TRUE(waitUntil([&] { return rig.session.problem().kind == widgets::MachineProblem::Kind::Error; }, 5000));
-  EXPECT_EQ(rig.session.problem().code, 15);
-  EXPECT_TRUE(banner.message()->text().contains(QString::fromStdString(grbl::describeError(15))));
+  EXPECT_EQ(rig.session.problem().code, 22);
+  EXPECT_TRUE(banner.message()->text().contains(QString::fromStdString(grbl::describeError(22))));
   EXPECT_FALSE(banner.isHidden());
   banner.dismissButton()->click();
   EXPECT_TRUE(banner.isHidden());
@@ -96,7 +100,7 @@ TEST(ConsolePanel, ShowsSentAndReceivedLinesAndWalksTheHistory) {
   QLineEdit* input = console.input();
   input->setText(QStringLiteral("$I"));
   pressKey(input, Qt::Key_Return);
-  ASSERT_TRUE(waitUntil([&] { return console.log()->toPlainText().contains(QStringLiteral("fivebar-sim")); }, 5000));
+  ASSERT_TRUE(waitUntil([&] { return console.log()->toPlainText().contains(QStringLiteral("1.1h.20190830")); }, 5000));
   EXPECT_TRUE(console.log()->toPlainText().contains(QStringLiteral("> $I")));
   input->setText(QStringLiteral("$G"));
   pressKey(input, Qt::Key_Return);

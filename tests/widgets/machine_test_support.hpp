@@ -5,6 +5,7 @@
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QThread>
+#include <cmath>
 #include <functional>
 #include <memory>
 
@@ -35,8 +36,22 @@ struct MachineRig {
   bool connect(double speedup, sim::Fault fault = {}) {
     QString error;
     if (!session.connectSimulated(speedup, fault, &error)) return false;
-    return waitUntil([this] { return session.lastStatus() != nullptr &&
-                                     session.state() != grbl::MachineState::Unknown; }, 5000);
+    if (!waitUntil([this] { return session.lastStatus() != nullptr &&
+                                   session.state() != grbl::MachineState::Unknown; }, 5000))
+      return false;
+    // The simulated board starts at MPos 0,0 like a real one after power-up: declare its pose
+    // the home pose, as a user does, unless a fault test wants the raw board.
+    if (fault.kind == sim::FaultKind::AlarmAfter) return true;  // the alarm test wants it raw
+    return setReference();
+  }
+  bool setReference() {
+    session.setReferencePose();
+    return waitUntil([this] {
+      const auto q = session.motorAngles();
+      const MachineProfile& p = doc.profile();
+      return q && std::abs(q->theta1 - p.homeAngles.theta1) < 1e-3 &&
+             std::abs(q->theta2 - p.homeAngles.theta2) < 1e-3;
+    }, 5000);
   }
   bool waitIdle(int timeoutMs = 10000) {
     return waitUntil([this] { return session.state() == grbl::MachineState::Idle && session.jogSettled(); },

@@ -1,0 +1,232 @@
+// fivebar send: one-off lines to a GRBL board, every line that can move the machine checked
+// first (drivers/motion_check.hpp) from the board's real pose (drivers/pose_sync.hpp).
+#include <cstdio>
+#include <iostream>
+#include <optional>
+
+#include "commands.hpp"
+#include "drivers/grbl_codes.hpp"
+#include "drivers/machine_link.hpp"
+#include "drivers/motion_check.hpp"
+#include "drivers/pose_sync.hpp"
+#include "drivers/serial_transport.hpp"
+#include "machine_arg.hpp"
+#include "machine_cli.hpp"
+
+namespace fivebar::cli {
+namespace {
+
+constexpr const char* kSendHelp =
+    "usage: fivebar send --port DEVICE --machine PRESET|FILE [--baud 115200] [--timeout S]\n"
+    "                    [--unchecked] LINE...\n"
+    "Sends each LINE and prints what the board answers. Settings ($N=V) and other $ commands\n"
+    "go one at a time. Real-time commands: ? ! ~ reset (0x18) jog-cancel (0x85).\n"
+    "What is checked: before the first line the board's real pose is read (status report, and\n"
+    "$# for the work offset). Every line that can move the machine - G0/G1 with X or Y, $J=,\n"
+    "G28/G30, G53 moves - is checked from that pose along its joint-linear move: workspace,\n"
+    "joint limits and the type II singularity margin of the --machine profile, as jog and job\n"
+    "moves are. A refused line is not sent, and nothing after it. Always refused: G2/G3 (no arc\n"
+    "in joint space), G38 probing, G20, G10/G92/G55-G59 coordinate changes (use fivebar\n"
+    "reference). Without --machine, lines that move the machine are refused; non-motion lines\n"
+    "and $ commands pass. --unchecked sends motion lines without the check (a warning is\n"
+    "printed): for experts only.\n"
+    "Exit 0 when every line was answered ok, 1 on a refused line, error:N (explained) or no\n"
+    "answer.\n";
+
+std::string seconds(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g s", s);
+  return buf;
+}
+
+// Sends the lines one by one (the protocol serialises $ commands itself) and prints the answers.
+class Sender : public grbl::ProtocolListener {
+ public:
+  Sender(MachineLink& link, std::vector<std::string> lines, double timeoutS,
+         std::optional<MachineProfile> profile, bool unchecked)
+      : link_(link), lines_(std::move(lines)), timeoutS_(timeoutS), profile_(std::move(profile)),
+        unchecked_(unchecked), poseSync_(link.protocol(), timeoutS) {
+    link_.protocol().addListener(this);
+  }
+  ~Sender() override { link_.protocol().removeListener(this); }
+
+  // Called on every clock tick; true when done. First learns the board's pose (a status report,
+  // the machine at rest, the work offset), then sends the lines one by one.
+  bool step(double nowS) {
+    if (done_) return true;
+    if (!synced_) {
+      if (link_.protocol().statusReportsSeen() == 0) {
+        if (syncDeadlineS_ == 0.0) syncDeadlineS_ = nowS + timeoutS_;
+        if (nowS > syncDeadlineS_) return fail("no status report: is it a GRBL 1.1 board at this baud rate?");
+        return false;
+      }
+      synced_ = true;
+      link_.protocol().setPollInterval(0.0);
+    }
+    if (pending_ > 0) {
+      if (nowS < waitingUntilS_) return false;
+      return fail("no answer within " + seconds(timeoutS_));
+    }
+    if (nowS < quietUntilS_) return false;
+    if (next_ == lines_.size()) return finish();
+    if (needsPose(lines_[next_]) && !pose_) {
+      const auto st = poseSync_.step(nowS);
+      if (st == grbl::PoseSync::State::Failed) return fail("cannot read the machine's pose: " + poseSync_.problem());
+      if (st == grbl::PoseSync::State::Waiting) return false;
+      pose_ = motion::boardPoseOf(link_.protocol());
+    }
+    sendNext(nowS);
+    return done_;
+  }
+  int exitCode() const { return exitCode_; }
+
+  void onLine(const grbl::ParsedLine& l) override {
+    if (l.kind == grbl::LineKind::Ok || l.kind == grbl::LineKind::Error) return;
+    if (l.kind == grbl::LineKind::Status && !wantStatus_) return;
+    if (l.kind == grbl::LineKind::Banner) return;  // onReset reports it
+    if (!userLine_ && l.kind != grbl::LineKind::Alarm && l.kind != grbl::LineKind::Message &&
+        l.kind != grbl::LineKind::Status)
+      return;  // the answer to the pose reading's own $#
+    std::cout << l.raw << "\n";
+    if (l.kind == grbl::LineKind::Status) { wantStatus_ = false; pending_ = 0; }
+    if (l.kind == grbl::LineKind::Alarm) std::cerr << grbl::describeAlarm(l.code) << "\n";
+  }
+  void onAck(const grbl::Ack& a) override {
+    if (a.id != userLineId_) return;  // the pose reading's own $#
+    pending_ = 0;
+    userLine_ = false;
+    if (a.ok()) { std::cout << "ok\n"; return; }
+    std::cerr << "'" << a.line << "': " << grbl::describeError(a.errorCode) << "\n";
+    exitCode_ = 1;
+    pose_.reset();  // the line was not executed: read the pose again before the next move
+  }
+  void onReset(const std::string& v, const std::vector<std::uint64_t>&,
+               const std::vector<std::uint64_t>&) override {
+    if (synced_) std::cout << "Grbl " << v << " (reset)\n";
+    if (resetPending_) { resetPending_ = false; pending_ = 0; }
+    pose_.reset();
+    poseSync_.restart();
+  }
+  void onDisconnected(const std::string& reason) override { fail("connection lost: " + reason); }
+
+ private:
+  bool needsPose(const std::string& line) const {
+    if (!profile_ || unchecked_) return false;
+    return motion::interpretLine(line, motion::BoardPose{}).verdict != motion::Verdict::Pass;
+  }
+  void sendNext(double nowS) {
+    const std::string line = lines_[next_++];
+    waitingUntilS_ = nowS + timeoutS_;
+    namespace rt = grbl::realtime;
+    if (line == "?") { wantStatus_ = true; pending_ = 1; link_.protocol().sendRealtime(rt::kStatus); return; }
+    if (line == "!" || line == "~" || line == "jog-cancel" || line == "0x85") {
+      link_.protocol().sendRealtime(line == "!" ? rt::kFeedHold : line == "~" ? rt::kCycleStart : rt::kJogCancel);
+      quietUntilS_ = nowS + 0.2;  // no answer to wait for; give the board a moment
+      pose_.reset();
+      poseSync_.restart();
+      return;
+    }
+    if (line == "reset" || line == "0x18") {
+      resetPending_ = true;
+      pending_ = 1;
+      link_.protocol().sendRealtime(rt::kSoftReset);
+      return;
+    }
+    if (!unchecked_ && !checkLine(line)) return;
+    const auto r = link_.protocol().enqueue(line);
+    if (!r.ok()) { fail("'" + line + "': " + grbl::describe(r.status)); return; }
+    userLineId_ = r.id;
+    userLine_ = true;
+    pending_ = 1;
+  }
+  // The motion check; false (after reporting) when the line is refused.
+  bool checkLine(const std::string& line) {
+    if (!profile_) {
+      const motion::LineCheck c = motion::interpretLine(line, motion::BoardPose{});
+      if (c.verdict == motion::Verdict::Pass) return true;
+      fail("refused '" + line + "': " +
+           (c.verdict == motion::Verdict::Refused
+                ? c.reason
+                : std::string("it moves the machine; give --machine PRESET|FILE so that the move "
+                              "can be checked against the machine's workspace")));
+      return false;
+    }
+    const motion::LineCheck c = motion::checkLine(*profile_, line, pose_.value_or(motion::BoardPose{}));
+    if (!c.ok()) {
+      fail("refused '" + line + "' (not sent): " + c.reason);
+      return false;
+    }
+    if (c.systemCommand) {
+      pose_.reset();  // $H, $X, settings...: read the pose again before the next move
+      poseSync_.restart();
+    } else if (pose_) {
+      motion::applyLine(line, c, *pose_);
+    }
+    return true;
+  }
+  bool fail(const std::string& why) {
+    if (!done_) std::cerr << "fivebar send: " << why << "\n";
+    exitCode_ = 1;
+    done_ = true;
+    return true;
+  }
+  bool finish() { done_ = true; return true; }
+
+  MachineLink& link_;
+  std::vector<std::string> lines_;
+  double timeoutS_;
+  std::optional<MachineProfile> profile_;
+  bool unchecked_;
+  grbl::PoseSync poseSync_;
+  std::optional<motion::BoardPose> pose_;
+  std::size_t next_ = 0;
+  int pending_ = 0;
+  std::uint64_t userLineId_ = 0;
+  bool userLine_ = false;
+  double waitingUntilS_ = 0.0;
+  double quietUntilS_ = 0.0;
+  double syncDeadlineS_ = 0.0;
+  bool synced_ = false;
+  bool wantStatus_ = false;
+  bool resetPending_ = false;
+  bool done_ = false;
+  int exitCode_ = 0;
+};
+
+}  // namespace
+
+int runSend(const Args& args) {
+  const Options o(args, {"--port", "--baud", "--timeout", "--machine"}, {"--help", "--unchecked"});
+  if (o.flag("--help")) { std::cout << kSendHelp; return 0; }
+  if (o.positional().empty()) throw UsageError("send needs at least one LINE");
+  double timeoutS = 10.0;
+  if (auto t = o.value("--timeout")) {
+    try { timeoutS = std::stod(*t); } catch (...) { timeoutS = -1; }
+    if (!(timeoutS > 0)) throw UsageError("--timeout needs a positive number of seconds");
+  }
+  std::optional<MachineProfile> profile;
+  if (const auto m = o.value("--machine")) {
+    profile = loadMachine(*m, "send", std::cerr);
+    if (!profile) return 1;
+  }
+  const bool unchecked = o.flag("--unchecked");
+  if (unchecked) std::cerr << "fivebar send: " << kUncheckedWarning;
+  QtApp qt;
+  SerialTransport port(QString::fromStdString(o.required("--port")), baudFrom(o));
+  MachineLink link(port, 0.5);  // polls only until the first report; then only on "?"
+  QString error;
+  if (!port.open(&error)) {
+    std::cerr << "fivebar send: " << error.toStdString() << "\n";
+    return 1;
+  }
+  Sender sender(link, o.positional(), timeoutS, std::move(profile), unchecked);
+  QObject::connect(&link, &MachineLink::ticked, [&](double now) {
+    if (sender.step(now)) qt.app.quit();
+  });
+  link.start();
+  qt.app.exec();
+  port.close();
+  return sender.exitCode();
+}
+
+}  // namespace fivebar::cli

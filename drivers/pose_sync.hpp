@@ -1,0 +1,37 @@
+// PoseSync: learns where the board really is before any position is used (F1 of the machine
+// link issue). Polls status until a report arrives; waits for the machine to stand still
+// (Idle or Alarm); when the reports carry MPos without a known work offset, asks "$#" (GRBL
+// sends WCO: only on some reports) and uses the active G5x + G92 offset it lists. Pure logic
+// driven by step(nowS) on the protocol's clock.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "grbl_protocol.hpp"
+
+namespace fivebar::grbl {
+
+class PoseSync {
+ public:
+  enum class State { Waiting, Ready, Failed };
+  static constexpr double kPollS = 0.25;
+
+  PoseSync(GrblProtocol& protocol, double timeoutS) : protocol_(protocol), timeoutS_(timeoutS) {}
+  // Forget what is known (after a $ command, a reset): the next step() reads the pose again.
+  void restart() { started_ = false; }
+  State step(double nowS);
+  const std::string& problem() const { return problem_; }
+
+ private:
+  GrblProtocol& protocol_;
+  double timeoutS_;
+  bool started_ = false;
+  bool askedParameters_ = false;
+  double deadlineS_ = 0.0;
+  double lastPollS_ = -1e300;
+  std::uint64_t reportsAtStart_ = 0;
+  std::string problem_;
+};
+
+}  // namespace fivebar::grbl

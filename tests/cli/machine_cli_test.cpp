@@ -1,0 +1,214 @@
+// The machine commands end to end against fivebar-sim on a pseudo-terminal: send / stream refuse
+// what the motion check refuses (nothing reaches the board), reference and home.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "core/kinematics/units.hpp"
+#include "core/machine/profile.hpp"
+
+namespace fivebar {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliResult {
+  int exitCode = -1;
+  std::string out, err;
+};
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string deg3(double rad) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f", degFromRad(rad));
+  return buf;
+}
+
+class MachineCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string tmpl = (fs::temp_directory_path() / "fivebar-mcli-XXXXXX").string();
+    dir_ = ::mkdtemp(tmpl.data());
+    profile_ = *preset("maker-plotter");
+  }
+  void TearDown() override {
+    stopSim();
+    fs::remove_all(dir_);
+  }
+  // Starts fivebar-sim (instant moves) with extra options; false when its pty did not appear.
+  bool startSim(std::vector<std::string> extra) {
+    pty_ = (dir_ / "tty").string();
+    std::vector<std::string> args{FIVEBAR_SIM_EXE, "--pty", pty_, "--machine", "maker-plotter", "--instant"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    pid_ = ::fork();
+    if (pid_ == 0) {
+      std::vector<char*> argv;
+      for (std::string& a : args) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      std::freopen("/dev/null", "w", stderr);
+      ::execv(argv[0], argv.data());
+      ::_exit(127);
+    }
+    for (int i = 0; i < 250 && !fs::exists(pty_); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    return fs::exists(pty_);
+  }
+  void stopSim() {
+    if (pid_ <= 0) return;
+    ::kill(pid_, SIGTERM);
+    ::waitpid(pid_, nullptr, 0);
+    pid_ = -1;
+  }
+  CliResult run(const std::vector<std::string>& args, const std::string& input = "") {
+    std::ofstream(dir_ / "stdin") << input;
+    std::string cmd = quote(FIVEBAR_CLI);
+    for (const std::string& a : args) cmd += " " + quote(a);
+    cmd += " <" + quote((dir_ / "stdin").string()) + " >" + quote((dir_ / "stdout").string()) + " 2>" +
+           quote((dir_ / "stderr").string());
+    const int status = std::system(cmd.c_str());
+    return CliResult{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir_ / "stdout"), slurp(dir_ / "stderr")};
+  }
+  // The board's status report, asked without a machine (a '?' moves nothing).
+  std::string status() { return run({"send", "--port", pty_, "?"}).out; }
+  // MPos X and Y (deg) of a fresh status report; NaN when there is none.
+  std::array<double, 2> mpos() {
+    const std::string s = status();
+    const size_t at = s.find("MPos:");
+    double x = NAN, y = NAN;
+    if (at != std::string::npos) std::sscanf(s.c_str() + at + 5, "%lf,%lf", &x, &y);
+    return {x, y};
+  }
+  double step() const { return 1.0 / profile_.motors.stepsPerDeg1; }
+  std::string writeJob(const std::string& name, const std::string& text) {
+    const fs::path p = dir_ / name;
+    std::ofstream(p) << text;
+    return p.string();
+  }
+  std::string homeX() const { return deg3(profile_.homeAngles.theta1); }
+  std::string homeY() const { return deg3(profile_.homeAngles.theta2); }
+
+  fs::path dir_;
+  std::string pty_;
+  pid_t pid_ = -1;
+  MachineProfile profile_;
+};
+
+TEST_F(MachineCli, SendWithoutMachineRefusesMotionAndPassesTheRest) {
+  ASSERT_TRUE(startSim({"--set-up", "--referenced"}));
+  const CliResult moved = run({"send", "--port", pty_, "G0X" + homeX() + "Y40"});
+  EXPECT_EQ(moved.exitCode, 1);
+  EXPECT_NE(moved.err.find("--machine"), std::string::npos) << moved.err;
+  const CliResult info = run({"send", "--port", pty_, "$I"});
+  EXPECT_EQ(info.exitCode, 0) << info.err;
+  EXPECT_NE(info.out.find("[VER:1.1h.20190830:]"), std::string::npos) << info.out;
+  EXPECT_NE(status().find("MPos:0.000,0.000,0.000"), std::string::npos) << "nothing moved";
+}
+
+TEST_F(MachineCli, SendChecksEveryMotionLineFromTheBoardsPose) {
+  ASSERT_TRUE(startSim({"--set-up", "--referenced"}));
+  const double beyond = degFromRad(profile_.limits.theta1Max) + 20.0;
+  const CliResult far = run({"send", "--port", pty_, "--machine", "maker-plotter", "G1X" + std::to_string(beyond) + "F600"});
+  EXPECT_EQ(far.exitCode, 1);
+  EXPECT_NE(far.err.find("not sent"), std::string::npos) << far.err;
+  const CliResult arc = run({"send", "--port", pty_, "--machine", "maker-plotter", "G2X1Y1I1F100"});
+  EXPECT_EQ(arc.exitCode, 1);
+  EXPECT_NE(arc.err.find("G2/G3"), std::string::npos) << arc.err;
+  const CliResult offset = run({"send", "--port", pty_, "--machine", "maker-plotter", "G92X0Y0"});
+  EXPECT_EQ(offset.exitCode, 1);
+  EXPECT_NE(offset.err.find("fivebar reference"), std::string::npos) << offset.err;
+  EXPECT_NE(status().find("MPos:0.000,0.000,0.000"), std::string::npos) << "nothing moved";
+  // A safe move passes, and the next line is checked from where it ends.
+  const std::string x2 = deg3(profile_.homeAngles.theta1 + radFromDeg(2.0));
+  const CliResult safe = run({"send", "--port", pty_, "--machine", "maker-plotter", "G0X" + x2 + "Y" + homeY(), "G91", "G0X1"});
+  EXPECT_EQ(safe.exitCode, 0) << safe.err;
+  EXPECT_NEAR(mpos()[0], 3.0, step());
+  const CliResult expert = run({"send", "--port", pty_, "--unchecked", "--timeout", "0.5", "G90"});
+  EXPECT_NE(expert.err.find("WITHOUT the safety check"), std::string::npos) << expert.err;
+  EXPECT_NE(run({"send", "--help"}).out.find("What is checked"), std::string::npos);
+}
+
+TEST_F(MachineCli, ReferenceThenHomeByACheckedMove) {
+  ASSERT_TRUE(startSim({"--set-up"}));  // powered up at the home pose, no reference yet
+  const CliResult asked = run({"reference", "--port", pty_, "--machine", "maker-plotter"}, "n\n");
+  EXPECT_EQ(asked.exitCode, 1);
+  EXPECT_NE(asked.err.find("not confirmed"), std::string::npos) << asked.err;
+  const CliResult ref = run({"reference", "--port", pty_, "--machine", "maker-plotter", "--yes"});
+  ASSERT_EQ(ref.exitCode, 0) << ref.err;
+  EXPECT_NE(ref.out.find("reference set"), std::string::npos) << ref.out;
+  // Away from home by a checked move, then home: a checked pen-up travel back.
+  const std::string x = deg3(profile_.homeAngles.theta1 + radFromDeg(5.0));
+  ASSERT_EQ(run({"send", "--port", pty_, "--machine", "maker-plotter", "G0X" + x + "Y" + homeY()}).exitCode, 0);
+  const CliResult home = run({"home", "--port", pty_, "--machine", "maker-plotter"});
+  EXPECT_EQ(home.exitCode, 0) << home.err;
+  EXPECT_NE(home.out.find("at the home pose"), std::string::npos) << home.out;
+  EXPECT_NEAR(mpos()[0], 0.0, step());
+  EXPECT_NEAR(mpos()[1], 0.0, step());
+}
+
+TEST_F(MachineCli, HomeRefusesAnUnreferencedBoardWhosePoseIsUnsafe) {
+  ASSERT_TRUE(startSim({"--set-up"}));
+  // Work X/Y 0,0: a board fresh from power-up. Either refused as unsafe or no safe travel.
+  const CliResult home = run({"home", "--port", pty_, "--machine", "maker-plotter"});
+  if (home.exitCode != 0) EXPECT_NE(home.err.find("fivebar"), std::string::npos) << home.err;
+  EXPECT_NE(run({"home", "--help"}).out.find("checked"), std::string::npos);
+}
+
+TEST_F(MachineCli, StreamRefusesUnsafeJobsBeforeTheFirstByte) {
+  ASSERT_TRUE(startSim({"--set-up", "--referenced"}));
+  const std::string start = "G0X" + homeX() + "Y" + homeY() + "\n";
+  const std::string arcJob = writeJob("arc.gcode", "G21 G90\n" + start + "G2X1Y1I1F100\n");
+  const CliResult arc = run({"stream", arcJob, "--port", pty_, "--machine", "maker-plotter"});
+  EXPECT_EQ(arc.exitCode, 1);
+  EXPECT_NE(arc.err.find("line 3"), std::string::npos) << arc.err;
+  EXPECT_NE(arc.err.find("nothing was sent"), std::string::npos) << arc.err;
+  const std::string other = writeJob("other.gcode", "; profile: desk-plotter\nG21 G90\n" + start);
+  const CliResult foreign = run({"stream", other, "--port", pty_, "--machine", "maker-plotter"});
+  EXPECT_EQ(foreign.exitCode, 1);
+  EXPECT_NE(foreign.err.find("planned for the profile 'desk-plotter'"), std::string::npos) << foreign.err;
+  EXPECT_EQ(run({"stream", other, "--port", pty_, "--machine", "maker-plotter", "--force-profile"}).exitCode, 0);
+  const CliResult noMachine = run({"stream", writeJob("plain.gcode", "G21 G90\n" + start), "--port", pty_});
+  EXPECT_EQ(noMachine.exitCode, 1);
+  EXPECT_NE(noMachine.err.find("--machine"), std::string::npos) << noMachine.err;
+  EXPECT_NE(status().find("MPos:0.000,0.000,0.000"), std::string::npos) << "nothing moved";
+}
+
+TEST_F(MachineCli, StreamApproachesTheJobsStartFromTheRealPose) {
+  ASSERT_TRUE(startSim({"--set-up", "--referenced"}));
+  const std::string x = deg3(profile_.homeAngles.theta1 + radFromDeg(4.0));
+  const std::string job = writeJob("job.gcode", "; start pose X" + x + " Y" + homeY() + "\nG21 G90\nG1X" + x +
+                                                    "Y" + deg3(profile_.homeAngles.theta2 + radFromDeg(2.0)) + "F600\n");
+  const CliResult r = run({"stream", job, "--port", pty_, "--machine", "maker-plotter"});
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("approach"), std::string::npos) << r.err;
+  EXPECT_NEAR(mpos()[0], 4.0, step());
+  EXPECT_NEAR(mpos()[1], 2.0, step());
+}
+
+TEST(FivebarSim, HelpWorks) {
+  const int status = std::system((quote(FIVEBAR_SIM_EXE) + " --help >/dev/null").c_str());
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+}
+
+}  // namespace
+}  // namespace fivebar

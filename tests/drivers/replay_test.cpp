@@ -1,0 +1,120 @@
+// The same probe transcript through the REAL GRBL 1.1h firmware (../shared/tools/grbl-sim, a
+// host build of gnea/grbl on a pty) and through fivebar-sim: every answer must be the same.
+// Skipped when ../shared is absent or the firmware cannot be built.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <poll.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <QDir>
+#include <QFileInfo>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QThread>
+#include <string>
+#include <vector>
+
+namespace fivebar::test {
+namespace {
+
+// A raw client on a pseudo-terminal: writes a probe, collects what comes back for a while.
+class PtyClient {
+ public:
+  explicit PtyClient(const std::string& path) {
+    fd_ = ::open(path.c_str(), O_RDWR | O_NOCTTY);
+    if (fd_ < 0) return;
+    termios t{};
+    ::tcgetattr(fd_, &t);
+    ::cfmakeraw(&t);
+    ::tcsetattr(fd_, TCSANOW, &t);
+  }
+  ~PtyClient() { if (fd_ >= 0) ::close(fd_); }
+  bool ok() const { return fd_ >= 0; }
+  std::string exchange(const std::string& bytes, int windowMs) {
+    if (!bytes.empty() && ::write(fd_, bytes.data(), bytes.size()) < 0) return "<write failed>";
+    std::string out;
+    for (int waited = 0; waited < windowMs; waited += 10) {
+      pollfd p{fd_, POLLIN, 0};
+      if (::poll(&p, 1, 10) > 0) {
+        char buf[4096];
+        const ssize_t n = ::read(fd_, buf, sizeof buf);
+        if (n > 0) out.append(buf, size_t(n));
+      }
+    }
+    return out;
+  }
+
+ private:
+  int fd_ = -1;
+};
+
+// The probes: queries, settings, parser errors, offsets, check mode, program end. None moves the
+// machine, so the answers do not depend on timing.
+const std::vector<std::string> kProbes = {
+    "?", "?", "$I\n", "$#\n", "$N\n", "$$\n", "$20=1\n", "$G\n", "G2X1Y1I1\n", "G2X1Y1R0.2F100\n",
+    "G2X10Y10I0J0F100\n", "G1X1\n", "G1 X1 Y1 Z1 F100 G4 P0\n", "$N0=G54\n", "$N\n",
+    "G10L20P0X5Y5\n", "?", "?", "?", "$#\n", "M2\n", "$G\n", "$C\n", "G0X50\n", "?", "$C\n", "?",
+    "?", "G1 X5 Y5                                                                 F9\n",
+    "G4P0." + std::string(74, '0') + "\n", "G4P0." + std::string(75, '0') + "\n", "?", "$22=1\n",
+    "$20=1\n", "$X\n", "G1X5F100\n", "?", "$10=3\n", "\x18", "?", "$10=3\n", "?"};
+// From this probe on (a soft-limit alarm: the board answers nothing until reset) the answers are
+// compared as one text, since when the firmware prints its [MSG:] varies by a few ms.
+constexpr std::size_t kJoinFrom = 36;  // one past "G1X5F100"
+
+std::vector<std::string> transcript(const std::string& pty) {
+  PtyClient c(pty);
+  std::vector<std::string> answers;
+  if (!c.ok()) return answers;
+  c.exchange("", 1500);  // a booting firmware's banner, if the pty opened before it
+  for (const std::string& p : kProbes) answers.push_back(p + " -> " + c.exchange(p, 350));
+  return answers;
+}
+
+bool waitFor(const QString& path) {
+  for (int i = 0; i < 500 && !QFileInfo::exists(path); ++i) QThread::msleep(20);
+  return QFileInfo::exists(path);
+}
+
+TEST(FirmwareReplay, FivebarSimAnswersAsTheRealGrbl) {
+  const QString shared = QStringLiteral(FIVEBAR_SHARED_DIR "/tools/grbl-sim");
+  if (!QFileInfo::exists(shared + "/start.sh")) GTEST_SKIP() << "../shared/tools/grbl-sim absent";
+  QTemporaryDir dir;
+  // A first power-up writes the EEPROM (a fresh one answers error:7 and restores the defaults);
+  // the transcript runs on the second, as on a board that has been used before.
+  std::vector<std::string> expected;
+  for (int run = 0; run < 2; ++run) {
+    QProcess real;
+    real.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+    real.start("sh", {shared + "/start.sh", dir.path() + "/real", "1", dir.path() + "/state"});
+    if (!waitFor(dir.path() + "/real")) GTEST_SKIP() << "the real firmware did not start (build it per its README)";
+    QThread::msleep(1000);
+    if (run == 0) PtyClient(( dir.path() + "/real").toStdString()).exchange("?", 1000);
+    else expected = transcript((dir.path() + "/real").toStdString());
+    real.terminate();
+    real.waitForFinished(5000);
+    for (int i = 0; i < 100 && QFileInfo::exists(dir.path() + "/real"); ++i) QThread::msleep(20);
+  }
+
+  QProcess ours;
+  ours.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+  ours.start(FIVEBAR_SIM_EXE, {"--pty", dir.path() + "/ours", "--machine", "maker-plotter"});
+  ASSERT_TRUE(waitFor(dir.path() + "/ours"));
+  const auto got = transcript((dir.path() + "/ours").toStdString());
+  ours.terminate();
+  ours.waitForFinished(5000);
+
+  ASSERT_EQ(got.size(), expected.size());
+  ASSERT_GT(got.size(), kJoinFrom);
+  ASSERT_NE(got[kJoinFrom - 1].find("G1X5F100"), std::string::npos);
+  for (size_t i = 0; i + 1 < kJoinFrom; ++i) EXPECT_EQ(got[i], expected[i]) << "probe " << i;
+  const auto strip = [](const std::vector<std::string>& v) {
+    std::string all;
+    for (size_t i = kJoinFrom - 1; i < v.size(); ++i) all += v[i].substr(v[i].find(" -> ") + 4);
+    return all;
+  };
+  EXPECT_EQ(strip(got), strip(expected));
+}
+
+}  // namespace
+}  // namespace fivebar::test
