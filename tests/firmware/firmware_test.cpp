@@ -114,7 +114,7 @@ int run(const std::string& command) { return std::system(command.c_str()); }
 
 // One job on a fresh simulated board: settings written, the reference pose set, streamed.
 std::vector<Sample> runOnFirmware(const fs::path& dir, const fs::path& profile,
-                                  const fs::path& job, const MachineProfile& p) {
+                                  const fs::path& job) {
   const fs::path pty = dir / "grblpty", steps = dir / "steps.txt";
   const pid_t pid = fork();
   if (pid == 0) {
@@ -129,13 +129,11 @@ std::vector<Sample> runOnFirmware(const fs::path& dir, const fs::path& profile,
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   const std::string cli = FIVEBAR_CLI, port = " --port " + pty.string();
   const std::string machine = " --machine " + profile.string();
-  char home[96];
-  std::snprintf(home, sizeof home, "G10L20P0X%.4fY%.4f", degFromRad(p.homeAngles.theta1),
-                degFromRad(p.homeAngles.theta2));
   const std::string quiet = " >/dev/null 2>&1";
   EXPECT_EQ(run("timeout 60 " + cli + " setup" + port + machine + " --write --backup " +
                 (dir / "backup.txt").string() + quiet), 0);
-  EXPECT_EQ(run("timeout 20 " + cli + " send" + port + " " + home + quiet), 0);
+  // The arms stand at the home pose: make it the reference (fivebar reference, the checked way).
+  EXPECT_EQ(run("timeout 20 " + cli + " reference" + port + machine + " --yes" + quiet), 0);
   EXPECT_EQ(run("timeout 300 " + cli + " stream " + job.string() + port + machine + quiet), 0);
   kill(pid, SIGTERM);
   waitpid(pid, nullptr, 0);
@@ -162,7 +160,7 @@ void checkPageOnFirmware(double askedMmPerS, double boundRatio) {
   const fs::path profile = dir / "profile.json", job = dir / "job.gcode";
   ASSERT_TRUE(saveProfile(p, profile.string()).empty());
   std::ofstream(job) << writeGcode(r.job, p);
-  const std::vector<Sample> trace = runOnFirmware(dir, profile, job, p);
+  const std::vector<Sample> trace = runOnFirmware(dir, profile, job);
   ASSERT_GT(trace.size(), 1000u) << "no step trace in " << dir;
 
   // Drawn error: every pen-down sample within the tolerance plus one motor step (in XY at that

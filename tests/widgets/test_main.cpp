@@ -4,6 +4,7 @@
 
 #include <QApplication>
 #include <QSettings>
+#include <QTemporaryDir>
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -12,6 +13,10 @@
 
 int main(int argc, char** argv) {
   qputenv("QT_QPA_PLATFORM", "offscreen");
+  // Each test process gets settings of its own (recent files, the remembered profile, window
+  // state): runs of other builds or earlier runs on the same account cannot leak into a test.
+  QTemporaryDir configHome;
+  if (configHome.isValid()) qputenv("XDG_CONFIG_HOME", configHome.path().toLocal8Bit());
   QApplication app(argc, argv);
   // Keep the tests' recent files and window state away from the user's settings.
   QApplication::setOrganizationName(QStringLiteral("FiveBarTests"));
