@@ -45,6 +45,10 @@ void finishPolyline(Polyline& line, bool closed, std::vector<Polyline>& out) {
   out.push_back(std::move(line));
 }
 
+void closeFillOutlines(std::vector<Polyline>& lines) {
+  for (Polyline& line : lines) line.closed = line.closed || line.points.size() > 2;
+}
+
 void appendFlattenedPath(const QPainterPath& path, const QTransform& transform,
                          double toleranceMm, std::vector<Polyline>& out) {
   // Points gather in a reused scratch buffer; each polyline then gets one exact allocation.
@@ -117,7 +121,10 @@ void CaptureEngine::record(std::vector<Polyline>&& lines, std::uint32_t rgb) {
 void CaptureEngine::flushPending() {
   if (!hasPending_) return;
   hasPending_ = false;
-  if (settings_.outlineFills) record(std::move(pendingLines_), pendingRgb_);
+  if (settings_.outlineFills) {
+    closeFillOutlines(pendingLines_);
+    record(std::move(pendingLines_), pendingRgb_);
+  }
   pendingLines_.clear();
   pendingSignature_ = Signature{};
 }
@@ -159,7 +166,9 @@ void CaptureEngine::drawPath(const QPainterPath& path) {
 }
 
 void CaptureEngine::drawPolygon(const QPointF* points, int count, PolygonDrawMode mode) {
-  const Paint paint = currentPaint();
+  Paint paint = currentPaint();
+  // QPainter::drawPolyline strokes only: its brush paints nothing.
+  if (mode == PolylineMode) paint.fill = false;
   if (cancelled() || (!paint.stroke && !paint.fill) || count < 2) return flushPending();
   const QTransform t = painter()->combinedTransform();
   Polyline line;

@@ -120,6 +120,10 @@ class CaptureDevice final : public QPaintDevice {
 // appends it to `out` when at least two points remain (shared with the direct reader).
 void finishPolyline(Polyline& line, bool closed, std::vector<Polyline>& out);
 
+// A filled area is closed whatever its path data says: marks every outline of more than two
+// points closed (the closing edge of a fill-only open path is drawn).
+void closeFillOutlines(std::vector<Polyline>& lines);
+
 // Flattening helpers, exposed for tests. Points are mapped by `transform` before flattening.
 void appendFlattenedPath(const QPainterPath& path, const QTransform& transform,
                          double toleranceMm, std::vector<Polyline>& out);

@@ -196,12 +196,13 @@ bool DirectReader::drawPath(std::string_view d, const Paint& paint) {
   if (!paint.stroke && !(paint.fill && options_.outlineFills)) return true;
   std::vector<Polyline> lines;
   appendFlattenedPath(path, transform_, options_.toleranceMm, lines);
+  if (!paint.stroke) closeFillOutlines(lines);
   record(std::move(lines), paint.stroke ? paint.strokeRgb : paint.fillRgb);
   return true;
 }
 
 // polygon: like a path (both passes draw the same closed polygon). polyline: the fill pass draws
-// a closed polygon, the stroke pass (brush still set) an open polyline; both are kept.
+// a closed polygon, the stroke pass an open polyline (stroke only); both are kept.
 bool DirectReader::drawPoints(std::string_view points, bool polygon, const Paint& paint) {
   std::vector<double> numbers;
   if (!parseNumberList(points, numbers) || numbers.size() % 2 != 0) return false;
@@ -221,11 +222,9 @@ bool DirectReader::drawPoints(std::string_view points, bool polygon, const Paint
     else if (paint.fill && options_.outlineFills) record(polyline(true), paint.fillRgb);
     return true;
   }
-  const bool outline = paint.fill && options_.outlineFills;
-  if (outline) record(polyline(true), paint.fillRgb);
-  // The stroke pass keeps the brush: without a stroke it is a second, open, fill outline.
+  if (paint.fill && options_.outlineFills) record(polyline(true), paint.fillRgb);
+  // The stroke pass (QPainter::drawPolyline) strokes only.
   if (paint.stroke) record(polyline(false), paint.strokeRgb);
-  else if (outline) record(polyline(false), paint.fillRgb);
   return true;
 }
 

@@ -11,6 +11,7 @@
 #include <map>
 
 #include "path_data.hpp"
+#include "svg_rewrite.hpp"
 
 namespace fivebar::svg {
 namespace {
@@ -46,8 +47,10 @@ bool isGeometryAttribute(QStringView name) {
 
 class Sanitizer {
  public:
-  Sanitizer(QIODevice& input, double dpi, const std::function<bool(double)>& progress)
-      : input_(input), dpi_(dpi), progress_(progress), reader_(&input), writer_(&result_.svg) {
+  Sanitizer(QIODevice& input, double dpi, const std::function<bool(double)>& progress,
+            std::map<QString, SymbolInfo> symbols)
+      : input_(input), dpi_(dpi), progress_(progress), reader_(&input), writer_(&result_.svg),
+        symbols_(std::move(symbols)) {
     // The output is about as long as the input: reserve once instead of growing 50 MB by steps.
     result_.svg.reserve(static_cast<qsizetype>(std::min<qint64>(input.size() + 65536, qint64{1} << 30)));
     writer_.setAutoFormatting(false);
@@ -66,7 +69,13 @@ class Sanitizer {
   void recordRoot(const QXmlStreamAttributes& attributes);
   void writeNamespaces();
   void writeNestedSvgAsGroup(const QXmlStreamAttributes& attributes);
+  QXmlStreamAttributes rewriteAttributes(QStringView tag, const QXmlStreamAttributes& attributes);
+  void warnUnsupported(QStringView tag, const QXmlStreamAttributes& attributes);
+  void checkPathData(const QXmlStreamAttributes& attributes);
+  bool writeSymbolOrUse(QStringView tag, const QXmlStreamAttributes& attributes);
+  void setViewport();
   void warn(const std::string& what);
+  void warnAt(const QXmlStreamAttributes& attributes, const std::string& what);
   void fail(ImportStatus status, const std::string& message);
   std::string where() const;
 
@@ -82,6 +91,11 @@ class Sanitizer {
   bool sawRoot_ = false;
   QString svgNamespace_;
   std::map<std::string, std::pair<int, qint64>> warnings_;  // what -> (count, first line)
+  std::vector<std::string> located_;  // warnings naming their own line, in document order
+  std::map<QString, SymbolInfo> symbols_;  // from scanSymbols, for <use> of a <symbol>
+  UserViewport viewport_;
+  std::vector<double> fontSizes_;  // user units, one per open written element
+  std::vector<int> extraEnds_;     // end tags to add when the element closes (symbol, use)
 };
 
 std::string Sanitizer::where() const {
@@ -92,6 +106,16 @@ std::string Sanitizer::where() const {
 void Sanitizer::warn(const std::string& what) {
   auto [it, inserted] = warnings_.try_emplace(what, 0, reader_.lineNumber());
   ++it->second.first;
+}
+
+// A warning about one element: "line 12: <path id="p3"> what".
+void Sanitizer::warnAt(const QXmlStreamAttributes& attributes, const std::string& what) {
+  constexpr std::size_t kMaxLocated = 50;
+  if (located_.size() >= kMaxLocated) return warn("further element warnings not listed");
+  const QString id = attributes.value(QStringLiteral("id")).toString();
+  located_.push_back("line " + std::to_string(reader_.lineNumber()) + ": <" +
+                     reader_.name().toString().toStdString() +
+                     (id.isEmpty() ? "" : " id=\"" + id.toStdString() + "\"") + "> " + what);
 }
 
 void Sanitizer::fail(ImportStatus status, const std::string& message) {
@@ -138,6 +162,7 @@ SanitizeResult Sanitizer::run() {
   if (result_.status == ImportStatus::Ok && !sawRoot_)
     fail(ImportStatus::InvalidDocument, "no <svg> element found");
   writer_.writeEndDocument();
+  result_.warnings = std::move(located_);
   for (const auto& [what, countLine] : warnings_) {
     result_.warnings.push_back(what + " (" + std::to_string(countLine.first) + "x, first at line " +
                                std::to_string(countLine.second) + ")");
@@ -160,13 +185,12 @@ void Sanitizer::recordRoot(const QXmlStreamAttributes& attributes) {
 bool Sanitizer::checkNumbers(QStringView tag, const QXmlStreamAttributes& attributes) {
   for (const QXmlStreamAttribute& a : attributes) {
     if (!a.namespaceUri().isEmpty() || !isGeometryAttribute(a.name())) continue;
-    if (hasNonFiniteNumber(a.value())) {
+    if (const std::string bad = describeNonFiniteNumber(a.value()); !bad.empty()) {
       const QString id = attributes.value(QStringLiteral("id")).toString();
       fail(ImportStatus::InvalidNumber,
            "line " + std::to_string(reader_.lineNumber()) + ": <" + tag.toString().toStdString() +
                (id.isEmpty() ? "" : " id=\"" + id.toStdString() + "\"") + "> attribute " +
-               a.name().toString().toStdString() +
-               " contains a non-finite number (NaN or infinity)");
+               a.name().toString().toStdString() + " contains " + bad);
       return false;
     }
   }
@@ -234,8 +258,8 @@ bool Sanitizer::writeSplitPath(const QXmlStreamAttributes& attributes) {
   warn("long <path> split into " + std::to_string(parts.size()) +
        " parts to avoid Qt SVG's 32,767-element truncation");
   if (parsed.error)
-    warn("path data error at character " + std::to_string(parsed.errorOffset) +
-         ": rest of the path ignored");
+    warnAt(attributes, "attribute d: invalid path data at character " +
+                           std::to_string(parsed.errorOffset + 1) + ": drawn up to the error");
   for (std::size_t i = 0; i < parts.size(); ++i) {
     if (i > 0) writer_.writeStartElement(reader_.namespaceUri().toString(), QStringLiteral("path"));
     for (const QXmlStreamAttribute& a : attributes) {
@@ -288,6 +312,141 @@ void Sanitizer::writeNestedSvgAsGroup(const QXmlStreamAttributes& attributes) {
   writer_.writeAttribute(QStringLiteral("transform"), nestedViewportTransform(nested, result_.root, dpi_));
 }
 
+void Sanitizer::setViewport() {
+  const RootAttributes& root = result_.root;
+  if (const std::optional<QRectF> box = parseViewBox(root.viewBox); box && box->width() > 0.0) {
+    viewport_ = {box->width(), box->height()};
+    return;
+  }
+  auto side = [&](const QString& text) {
+    const std::optional<Length> length = parseLength(text);
+    if (!length || length->unit == LengthUnit::Percent) return 0.0;
+    return lengthToMm(*length, dpi_).value_or(0.0) * dpi_ / 25.4;
+  };
+  viewport_ = {side(root.width), side(root.height)};
+}
+
+// Lengths Qt 6.4 misreads, made user units; transform-origin folded into transform.
+QXmlStreamAttributes Sanitizer::rewriteAttributes(QStringView tag,
+                                                  const QXmlStreamAttributes& attributes) {
+  const double parentFont = fontSizes_.empty() ? 16.0 : fontSizes_.back();
+  double font = parentFont;
+  if (const QStringView f = attributes.value(QStringLiteral("font-size")); !f.isEmpty())
+    font = fontSizeUser(f, parentFont, dpi_).value_or(parentFont);
+  fontSizes_.push_back(font);
+  const bool text = tag == u"text" || tag == u"tspan";
+  QXmlStreamAttributes out;
+  out.reserve(attributes.size());
+  QString origin;
+  for (const QXmlStreamAttribute& a : attributes) {
+    if (!a.namespaceUri().isEmpty()) {
+      out.append(a);
+      continue;
+    }
+    const QStringView n = a.name();
+    QString value = a.value().toString();
+    if (n == u"transform-origin") {
+      origin = value;
+      continue;
+    }
+    if (const std::optional<QString> v = resolveViewportUnits(value, viewport_)) value = *v;
+    if (text && (n == u"x" || n == u"dx" || n == u"y" || n == u"dy")) {
+      const double reference = (n == u"x" || n == u"dx") ? viewport_.width : viewport_.height;
+      if (const std::optional<QString> v = resolveTextLengths(value, reference, font, dpi_)) value = *v;
+    }
+    out.append(n.toString(), value);
+  }
+  if (tag == u"ellipse") {  // SVG 2: a missing radius is "auto", the other one (Qt 6.4: 0)
+    const bool rx = out.hasAttribute(QStringLiteral("rx")), ry = out.hasAttribute(QStringLiteral("ry"));
+    if (rx && !ry) out.append(QStringLiteral("ry"), out.value(QStringLiteral("rx")).toString());
+    if (ry && !rx) out.append(QStringLiteral("rx"), out.value(QStringLiteral("ry")).toString());
+  }
+  if (!origin.isEmpty()) {
+    const QString transform = out.value(QStringLiteral("transform")).toString();
+    const std::optional<QString> folded = transformWithOrigin(transform, origin, viewport_, dpi_);
+    if (!folded) {
+      warnAt(attributes, "transform-origin=\"" + origin.toStdString() + "\" not understood: ignored");
+    } else if (!transform.isEmpty()) {
+      QXmlStreamAttributes replaced;
+      for (const QXmlStreamAttribute& a : out)
+        replaced.append(a.name() == u"transform" && a.namespaceUri().isEmpty()
+                            ? QXmlStreamAttribute(QStringLiteral("transform"), *folded)
+                            : a);
+      out = replaced;
+    }
+  }
+  return out;
+}
+
+// Features not drawn: each is named once per file with its first line.
+void Sanitizer::warnUnsupported(QStringView tag, const QXmlStreamAttributes& attributes) {
+  const QStringView style = attributes.value(QStringLiteral("style"));
+  auto has = [&](const char16_t* name) {
+    return attributes.hasAttribute(QString::fromUtf16(name)) ||
+           style.contains(QString::fromUtf16(name));
+  };
+  if (has(u"marker-start") || has(u"marker-mid") || has(u"marker-end") ||
+      attributes.hasAttribute(QStringLiteral("marker")))
+    warn("markers (marker-start/mid/end) are not drawn");
+  if (has(u"clip-path")) warn("clip-path not applied: clipped shapes are drawn whole");
+  if (has(u"mask")) warn("mask not applied: masked shapes are drawn whole");
+  if (style.contains(u"transform-origin")) warn("transform-origin in a style is not applied");
+  if ((tag == u"text" || tag == u"tspan") && attributes.hasAttribute(QStringLiteral("rotate")))
+    warn("per-glyph rotate on <text> is not applied: glyphs are drawn upright");
+  if (tag == u"textPath") warn("text on a path (<textPath>) is not drawn");
+  if (tag == u"pattern") warn("pattern fills are drawn as outlines, without the pattern");
+}
+
+// Qt SVG draws a path up to the first error in its data, silently: say so.
+void Sanitizer::checkPathData(const QXmlStreamAttributes& attributes) {
+  const QStringView d = attributes.value(QStringLiteral("d"));
+  if (d.size() > kPathScanChars) return;  // writeSplitPath parses and reports it
+  const ParsedPath parsed = parsePathData(d);
+  if (!parsed.error) return;
+  const QString near = d.mid(parsed.errorOffset, 16).toString().simplified();
+  warnAt(attributes, "attribute d: invalid path data at character " +
+                         std::to_string(parsed.errorOffset + 1) + " (\"" + near.toStdString() +
+                         "\"): drawn up to the error");
+}
+
+// <symbol> -> <defs><g>: never drawn by itself. <use> of a symbol -> <g transform><use>.
+bool Sanitizer::writeSymbolOrUse(QStringView tag, const QXmlStreamAttributes& attributes) {
+  const QString ns = reader_.namespaceUri().toString();
+  if (tag == u"symbol") {
+    writer_.writeStartElement(ns, QStringLiteral("defs"));
+    writer_.writeStartElement(ns, QStringLiteral("g"));
+    for (const QXmlStreamAttribute& a : attributes) {
+      const QStringView n = a.name();
+      if (a.namespaceUri().isEmpty() &&
+          (n == u"viewBox" || n == u"preserveAspectRatio" || n == u"x" || n == u"y" ||
+           n == u"width" || n == u"height" || n == u"refX" || n == u"refY"))
+        continue;
+      writer_.writeAttribute(a);
+    }
+    extraEnds_.back() = 1;
+    return true;
+  }
+  if (tag != u"use") return false;
+  const QStringView href = attributes.value(kXlinkNs, QStringLiteral("href"));
+  const auto symbol = href.startsWith(u'#') ? symbols_.find(href.mid(1).toString()) : symbols_.end();
+  if (symbol == symbols_.end()) return false;
+  writer_.writeStartElement(ns, QStringLiteral("g"));
+  for (const QXmlStreamAttribute& a : attributes) {
+    const QStringView n = a.name();
+    if (a.namespaceUri().isEmpty() && (n == u"x" || n == u"y" || n == u"width" ||
+                                       n == u"height" || n == u"transform"))
+      continue;
+    if (n == u"href") continue;
+    writer_.writeAttribute(a);
+  }
+  writer_.writeAttribute(QStringLiteral("transform"),
+                         useSymbolTransform(attributes, symbol->second, viewport_, dpi_));
+  writer_.writeStartElement(ns, QStringLiteral("use"));
+  writer_.writeAttribute(kXlinkNs, QStringLiteral("href"), href.toString());
+  extraEnds_.back() = 1;
+  return true;
+}
+
 void Sanitizer::startElement() {
   ++depth_;
   if (skipDepth_ > 0) return;
@@ -310,9 +469,19 @@ void Sanitizer::startElement() {
     sawRoot_ = true;
     svgNamespace_ = reader_.namespaceUri().toString();
     recordRoot(reader_.attributes());
+    setViewport();
   }
-  const QXmlStreamAttributes attributes = cleanAttributes(tag);
-  if (!checkNumbers(tag, attributes)) return;
+  const QXmlStreamAttributes cleaned = cleanAttributes(tag);
+  if (!checkNumbers(tag, cleaned)) return;
+  // Not drawn, as SVG says: a marker outside marker properties, zero-size shapes.
+  const QXmlStreamAttributes attributes = rewriteAttributes(tag, cleaned);
+  if (tag == u"marker" || isZeroSizeShape(tag, attributes)) {
+    fontSizes_.pop_back();
+    skipDepth_ = depth_;
+    return;
+  }
+  warnUnsupported(tag, cleaned);
+  extraEnds_.push_back(0);
   // The sentinel colour holds index + 1 in 24 bits; later elements share the last marker.
   constexpr std::size_t kMaxMarkers = 0xFFFFFE;
   if (depth_ == 2 && isRendering(tag) && result_.topLevel.size() < kMaxMarkers) {
@@ -330,8 +499,12 @@ void Sanitizer::startElement() {
   inStyle_ = tag == u"style";
   writeNamespaces();
   if (depth_ > 1 && tag == u"svg") return writeNestedSvgAsGroup(attributes);
+  if (writeSymbolOrUse(tag, attributes)) return;
   writer_.writeStartElement(reader_.namespaceUri().toString(), tag);
-  if (tag == u"path" && writeSplitPath(attributes)) return;
+  if (tag == u"path") {
+    if (writeSplitPath(attributes)) return;
+    checkPathData(attributes);
+  }
   writer_.writeAttributes(attributes);
 }
 
@@ -343,12 +516,19 @@ void Sanitizer::endElement() {
   }
   --depth_;
   inStyle_ = false;
-  if (result_.status == ImportStatus::Ok) writer_.writeEndElement();
+  if (result_.status != ImportStatus::Ok) return;
+  writer_.writeEndElement();
+  if (extraEnds_.empty()) return;
+  for (int i = 0; i < extraEnds_.back(); ++i) writer_.writeEndElement();
+  extraEnds_.pop_back();
+  fontSizes_.pop_back();
 }
 
 void Sanitizer::characters() {
   if (skipDepth_ > 0 || depth_ == 0) return;
   QString text = reader_.text().toString();
+  if (inStyle_ && text.contains(QStringLiteral("marker")))
+    warn("markers (marker-start/mid/end) are not drawn");
   if (inStyle_ && text.contains(QStringLiteral("@import"))) {
     static const QRegularExpression import(QStringLiteral("@import[^;]*;?"));
     text.remove(import);
@@ -360,14 +540,14 @@ void Sanitizer::characters() {
 
 }  // namespace
 
-bool hasNonFiniteNumber(QStringView value) {
+qsizetype findNonFiniteNumber(QStringView value) {
   const qsizetype n = value.size();
   for (qsizetype i = 0; i < n; ++i) {
     const char16_t c = value[i].unicode() | 0x20;  // ASCII lower case
     if (i + 2 < n && (c == u'n' || c == u'i')) {
       const char16_t c1 = value[i + 1].unicode() | 0x20, c2 = value[i + 2].unicode() | 0x20;
       if ((c == u'n' && c1 == u'a' && c2 == u'n') || (c == u'i' && c1 == u'n' && c2 == u'f'))
-        return true;
+        return i;
     }
     if (c == u'e' && i > 0 && value[i - 1].isDigit()) {
       qsizetype j = i + 1;
@@ -376,15 +556,37 @@ bool hasNonFiniteNumber(QStringView value) {
       int exponent = 0;
       while (j < n && value[j].isDigit() && exponent < 100000)
         exponent = exponent * 10 + (value[j++].unicode() - u'0');
-      if (!negative && exponent > 300) return true;
+      if (!negative && exponent > 300) {
+        qsizetype start = i - 1;
+        while (start > 0 && (value[start - 1].isDigit() || value[start - 1] == u'.')) --start;
+        if (start > 0 && (value[start - 1] == u'-' || value[start - 1] == u'+')) --start;
+        return start;
+      }
     }
   }
-  return false;
+  return -1;
+}
+
+bool hasNonFiniteNumber(QStringView value) { return findNonFiniteNumber(value) >= 0; }
+
+std::string describeNonFiniteNumber(QStringView value) {
+  const qsizetype at = findNonFiniteNumber(value);
+  if (at < 0) return {};
+  qsizetype end = at;
+  while (end < value.size() && end - at < 24 && !value[end].isSpace() && value[end] != u',' &&
+         value[end] != u')' && value[end] != u';' && (end == at || value[end] != u'-'))
+    ++end;
+  const std::string token = value.mid(at, end - at).toString().toStdString();
+  const char16_t c = value[at].unicode() | 0x20;
+  if (c == u'n' || c == u'i') return "a value that is not a number (" + token + ")";
+  return "a number beyond 1e300 (" + token + ")";
 }
 
 SanitizeResult sanitizeSvg(QIODevice& input, double dpi,
                            const std::function<bool(double)>& progress) {
-  Sanitizer sanitizer(input, dpi, progress);
+  std::map<QString, SymbolInfo> symbols;
+  if (const auto* buffer = qobject_cast<const QBuffer*>(&input)) symbols = scanSymbols(buffer->data());
+  Sanitizer sanitizer(input, dpi, progress, std::move(symbols));
   return sanitizer.run();
 }
 
