@@ -49,6 +49,14 @@ void closeFillOutlines(std::vector<Polyline>& lines) {
   for (Polyline& line : lines) line.closed = line.closed || line.points.size() > 2;
 }
 
+void markFill(std::vector<Polyline>& lines, FillRule rule, bool fillOnly) {
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    lines[i].fill = rule;
+    lines[i].fillStart = lines[i].fillStart || i == 0;
+    lines[i].fillOnly = fillOnly;
+  }
+}
+
 void appendFlattenedPath(const QPainterPath& path, const QTransform& transform,
                          double toleranceMm, std::vector<Polyline>& out) {
   // Points gather in a reused scratch buffer; each polyline then gets one exact allocation.
@@ -123,6 +131,7 @@ void CaptureEngine::flushPending() {
   hasPending_ = false;
   if (settings_.outlineFills) {
     closeFillOutlines(pendingLines_);
+    markFill(pendingLines_, pendingRule_, true);
     record(std::move(pendingLines_), pendingRgb_);
   }
   pendingLines_.clear();
@@ -130,15 +139,19 @@ void CaptureEngine::flushPending() {
 }
 
 bool CaptureEngine::admit(const Signature& signature, const Paint& paint,
-                          std::vector<Polyline>&& lines) {
+                          std::vector<Polyline>&& lines, FillRule rule) {
   ++shapes_;
   if (settings_.onShape && (shapes_ & 255) == 0) settings_.onShape(shapes_);
   if (paint.stroke) {
     // The stroke pass of a filled shape replaces its fill pass.
+    bool filled = paint.fill && rule != FillRule::None;
     if (hasPending_ && pendingSignature_ == signature) {
       hasPending_ = false;
       pendingLines_.clear();
+      filled = true;
+      rule = pendingRule_;
     }
+    if (filled) markFill(lines, rule, false);
     flushPending();
     record(std::move(lines), paint.rgb);
     return true;
@@ -149,6 +162,7 @@ bool CaptureEngine::admit(const Signature& signature, const Paint& paint,
   pendingSignature_ = signature;
   pendingLines_ = std::move(lines);
   pendingRgb_ = paint.rgb;
+  pendingRule_ = rule == FillRule::None ? FillRule::NonZero : rule;
   return true;
 }
 
@@ -162,7 +176,8 @@ void CaptureEngine::drawPath(const QPainterPath& path) {
   s.kind = kPath;
   s.path = path;
   s.transform = t;
-  admit(s, paint, std::move(lines));
+  admit(s, paint, std::move(lines),
+        path.fillRule() == Qt::WindingFill ? FillRule::NonZero : FillRule::EvenOdd);
 }
 
 void CaptureEngine::drawPolygon(const QPointF* points, int count, PolygonDrawMode mode) {
@@ -181,7 +196,10 @@ void CaptureEngine::drawPolygon(const QPointF* points, int count, PolygonDrawMod
   s.data = points;
   s.count = count;
   s.transform = t;
-  admit(s, paint, std::move(lines));
+  admit(s, paint, std::move(lines),
+        mode == PolylineMode ? FillRule::None
+        : mode == OddEvenMode ? FillRule::EvenOdd
+                              : FillRule::NonZero);
 }
 
 void CaptureEngine::drawLines(const QLineF* lines, int count) {
@@ -206,7 +224,7 @@ void CaptureEngine::drawLines(const QLineF* lines, int count) {
   s.data = lines;
   s.count = count;
   s.transform = t;
-  admit(s, paint, std::move(out));
+  admit(s, paint, std::move(out), FillRule::None);
 }
 
 void CaptureEngine::drawRects(const QRectF* rects, int count) {
@@ -226,7 +244,9 @@ void CaptureEngine::drawRects(const QRectF* rects, int count) {
   s.data = rects;
   s.count = count;
   s.transform = t;
-  admit(s, paint, std::move(out));
+  // Each rectangle is a shape of its own.
+  for (Polyline& line : out) line.fillStart = true;
+  admit(s, paint, std::move(out), FillRule::NonZero);
 }
 
 void CaptureEngine::drawEllipse(const QRectF& rect) {
@@ -245,7 +265,7 @@ void CaptureEngine::drawEllipse(const QRectF& rect) {
   s.kind = kEllipse;
   s.rect = rect;
   s.transform = t;
-  admit(s, paint, std::move(out));
+  admit(s, paint, std::move(out), FillRule::NonZero);
 }
 
 void CaptureEngine::drawTextItem(const QPointF& p, const QTextItem& textItem) {

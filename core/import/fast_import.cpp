@@ -197,6 +197,7 @@ bool DirectReader::drawPath(std::string_view d, const Paint& paint) {
   std::vector<Polyline> lines;
   appendFlattenedPath(path, transform_, options_.toleranceMm, lines);
   if (!paint.stroke) closeFillOutlines(lines);
+  if (paint.fill) markFill(lines, FillRule::NonZero, !paint.stroke);
   record(std::move(lines), paint.stroke ? paint.strokeRgb : paint.fillRgb);
   return true;
 }
@@ -217,12 +218,17 @@ bool DirectReader::drawPoints(std::string_view points, bool polygon, const Paint
     if (numbers.size() >= 4) finishPolyline(line, closed, lines);
     return lines;
   };
+  auto filled = [&](bool fillOnly) {
+    std::vector<Polyline> lines = polyline(true);
+    if (paint.fill) markFill(lines, FillRule::NonZero, fillOnly);
+    return lines;
+  };
   if (polygon) {
-    if (paint.stroke) record(polyline(true), paint.strokeRgb);
-    else if (paint.fill && options_.outlineFills) record(polyline(true), paint.fillRgb);
+    if (paint.stroke) record(filled(false), paint.strokeRgb);
+    else if (paint.fill && options_.outlineFills) record(filled(true), paint.fillRgb);
     return true;
   }
-  if (paint.fill && options_.outlineFills) record(polyline(true), paint.fillRgb);
+  if (paint.fill && options_.outlineFills) record(filled(true), paint.fillRgb);
   // The stroke pass (QPainter::drawPolyline) strokes only.
   if (paint.stroke) record(polyline(false), paint.strokeRgb);
   return true;
