@@ -11,6 +11,7 @@
 #include "core/planning/planner.hpp"
 #include "machine_arg.hpp"
 #include "options.hpp"
+#include "plan_import_options.hpp"
 
 #ifdef FIVEBAR_HAVE_IMPORT
 #include <QCoreApplication>
@@ -121,23 +122,11 @@ void printProblems(const std::string& file, const PlanResult& r) {
     for (const std::string& fix : problems.front().fixes) std::cerr << "  fix: " << fix << "\n";
 }
 
-// The SVG in the work frame, flattened within toleranceMm; errors go to stderr.
-std::optional<Drawing> importDrawing(const std::string& file, double toleranceMm) {
-#ifdef FIVEBAR_HAVE_IMPORT
-  svg::ImportOptions io;
-  io.toleranceMm = toleranceMm;
-  svg::ImportResult r = svg::importSvgFile(QString::fromStdString(file), io);
-  if (!r.ok()) {
-    std::cerr << "fivebar plan: " << r.message << "\n";
-    return std::nullopt;
-  }
-  return std::move(r.drawing);
-#else
-  (void)toleranceMm;
-  std::cerr << "fivebar plan: " << file << ": this build has no SVG import (configured with "
-               "FIVEBAR_BUILD_GUI=OFF)\n";
-  return std::nullopt;
-#endif
+// The SVG in the work frame, flattened within toleranceMm; errors and warnings go to stderr
+// (plan_import_options.hpp: warnings, fills, the point budget).
+std::optional<Drawing> importDrawing(const std::string& file, double toleranceMm,
+                                     PlanImportSettings& importSettings) {
+  return importForPlan(file, toleranceMm, importSettings);
 }
 
 int plan(const Options& o) {
@@ -147,6 +136,7 @@ int plan(const Options& o) {
   const auto machine = loadMachine(o.required("--machine"), "plan", std::cerr);
   if (!machine) return 1;
   PlanOptions opt = planOptionsFrom(o);
+  PlanImportSettings importSettings = planImportSettingsFrom(o);
 #ifdef FIVEBAR_HAVE_IMPORT
   int argc = 1;
   char name[] = "fivebar";
@@ -160,7 +150,7 @@ int plan(const Options& o) {
   // Flatten with the tolerance's share, in work-frame mm (the placement scales it).
   const double share = kFlatteningShare * opt.toleranceMm;
   double importTol = share / (opt.atMm && !opt.fit ? opt.scale : 1.0);
-  auto drawing = importDrawing(file, importTol);
+  auto drawing = importDrawing(file, importTol, importSettings);
   if (!drawing) return 1;
   clock.lap("import");
   // Fitting may enlarge the drawing: flatten again, finer, before planning.
@@ -169,7 +159,7 @@ int plan(const Options& o) {
   if (o.flag("--timings") && scale) std::cerr << "  placement scale " << *scale << "\n";
   if (scale && *scale * importTol > share * 1.000001) {
     importTol = share / *scale;
-    drawing = importDrawing(file, importTol);
+    drawing = importDrawing(file, importTol, importSettings);
     if (!drawing) return 1;
     clock.lap("import");
   }
@@ -208,16 +198,16 @@ int runPlan(const Args& args) {
     for (std::string& a : normalized)
       if (a == "-o") a = "--output";
     const Options o(normalized,
-                    {"--machine", "--mode", "--at", "--scale", "--rotate", "--tolerance",
-                     "--output", "--report"},
-                    {"--fit", "--no-optimise", "--timings", "--help"});
+                    withImportValuedOptions({"--machine", "--mode", "--at", "--scale", "--rotate",
+                                             "--tolerance", "--output", "--report"}),
+                    withImportFlags({"--fit", "--no-optimise", "--timings", "--help"}));
     if (o.flag("--help")) {
-      std::cout << kPlanHelp;
+      std::cout << kPlanHelp << kPlanImportHelp;
       return 0;
     }
     return plan(o);
   } catch (const UsageError& e) {
-    std::cerr << "fivebar plan: " << e.what() << "\n\n" << kPlanHelp;
+    std::cerr << "fivebar plan: " << e.what() << "\n\n" << kPlanHelp << kPlanImportHelp;
     return 2;
   }
 }
