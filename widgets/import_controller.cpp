@@ -1,5 +1,7 @@
 #include "widgets/import_controller.hpp"
 
+#include "widgets/import_warnings_panel.hpp"
+
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMessageBox>
@@ -125,7 +127,9 @@ void ImportController::start(
 
 void ImportController::onFinished() {
   if (dialog_) dialog_->deleteLater();
-  const svg::ImportResult result = watcher_.result();
+  svg::ImportResult result = watcher_.result();
+  if (result.ok() && fill_ != FillMode::Outline)
+    for (Layer& layer : result.drawing.layers) layer.paths = applyFill(layer.paths, fill_, hatch_);
   const QString name = pendingName_;
   if (!result.ok()) {
     QString message = QString::fromStdString(result.message);
@@ -143,10 +147,15 @@ void ImportController::onFinished() {
     emit finished(false, message);
     return;
   }
+  if (QString refusal; !acceptPointBudget(dialogParent_, result.drawing, name, interactive_, refusal)) {
+    emit finished(false, refusal);
+    return;
+  }
   const Placement placement = initialPlacement(
       result.drawing, workspace_.fitRectangle(doc_.effectiveMode()), doc_.profile().geometry);
   doc_.replaceDrawing(result.drawing, name, placement);
   if (pendingRemember_) addRecent(name);
+  emit warningsReported(name, toQStringList(result.warnings));
   emit finished(true, QString());
 }
 

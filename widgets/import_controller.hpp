@@ -13,6 +13,7 @@
 #include <memory>
 
 #include "core/import/svg_import.hpp"
+#include "core/planning/hatch.hpp"
 #include "widgets/studio_document.hpp"
 #include "widgets/workspace_cache.hpp"
 
@@ -35,6 +36,13 @@ class ImportController : public QObject {
   // false: no dialogs (tests, --screenshot); results only through the signals.
   void setInteractive(bool on) { interactive_ = on; }
   bool busy() const { return watcher_.isRunning(); }
+  // How filled shapes of the next imports are drawn (core/planning/hatch.hpp; default outline).
+  void setFill(FillMode mode, const HatchSettings& hatch) {
+    fill_ = mode;
+    hatch_ = hatch;
+  }
+  FillMode fill() const { return fill_; }
+  const HatchSettings& hatch() const { return hatch_; }
   QStringList recentFiles() const;
 
  public slots:
@@ -49,6 +57,8 @@ class ImportController : public QObject {
  signals:
   // ok = the drawing is in the document; message = the error otherwise (names the file).
   void finished(bool ok, const QString& message);
+  // After every successful import: the importer's warnings (widgets/import_warnings_panel.hpp).
+  void warningsReported(const QString& fileName, const QStringList& warnings);
   void recentFilesChanged();
   void progress(double fraction);
 
@@ -67,6 +77,8 @@ class ImportController : public QObject {
   QString pendingName_;
   bool pendingRemember_ = false;
   bool interactive_ = true;
+  FillMode fill_ = FillMode::Outline;
+  HatchSettings hatch_;
 };
 
 }  // namespace fivebar::widgets
