@@ -2,22 +2,17 @@
 
 #include <QBuffer>
 #include <QSet>
-#include <QXmlStreamReader>
 #include <QRegularExpression>
-#include <QXmlStreamWriter>
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 #include "path_data.hpp"
-#include "svg_rewrite.hpp"
+#include "sanitizer.hpp"
 
 namespace fivebar::svg {
+namespace detail {
 namespace {
-
-const QString kXlinkNs = QStringLiteral("http://www.w3.org/1999/xlink");
-const QString kInkscapeNs = QStringLiteral("http://www.inkscape.org/namespaces/inkscape");
 
 bool isDropped(QStringView tag) {
   static const QSet<QStringView> dropped{u"image", u"script", u"foreignObject", u"video", u"audio",
@@ -45,58 +40,8 @@ bool isGeometryAttribute(QStringView name) {
   return geometry.contains(name);
 }
 
-class Sanitizer {
- public:
-  Sanitizer(QIODevice& input, double dpi, const std::function<bool(double)>& progress,
-            std::map<QString, SymbolInfo> symbols)
-      : input_(input), dpi_(dpi), progress_(progress), reader_(&input), writer_(&result_.svg),
-        symbols_(std::move(symbols)) {
-    // The output is about as long as the input: reserve once instead of growing 50 MB by steps.
-    result_.svg.reserve(static_cast<qsizetype>(std::min<qint64>(input.size() + 65536, qint64{1} << 30)));
-    writer_.setAutoFormatting(false);
-  }
 
-  SanitizeResult run();
-
- private:
-  void startElement();
-  void endElement();
-  void characters();
-  QXmlStreamAttributes cleanAttributes(QStringView tag);
-  bool checkNumbers(QStringView tag, const QXmlStreamAttributes& attributes);
-  bool writeSplitPath(const QXmlStreamAttributes& attributes);
-  void writeSentinel(int index);
-  void recordRoot(const QXmlStreamAttributes& attributes);
-  void writeNamespaces();
-  void writeNestedSvgAsGroup(const QXmlStreamAttributes& attributes);
-  QXmlStreamAttributes rewriteAttributes(QStringView tag, const QXmlStreamAttributes& attributes);
-  void warnUnsupported(QStringView tag, const QXmlStreamAttributes& attributes);
-  void checkPathData(const QXmlStreamAttributes& attributes);
-  bool writeSymbolOrUse(QStringView tag, const QXmlStreamAttributes& attributes);
-  void setViewport();
-  void warn(const std::string& what);
-  void warnAt(const QXmlStreamAttributes& attributes, const std::string& what);
-  void fail(ImportStatus status, const std::string& message);
-  std::string where() const;
-
-  QIODevice& input_;
-  double dpi_;
-  const std::function<bool(double)>& progress_;
-  QXmlStreamReader reader_;
-  SanitizeResult result_;   // before writer_, which writes into result_.svg
-  QXmlStreamWriter writer_;
-  int depth_ = 0;
-  int skipDepth_ = 0;  // > 0 while inside a dropped element: its depth
-  bool inStyle_ = false;
-  bool sawRoot_ = false;
-  QString svgNamespace_;
-  std::map<std::string, std::pair<int, qint64>> warnings_;  // what -> (count, first line)
-  std::vector<std::string> located_;  // warnings naming their own line, in document order
-  std::map<QString, SymbolInfo> symbols_;  // from scanSymbols, for <use> of a <symbol>
-  UserViewport viewport_;
-  std::vector<double> fontSizes_;  // user units, one per open written element
-  std::vector<int> extraEnds_;     // end tags to add when the element closes (symbol, use)
-};
+}  // namespace
 
 std::string Sanitizer::where() const {
   return "line " + std::to_string(reader_.lineNumber()) + ": <" +
@@ -312,141 +257,6 @@ void Sanitizer::writeNestedSvgAsGroup(const QXmlStreamAttributes& attributes) {
   writer_.writeAttribute(QStringLiteral("transform"), nestedViewportTransform(nested, result_.root, dpi_));
 }
 
-void Sanitizer::setViewport() {
-  const RootAttributes& root = result_.root;
-  if (const std::optional<QRectF> box = parseViewBox(root.viewBox); box && box->width() > 0.0) {
-    viewport_ = {box->width(), box->height()};
-    return;
-  }
-  auto side = [&](const QString& text) {
-    const std::optional<Length> length = parseLength(text);
-    if (!length || length->unit == LengthUnit::Percent) return 0.0;
-    return lengthToMm(*length, dpi_).value_or(0.0) * dpi_ / 25.4;
-  };
-  viewport_ = {side(root.width), side(root.height)};
-}
-
-// Lengths Qt 6.4 misreads, made user units; transform-origin folded into transform.
-QXmlStreamAttributes Sanitizer::rewriteAttributes(QStringView tag,
-                                                  const QXmlStreamAttributes& attributes) {
-  const double parentFont = fontSizes_.empty() ? 16.0 : fontSizes_.back();
-  double font = parentFont;
-  if (const QStringView f = attributes.value(QStringLiteral("font-size")); !f.isEmpty())
-    font = fontSizeUser(f, parentFont, dpi_).value_or(parentFont);
-  fontSizes_.push_back(font);
-  const bool text = tag == u"text" || tag == u"tspan";
-  QXmlStreamAttributes out;
-  out.reserve(attributes.size());
-  QString origin;
-  for (const QXmlStreamAttribute& a : attributes) {
-    if (!a.namespaceUri().isEmpty()) {
-      out.append(a);
-      continue;
-    }
-    const QStringView n = a.name();
-    QString value = a.value().toString();
-    if (n == u"transform-origin") {
-      origin = value;
-      continue;
-    }
-    if (const std::optional<QString> v = resolveViewportUnits(value, viewport_)) value = *v;
-    if (text && (n == u"x" || n == u"dx" || n == u"y" || n == u"dy")) {
-      const double reference = (n == u"x" || n == u"dx") ? viewport_.width : viewport_.height;
-      if (const std::optional<QString> v = resolveTextLengths(value, reference, font, dpi_)) value = *v;
-    }
-    out.append(n.toString(), value);
-  }
-  if (tag == u"ellipse") {  // SVG 2: a missing radius is "auto", the other one (Qt 6.4: 0)
-    const bool rx = out.hasAttribute(QStringLiteral("rx")), ry = out.hasAttribute(QStringLiteral("ry"));
-    if (rx && !ry) out.append(QStringLiteral("ry"), out.value(QStringLiteral("rx")).toString());
-    if (ry && !rx) out.append(QStringLiteral("rx"), out.value(QStringLiteral("ry")).toString());
-  }
-  if (!origin.isEmpty()) {
-    const QString transform = out.value(QStringLiteral("transform")).toString();
-    const std::optional<QString> folded = transformWithOrigin(transform, origin, viewport_, dpi_);
-    if (!folded) {
-      warnAt(attributes, "transform-origin=\"" + origin.toStdString() + "\" not understood: ignored");
-    } else if (!transform.isEmpty()) {
-      QXmlStreamAttributes replaced;
-      for (const QXmlStreamAttribute& a : out)
-        replaced.append(a.name() == u"transform" && a.namespaceUri().isEmpty()
-                            ? QXmlStreamAttribute(QStringLiteral("transform"), *folded)
-                            : a);
-      out = replaced;
-    }
-  }
-  return out;
-}
-
-// Features not drawn: each is named once per file with its first line.
-void Sanitizer::warnUnsupported(QStringView tag, const QXmlStreamAttributes& attributes) {
-  const QStringView style = attributes.value(QStringLiteral("style"));
-  auto has = [&](const char16_t* name) {
-    return attributes.hasAttribute(QString::fromUtf16(name)) ||
-           style.contains(QString::fromUtf16(name));
-  };
-  if (has(u"marker-start") || has(u"marker-mid") || has(u"marker-end") ||
-      attributes.hasAttribute(QStringLiteral("marker")))
-    warn("markers (marker-start/mid/end) are not drawn");
-  if (has(u"clip-path")) warn("clip-path not applied: clipped shapes are drawn whole");
-  if (has(u"mask")) warn("mask not applied: masked shapes are drawn whole");
-  if (style.contains(u"transform-origin")) warn("transform-origin in a style is not applied");
-  if ((tag == u"text" || tag == u"tspan") && attributes.hasAttribute(QStringLiteral("rotate")))
-    warn("per-glyph rotate on <text> is not applied: glyphs are drawn upright");
-  if (tag == u"textPath") warn("text on a path (<textPath>) is not drawn");
-  if (tag == u"pattern") warn("pattern fills are drawn as outlines, without the pattern");
-}
-
-// Qt SVG draws a path up to the first error in its data, silently: say so.
-void Sanitizer::checkPathData(const QXmlStreamAttributes& attributes) {
-  const QStringView d = attributes.value(QStringLiteral("d"));
-  if (d.size() > kPathScanChars) return;  // writeSplitPath parses and reports it
-  const ParsedPath parsed = parsePathData(d);
-  if (!parsed.error) return;
-  const QString near = d.mid(parsed.errorOffset, 16).toString().simplified();
-  warnAt(attributes, "attribute d: invalid path data at character " +
-                         std::to_string(parsed.errorOffset + 1) + " (\"" + near.toStdString() +
-                         "\"): drawn up to the error");
-}
-
-// <symbol> -> <defs><g>: never drawn by itself. <use> of a symbol -> <g transform><use>.
-bool Sanitizer::writeSymbolOrUse(QStringView tag, const QXmlStreamAttributes& attributes) {
-  const QString ns = reader_.namespaceUri().toString();
-  if (tag == u"symbol") {
-    writer_.writeStartElement(ns, QStringLiteral("defs"));
-    writer_.writeStartElement(ns, QStringLiteral("g"));
-    for (const QXmlStreamAttribute& a : attributes) {
-      const QStringView n = a.name();
-      if (a.namespaceUri().isEmpty() &&
-          (n == u"viewBox" || n == u"preserveAspectRatio" || n == u"x" || n == u"y" ||
-           n == u"width" || n == u"height" || n == u"refX" || n == u"refY"))
-        continue;
-      writer_.writeAttribute(a);
-    }
-    extraEnds_.back() = 1;
-    return true;
-  }
-  if (tag != u"use") return false;
-  const QStringView href = attributes.value(kXlinkNs, QStringLiteral("href"));
-  const auto symbol = href.startsWith(u'#') ? symbols_.find(href.mid(1).toString()) : symbols_.end();
-  if (symbol == symbols_.end()) return false;
-  writer_.writeStartElement(ns, QStringLiteral("g"));
-  for (const QXmlStreamAttribute& a : attributes) {
-    const QStringView n = a.name();
-    if (a.namespaceUri().isEmpty() && (n == u"x" || n == u"y" || n == u"width" ||
-                                       n == u"height" || n == u"transform"))
-      continue;
-    if (n == u"href") continue;
-    writer_.writeAttribute(a);
-  }
-  writer_.writeAttribute(QStringLiteral("transform"),
-                         useSymbolTransform(attributes, symbol->second, viewport_, dpi_));
-  writer_.writeStartElement(ns, QStringLiteral("use"));
-  writer_.writeAttribute(kXlinkNs, QStringLiteral("href"), href.toString());
-  extraEnds_.back() = 1;
-  return true;
-}
-
 void Sanitizer::startElement() {
   ++depth_;
   if (skipDepth_ > 0) return;
@@ -538,55 +348,13 @@ void Sanitizer::characters() {
   else writer_.writeCharacters(text);
 }
 
-}  // namespace
-
-qsizetype findNonFiniteNumber(QStringView value) {
-  const qsizetype n = value.size();
-  for (qsizetype i = 0; i < n; ++i) {
-    const char16_t c = value[i].unicode() | 0x20;  // ASCII lower case
-    if (i + 2 < n && (c == u'n' || c == u'i')) {
-      const char16_t c1 = value[i + 1].unicode() | 0x20, c2 = value[i + 2].unicode() | 0x20;
-      if ((c == u'n' && c1 == u'a' && c2 == u'n') || (c == u'i' && c1 == u'n' && c2 == u'f'))
-        return i;
-    }
-    if (c == u'e' && i > 0 && value[i - 1].isDigit()) {
-      qsizetype j = i + 1;
-      bool negative = false;
-      if (j < n && (value[j] == u'+' || value[j] == u'-')) negative = value[j++] == u'-';
-      int exponent = 0;
-      while (j < n && value[j].isDigit() && exponent < 100000)
-        exponent = exponent * 10 + (value[j++].unicode() - u'0');
-      if (!negative && exponent > 300) {
-        qsizetype start = i - 1;
-        while (start > 0 && (value[start - 1].isDigit() || value[start - 1] == u'.')) --start;
-        if (start > 0 && (value[start - 1] == u'-' || value[start - 1] == u'+')) --start;
-        return start;
-      }
-    }
-  }
-  return -1;
-}
-
-bool hasNonFiniteNumber(QStringView value) { return findNonFiniteNumber(value) >= 0; }
-
-std::string describeNonFiniteNumber(QStringView value) {
-  const qsizetype at = findNonFiniteNumber(value);
-  if (at < 0) return {};
-  qsizetype end = at;
-  while (end < value.size() && end - at < 24 && !value[end].isSpace() && value[end] != u',' &&
-         value[end] != u')' && value[end] != u';' && (end == at || value[end] != u'-'))
-    ++end;
-  const std::string token = value.mid(at, end - at).toString().toStdString();
-  const char16_t c = value[at].unicode() | 0x20;
-  if (c == u'n' || c == u'i') return "a value that is not a number (" + token + ")";
-  return "a number beyond 1e300 (" + token + ")";
-}
+}  // namespace detail
 
 SanitizeResult sanitizeSvg(QIODevice& input, double dpi,
                            const std::function<bool(double)>& progress) {
   std::map<QString, SymbolInfo> symbols;
   if (const auto* buffer = qobject_cast<const QBuffer*>(&input)) symbols = scanSymbols(buffer->data());
-  Sanitizer sanitizer(input, dpi, progress, std::move(symbols));
+  detail::Sanitizer sanitizer(input, dpi, progress, std::move(symbols));
   return sanitizer.run();
 }
 
