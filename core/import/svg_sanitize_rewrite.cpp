@@ -31,6 +31,18 @@ QXmlStreamAttributes Sanitizer::rewriteAttributes(QStringView tag,
     font = fontSizeUser(f, parentFont, dpi_).value_or(parentFont);
   fontSizes_.push_back(font);
   const bool text = tag == u"text" || tag == u"tspan";
+  // Most elements need nothing: find out without copying a value.
+  bool needed = tag == u"ellipse";
+  for (const QXmlStreamAttribute& a : attributes) {
+    if (needed) break;
+    if (!a.namespaceUri().isEmpty()) continue;
+    const QStringView n = a.name(), v = a.value();
+    needed = n == u"transform-origin" || v.contains(u"vw") || v.contains(u"vh") ||
+             v.contains(u"vmin") || v.contains(u"vmax") ||
+             (text && (n == u"x" || n == u"dx" || n == u"y" || n == u"dy") && !v.isEmpty() &&
+              !v.back().isDigit() && v.back() != u'.');
+  }
+  if (!needed) return attributes;
   QXmlStreamAttributes out;
   out.reserve(attributes.size());
   QString origin;
@@ -76,18 +88,26 @@ QXmlStreamAttributes Sanitizer::rewriteAttributes(QStringView tag,
 
 // Features not drawn: each is named once per file with its first line.
 void Sanitizer::warnUnsupported(QStringView tag, const QXmlStreamAttributes& attributes) {
-  const QStringView style = attributes.value(QStringLiteral("style"));
-  auto has = [&](const char16_t* name) {
-    return attributes.hasAttribute(QString::fromUtf16(name)) ||
-           style.contains(QString::fromUtf16(name));
-  };
-  if (has(u"marker-start") || has(u"marker-mid") || has(u"marker-end") ||
-      attributes.hasAttribute(QStringLiteral("marker")))
-    warn("markers (marker-start/mid/end) are not drawn");
-  if (has(u"clip-path")) warn("clip-path not applied: clipped shapes are drawn whole");
-  if (has(u"mask")) warn("mask not applied: masked shapes are drawn whole");
-  if (style.contains(u"transform-origin")) warn("transform-origin in a style is not applied");
-  if ((tag == u"text" || tag == u"tspan") && attributes.hasAttribute(QStringLiteral("rotate")))
+  bool markers = false, clip = false, mask = false, rotate = false;
+  for (const QXmlStreamAttribute& a : attributes) {
+    if (!a.namespaceUri().isEmpty()) continue;
+    const QStringView n = a.name();
+    if (n == u"style") {
+      const QStringView style = a.value();
+      markers = markers || style.contains(u"marker");
+      clip = clip || style.contains(u"clip-path");
+      mask = mask || style.contains(u"mask");
+      if (style.contains(u"transform-origin")) warn("transform-origin in a style is not applied");
+    }
+    markers = markers || n == u"marker-start" || n == u"marker-mid" || n == u"marker-end" || n == u"marker";
+    clip = clip || n == u"clip-path";
+    mask = mask || n == u"mask";
+    rotate = rotate || n == u"rotate";
+  }
+  if (markers) warn("markers (marker-start/mid/end) are not drawn");
+  if (clip) warn("clip-path not applied: clipped shapes are drawn whole");
+  if (mask) warn("mask not applied: masked shapes are drawn whole");
+  if (rotate && (tag == u"text" || tag == u"tspan"))
     warn("per-glyph rotate on <text> is not applied: glyphs are drawn upright");
   if (tag == u"textPath") warn("text on a path (<textPath>) is not drawn");
   if (tag == u"pattern") warn("pattern fills are drawn as outlines, without the pattern");
