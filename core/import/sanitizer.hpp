@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "svg_markers.hpp"
 #include "svg_rewrite.hpp"
 #include "svg_sanitize.hpp"
 
@@ -21,9 +22,9 @@ inline const QString kInkscapeNs = QStringLiteral("http://www.inkscape.org/names
 class Sanitizer {
  public:
   Sanitizer(QIODevice& input, double dpi, const std::function<bool(double)>& progress,
-            std::map<QString, SymbolInfo> symbols)
+            std::map<QString, SymbolInfo> symbols, std::map<QString, MarkerInfo> markers)
       : input_(input), dpi_(dpi), progress_(progress), reader_(&input), writer_(&result_.svg),
-        symbols_(std::move(symbols)) {
+        symbols_(std::move(symbols)), markers_(std::move(markers)) {
     // The output is about as long as the input: reserve once instead of growing 50 MB by steps.
     result_.svg.reserve(static_cast<qsizetype>(std::min<qint64>(input.size() + 65536, qint64{1} << 30)));
     writer_.setAutoFormatting(false);
@@ -47,6 +48,9 @@ class Sanitizer {
   void checkPathData(const QXmlStreamAttributes& attributes);
   bool writeSymbolOrUse(QStringView tag, const QXmlStreamAttributes& attributes);
   void setViewport();
+  void pushMarkerState(QStringView tag, const QXmlStreamAttributes& attributes);
+  bool writeMarkerDefinition(QStringView tag, const QXmlStreamAttributes& attributes);
+  void writeMarkerInstances();
   void warn(const std::string& what);
   void warnAt(const QXmlStreamAttributes& attributes, const std::string& what);
   void fail(ImportStatus status, const std::string& message);
@@ -69,6 +73,16 @@ class Sanitizer {
   UserViewport viewport_;
   std::vector<double> fontSizes_;  // user units, one per open written element
   std::vector<int> extraEnds_;     // end tags to add when the element closes (symbol, use)
+  std::map<QString, MarkerInfo> markers_;  // from scanMarkers
+  struct MarkerState {
+    MarkerRefs refs;            // inherited marker properties
+    double strokeWidth = 1.0;   // user units, inherited
+    QString transform;          // the marked element's transform
+    std::vector<std::pair<QString, QString>> instances;  // marker id, instance transform
+  };
+  std::vector<MarkerState> markerStates_;  // one per open written element
+  int markerContentDepth_ = 0;             // > 0 inside a <marker>: its depth (no markers drawn)
+  std::size_t markerInstances_ = 0;        // written so far (bounded)
 };
 
 }  // namespace fivebar::svg::detail

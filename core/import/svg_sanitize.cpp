@@ -283,15 +283,17 @@ void Sanitizer::startElement() {
   }
   const QXmlStreamAttributes cleaned = cleanAttributes(tag);
   if (!checkNumbers(tag, cleaned)) return;
-  // Not drawn, as SVG says: a marker outside marker properties, zero-size shapes.
+  // Not drawn, as SVG says: a marker without an id, zero-size shapes.
   const QXmlStreamAttributes attributes = rewriteAttributes(tag, cleaned);
-  if (tag == u"marker" || isZeroSizeShape(tag, attributes)) {
+  if ((tag == u"marker" && !markers_.count(attributes.value(QStringLiteral("id")).toString())) ||
+      isZeroSizeShape(tag, attributes)) {
     fontSizes_.pop_back();
     skipDepth_ = depth_;
     return;
   }
   warnUnsupported(tag, cleaned);
   extraEnds_.push_back(0);
+  pushMarkerState(tag, attributes);
   // The sentinel colour holds index + 1 in 24 bits; later elements share the last marker.
   constexpr std::size_t kMaxMarkers = 0xFFFFFE;
   if (depth_ == 2 && isRendering(tag) && result_.topLevel.size() < kMaxMarkers) {
@@ -309,7 +311,7 @@ void Sanitizer::startElement() {
   inStyle_ = tag == u"style";
   writeNamespaces();
   if (depth_ > 1 && tag == u"svg") return writeNestedSvgAsGroup(attributes);
-  if (writeSymbolOrUse(tag, attributes)) return;
+  if (writeSymbolOrUse(tag, attributes) || writeMarkerDefinition(tag, attributes)) return;
   writer_.writeStartElement(reader_.namespaceUri().toString(), tag);
   if (tag == u"path") {
     if (writeSplitPath(attributes)) return;
@@ -324,6 +326,7 @@ void Sanitizer::endElement() {
     --depth_;
     return;
   }
+  if (depth_ == markerContentDepth_) markerContentDepth_ = 0;
   --depth_;
   inStyle_ = false;
   if (result_.status != ImportStatus::Ok) return;
@@ -331,6 +334,8 @@ void Sanitizer::endElement() {
   if (extraEnds_.empty()) return;
   for (int i = 0; i < extraEnds_.back(); ++i) writer_.writeEndElement();
   extraEnds_.pop_back();
+  writeMarkerInstances();
+  markerStates_.pop_back();
   fontSizes_.pop_back();
 }
 
@@ -338,7 +343,7 @@ void Sanitizer::characters() {
   if (skipDepth_ > 0 || depth_ == 0) return;
   QString text = reader_.text().toString();
   if (inStyle_ && text.contains(QStringLiteral("marker")))
-    warn("markers (marker-start/mid/end) are not drawn");
+    warn("markers set in a style sheet are not drawn (marker attributes and style attributes are)");
   if (inStyle_ && text.contains(QStringLiteral("@import"))) {
     static const QRegularExpression import(QStringLiteral("@import[^;]*;?"));
     text.remove(import);
@@ -353,8 +358,12 @@ void Sanitizer::characters() {
 SanitizeResult sanitizeSvg(QIODevice& input, double dpi,
                            const std::function<bool(double)>& progress) {
   std::map<QString, SymbolInfo> symbols;
-  if (const auto* buffer = qobject_cast<const QBuffer*>(&input)) symbols = scanSymbols(buffer->data());
-  detail::Sanitizer sanitizer(input, dpi, progress, std::move(symbols));
+  std::map<QString, MarkerInfo> markers;
+  if (const auto* buffer = qobject_cast<const QBuffer*>(&input)) {
+    symbols = scanSymbols(buffer->data());
+    markers = scanMarkers(buffer->data());
+  }
+  detail::Sanitizer sanitizer(input, dpi, progress, std::move(symbols), std::move(markers));
   return sanitizer.run();
 }
 

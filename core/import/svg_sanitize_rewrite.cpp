@@ -88,23 +88,20 @@ QXmlStreamAttributes Sanitizer::rewriteAttributes(QStringView tag,
 
 // Features not drawn: each is named once per file with its first line.
 void Sanitizer::warnUnsupported(QStringView tag, const QXmlStreamAttributes& attributes) {
-  bool markers = false, clip = false, mask = false, rotate = false;
+  bool clip = false, mask = false, rotate = false;
   for (const QXmlStreamAttribute& a : attributes) {
     if (!a.namespaceUri().isEmpty()) continue;
     const QStringView n = a.name();
     if (n == u"style") {
       const QStringView style = a.value();
-      markers = markers || style.contains(u"marker");
       clip = clip || style.contains(u"clip-path");
       mask = mask || style.contains(u"mask");
       if (style.contains(u"transform-origin")) warn("transform-origin in a style is not applied");
     }
-    markers = markers || n == u"marker-start" || n == u"marker-mid" || n == u"marker-end" || n == u"marker";
     clip = clip || n == u"clip-path";
     mask = mask || n == u"mask";
     rotate = rotate || n == u"rotate";
   }
-  if (markers) warn("markers (marker-start/mid/end) are not drawn");
   if (clip) warn("clip-path not applied: clipped shapes are drawn whole");
   if (mask) warn("mask not applied: masked shapes are drawn whole");
   if (rotate && (tag == u"text" || tag == u"tspan"))
@@ -161,6 +158,78 @@ bool Sanitizer::writeSymbolOrUse(QStringView tag, const QXmlStreamAttributes& at
   writer_.writeAttribute(kXlinkNs, QStringLiteral("href"), href.toString());
   extraEnds_.back() = 1;
   return true;
+}
+
+// Marker properties are inherited: each written element gets its state; a path, line, polyline
+// or polygon with markers gets its instances (written after it by writeMarkerInstances).
+void Sanitizer::pushMarkerState(QStringView tag, const QXmlStreamAttributes& attributes) {
+  MarkerState state;
+  if (!markerStates_.empty()) {
+    state.refs = markerStates_.back().refs;
+    state.strokeWidth = markerStates_.back().strokeWidth;
+  }
+  const MarkerRefs inherited = state.refs;
+  state.refs = markerRefs(attributes, inherited);
+  state.strokeWidth = strokeWidthUser(attributes, state.strokeWidth);
+  if (markerContentDepth_ == 0 && state.refs.any()) {
+    if (tag == u"path" || tag == u"line" || tag == u"polyline" || tag == u"polygon") {
+      state.transform = attributes.value(QStringLiteral("transform")).toString();
+      const std::vector<MarkerVertex> vertices = markerVertices(tag, attributes);
+      constexpr std::size_t kMaxMarkerInstances = 100000;
+      auto place = [&](const QString& id, std::size_t i, MarkerSlot slot) {
+        if (id.isEmpty()) return;
+        const auto marker = markers_.find(id);
+        if (marker == markers_.end())
+          return warnAt(attributes, "marker #" + id.toStdString() + " not found: not drawn");
+        if (markerInstances_ >= kMaxMarkerInstances)
+          return warn("more than 100000 marker instances: the rest are not drawn");
+        if (marker->second.clips)
+          warn("marker overflow clipping not applied: marker content is drawn whole");
+        if (const std::optional<QString> t =
+                markerInstanceTransform(marker->second, vertices[i], slot, state.strokeWidth)) {
+          state.instances.emplace_back(id, *t);
+          ++markerInstances_;
+        }
+      };
+      if (!vertices.empty()) {
+        place(state.refs.start, 0, MarkerSlot::Start);
+        for (std::size_t i = 1; i + 1 < vertices.size(); ++i) place(state.refs.mid, i, MarkerSlot::Mid);
+        place(state.refs.end, vertices.size() - 1, MarkerSlot::End);
+      }
+    } else if ((tag == u"rect" || tag == u"circle" || tag == u"ellipse") &&
+               (state.refs.start != inherited.start || state.refs.mid != inherited.mid ||
+                state.refs.end != inherited.end)) {  // SVG draws markers on the four above only
+      warn("markers on <" + tag.toString().toStdString() +
+           "> are not drawn (drawn on path, line, polyline and polygon)");
+    }
+  }
+  markerStates_.push_back(std::move(state));
+}
+
+// <marker id> -> <defs><g id>: its content, never drawn by itself, instanced by <use>.
+bool Sanitizer::writeMarkerDefinition(QStringView tag, const QXmlStreamAttributes& attributes) {
+  if (tag != u"marker") return false;
+  const QString ns = reader_.namespaceUri().toString();
+  writer_.writeStartElement(ns, QStringLiteral("defs"));
+  writer_.writeStartElement(ns, QStringLiteral("g"));
+  writer_.writeAttribute(QStringLiteral("id"), attributes.value(QStringLiteral("id")).toString());
+  extraEnds_.back() = 1;
+  if (markerContentDepth_ == 0) markerContentDepth_ = depth_;
+  return true;
+}
+
+void Sanitizer::writeMarkerInstances() {
+  const MarkerState& state = markerStates_.back();
+  if (state.instances.empty()) return;
+  writer_.writeStartElement(svgNamespace_, QStringLiteral("g"));
+  if (!state.transform.isEmpty()) writer_.writeAttribute(QStringLiteral("transform"), state.transform);
+  for (const auto& [id, transform] : state.instances) {
+    writer_.writeStartElement(svgNamespace_, QStringLiteral("use"));
+    writer_.writeAttribute(kXlinkNs, QStringLiteral("href"), u'#' + id);
+    writer_.writeAttribute(QStringLiteral("transform"), transform);
+    writer_.writeEndElement();
+  }
+  writer_.writeEndElement();
 }
 
 }  // namespace detail

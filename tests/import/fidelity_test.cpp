@@ -151,14 +151,15 @@ TEST(Fills, FillOnlyOpenPathGetsItsClosingEdge) {
   EXPECT_NEAR(length(allPaths(poly.drawing)[0]), 80.0 + std::sqrt(3200.0), 1e-6);
 }
 
-TEST(Markers, MarkerOutsideDefsIsNotDrawnAndMarkerPropertiesAreWarned) {
+TEST(Markers, MarkerOutsideDefsIsDrawnOnlyThroughMarkerProperties) {
   const ImportResult r = importText(page(
       "<marker id=\"m\" markerWidth=\"10\" markerHeight=\"10\"><path d=\"M0 0 L10 5 L0 10 Z\" fill=\"black\"/></marker>"
       "\n<path d=\"M10 10 L90 10\" stroke=\"black\" marker-end=\"url(#m)\"/>"));
   ASSERT_TRUE(r.ok()) << r.message;
-  ASSERT_EQ(allPaths(r.drawing).size(), 1u);
-  expectBox(r.drawing, 10, 10, 90, 10);
-  EXPECT_TRUE(warned(r, "markers (marker-start/mid/end) are not drawn")) << joined(r);
+  // The path and the triangle at its end (stroke width 1, orient 0, refX/refY 0).
+  ASSERT_EQ(allPaths(r.drawing).size(), 2u);
+  expectBox(r.drawing, 10, 10, 100, 20);
+  EXPECT_FALSE(warned(r, "marker")) << joined(r);
 }
 
 TEST(Lengths, TextPercentAndEmPositions) {
