@@ -21,6 +21,21 @@
     </message>
 </context>
 <context>
+    <name>ImportWarningsPanel</name>
+    <message>
+        <source>%1 has %2 points after flattening, more than the budget of %3 (a runaway file?).</source>
+        <translation>%1 hat nach dem Glätten %2 Punkte, mehr als das Budget von %3 (eine außer Kontrolle geratene Datei?).</translation>
+    </message>
+    <message>
+        <source>Very large drawing</source>
+        <translation>Sehr große Zeichnung</translation>
+    </message>
+    <message>
+        <source>Planning and plotting it may take very long. Import it anyway?</source>
+        <translation>Planen und Zeichnen können sehr lange dauern. Trotzdem importieren?</translation>
+    </message>
+</context>
+<context>
     <name>JobPipeline</name>
     <message>
         <source>Nothing to plan: the drawing has no visible path.</source>
@@ -341,6 +356,14 @@
         <source>%1[*] - FiveBar Studio</source>
         <translation>%1[*] - FiveBar Studio</translation>
     </message>
+    <message>
+        <source>Fills</source>
+        <translation>Füllungen</translation>
+    </message>
+    <message>
+        <source>Import warnings</source>
+        <translation>Importwarnungen</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::ConsolePanel</name>
@@ -355,6 +378,61 @@
     <message>
         <source>Send</source>
         <translation>Senden</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::FillOptionsBox</name>
+    <message>
+        <source>Filled shapes</source>
+        <translation>Gefüllte Formen</translation>
+    </message>
+    <message>
+        <source>Outline</source>
+        <translation>Umriss</translation>
+    </message>
+    <message>
+        <source>Hatch</source>
+        <translation>Schraffur</translation>
+    </message>
+    <message>
+        <source>Not drawn</source>
+        <translation>Nicht zeichnen</translation>
+    </message>
+    <message>
+        <source>Outline: the shape&apos;s edge (as AxiDraw and vpype draw fills). Hatch: parallel lines inside the shape. Not drawn: fill-only shapes are left out.</source>
+        <translation>Umriss: der Rand der Form (wie AxiDraw und vpype Füllungen zeichnen). Schraffur: parallele Linien in der Form. Nicht zeichnen: nur gefüllte Formen entfallen.</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source> deg</source>
+        <translation> Grad</translation>
+    </message>
+    <message>
+        <source>Crosshatch</source>
+        <translation>Kreuzschraffur</translation>
+    </message>
+    <message>
+        <source>Keep the outline</source>
+        <translation>Umriss behalten</translation>
+    </message>
+    <message>
+        <source>Import again with these settings</source>
+        <translation>Mit diesen Einstellungen neu importieren</translation>
+    </message>
+    <message>
+        <source>Fill:</source>
+        <translation>Füllung:</translation>
+    </message>
+    <message>
+        <source>Line spacing:</source>
+        <translation>Linienabstand:</translation>
+    </message>
+    <message>
+        <source>Angle:</source>
+        <translation>Winkel:</translation>
     </message>
 </context>
 <context>
@@ -420,6 +498,29 @@
     <message>
         <source>Planning...</source>
         <translation>Planung läuft...</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::ImportWarningsPanel</name>
+    <message>
+        <source>No drawing imported yet.</source>
+        <translation>Noch keine Zeichnung importiert.</translation>
+    </message>
+    <message>
+        <source>What the importer dropped, approximated or could not draw. docs/svg-import.md lists what is supported.</source>
+        <translation>Was der Import weggelassen, angenähert oder nicht zeichnen konnte. docs/svg-import.md listet, was unterstützt wird.</translation>
+    </message>
+    <message>
+        <source>%1 imported without warnings.</source>
+        <translation>%1 ohne Warnungen importiert.</translation>
+    </message>
+    <message>
+        <source>1 warning while importing %1: part of the drawing may differ from what a browser shows.</source>
+        <translation>1 Warnung beim Import von %1: ein Teil der Zeichnung kann von der Anzeige im Browser abweichen.</translation>
+    </message>
+    <message>
+        <source>%1 warnings while importing %2: parts of the drawing may differ from what a browser shows.</source>
+        <translation>%1 Warnungen beim Import von %2: Teile der Zeichnung können von der Anzeige im Browser abweichen.</translation>
     </message>
 </context>
 <context>
@@ -1675,6 +1776,10 @@
     <message>
         <source>SVG drawing or project to open.</source>
         <translation>SVG-Zeichnung oder Projekt zum Öffnen.</translation>
+    </message>
+    <message>
+        <source>Filled shapes: outline (default), hatch or none; with hatch: SPACING_MM and ANGLE_DEG after colons.</source>
+        <translation>Gefüllte Formen: outline (Standard), hatch oder none; bei hatch: SPACING_MM und ANGLE_DEG nach Doppelpunkten.</translation>
     </message>
 </context>
 </TS>

@@ -1,5 +1,7 @@
 #include "widgets/import_controller.hpp"
 
+#include "widgets/import_warnings_panel.hpp"
+
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMessageBox>
@@ -62,11 +64,11 @@ void ImportController::openFile(const QString& path) {
   const std::optional<MachineProfile> profile =
       isProjectPath(path) ? std::nullopt : std::optional<MachineProfile>(doc_.profile());
   const PlanOptions options = importOptions(doc_);
-  start([path, profile, options](const std::atomic<bool>* cancel) {
+  start([path, profile, options, fill = fill_, hatch = hatch_](const std::atomic<bool>* cancel) {
           ImportOutcome out;
           PlanOptions o = options;
           o.cancel = cancel;
-          out.job = loadJob(path, profile, o, out.error);
+          out.job = loadJob(path, profile, o, out.error, fill, hatch);
           if (out.job) out.job->options.cancel = nullptr;
           return out;
         },
@@ -76,11 +78,11 @@ void ImportController::openFile(const QString& path) {
 void ImportController::openData(const QByteArray& svg, const QString& name) {
   const MachineProfile profile = doc_.profile();
   const PlanOptions options = importOptions(doc_);
-  start([svg, name, profile, options](const std::atomic<bool>* cancel) {
+  start([svg, name, profile, options, fill = fill_, hatch = hatch_](const std::atomic<bool>* cancel) {
           ImportOutcome out;
           PlanOptions o = options;
           o.cancel = cancel;
-          out.job = loadDrawing(DrawingSource{svg, name}, profile, o, out.error);
+          out.job = loadDrawing(DrawingSource{svg, name, fill, hatch}, profile, o, out.error);
           if (out.job) out.job->options.cancel = nullptr;
           return out;
         },
@@ -151,6 +153,10 @@ void ImportController::onFinished() {
   } else {  // no singularity-free area: in front of the motors, true size
     placement.centerMm = Vec2(0.0, 0.5 * (doc_.profile().geometry.a1 + doc_.profile().geometry.b1));
   }
+  if (QString refusal; !acceptPointBudget(dialogParent_, job.drawing, name, interactive_, refusal)) {
+    emit finished(false, refusal);
+    return;
+  }
   note_ = QString::fromStdString(job.note);
   if (job.isProject) {
     doc_.loadProject(job.drawing, job.source, placement, job.options.mode, job.options.toleranceMm,
@@ -159,6 +165,7 @@ void ImportController::onFinished() {
     doc_.replaceDrawing(job.drawing, name, placement, job.source);
   }
   if (pendingRemember_) addRecent(name);
+  emit warningsReported(name, toQStringList(job.warnings));
   emit finished(true, note_);
 }
 

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "widgets/job_source.hpp"
+#include "core/planning/hatch.hpp"
 #include "widgets/studio_document.hpp"
 
 namespace fivebar::widgets {
@@ -38,6 +39,13 @@ class ImportController : public QObject {
   // false: no dialogs (tests, --screenshot); results only through the signals.
   void setInteractive(bool on) { interactive_ = on; }
   bool busy() const { return watcher_.isRunning(); }
+  // How filled shapes of the next imports are drawn (core/planning/hatch.hpp; default outline).
+  void setFill(FillMode mode, const HatchSettings& hatch) {
+    fill_ = mode;
+    hatch_ = hatch;
+  }
+  FillMode fill() const { return fill_; }
+  const HatchSettings& hatch() const { return hatch_; }
   QStringList recentFiles() const;
   // Puts a file at the top of the recent list (drawings on import, projects on save).
   void addRecent(const QString& path);
@@ -57,6 +65,8 @@ class ImportController : public QObject {
   // ok = the drawing is in the document; message = the error otherwise (names the file), or
   // the placement note when ok.
   void finished(bool ok, const QString& message);
+  // After every successful import: the importer's warnings (widgets/import_warnings_panel.hpp).
+  void warningsReported(const QString& fileName, const QStringList& warnings);
   void recentFilesChanged();
 
  private:
@@ -73,6 +83,8 @@ class ImportController : public QObject {
   QString note_;
   bool pendingRemember_ = false;
   bool interactive_ = true;
+  FillMode fill_ = FillMode::Outline;
+  HatchSettings hatch_;
 };
 
 }  // namespace fivebar::widgets

@@ -14,7 +14,8 @@ bool isProjectPath(const QString& path) {
 }
 
 std::optional<Drawing> importSvgText(const DrawingSource& source, double toleranceMm,
-                                     std::string& error, const std::atomic<bool>* cancel) {
+                                     std::string& error, const std::atomic<bool>* cancel,
+                                     std::vector<std::string>* warnings) {
   // Through a file, so that the import runs in the isolated worker process.
   QTemporaryFile file(QStringLiteral("fivebar-import-XXXXXX.svg"));
   if (!file.open() || file.write(source.svg) != source.svg.size() || !file.flush()) {
@@ -35,6 +36,9 @@ std::optional<Drawing> importSvgText(const DrawingSource& source, double toleran
     error = message.empty() ? source.name.toStdString() + ": cannot be imported" : message;
     return std::nullopt;
   }
+  if (warnings) warnings->insert(warnings->end(), r.warnings.begin(), r.warnings.end());
+  if (source.fill != FillMode::Outline)
+    for (Layer& layer : r.drawing.layers) layer.paths = applyFill(layer.paths, source.fill, source.hatch);
   r.drawing.source = source.name.toStdString();
   r.drawing.flatteningToleranceMm = toleranceMm;
   return std::move(r.drawing);
@@ -84,7 +88,7 @@ std::optional<LoadedJob> loadProject(const QString& path, const std::optional<Ma
   if (profile) p.profile = *profile;
   job.source = {QByteArray::fromStdString(p.drawingSvg), QString::fromStdString(p.drawingName)};
   if (job.source.name.isEmpty()) job.source.name = QFileInfo(path).fileName();
-  auto drawing = importSvgText(job.source, p.flatteningToleranceMm, error);
+  auto drawing = importSvgText(job.source, p.flatteningToleranceMm, error, nullptr, &job.warnings);
   if (!drawing) return std::nullopt;
   applyLayerStates(*drawing, p.layers);
   job.drawing = std::move(*drawing);
@@ -104,7 +108,7 @@ std::optional<LoadedJob> loadDrawing(const DrawingSource& source, const MachineP
   const bool fixed = options.atMm && !options.fit;
   const double scale = fixed ? options.scale * std::max(1.0, options.stretchY) : 1.0;
   auto drawing = importSvgText(job.source, importToleranceMm(options.toleranceMm, scale), error,
-                               options.cancel);
+                               options.cancel, &job.warnings);
   if (!drawing) return std::nullopt;
   job.drawing = std::move(*drawing);
   if (!fixed) {
@@ -121,7 +125,8 @@ std::optional<LoadedJob> loadDrawing(const DrawingSource& source, const MachineP
 }
 
 std::optional<LoadedJob> loadJob(const QString& path, const std::optional<MachineProfile>& profile,
-                                 PlanOptions options, std::string& error) {
+                                 PlanOptions options, std::string& error, FillMode fill,
+                                 const HatchSettings& hatch) {
   if (isProjectPath(path)) return loadProject(path, profile, error);
   if (!profile) {
     error = "no machine profile given";
@@ -129,6 +134,8 @@ std::optional<LoadedJob> loadJob(const QString& path, const std::optional<Machin
   }
   DrawingSource source;
   source.name = QFileInfo(path).fileName();
+  source.fill = fill;
+  source.hatch = hatch;
   if (!readFile(path, source.svg, error)) return std::nullopt;
   return loadDrawing(source, *profile, std::move(options), error);
 }

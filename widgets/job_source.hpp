@@ -13,6 +13,7 @@
 
 #include "core/machine/profile.hpp"
 #include "core/planning/auto_placement.hpp"
+#include "core/planning/hatch.hpp"
 #include "core/planning/planner.hpp"
 #include "core/project/project.hpp"
 
@@ -21,14 +22,21 @@ namespace fivebar::widgets {
 struct DrawingSource {
   QByteArray svg;  // the SVG text
   QString name;    // file name, for messages and the project
+  // How filled shapes are drawn (core/planning/hatch.hpp): applied after every import of this
+  // source, so a finer re-import keeps the same fill.
+  FillMode fill = FillMode::Outline;
+  HatchSettings hatch;
 };
 
 // Imports SVG text flattened within toleranceMm (work mm); the result carries that tolerance
 // (Drawing::flatteningToleranceMm) and `name` as its source. On failure returns nullopt and
 // sets `error` (names the file). Blocking; safe off the UI thread.
+// The importer's warnings (truncated path data, dropped images, unsupported features) are
+// appended to `warnings` when given.
 std::optional<Drawing> importSvgText(const DrawingSource& source, double toleranceMm,
                                      std::string& error,
-                                     const std::atomic<bool>* cancel = nullptr);
+                                     const std::atomic<bool>* cancel = nullptr,
+                                     std::vector<std::string>* warnings = nullptr);
 
 // planJob, and when the drawing was flattened too coarsely for its placement, the drawing
 // imported again within the tolerance the planner names and planned again (`drawing` is then
@@ -44,6 +52,7 @@ struct LoadedJob {
   PlanOptions options;      // mode, tolerance and the fixed placement
   MachineProfile profile;   // the project's, or the one passed in
   std::string note;         // "scaled to 62 % to fit the workspace" or empty
+  std::vector<std::string> warnings;  // the import's warnings ("line 3: <path id=...> ...")
   bool isProject = false;
   std::optional<Project> project;  // the project as read (isProject)
 };
@@ -54,8 +63,10 @@ bool isProjectPath(const QString& path);
 // Loads a drawing or a project. For a drawing, `options` (mode, tolerance, placement options)
 // and `profile` apply and the placement is chosen as in planJob (autoPlacement unless fixed);
 // for a project its own settings apply, and `profile` replaces its machine when given.
+// `fill`/`hatch` apply to a drawing (a project keeps outline fills).
 std::optional<LoadedJob> loadJob(const QString& path, const std::optional<MachineProfile>& profile,
-                                 PlanOptions options, std::string& error);
+                                 PlanOptions options, std::string& error,
+                                 FillMode fill = FillMode::Outline, const HatchSettings& hatch = {});
 
 // The same for SVG text already in memory (the built-in demo).
 std::optional<LoadedJob> loadDrawing(const DrawingSource& source, const MachineProfile& profile,

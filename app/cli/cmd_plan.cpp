@@ -11,6 +11,7 @@
 #include "core/planning/planner.hpp"
 #include "machine_arg.hpp"
 #include "options.hpp"
+#include "plan_import_options.hpp"
 
 #ifdef FIVEBAR_HAVE_IMPORT
 #include <QCoreApplication>
@@ -144,6 +145,7 @@ int plan(const Options& o) {
       if (o.value(option)) throw UsageError(std::string(option) + " does not apply to a project (it has its own)");
   if (project && o.flag("--fit")) throw UsageError("--fit does not apply to a project (it has its own placement)");
   PlanOptions opt = planOptionsFrom(o);
+  PlanImportSettings importSettings = planImportSettingsFrom(o);
 #ifdef FIVEBAR_HAVE_IMPORT
   int argc = 1;
   char name[] = "fivebar";
@@ -156,11 +158,14 @@ int plan(const Options& o) {
   // The same steps as the studio (widgets/job_source.hpp): import, place, plan (importing again
   // more finely when the placement enlarges the drawing).
   std::string error;
-  auto job = widgets::loadJob(QString::fromStdString(file), machine, opt, error);
+  auto job = widgets::loadJob(QString::fromStdString(file), machine, opt, error, importSettings.fill,
+                              importSettings.hatch);
   if (!job) {
     std::cerr << "fivebar plan: " << error << "\n";
     return 1;
   }
+  for (const std::string& w : job->warnings) std::cerr << "fivebar plan: " << file << ": warning: " << w << "\n";
+  if (!withinPointBudget(file, job->drawing, importSettings)) return 1;
   clock.lap("import and placement");
   if (!job->note.empty()) std::cerr << "fivebar plan: " << file << ": " << job->note << "\n";
   if (o.flag("--timings")) std::cerr << "  placement scale " << job->options.scale << "\n";
@@ -209,16 +214,16 @@ int runPlan(const Args& args) {
     for (std::string& a : normalized)
       if (a == "-o") a = "--output";
     const Options o(normalized,
-                    {"--machine", "--mode", "--at", "--scale", "--rotate", "--tolerance",
-                     "--output", "--report"},
-                    {"--fit", "--no-optimise", "--timings", "--help"});
+                    withImportValuedOptions({"--machine", "--mode", "--at", "--scale", "--rotate",
+                                             "--tolerance", "--output", "--report"}),
+                    withImportFlags({"--fit", "--no-optimise", "--timings", "--help"}));
     if (o.flag("--help")) {
-      std::cout << kPlanHelp;
+      std::cout << kPlanHelp << kPlanImportHelp;
       return 0;
     }
     return plan(o);
   } catch (const UsageError& e) {
-    std::cerr << "fivebar plan: " << e.what() << "\n\n" << kPlanHelp;
+    std::cerr << "fivebar plan: " << e.what() << "\n\n" << kPlanHelp << kPlanImportHelp;
     return 2;
   }
 }

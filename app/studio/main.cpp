@@ -17,6 +17,7 @@
 #include "app/studio/headless.hpp"
 #include "app/studio/main_window.hpp"
 #include "app/studio/startup.hpp"
+#include "widgets/fill_options_box.hpp"
 #include "widgets/import_controller.hpp"
 #include "widgets/machine_ui.hpp"
 
@@ -69,7 +70,12 @@ int main(int argc, char** argv) {
       QApplication::translate("main", "Plan the drawing or project as the studio does, write the "
                                       "G-code and exit (no window)."),
       QStringLiteral("OUT.gcode"));
-  parser.addOptions({demo, machine, lang, screenshot, overlay, atTime, exportGcode});
+  const QCommandLineOption fill(
+      QStringLiteral("fill"),
+      QApplication::translate("main", "Filled shapes: outline (default), hatch or none; "
+                                      "with hatch: SPACING_MM and ANGLE_DEG after colons."),
+      QStringLiteral("MODE[:SPACING[:ANGLE]]"));
+  parser.addOptions({demo, machine, lang, screenshot, overlay, atTime, exportGcode, fill});
   parser.addPositionalArgument(QStringLiteral("drawing"),
                                QApplication::translate("main", "SVG drawing or project to open."),
                                QStringLiteral("[FILE.svg|PROJECT.fivebar]"));
@@ -97,6 +103,11 @@ int main(int argc, char** argv) {
   MainWindow window(*profile);
   window.show();
 
+  if (parser.isSet(fill) && !fivebar::widgets::applyFillOption(window, parser.value(fill))) {
+    std::fprintf(stderr, "fivebar-studio: --fill: expected outline, hatch[:SPACING[:ANGLE]] or none, got '%s'\n",
+                 qPrintable(parser.value(fill)));
+    return 2;
+  }
   const QStringList files = parser.positionalArguments();
   if (!files.isEmpty()) {
     window.importer().openFile(files.front());

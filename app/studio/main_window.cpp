@@ -19,6 +19,8 @@
 #include "core/kinematics/kinematics.hpp"
 #include "widgets/canvas_view.hpp"
 #include "widgets/import_controller.hpp"
+#include "widgets/fill_options_box.hpp"
+#include "widgets/import_warnings_panel.hpp"
 #include "widgets/job_layer.hpp"
 #include "widgets/layers_panel.hpp"
 #include "widgets/machine_layer.hpp"
@@ -167,6 +169,15 @@ void MainWindow::createDocks() {
   resizeDocks({mode, placement, preview, sim}, {330, 420, 430, 330}, Qt::Vertical);
   leftTabs_ = layers;
   rightTabs_ = sim;
+  // Fills of the next import (widgets/fill_options_box.hpp) next to the layers; the import
+  // warnings (widgets/import_warnings_panel.hpp) at the bottom, raised when an import brings some.
+  tabifyDockWidget(layers, addDock(new FillOptionsBox(*importer_, *doc_, this), tr("Fills"),
+                                   QStringLiteral("dockFills"), Qt::LeftDockWidgetArea));
+  auto* warnings = new ImportWarningsPanel(this);
+  auto* warningsDock = addDock(warnings, tr("Import warnings"), QStringLiteral("dockImportWarnings"),
+                               Qt::BottomDockWidgetArea);
+  connect(importer_, &ImportController::warningsReported, warnings, &ImportWarningsPanel::showWarnings);
+  connect(warnings, &ImportWarningsPanel::attentionWanted, warningsDock, &QDockWidget::raise);
 }
 
 void MainWindow::createMenus() {

@@ -45,6 +45,18 @@ void finishPolyline(Polyline& line, bool closed, std::vector<Polyline>& out) {
   out.push_back(std::move(line));
 }
 
+void closeFillOutlines(std::vector<Polyline>& lines) {
+  for (Polyline& line : lines) line.closed = line.closed || line.points.size() > 2;
+}
+
+void markFill(std::vector<Polyline>& lines, FillRule rule, bool fillOnly) {
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    lines[i].fill = rule;
+    lines[i].fillStart = lines[i].fillStart || i == 0;
+    lines[i].fillOnly = fillOnly;
+  }
+}
+
 void appendFlattenedPath(const QPainterPath& path, const QTransform& transform,
                          double toleranceMm, std::vector<Polyline>& out) {
   // Points gather in a reused scratch buffer; each polyline then gets one exact allocation.
@@ -117,21 +129,29 @@ void CaptureEngine::record(std::vector<Polyline>&& lines, std::uint32_t rgb) {
 void CaptureEngine::flushPending() {
   if (!hasPending_) return;
   hasPending_ = false;
-  if (settings_.outlineFills) record(std::move(pendingLines_), pendingRgb_);
+  if (settings_.outlineFills) {
+    closeFillOutlines(pendingLines_);
+    markFill(pendingLines_, pendingRule_, true);
+    record(std::move(pendingLines_), pendingRgb_);
+  }
   pendingLines_.clear();
   pendingSignature_ = Signature{};
 }
 
 bool CaptureEngine::admit(const Signature& signature, const Paint& paint,
-                          std::vector<Polyline>&& lines) {
+                          std::vector<Polyline>&& lines, FillRule rule) {
   ++shapes_;
   if (settings_.onShape && (shapes_ & 255) == 0) settings_.onShape(shapes_);
   if (paint.stroke) {
     // The stroke pass of a filled shape replaces its fill pass.
+    bool filled = paint.fill && rule != FillRule::None;
     if (hasPending_ && pendingSignature_ == signature) {
       hasPending_ = false;
       pendingLines_.clear();
+      filled = true;
+      rule = pendingRule_;
     }
+    if (filled) markFill(lines, rule, false);
     flushPending();
     record(std::move(lines), paint.rgb);
     return true;
@@ -142,6 +162,7 @@ bool CaptureEngine::admit(const Signature& signature, const Paint& paint,
   pendingSignature_ = signature;
   pendingLines_ = std::move(lines);
   pendingRgb_ = paint.rgb;
+  pendingRule_ = rule == FillRule::None ? FillRule::NonZero : rule;
   return true;
 }
 
@@ -155,11 +176,14 @@ void CaptureEngine::drawPath(const QPainterPath& path) {
   s.kind = kPath;
   s.path = path;
   s.transform = t;
-  admit(s, paint, std::move(lines));
+  admit(s, paint, std::move(lines),
+        path.fillRule() == Qt::WindingFill ? FillRule::NonZero : FillRule::EvenOdd);
 }
 
 void CaptureEngine::drawPolygon(const QPointF* points, int count, PolygonDrawMode mode) {
-  const Paint paint = currentPaint();
+  Paint paint = currentPaint();
+  // QPainter::drawPolyline strokes only: its brush paints nothing.
+  if (mode == PolylineMode) paint.fill = false;
   if (cancelled() || (!paint.stroke && !paint.fill) || count < 2) return flushPending();
   const QTransform t = painter()->combinedTransform();
   Polyline line;
@@ -172,7 +196,10 @@ void CaptureEngine::drawPolygon(const QPointF* points, int count, PolygonDrawMod
   s.data = points;
   s.count = count;
   s.transform = t;
-  admit(s, paint, std::move(lines));
+  admit(s, paint, std::move(lines),
+        mode == PolylineMode ? FillRule::None
+        : mode == OddEvenMode ? FillRule::EvenOdd
+                              : FillRule::NonZero);
 }
 
 void CaptureEngine::drawLines(const QLineF* lines, int count) {
@@ -197,7 +224,7 @@ void CaptureEngine::drawLines(const QLineF* lines, int count) {
   s.data = lines;
   s.count = count;
   s.transform = t;
-  admit(s, paint, std::move(out));
+  admit(s, paint, std::move(out), FillRule::None);
 }
 
 void CaptureEngine::drawRects(const QRectF* rects, int count) {
@@ -217,7 +244,9 @@ void CaptureEngine::drawRects(const QRectF* rects, int count) {
   s.data = rects;
   s.count = count;
   s.transform = t;
-  admit(s, paint, std::move(out));
+  // Each rectangle is a shape of its own.
+  for (Polyline& line : out) line.fillStart = true;
+  admit(s, paint, std::move(out), FillRule::NonZero);
 }
 
 void CaptureEngine::drawEllipse(const QRectF& rect) {
@@ -236,7 +265,7 @@ void CaptureEngine::drawEllipse(const QRectF& rect) {
   s.kind = kEllipse;
   s.rect = rect;
   s.transform = t;
-  admit(s, paint, std::move(out));
+  admit(s, paint, std::move(out), FillRule::NonZero);
 }
 
 void CaptureEngine::drawTextItem(const QPointF& p, const QTextItem& textItem) {

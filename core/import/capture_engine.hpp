@@ -84,7 +84,9 @@ class CaptureEngine final : public QPaintEngine {
 
   Paint currentPaint() const;
   // Decides what to keep for a draw call; returns false when nothing is to be recorded now.
-  bool admit(const Signature& signature, const Paint& paint, std::vector<Polyline>&& lines);
+  // rule: the fill rule of the area the call paints (None: lines, polylines).
+  bool admit(const Signature& signature, const Paint& paint, std::vector<Polyline>&& lines,
+             FillRule rule);
   void record(std::vector<Polyline>&& lines, std::uint32_t rgb);
   void flushPending();
   bool cancelled() const { return settings_.cancel && settings_.cancel->load(); }
@@ -97,6 +99,7 @@ class CaptureEngine final : public QPaintEngine {
   Signature pendingSignature_;
   std::vector<Polyline> pendingLines_;
   std::uint32_t pendingRgb_ = 0;
+  FillRule pendingRule_ = FillRule::NonZero;
 };
 
 // The paint device handed to QPainter; size in device units (= mm after the render mapping).
@@ -119,6 +122,13 @@ class CaptureDevice final : public QPaintDevice {
 // Drops consecutive duplicate points; marks the polyline closed when it ends where it started;
 // appends it to `out` when at least two points remain (shared with the direct reader).
 void finishPolyline(Polyline& line, bool closed, std::vector<Polyline>& out);
+
+// A filled area is closed whatever its path data says: marks every outline of more than two
+// points closed (the closing edge of a fill-only open path is drawn).
+void closeFillOutlines(std::vector<Polyline>& lines);
+
+// Marks the outlines of one filled shape: rule on every ring, fillStart on the first.
+void markFill(std::vector<Polyline>& lines, FillRule rule, bool fillOnly);
 
 // Flattening helpers, exposed for tests. Points are mapped by `transform` before flattening.
 void appendFlattenedPath(const QPainterPath& path, const QTransform& transform,

@@ -196,12 +196,14 @@ bool DirectReader::drawPath(std::string_view d, const Paint& paint) {
   if (!paint.stroke && !(paint.fill && options_.outlineFills)) return true;
   std::vector<Polyline> lines;
   appendFlattenedPath(path, transform_, options_.toleranceMm, lines);
+  if (!paint.stroke) closeFillOutlines(lines);
+  if (paint.fill) markFill(lines, FillRule::NonZero, !paint.stroke);
   record(std::move(lines), paint.stroke ? paint.strokeRgb : paint.fillRgb);
   return true;
 }
 
 // polygon: like a path (both passes draw the same closed polygon). polyline: the fill pass draws
-// a closed polygon, the stroke pass (brush still set) an open polyline; both are kept.
+// a closed polygon, the stroke pass an open polyline (stroke only); both are kept.
 bool DirectReader::drawPoints(std::string_view points, bool polygon, const Paint& paint) {
   std::vector<double> numbers;
   if (!parseNumberList(points, numbers) || numbers.size() % 2 != 0) return false;
@@ -216,16 +218,19 @@ bool DirectReader::drawPoints(std::string_view points, bool polygon, const Paint
     if (numbers.size() >= 4) finishPolyline(line, closed, lines);
     return lines;
   };
+  auto filled = [&](bool fillOnly) {
+    std::vector<Polyline> lines = polyline(true);
+    if (paint.fill) markFill(lines, FillRule::NonZero, fillOnly);
+    return lines;
+  };
   if (polygon) {
-    if (paint.stroke) record(polyline(true), paint.strokeRgb);
-    else if (paint.fill && options_.outlineFills) record(polyline(true), paint.fillRgb);
+    if (paint.stroke) record(filled(false), paint.strokeRgb);
+    else if (paint.fill && options_.outlineFills) record(filled(true), paint.fillRgb);
     return true;
   }
-  const bool outline = paint.fill && options_.outlineFills;
-  if (outline) record(polyline(true), paint.fillRgb);
-  // The stroke pass keeps the brush: without a stroke it is a second, open, fill outline.
+  if (paint.fill && options_.outlineFills) record(filled(true), paint.fillRgb);
+  // The stroke pass (QPainter::drawPolyline) strokes only.
   if (paint.stroke) record(polyline(false), paint.strokeRgb);
-  else if (outline) record(polyline(false), paint.fillRgb);
   return true;
 }
 

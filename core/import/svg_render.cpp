@@ -19,6 +19,7 @@
 #include "svg_import.hpp"
 #include "svg_sanitize.hpp"
 #include "svg_units.hpp"
+#include "svgz.hpp"
 
 namespace fivebar::svg {
 
@@ -179,6 +180,13 @@ Capture captureBytes(const QByteArray& data, const QString& source, const Import
                      const ProgressFn& progress, bool allowDirect, const RunSink& sink) {
   if (const std::string bad = validateOptions(o); !bad.empty())
     return failed(ImportStatus::InvalidOptions, source, bad);
+  if (isGzip(data)) {  // .svgz
+    QByteArray plain;
+    if (const std::string bad = gunzip(data, kMaxDecompressedBytes, plain); !bad.empty())
+      return failed(ImportStatus::FileError, source, "compressed SVG (gzip): " + bad);
+    if (plain.isEmpty()) return failed(ImportStatus::FileError, source, "the compressed file is empty");
+    return captureBytes(plain, source, o, progress, allowDirect, sink);
+  }
   if (allowDirect) {
     DirectCapture direct;
     const ProgressFn scaled = [&](double f) {

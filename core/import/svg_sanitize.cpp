@@ -2,21 +2,17 @@
 
 #include <QBuffer>
 #include <QSet>
-#include <QXmlStreamReader>
 #include <QRegularExpression>
-#include <QXmlStreamWriter>
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 #include "path_data.hpp"
+#include "sanitizer.hpp"
 
 namespace fivebar::svg {
+namespace detail {
 namespace {
-
-const QString kXlinkNs = QStringLiteral("http://www.w3.org/1999/xlink");
-const QString kInkscapeNs = QStringLiteral("http://www.inkscape.org/namespaces/inkscape");
 
 bool isDropped(QStringView tag) {
   static const QSet<QStringView> dropped{u"image", u"script", u"foreignObject", u"video", u"audio",
@@ -44,45 +40,8 @@ bool isGeometryAttribute(QStringView name) {
   return geometry.contains(name);
 }
 
-class Sanitizer {
- public:
-  Sanitizer(QIODevice& input, double dpi, const std::function<bool(double)>& progress)
-      : input_(input), dpi_(dpi), progress_(progress), reader_(&input), writer_(&result_.svg) {
-    // The output is about as long as the input: reserve once instead of growing 50 MB by steps.
-    result_.svg.reserve(static_cast<qsizetype>(std::min<qint64>(input.size() + 65536, qint64{1} << 30)));
-    writer_.setAutoFormatting(false);
-  }
 
-  SanitizeResult run();
-
- private:
-  void startElement();
-  void endElement();
-  void characters();
-  QXmlStreamAttributes cleanAttributes(QStringView tag);
-  bool checkNumbers(QStringView tag, const QXmlStreamAttributes& attributes);
-  bool writeSplitPath(const QXmlStreamAttributes& attributes);
-  void writeSentinel(int index);
-  void recordRoot(const QXmlStreamAttributes& attributes);
-  void writeNamespaces();
-  void writeNestedSvgAsGroup(const QXmlStreamAttributes& attributes);
-  void warn(const std::string& what);
-  void fail(ImportStatus status, const std::string& message);
-  std::string where() const;
-
-  QIODevice& input_;
-  double dpi_;
-  const std::function<bool(double)>& progress_;
-  QXmlStreamReader reader_;
-  SanitizeResult result_;   // before writer_, which writes into result_.svg
-  QXmlStreamWriter writer_;
-  int depth_ = 0;
-  int skipDepth_ = 0;  // > 0 while inside a dropped element: its depth
-  bool inStyle_ = false;
-  bool sawRoot_ = false;
-  QString svgNamespace_;
-  std::map<std::string, std::pair<int, qint64>> warnings_;  // what -> (count, first line)
-};
+}  // namespace
 
 std::string Sanitizer::where() const {
   return "line " + std::to_string(reader_.lineNumber()) + ": <" +
@@ -92,6 +51,16 @@ std::string Sanitizer::where() const {
 void Sanitizer::warn(const std::string& what) {
   auto [it, inserted] = warnings_.try_emplace(what, 0, reader_.lineNumber());
   ++it->second.first;
+}
+
+// A warning about one element: "line 12: <path id="p3"> what".
+void Sanitizer::warnAt(const QXmlStreamAttributes& attributes, const std::string& what) {
+  constexpr std::size_t kMaxLocated = 50;
+  if (located_.size() >= kMaxLocated) return warn("further element warnings not listed");
+  const QString id = attributes.value(QStringLiteral("id")).toString();
+  located_.push_back("line " + std::to_string(reader_.lineNumber()) + ": <" +
+                     reader_.name().toString().toStdString() +
+                     (id.isEmpty() ? "" : " id=\"" + id.toStdString() + "\"") + "> " + what);
 }
 
 void Sanitizer::fail(ImportStatus status, const std::string& message) {
@@ -138,6 +107,7 @@ SanitizeResult Sanitizer::run() {
   if (result_.status == ImportStatus::Ok && !sawRoot_)
     fail(ImportStatus::InvalidDocument, "no <svg> element found");
   writer_.writeEndDocument();
+  result_.warnings = std::move(located_);
   for (const auto& [what, countLine] : warnings_) {
     result_.warnings.push_back(what + " (" + std::to_string(countLine.first) + "x, first at line " +
                                std::to_string(countLine.second) + ")");
@@ -160,13 +130,12 @@ void Sanitizer::recordRoot(const QXmlStreamAttributes& attributes) {
 bool Sanitizer::checkNumbers(QStringView tag, const QXmlStreamAttributes& attributes) {
   for (const QXmlStreamAttribute& a : attributes) {
     if (!a.namespaceUri().isEmpty() || !isGeometryAttribute(a.name())) continue;
-    if (hasNonFiniteNumber(a.value())) {
+    if (const std::string bad = describeNonFiniteNumber(a.value()); !bad.empty()) {
       const QString id = attributes.value(QStringLiteral("id")).toString();
       fail(ImportStatus::InvalidNumber,
            "line " + std::to_string(reader_.lineNumber()) + ": <" + tag.toString().toStdString() +
                (id.isEmpty() ? "" : " id=\"" + id.toStdString() + "\"") + "> attribute " +
-               a.name().toString().toStdString() +
-               " contains a non-finite number (NaN or infinity)");
+               a.name().toString().toStdString() + " contains " + bad);
       return false;
     }
   }
@@ -234,8 +203,8 @@ bool Sanitizer::writeSplitPath(const QXmlStreamAttributes& attributes) {
   warn("long <path> split into " + std::to_string(parts.size()) +
        " parts to avoid Qt SVG's 32,767-element truncation");
   if (parsed.error)
-    warn("path data error at character " + std::to_string(parsed.errorOffset) +
-         ": rest of the path ignored");
+    warnAt(attributes, "attribute d: invalid path data at character " +
+                           std::to_string(parsed.errorOffset + 1) + ": drawn up to the error");
   for (std::size_t i = 0; i < parts.size(); ++i) {
     if (i > 0) writer_.writeStartElement(reader_.namespaceUri().toString(), QStringLiteral("path"));
     for (const QXmlStreamAttribute& a : attributes) {
@@ -310,9 +279,21 @@ void Sanitizer::startElement() {
     sawRoot_ = true;
     svgNamespace_ = reader_.namespaceUri().toString();
     recordRoot(reader_.attributes());
+    setViewport();
   }
-  const QXmlStreamAttributes attributes = cleanAttributes(tag);
-  if (!checkNumbers(tag, attributes)) return;
+  const QXmlStreamAttributes cleaned = cleanAttributes(tag);
+  if (!checkNumbers(tag, cleaned)) return;
+  // Not drawn, as SVG says: a marker without an id, zero-size shapes.
+  const QXmlStreamAttributes attributes = rewriteAttributes(tag, cleaned);
+  if ((tag == u"marker" && !markers_.count(attributes.value(QStringLiteral("id")).toString())) ||
+      isZeroSizeShape(tag, attributes)) {
+    fontSizes_.pop_back();
+    skipDepth_ = depth_;
+    return;
+  }
+  warnUnsupported(tag, cleaned);
+  extraEnds_.push_back(0);
+  pushMarkerState(tag, attributes);
   // The sentinel colour holds index + 1 in 24 bits; later elements share the last marker.
   constexpr std::size_t kMaxMarkers = 0xFFFFFE;
   if (depth_ == 2 && isRendering(tag) && result_.topLevel.size() < kMaxMarkers) {
@@ -330,8 +311,12 @@ void Sanitizer::startElement() {
   inStyle_ = tag == u"style";
   writeNamespaces();
   if (depth_ > 1 && tag == u"svg") return writeNestedSvgAsGroup(attributes);
+  if (writeSymbolOrUse(tag, attributes) || writeMarkerDefinition(tag, attributes)) return;
   writer_.writeStartElement(reader_.namespaceUri().toString(), tag);
-  if (tag == u"path" && writeSplitPath(attributes)) return;
+  if (tag == u"path") {
+    if (writeSplitPath(attributes)) return;
+    checkPathData(attributes);
+  }
   writer_.writeAttributes(attributes);
 }
 
@@ -341,14 +326,24 @@ void Sanitizer::endElement() {
     --depth_;
     return;
   }
+  if (depth_ == markerContentDepth_) markerContentDepth_ = 0;
   --depth_;
   inStyle_ = false;
-  if (result_.status == ImportStatus::Ok) writer_.writeEndElement();
+  if (result_.status != ImportStatus::Ok) return;
+  writer_.writeEndElement();
+  if (extraEnds_.empty()) return;
+  for (int i = 0; i < extraEnds_.back(); ++i) writer_.writeEndElement();
+  extraEnds_.pop_back();
+  writeMarkerInstances();
+  markerStates_.pop_back();
+  fontSizes_.pop_back();
 }
 
 void Sanitizer::characters() {
   if (skipDepth_ > 0 || depth_ == 0) return;
   QString text = reader_.text().toString();
+  if (inStyle_ && text.contains(QStringLiteral("marker")))
+    warn("markers set in a style sheet are not drawn (marker attributes and style attributes are)");
   if (inStyle_ && text.contains(QStringLiteral("@import"))) {
     static const QRegularExpression import(QStringLiteral("@import[^;]*;?"));
     text.remove(import);
@@ -358,33 +353,17 @@ void Sanitizer::characters() {
   else writer_.writeCharacters(text);
 }
 
-}  // namespace
-
-bool hasNonFiniteNumber(QStringView value) {
-  const qsizetype n = value.size();
-  for (qsizetype i = 0; i < n; ++i) {
-    const char16_t c = value[i].unicode() | 0x20;  // ASCII lower case
-    if (i + 2 < n && (c == u'n' || c == u'i')) {
-      const char16_t c1 = value[i + 1].unicode() | 0x20, c2 = value[i + 2].unicode() | 0x20;
-      if ((c == u'n' && c1 == u'a' && c2 == u'n') || (c == u'i' && c1 == u'n' && c2 == u'f'))
-        return true;
-    }
-    if (c == u'e' && i > 0 && value[i - 1].isDigit()) {
-      qsizetype j = i + 1;
-      bool negative = false;
-      if (j < n && (value[j] == u'+' || value[j] == u'-')) negative = value[j++] == u'-';
-      int exponent = 0;
-      while (j < n && value[j].isDigit() && exponent < 100000)
-        exponent = exponent * 10 + (value[j++].unicode() - u'0');
-      if (!negative && exponent > 300) return true;
-    }
-  }
-  return false;
-}
+}  // namespace detail
 
 SanitizeResult sanitizeSvg(QIODevice& input, double dpi,
                            const std::function<bool(double)>& progress) {
-  Sanitizer sanitizer(input, dpi, progress);
+  std::map<QString, SymbolInfo> symbols;
+  std::map<QString, MarkerInfo> markers;
+  if (const auto* buffer = qobject_cast<const QBuffer*>(&input)) {
+    symbols = scanSymbols(buffer->data());
+    markers = scanMarkers(buffer->data());
+  }
+  detail::Sanitizer sanitizer(input, dpi, progress, std::move(symbols), std::move(markers));
   return sanitizer.run();
 }
 

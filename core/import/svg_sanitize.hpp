@@ -49,6 +49,9 @@ struct SanitizeResult {
 // sanitiser applies to geometry attributes).
 bool hasNonFiniteNumber(QStringView value);
 
+// "a number beyond 1e300 (1e308)" / "a value that is not a number (nan)"; empty when none.
+std::string describeNonFiniteNumber(QStringView value);
+
 // Reads the whole device. dpi: user units per inch (nested <svg> lengths). progress(fraction of
 // input read) returns false to cancel.
 SanitizeResult sanitizeSvg(QIODevice& input, double dpi,

@@ -83,6 +83,25 @@ std::optional<QRectF> parseViewBox(QStringView text) {
   return QRectF(v[0], v[1], v[2], v[3]);
 }
 
+std::string viewBoxProblem(QStringView text) {
+  static const QRegularExpression separators(QStringLiteral("[\\s,]+"));
+  const QStringList parts = text.toString().trimmed().split(separators, Qt::SkipEmptyParts);
+  if (parts.size() != 4)
+    return "not four numbers (" + std::to_string(parts.size()) + " values)";
+  double v[4];
+  for (int i = 0; i < 4; ++i) {
+    bool ok = false;
+    v[i] = parts[i].toDouble(&ok);
+    if (!ok && !std::isfinite(v[i])) return "a number beyond 1e300 (" + parts[i].toStdString() + ")";
+    if (!ok) return "\"" + parts[i].toStdString() + "\" is not a number";
+    if (!std::isfinite(v[i])) return "a number beyond 1e300 (" + parts[i].toStdString() + ")";
+    if (std::abs(v[i]) > kMaxViewBoxNumber)
+      return "a number too large (" + parts[i].toStdString() + "; at most 1e12)";
+  }
+  if (v[2] <= 0.0 || v[3] <= 0.0) return "width and height must be positive";
+  return {};
+}
+
 AspectRatio parsePreserveAspectRatio(QStringView text) {
   AspectRatio ratio;
   const QStringList parts = text.toString().simplified().split(u' ', Qt::SkipEmptyParts);
@@ -149,10 +168,10 @@ std::string computePage(const RootAttributes& root, double dpi, PageSetup& page)
   if (!error.empty()) return error;
   std::optional<QRectF> vb;
   if (root.hasViewBox) {
+    const std::string problem = viewBoxProblem(root.viewBox);
+    if (!problem.empty())
+      return "root <svg> viewBox=\"" + root.viewBox.toStdString() + "\": " + problem;
     vb = parseViewBox(root.viewBox);
-    if (!vb || vb->width() <= 0.0 || vb->height() <= 0.0)
-      return "root <svg> viewBox=\"" + root.viewBox.toStdString() +
-             "\" is not four numbers with a positive width and height";
   }
   const double mmPerUser = 25.4 / dpi;
   if (vb) {

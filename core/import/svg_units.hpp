@@ -29,6 +29,12 @@ std::optional<double> lengthToMm(const Length& length, double dpi);
 // "minx miny width height" (spaces and/or commas); nullopt unless 4 finite numbers.
 std::optional<QRectF> parseViewBox(QStringView text);
 
+inline constexpr double kMaxViewBoxNumber = 1e12;  // user units; beyond: refused as too large
+
+// What is wrong with a root viewBox text ("not four numbers (3 values)", "a number too large
+// (9e80; at most 1e12)", ...); empty when it is usable.
+std::string viewBoxProblem(QStringView text);
+
 enum class Align { None, Min, Mid, Max };
 
 struct AspectRatio {

@@ -59,7 +59,9 @@ class Writer {
 void writePolylines(const std::vector<Polyline>& lines, Writer& w) {
   w.raw(static_cast<std::uint32_t>(lines.size()));
   for (const Polyline& line : lines) {
-    w.raw(static_cast<std::uint8_t>(line.closed ? 1 : 0));
+    // Flags: bit 0 closed, bits 1-2 fill rule, bit 3 fill start, bit 4 fill only.
+    w.raw(static_cast<std::uint8_t>((line.closed ? 1 : 0) | static_cast<int>(line.fill) << 1 |
+                                    (line.fillStart ? 8 : 0) | (line.fillOnly ? 16 : 0)));
     w.raw(static_cast<std::uint32_t>(line.points.size()));
     static_assert(sizeof(Vec2) == 2 * sizeof(double), "points are sent as x, y doubles");
     w.bytes(line.points.data(), line.points.size() * sizeof(Vec2));
@@ -137,7 +139,11 @@ bool readPolylines(Reader& r, std::vector<Polyline>& out) {
     std::uint32_t n = 0;
     if (!r.raw(closed) || !r.count(n)) return false;
     Polyline& line = out.emplace_back();
-    line.closed = closed != 0;
+    if ((closed >> 1 & 3) > 2 || closed > 31) return false;
+    line.closed = (closed & 1) != 0;
+    line.fill = static_cast<FillRule>(closed >> 1 & 3);
+    line.fillStart = (closed & 8) != 0;
+    line.fillOnly = (closed & 16) != 0;
     if (!r.points(n, line.points)) return false;
   }
   return true;

@@ -4,6 +4,7 @@
 #include <QCoreApplication>
 #include <QDeadlineTimer>
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
 #include <QProcess>
 
@@ -20,10 +21,20 @@
 
 #include "import_pipeline.hpp"
 #include "svg_import.hpp"
+#include "svgz.hpp"
 #include "wire_format.hpp"
 
 namespace fivebar::svg {
 namespace {
+
+// A .svgz file: the size its gzip trailer announces (bounded), so that the time limit follows
+// the document's real size; 0 for other files.
+qint64 svgzAnnouncedSize(const QString& path) {
+  QFile file(path);
+  if (!file.open(QIODevice::ReadOnly) || !isGzip(file.read(2))) return 0;
+  file.seek(std::max<qint64>(0, file.size() - 4));
+  return std::min<qint64>(gzipAnnouncedSize(file.read(4)), kMaxDecompressedBytes);
+}
 
 const char kWorkerName[] = "fivebar-svg-worker";
 constexpr int kPipeBytes = 1 << 20;  // result pipe capacity asked for (Linux default max)
@@ -248,7 +259,8 @@ ImportResult importSvgFile(const QString& path, const ImportOptions& options,
   process.start(QIODevice::ReadOnly);
   const bool started = process.waitForStarted(10000);
   ::close(writeFd);  // the worker holds the only write end: its exit ends the data
-  const double megabytes = static_cast<double>(info.size()) / (1024.0 * 1024.0);
+  const double megabytes = static_cast<double>(std::max<qint64>(info.size(), svgzAnnouncedSize(path))) /
+                          (1024.0 * 1024.0);
   const double limitS = options.timeoutS + options.timeoutPerMegabyteS * megabytes;
   const QDeadlineTimer deadline(static_cast<qint64>(limitS * 1000.0));
   ResultPipe pipe(readFd, process, options, deadline, progress);

@@ -10,9 +10,17 @@
 
 namespace fivebar {
 
+// How the area a polyline bounds is filled in the source drawing (core/planning/hatch.hpp).
+enum class FillRule : std::uint8_t { None = 0, NonZero, EvenOdd };
+
 struct Polyline {
   std::vector<Vec2> points;  // mm; consecutive points are joined by straight segments
   bool closed = false;       // true when the last point joins back to the first
+  // Fill: a filled shape is one polyline with fillStart set followed by its other rings (holes,
+  // further subpaths), all with the shape's fill rule; each ring is taken as closed.
+  FillRule fill = FillRule::None;
+  bool fillStart = false;  // first ring of a filled shape
+  bool fillOnly = false;   // the outline of a shape that is filled but not stroked
 };
 
 // Tool settings a layer may override; unset values fall back to the machine profile.

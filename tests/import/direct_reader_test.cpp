@@ -39,6 +39,8 @@ std::string difference(const ImportResult& a, const ImportResult& b) {
              std::to_string(lb.paths.size()) + " paths";
     for (std::size_t j = 0; j < la.paths.size(); ++j) {
       const Polyline &pa = la.paths[j], &pb = lb.paths[j];
+      if (pa.fill != pb.fill || pa.fillStart != pb.fillStart || pa.fillOnly != pb.fillOnly)
+        return "path " + std::to_string(j) + ": fill flags differ";
       if (pa.closed != pb.closed || pa.points.size() != pb.points.size())
         return "path " + std::to_string(j) + ": " + std::to_string(pa.points.size()) + " vs " +
                std::to_string(pb.points.size()) + " points";

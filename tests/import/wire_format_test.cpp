@@ -22,6 +22,9 @@ ImportResult sample() {
   layer.rgb = 0x123456;
   layer.paths.push_back(Polyline{{Vec2(0.1, 0.2), Vec2(1e-300, -5e5)}, false});
   layer.paths.push_back(Polyline{{Vec2(1, 1), Vec2(2, 1), Vec2(2, 2)}, true});
+  layer.paths.back().fill = FillRule::EvenOdd;
+  layer.paths.back().fillStart = true;
+  layer.paths.back().fillOnly = true;
   r.drawing.layers.push_back(layer);
   return r;
 }
@@ -41,6 +44,10 @@ TEST(WireFormat, RoundTripIsExact) {
   ASSERT_EQ(l.paths.size(), 2u);
   EXPECT_EQ(l.paths[0].points, in.drawing.layers[0].paths[0].points);
   EXPECT_TRUE(l.paths[1].closed);
+  EXPECT_EQ(l.paths[1].fill, FillRule::EvenOdd);
+  EXPECT_TRUE(l.paths[1].fillStart && l.paths[1].fillOnly);
+  EXPECT_EQ(l.paths[0].fill, FillRule::None);
+  EXPECT_FALSE(l.paths[0].fillStart || l.paths[0].fillOnly);
 }
 
 TEST(WireFormat, TruncatedOrForeignBytesAreRejected) {

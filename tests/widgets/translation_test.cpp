@@ -18,7 +18,9 @@
 #include "app/studio/main_window.hpp"
 #include "core/machine/profile.hpp"
 #include "widgets/console_panel.hpp"
+#include "widgets/fill_options_box.hpp"
 #include "widgets/import_controller.hpp"
+#include "widgets/import_warnings_panel.hpp"
 #include "widgets/jog_controller.hpp"
 #include "widgets/jog_goto_tool.hpp"
 #include "widgets/jog_panel.hpp"
@@ -58,10 +60,11 @@ std::set<QString> runtimeContexts() {
         &PreviewPanel::staticMetaObject, &SpeedLegend::staticMetaObject,
         &ProfileEditor::staticMetaObject, &RunController::staticMetaObject,
         &RunPanel::staticMetaObject, &SimulationPanel::staticMetaObject,
-        &StudioDocument::staticMetaObject})
+        &StudioDocument::staticMetaObject, &FillOptionsBox::staticMetaObject,
+        &ImportWarningsPanel::staticMetaObject})
     names.insert(QString::fromLatin1(m->className()));
   for (const char* c : {"QObject", "main", "DocumentCommands", "JobPipeline", "MapPainter",
-                        "WorkspaceLegend"})
+                        "WorkspaceLegend", "ImportWarningsPanel"})
     names.insert(QString::fromLatin1(c));
   return names;
 }

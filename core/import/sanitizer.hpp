@@ -1,0 +1,88 @@
+// The sanitiser's state machine (svg_sanitize.cpp: the streaming rewrite; svg_sanitize_rewrite.cpp:
+// the rewrites that make Qt SVG draw what a browser draws). Private to core/import.
+#pragma once
+
+#include <QXmlStreamReader>
+#include <QXmlStreamWriter>
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "svg_markers.hpp"
+#include "svg_rewrite.hpp"
+#include "svg_sanitize.hpp"
+
+namespace fivebar::svg::detail {
+
+inline const QString kXlinkNs = QStringLiteral("http://www.w3.org/1999/xlink");
+inline const QString kInkscapeNs = QStringLiteral("http://www.inkscape.org/namespaces/inkscape");
+
+class Sanitizer {
+ public:
+  Sanitizer(QIODevice& input, double dpi, const std::function<bool(double)>& progress,
+            std::map<QString, SymbolInfo> symbols, std::map<QString, MarkerInfo> markers)
+      : input_(input), dpi_(dpi), progress_(progress), reader_(&input), writer_(&result_.svg),
+        symbols_(std::move(symbols)), markers_(std::move(markers)) {
+    // The output is about as long as the input: reserve once instead of growing 50 MB by steps.
+    result_.svg.reserve(static_cast<qsizetype>(std::min<qint64>(input.size() + 65536, qint64{1} << 30)));
+    writer_.setAutoFormatting(false);
+  }
+
+  SanitizeResult run();
+
+ private:
+  void startElement();
+  void endElement();
+  void characters();
+  QXmlStreamAttributes cleanAttributes(QStringView tag);
+  bool checkNumbers(QStringView tag, const QXmlStreamAttributes& attributes);
+  bool writeSplitPath(const QXmlStreamAttributes& attributes);
+  void writeSentinel(int index);
+  void recordRoot(const QXmlStreamAttributes& attributes);
+  void writeNamespaces();
+  void writeNestedSvgAsGroup(const QXmlStreamAttributes& attributes);
+  QXmlStreamAttributes rewriteAttributes(QStringView tag, const QXmlStreamAttributes& attributes);
+  void warnUnsupported(QStringView tag, const QXmlStreamAttributes& attributes);
+  void checkPathData(const QXmlStreamAttributes& attributes);
+  bool writeSymbolOrUse(QStringView tag, const QXmlStreamAttributes& attributes);
+  void setViewport();
+  void pushMarkerState(QStringView tag, const QXmlStreamAttributes& attributes);
+  bool writeMarkerDefinition(QStringView tag, const QXmlStreamAttributes& attributes);
+  void writeMarkerInstances();
+  void warn(const std::string& what);
+  void warnAt(const QXmlStreamAttributes& attributes, const std::string& what);
+  void fail(ImportStatus status, const std::string& message);
+  std::string where() const;
+
+  QIODevice& input_;
+  double dpi_;
+  const std::function<bool(double)>& progress_;
+  QXmlStreamReader reader_;
+  SanitizeResult result_;   // before writer_, which writes into result_.svg
+  QXmlStreamWriter writer_;
+  int depth_ = 0;
+  int skipDepth_ = 0;  // > 0 while inside a dropped element: its depth
+  bool inStyle_ = false;
+  bool sawRoot_ = false;
+  QString svgNamespace_;
+  std::map<std::string, std::pair<int, qint64>> warnings_;  // what -> (count, first line)
+  std::vector<std::string> located_;  // warnings naming their own line, in document order
+  std::map<QString, SymbolInfo> symbols_;  // from scanSymbols, for <use> of a <symbol>
+  UserViewport viewport_;
+  std::vector<double> fontSizes_;  // user units, one per open written element
+  std::vector<int> extraEnds_;     // end tags to add when the element closes (symbol, use)
+  std::map<QString, MarkerInfo> markers_;  // from scanMarkers
+  struct MarkerState {
+    MarkerRefs refs;            // inherited marker properties
+    double strokeWidth = 1.0;   // user units, inherited
+    QString transform;          // the marked element's transform
+    std::vector<std::pair<QString, QString>> instances;  // marker id, instance transform
+  };
+  std::vector<MarkerState> markerStates_;  // one per open written element
+  int markerContentDepth_ = 0;             // > 0 inside a <marker>: its depth (no markers drawn)
+  std::size_t markerInstances_ = 0;        // written so far (bounded)
+};
+
+}  // namespace fivebar::svg::detail

@@ -1,0 +1,59 @@
+// Markers (marker-start/mid/end) drawn as SVG 1.1 specifies (painting.html#Markers): the
+// sanitiser writes each <marker> as a <g> inside <defs> and appends, after a path, line, polyline
+// or polygon that references markers, a <g transform="the element's transform"> holding one
+// <use transform="..."> of the marker content per vertex (svg_sanitize_rewrite.cpp). This file
+// holds the geometry: the vertices with their orientation, and each instance's transform.
+#pragma once
+
+#include <QByteArray>
+#include <QString>
+#include <QStringView>
+#include <QXmlStreamAttributes>
+
+#include <map>
+#include <optional>
+#include <vector>
+
+namespace fivebar::svg {
+
+struct MarkerInfo {
+  QString viewBox, preserveAspectRatio, markerWidth, markerHeight, refX, refY, orient, markerUnits;
+  bool clips = false;  // overflow hidden/scroll given explicitly (clipping is not applied)
+};
+
+// id -> the marker's attributes; one quick pass, only when the text holds "marker".
+std::map<QString, MarkerInfo> scanMarkers(const QByteArray& document);
+
+// A vertex of a marked shape, in the shape's user space. angleRad: the direction for
+// orient="auto" (the bisector at inner vertices), radians, counter-clockwise in SVG's y-down frame
+// (i.e. atan2(dy, dx)).
+struct MarkerVertex {
+  double x = 0.0, y = 0.0, angleRad = 0.0;
+};
+
+// The vertices of a path, line, polyline or polygon (empty for other tags or bad geometry): the
+// path's moveto points and segment end points (closepath included), in order.
+std::vector<MarkerVertex> markerVertices(QStringView tag, const QXmlStreamAttributes& attributes);
+
+// The marker references of one element, "url(#id)" reduced to id; "none" -> empty.
+struct MarkerRefs {
+  QString start, mid, end;
+  bool any() const { return !start.isEmpty() || !mid.isEmpty() || !end.isEmpty(); }
+};
+
+// Applies the element's marker-start/mid/end (attributes, and marker/marker-* in its style
+// attribute) over the inherited references.
+MarkerRefs markerRefs(const QXmlStreamAttributes& attributes, const MarkerRefs& inherited);
+
+// The element's stroke-width in user units (attribute or style), else the inherited one.
+double strokeWidthUser(const QXmlStreamAttributes& attributes, double inherited);
+
+enum class MarkerSlot { Start, Mid, End };
+
+// The transform of one marker instance: translate(vertex) rotate(orient) scale(stroke width if
+// markerUnits="strokeWidth") scale(viewBox -> markerWidth x markerHeight) translate(-refX, -refY).
+// nullopt when the marker is not drawn (markerWidth/markerHeight <= 0, empty viewBox).
+std::optional<QString> markerInstanceTransform(const MarkerInfo& marker, const MarkerVertex& vertex,
+                                               MarkerSlot slot, double strokeWidth);
+
+}  // namespace fivebar::svg

@@ -1,0 +1,280 @@
+// The Sanitizer's rewrites for browser fidelity (symbols, lengths, transform-origin, path data
+// errors, unsupported features) and the number checks; see svg_rewrite.hpp.
+#include <QRectF>
+
+#include "path_data.hpp"
+#include "sanitizer.hpp"
+
+namespace fivebar::svg {
+namespace detail {
+
+void Sanitizer::setViewport() {
+  const RootAttributes& root = result_.root;
+  if (const std::optional<QRectF> box = parseViewBox(root.viewBox); box && box->width() > 0.0) {
+    viewport_ = {box->width(), box->height()};
+    return;
+  }
+  auto side = [&](const QString& text) {
+    const std::optional<Length> length = parseLength(text);
+    if (!length || length->unit == LengthUnit::Percent) return 0.0;
+    return lengthToMm(*length, dpi_).value_or(0.0) * dpi_ / 25.4;
+  };
+  viewport_ = {side(root.width), side(root.height)};
+}
+
+// Lengths Qt 6.4 misreads, made user units; transform-origin folded into transform.
+QXmlStreamAttributes Sanitizer::rewriteAttributes(QStringView tag,
+                                                  const QXmlStreamAttributes& attributes) {
+  const double parentFont = fontSizes_.empty() ? 16.0 : fontSizes_.back();
+  double font = parentFont;
+  if (const QStringView f = attributes.value(QStringLiteral("font-size")); !f.isEmpty())
+    font = fontSizeUser(f, parentFont, dpi_).value_or(parentFont);
+  fontSizes_.push_back(font);
+  const bool text = tag == u"text" || tag == u"tspan";
+  // Most elements need nothing: find out without copying a value.
+  bool needed = tag == u"ellipse";
+  for (const QXmlStreamAttribute& a : attributes) {
+    if (needed) break;
+    if (!a.namespaceUri().isEmpty()) continue;
+    const QStringView n = a.name(), v = a.value();
+    needed = n == u"transform-origin" || v.contains(u"vw") || v.contains(u"vh") ||
+             v.contains(u"vmin") || v.contains(u"vmax") ||
+             (text && (n == u"x" || n == u"dx" || n == u"y" || n == u"dy") && !v.isEmpty() &&
+              !v.back().isDigit() && v.back() != u'.');
+  }
+  if (!needed) return attributes;
+  QXmlStreamAttributes out;
+  out.reserve(attributes.size());
+  QString origin;
+  for (const QXmlStreamAttribute& a : attributes) {
+    if (!a.namespaceUri().isEmpty()) {
+      out.append(a);
+      continue;
+    }
+    const QStringView n = a.name();
+    QString value = a.value().toString();
+    if (n == u"transform-origin") {
+      origin = value;
+      continue;
+    }
+    if (const std::optional<QString> v = resolveViewportUnits(value, viewport_)) value = *v;
+    if (text && (n == u"x" || n == u"dx" || n == u"y" || n == u"dy")) {
+      const double reference = (n == u"x" || n == u"dx") ? viewport_.width : viewport_.height;
+      if (const std::optional<QString> v = resolveTextLengths(value, reference, font, dpi_)) value = *v;
+    }
+    out.append(n.toString(), value);
+  }
+  if (tag == u"ellipse") {  // SVG 2: a missing radius is "auto", the other one (Qt 6.4: 0)
+    const bool rx = out.hasAttribute(QStringLiteral("rx")), ry = out.hasAttribute(QStringLiteral("ry"));
+    if (rx && !ry) out.append(QStringLiteral("ry"), out.value(QStringLiteral("rx")).toString());
+    if (ry && !rx) out.append(QStringLiteral("rx"), out.value(QStringLiteral("ry")).toString());
+  }
+  if (!origin.isEmpty()) {
+    const QString transform = out.value(QStringLiteral("transform")).toString();
+    const std::optional<QString> folded = transformWithOrigin(transform, origin, viewport_, dpi_);
+    if (!folded) {
+      warnAt(attributes, "transform-origin=\"" + origin.toStdString() + "\" not understood: ignored");
+    } else if (!transform.isEmpty()) {
+      QXmlStreamAttributes replaced;
+      for (const QXmlStreamAttribute& a : out)
+        replaced.append(a.name() == u"transform" && a.namespaceUri().isEmpty()
+                            ? QXmlStreamAttribute(QStringLiteral("transform"), *folded)
+                            : a);
+      out = replaced;
+    }
+  }
+  return out;
+}
+
+// Features not drawn: each is named once per file with its first line.
+void Sanitizer::warnUnsupported(QStringView tag, const QXmlStreamAttributes& attributes) {
+  bool clip = false, mask = false, rotate = false;
+  for (const QXmlStreamAttribute& a : attributes) {
+    if (!a.namespaceUri().isEmpty()) continue;
+    const QStringView n = a.name();
+    if (n == u"style") {
+      const QStringView style = a.value();
+      clip = clip || style.contains(u"clip-path");
+      mask = mask || style.contains(u"mask");
+      if (style.contains(u"transform-origin")) warn("transform-origin in a style is not applied");
+    }
+    clip = clip || n == u"clip-path";
+    mask = mask || n == u"mask";
+    rotate = rotate || n == u"rotate";
+  }
+  if (clip) warn("clip-path not applied: clipped shapes are drawn whole");
+  if (mask) warn("mask not applied: masked shapes are drawn whole");
+  if (rotate && (tag == u"text" || tag == u"tspan"))
+    warn("per-glyph rotate on <text> is not applied: glyphs are drawn upright");
+  if (tag == u"textPath") warn("text on a path (<textPath>) is not drawn");
+  if (tag == u"pattern") warn("pattern fills are drawn as outlines, without the pattern");
+}
+
+// Qt SVG draws a path up to the first error in its data, silently: say so.
+void Sanitizer::checkPathData(const QXmlStreamAttributes& attributes) {
+  const QStringView d = attributes.value(QStringLiteral("d"));
+  if (d.size() > kPathScanChars) return;  // writeSplitPath parses and reports it
+  const ParsedPath parsed = parsePathData(d);
+  if (!parsed.error) return;
+  const QString near = d.mid(parsed.errorOffset, 16).toString().simplified();
+  warnAt(attributes, "attribute d: invalid path data at character " +
+                         std::to_string(parsed.errorOffset + 1) + " (\"" + near.toStdString() +
+                         "\"): drawn up to the error");
+}
+
+// <symbol> -> <defs><g>: never drawn by itself. <use> of a symbol -> <g transform><use>.
+bool Sanitizer::writeSymbolOrUse(QStringView tag, const QXmlStreamAttributes& attributes) {
+  const QString ns = reader_.namespaceUri().toString();
+  if (tag == u"symbol") {
+    writer_.writeStartElement(ns, QStringLiteral("defs"));
+    writer_.writeStartElement(ns, QStringLiteral("g"));
+    for (const QXmlStreamAttribute& a : attributes) {
+      const QStringView n = a.name();
+      if (a.namespaceUri().isEmpty() &&
+          (n == u"viewBox" || n == u"preserveAspectRatio" || n == u"x" || n == u"y" ||
+           n == u"width" || n == u"height" || n == u"refX" || n == u"refY"))
+        continue;
+      writer_.writeAttribute(a);
+    }
+    extraEnds_.back() = 1;
+    return true;
+  }
+  if (tag != u"use") return false;
+  const QStringView href = attributes.value(kXlinkNs, QStringLiteral("href"));
+  const auto symbol = href.startsWith(u'#') ? symbols_.find(href.mid(1).toString()) : symbols_.end();
+  if (symbol == symbols_.end()) return false;
+  writer_.writeStartElement(ns, QStringLiteral("g"));
+  for (const QXmlStreamAttribute& a : attributes) {
+    const QStringView n = a.name();
+    if (a.namespaceUri().isEmpty() && (n == u"x" || n == u"y" || n == u"width" ||
+                                       n == u"height" || n == u"transform"))
+      continue;
+    if (n == u"href") continue;
+    writer_.writeAttribute(a);
+  }
+  writer_.writeAttribute(QStringLiteral("transform"),
+                         useSymbolTransform(attributes, symbol->second, viewport_, dpi_));
+  writer_.writeStartElement(ns, QStringLiteral("use"));
+  writer_.writeAttribute(kXlinkNs, QStringLiteral("href"), href.toString());
+  extraEnds_.back() = 1;
+  return true;
+}
+
+// Marker properties are inherited: each written element gets its state; a path, line, polyline
+// or polygon with markers gets its instances (written after it by writeMarkerInstances).
+void Sanitizer::pushMarkerState(QStringView tag, const QXmlStreamAttributes& attributes) {
+  MarkerState state;
+  if (!markerStates_.empty()) {
+    state.refs = markerStates_.back().refs;
+    state.strokeWidth = markerStates_.back().strokeWidth;
+  }
+  const MarkerRefs inherited = state.refs;
+  state.refs = markerRefs(attributes, inherited);
+  state.strokeWidth = strokeWidthUser(attributes, state.strokeWidth);
+  if (markerContentDepth_ == 0 && state.refs.any()) {
+    if (tag == u"path" || tag == u"line" || tag == u"polyline" || tag == u"polygon") {
+      state.transform = attributes.value(QStringLiteral("transform")).toString();
+      const std::vector<MarkerVertex> vertices = markerVertices(tag, attributes);
+      constexpr std::size_t kMaxMarkerInstances = 100000;
+      auto place = [&](const QString& id, std::size_t i, MarkerSlot slot) {
+        if (id.isEmpty()) return;
+        const auto marker = markers_.find(id);
+        if (marker == markers_.end())
+          return warnAt(attributes, "marker #" + id.toStdString() + " not found: not drawn");
+        if (markerInstances_ >= kMaxMarkerInstances)
+          return warn("more than 100000 marker instances: the rest are not drawn");
+        if (marker->second.clips)
+          warn("marker overflow clipping not applied: marker content is drawn whole");
+        if (const std::optional<QString> t =
+                markerInstanceTransform(marker->second, vertices[i], slot, state.strokeWidth)) {
+          state.instances.emplace_back(id, *t);
+          ++markerInstances_;
+        }
+      };
+      if (!vertices.empty()) {
+        place(state.refs.start, 0, MarkerSlot::Start);
+        for (std::size_t i = 1; i + 1 < vertices.size(); ++i) place(state.refs.mid, i, MarkerSlot::Mid);
+        place(state.refs.end, vertices.size() - 1, MarkerSlot::End);
+      }
+    } else if ((tag == u"rect" || tag == u"circle" || tag == u"ellipse") &&
+               (state.refs.start != inherited.start || state.refs.mid != inherited.mid ||
+                state.refs.end != inherited.end)) {  // SVG draws markers on the four above only
+      warn("markers on <" + tag.toString().toStdString() +
+           "> are not drawn (drawn on path, line, polyline and polygon)");
+    }
+  }
+  markerStates_.push_back(std::move(state));
+}
+
+// <marker id> -> <defs><g id>: its content, never drawn by itself, instanced by <use>.
+bool Sanitizer::writeMarkerDefinition(QStringView tag, const QXmlStreamAttributes& attributes) {
+  if (tag != u"marker") return false;
+  const QString ns = reader_.namespaceUri().toString();
+  writer_.writeStartElement(ns, QStringLiteral("defs"));
+  writer_.writeStartElement(ns, QStringLiteral("g"));
+  writer_.writeAttribute(QStringLiteral("id"), attributes.value(QStringLiteral("id")).toString());
+  extraEnds_.back() = 1;
+  if (markerContentDepth_ == 0) markerContentDepth_ = depth_;
+  return true;
+}
+
+void Sanitizer::writeMarkerInstances() {
+  const MarkerState& state = markerStates_.back();
+  if (state.instances.empty()) return;
+  writer_.writeStartElement(svgNamespace_, QStringLiteral("g"));
+  if (!state.transform.isEmpty()) writer_.writeAttribute(QStringLiteral("transform"), state.transform);
+  for (const auto& [id, transform] : state.instances) {
+    writer_.writeStartElement(svgNamespace_, QStringLiteral("use"));
+    writer_.writeAttribute(kXlinkNs, QStringLiteral("href"), u'#' + id);
+    writer_.writeAttribute(QStringLiteral("transform"), transform);
+    writer_.writeEndElement();
+  }
+  writer_.writeEndElement();
+}
+
+}  // namespace detail
+
+qsizetype findNonFiniteNumber(QStringView value) {
+  const qsizetype n = value.size();
+  for (qsizetype i = 0; i < n; ++i) {
+    const char16_t c = value[i].unicode() | 0x20;  // ASCII lower case
+    if (i + 2 < n && (c == u'n' || c == u'i')) {
+      const char16_t c1 = value[i + 1].unicode() | 0x20, c2 = value[i + 2].unicode() | 0x20;
+      if ((c == u'n' && c1 == u'a' && c2 == u'n') || (c == u'i' && c1 == u'n' && c2 == u'f'))
+        return i;
+    }
+    if (c == u'e' && i > 0 && value[i - 1].isDigit()) {
+      qsizetype j = i + 1;
+      bool negative = false;
+      if (j < n && (value[j] == u'+' || value[j] == u'-')) negative = value[j++] == u'-';
+      int exponent = 0;
+      while (j < n && value[j].isDigit() && exponent < 100000)
+        exponent = exponent * 10 + (value[j++].unicode() - u'0');
+      if (!negative && exponent > 300) {
+        qsizetype start = i - 1;
+        while (start > 0 && (value[start - 1].isDigit() || value[start - 1] == u'.')) --start;
+        if (start > 0 && (value[start - 1] == u'-' || value[start - 1] == u'+')) --start;
+        return start;
+      }
+    }
+  }
+  return -1;
+}
+
+bool hasNonFiniteNumber(QStringView value) { return findNonFiniteNumber(value) >= 0; }
+
+std::string describeNonFiniteNumber(QStringView value) {
+  const qsizetype at = findNonFiniteNumber(value);
+  if (at < 0) return {};
+  qsizetype end = at;
+  while (end < value.size() && end - at < 24 && !value[end].isSpace() && value[end] != u',' &&
+         value[end] != u')' && value[end] != u';' && (end == at || value[end] != u'-'))
+    ++end;
+  const std::string token = value.mid(at, end - at).toString().toStdString();
+  const char16_t c = value[at].unicode() | 0x20;
+  if (c == u'n' || c == u'i') return "a value that is not a number (" + token + ")";
+  return "a number beyond 1e300 (" + token + ")";
+}
+
+
+}  // namespace fivebar::svg

@@ -1,0 +1,45 @@
+// How filled shapes are drawn when a drawing is imported: outline (default), hatch (spacing,
+// angle, crosshatch, outline kept or not) or none; "Apply" imports the current file again with
+// the new choice (for this session). The geometry is core/planning/hatch.hpp.
+#pragma once
+
+#include <QGroupBox>
+
+#include "core/planning/hatch.hpp"
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QPushButton;
+
+namespace fivebar::widgets {
+
+class ImportController;
+class StudioDocument;
+
+class FillOptionsBox : public QGroupBox {
+  Q_OBJECT
+ public:
+  FillOptionsBox(ImportController& importer, StudioDocument& doc, QWidget* parent = nullptr);
+
+  // Shows and applies a choice (e.g. from the command line).
+  void setChoice(FillMode mode, const HatchSettings& hatch);
+
+ private:
+  void push();         // widgets -> importer and QSettings
+  void updateEnabled();
+
+  ImportController& importer_;
+  StudioDocument& doc_;
+  QComboBox* mode_ = nullptr;
+  QDoubleSpinBox* spacing_ = nullptr;
+  QDoubleSpinBox* angle_ = nullptr;
+  QCheckBox* cross_ = nullptr;
+  QCheckBox* outline_ = nullptr;
+  QPushButton* apply_ = nullptr;
+};
+
+// "--fill MODE[:SPACING_MM[:ANGLE_DEG]]" for the window's FillOptionsBox; false when malformed.
+bool applyFillOption(QWidget& window, const QString& text);
+
+}  // namespace fivebar::widgets

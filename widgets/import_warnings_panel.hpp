@@ -1,0 +1,53 @@
+// The warnings of the last import (dropped images, unsupported features, path data errors, ...),
+// one per line as the importer words them ("line 12: <path id="p3"> ..."), under a translated
+// heading; and the point-budget question asked before a huge drawing enters the document.
+#pragma once
+
+#include <QString>
+#include <QStringList>
+#include <QWidget>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "core/planning/drawing.hpp"
+
+class QLabel;
+class QListWidget;
+
+namespace fivebar::widgets {
+
+class ImportWarningsPanel : public QWidget {
+  Q_OBJECT
+ public:
+  explicit ImportWarningsPanel(QWidget* parent = nullptr);
+
+  QListWidget* list() const { return list_; }
+
+ public slots:
+  // Shows the warnings of an import of `fileName` (empty: "no warnings").
+  void showWarnings(const QString& fileName, const QStringList& warnings);
+
+ signals:
+  // Emitted when an import brought warnings, so that the window can raise the panel.
+  void attentionWanted();
+
+ private:
+  QLabel* heading_ = nullptr;
+  QListWidget* list_ = nullptr;
+};
+
+QStringList toQStringList(const std::vector<std::string>& texts);
+
+// Points of the visible layers after flattening.
+std::size_t drawingPointCount(const Drawing& drawing);
+
+inline constexpr std::size_t kImportPointBudget = 2'000'000;
+
+// true when the drawing is within the budget, or the user chose to import it anyway
+// (interactive); false otherwise, with `refusal` set to the message to show.
+bool acceptPointBudget(QWidget* parent, const Drawing& drawing, const QString& fileName,
+                       bool interactive, QString& refusal);
+
+}  // namespace fivebar::widgets
