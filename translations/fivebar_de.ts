@@ -2,6 +2,25 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>DesignPainter</name>
+    <message>
+        <source>Workspace, singularity-free region and type II curves</source>
+        <translation>Arbeitsraum, singularitätsfreier Bereich und Typ-II-Kurven</translation>
+    </message>
+    <message>
+        <source>a1 = %1, b1 = %2, a2 = %3, b2 = %4, w = %5 mm, working mode %6</source>
+        <translation>a1 = %1, b1 = %2, a2 = %3, b2 = %4, w = %5 mm, Arbeitsmodus %6</translation>
+    </message>
+    <message>
+        <source>Rectangle x %1 .. %2, y %3 .. %4 mm; worst condition number %5 (mean %6)</source>
+        <translation>Rechteck x %1 .. %2, y %3 .. %4 mm; schlechteste Konditionszahl %5 (Mittel %6)</translation>
+    </message>
+    <message>
+        <source>Type II margin %1 deg, type I margin %2 deg, worst %3 um per step, worst motor speed %4 deg/s, footprint %5 cm²</source>
+        <translation>Abstand zu Typ II %1°, zu Typ I %2°, schlechtestens %3 µm pro Schritt, höchste Motordrehzahl %4 °/s, Platzbedarf %5 cm²</translation>
+    </message>
+</context>
+<context>
     <name>DocumentCommands</name>
     <message>
         <source>Import drawing</source>
@@ -264,6 +283,209 @@
     <message>
         <source>Send</source>
         <translation>Senden</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::DesignDialog</name>
+    <message>
+        <source>Design a machine</source>
+        <translation>Maschine entwerfen</translation>
+    </message>
+    <message>
+        <source>&amp;Design...</source>
+        <translation>&amp;Entwurf...</translation>
+    </message>
+    <message>
+        <source>Choose link lengths for a paper size</source>
+        <translation>Gliedlängen für ein Papierformat wählen</translation>
+    </message>
+    <message>
+        <source>Brief</source>
+        <translation>Vorgaben</translation>
+    </message>
+    <message>
+        <source>Custom</source>
+        <translation>Eigenes Format</translation>
+    </message>
+    <message>
+        <source>Landscape</source>
+        <translation>Querformat</translation>
+    </message>
+    <message>
+        <source>Portrait</source>
+        <translation>Hochformat</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source> deg</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>Symmetric arms</source>
+        <translation>Symmetrische Arme</translation>
+    </message>
+    <message>
+        <source>Any</source>
+        <translation>Beliebig</translation>
+    </message>
+    <message>
+        <source>Worst condition number</source>
+        <translation>Schlechteste Konditionszahl</translation>
+    </message>
+    <message>
+        <source>Worst resolution</source>
+        <translation>Schlechteste Auflösung</translation>
+    </message>
+    <message>
+        <source>Footprint</source>
+        <translation>Platzbedarf</translation>
+    </message>
+    <message>
+        <source>Paper</source>
+        <translation>Papier</translation>
+    </message>
+    <message>
+        <source>Orientation</source>
+        <translation>Ausrichtung</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Breite</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Höhe</translation>
+    </message>
+    <message>
+        <source>Margin</source>
+        <translation>Rand</translation>
+    </message>
+    <message>
+        <source>Shortest link</source>
+        <translation>Kürzestes Glied</translation>
+    </message>
+    <message>
+        <source>Longest link</source>
+        <translation>Längstes Glied</translation>
+    </message>
+    <message>
+        <source>Smallest motor spacing</source>
+        <translation>Kleinster Motorabstand</translation>
+    </message>
+    <message>
+        <source>Largest motor spacing</source>
+        <translation>Größter Motorabstand</translation>
+    </message>
+    <message>
+        <source>Arm clearance</source>
+        <translation>Armabstand</translation>
+    </message>
+    <message>
+        <source>Type II margin</source>
+        <translation>Abstand zu Typ-II-Singularitäten</translation>
+    </message>
+    <message>
+        <source>Working mode</source>
+        <translation>Arbeitsmodus</translation>
+    </message>
+    <message>
+        <source>Objective</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>Search</source>
+        <translation>Suchen</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Set the brief and press Search.</source>
+        <translation>Vorgaben einstellen und Suchen drücken.</translation>
+    </message>
+    <message>
+        <source>Worst condition</source>
+        <translation>Schlechteste Kondition</translation>
+    </message>
+    <message>
+        <source>Footprint (cm²)</source>
+        <translation>Platzbedarf (cm²)</translation>
+    </message>
+    <message>
+        <source>µm/step</source>
+        <translation>µm/Schritt</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Modus</translation>
+    </message>
+    <message>
+        <source>Workspace</source>
+        <translation>Arbeitsraum</translation>
+    </message>
+    <message>
+        <source>Conditioning</source>
+        <translation>Kondition</translation>
+    </message>
+    <message>
+        <source>Transmission angle</source>
+        <translation>Übertragungswinkel</translation>
+    </message>
+    <message>
+        <source>Resolution</source>
+        <translation>Auflösung</translation>
+    </message>
+    <message>
+        <source>Map on the canvas</source>
+        <translation>Karte auf der Zeichenfläche</translation>
+    </message>
+    <message>
+        <source>Use as profile</source>
+        <translation>Als Profil verwenden</translation>
+    </message>
+    <message>
+        <source>Export...</source>
+        <translation>Exportieren...</translation>
+    </message>
+    <message>
+        <source>Searching...</source>
+        <translation>Suche läuft...</translation>
+    </message>
+    <message>
+        <source>Search cancelled.</source>
+        <translation>Suche abgebrochen.</translation>
+    </message>
+    <message>
+        <source>No design meets the brief: %1</source>
+        <translation>Kein Entwurf erfüllt die Vorgaben: %1</translation>
+    </message>
+    <message>
+        <source>Best worst-case condition number %1; %2 designs on the trade-off, %3 evaluations in %4 s.</source>
+        <translation>Beste Konditionszahl im schlechtesten Fall %1; %2 Entwürfe im Zielkonflikt, %3 Auswertungen in %4 s.</translation>
+    </message>
+    <message>
+        <source>The document now uses this design (Edit &gt; Undo restores the previous profile).</source>
+        <translation>Das Dokument verwendet jetzt diesen Entwurf (Bearbeiten &gt; Rückgängig stellt das vorige Profil wieder her).</translation>
+    </message>
+    <message>
+        <source>No design is selected.</source>
+        <translation>Kein Entwurf ausgewählt.</translation>
+    </message>
+    <message>
+        <source>Export profile</source>
+        <translation>Profil exportieren</translation>
+    </message>
+    <message>
+        <source>Machine profiles (*.json)</source>
+        <translation>Maschinenprofile (*.json)</translation>
+    </message>
+    <message>
+        <source>Profile written to %1.</source>
+        <translation>Profil nach %1 geschrieben.</translation>
     </message>
 </context>
 <context>
@@ -928,6 +1150,17 @@
     <message>
         <source>Smallest singularity margin: %1 deg.</source>
         <translation>Kleinster Singularitätsabstand: %1 Grad.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::ParetoPlot</name>
+    <message>
+        <source>Footprint (cm²)</source>
+        <translation>Platzbedarf (cm²)</translation>
+    </message>
+    <message>
+        <source>Worst condition number</source>
+        <translation>Schlechteste Konditionszahl</translation>
     </message>
 </context>
 <context>

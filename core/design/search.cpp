@@ -199,12 +199,16 @@ std::string impossibleMessage(const DesignBrief& b, const Design& d, const std::
            fmt(degFromRad(b.rules.workspace.typeIMarginRad)) +
            " deg from a leg fully stretched or folded (the closest keeps " +
            fmt(degFromRad(m.minTypeIMarginRad)) + " deg)" + closest + ".";
-  if (binding == "clearance")
+  if (binding == "clearance" && v.clearanceMm <= 0.0)  // found before searching
     return "clearance binds: criterion 1 (w >= a1 + a2 + clearance) needs w >= " +
            fmt(2.0 * b.bounds.minLinkMm + b.rules.clearanceMm) + " mm with links of at least " +
            fmt(b.bounds.minLinkMm) + " mm and a clearance of " + fmt(b.rules.clearanceMm) +
-           " mm, but --max-base is " + fmt(b.bounds.maxBaseMm) + " mm" +
-           (v.clearanceMm > 0.0 ? closest : std::string()) + ".";
+           " mm, but --max-base is " + fmt(b.bounds.maxBaseMm) + " mm.";
+  if (binding == "clearance")
+    return "clearance binds: the designs that reach the " + rect +
+           " bring the driving links closer than criterion 1 allows (w >= a1 + a2 + " +
+           fmt(b.rules.clearanceMm) + " mm); the closest is " + fmt(v.clearanceMm) + " mm short" +
+           closest + ". Raise --max-base or lower --clearance.";
   if (binding == "workSide")
     return "work side binds: the rectangle cannot stay at y >= " + fmt(b.rules.minRectangleYMm) +
            " mm" + closest + ".";

@@ -18,6 +18,8 @@
 #include "app/studio/main_window.hpp"
 #include "core/machine/profile.hpp"
 #include "widgets/console_panel.hpp"
+#include "widgets/design/design_dialog.hpp"
+#include "widgets/design/pareto_plot.hpp"
 #include "widgets/import_controller.hpp"
 #include "widgets/jog_controller.hpp"
 #include "widgets/jog_goto_tool.hpp"
@@ -55,10 +57,11 @@ std::set<QString> runtimeContexts() {
         &PreviewPanel::staticMetaObject, &SpeedLegend::staticMetaObject,
         &ProfileEditor::staticMetaObject, &RunController::staticMetaObject,
         &RunPanel::staticMetaObject, &SimulationPanel::staticMetaObject,
-        &StudioDocument::staticMetaObject})
+        &StudioDocument::staticMetaObject, &DesignDialog::staticMetaObject,
+        &ParetoPlot::staticMetaObject})
     names.insert(QString::fromLatin1(m->className()));
   for (const char* c : {"QObject", "main", "DocumentCommands", "JobPipeline", "MapPainter",
-                        "WorkspaceLegend"})
+                        "WorkspaceLegend", "DesignPainter"})
     names.insert(QString::fromLatin1(c));
   return names;
 }

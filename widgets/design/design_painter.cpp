@@ -99,7 +99,7 @@ void paintDesignPanel(QPainter& painter, const QRectF& panelPx, const design::De
   view = ViewTransform(box.center() + QPointF(shiftPx.x() / s, -shiftPx.y() / s), s, size);
   paintGrid(painter, view);
   paintDesignOverlay(painter, view.widgetFromMachine(), d, maps, kind);
-  QString title = trD("Workspace, singularity-free region and type II curves");
+  QString title = trD(QT_TRANSLATE_NOOP("DesignPainter", "Workspace, singularity-free region and type II curves"));
   if (kind != MapKind::None) {
     const MapScale scale = mapScale(maps.map, kind);
     title = scale.title;
@@ -125,13 +125,13 @@ QStringList designMeasureLines(const design::Design& d) {
   const design::DesignMeasures& m = d.evaluation.measures;
   const Geometry& g = d.geometry;
   QStringList lines;
-  lines << trD("a1 = %1, b1 = %2, a2 = %3, b2 = %4, w = %5 mm, working mode %6")
+  lines << trD(QT_TRANSLATE_NOOP("DesignPainter", "a1 = %1, b1 = %2, a2 = %3, b2 = %4, w = %5 mm, working mode %6"))
                .arg(mm(g.a1), mm(g.b1), mm(g.a2), mm(g.b2), mm(g.w), QString::fromUtf8(toString(d.mode).data(), 2));
-  lines << trD("Rectangle x %1 .. %2, y %3 .. %4 mm; worst condition number %5 (mean %6)")
+  lines << trD(QT_TRANSLATE_NOOP("DesignPainter", "Rectangle x %1 .. %2, y %3 .. %4 mm; worst condition number %5 (mean %6)"))
                .arg(mm(d.rect.xMin), mm(d.rect.xMax), mm(d.rect.yMin), mm(d.rect.yMax))
                .arg(m.worstCondition, 0, 'f', 2)
                .arg(m.meanCondition, 0, 'f', 2);
-  lines << trD("Type II margin %1 deg, type I margin %2 deg, worst %3 um per step, worst motor speed %4 deg/s, footprint %5 cm\u00b2")
+  lines << trD(QT_TRANSLATE_NOOP("DesignPainter", "Type II margin %1 deg, type I margin %2 deg, worst %3 um per step, worst motor speed %4 deg/s, footprint %5 cm\u00b2"))
                .arg(degFromRad(m.minTypeIIMarginRad), 0, 'f', 1)
                .arg(degFromRad(m.minTypeIMarginRad), 0, 'f', 1)
                .arg(m.worstMmPerStep * 1000.0, 0, 'f', 1)
