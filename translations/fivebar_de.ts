@@ -16,8 +16,12 @@
         <translation>Rechteck x %1 .. %2, y %3 .. %4 mm; schlechteste Konditionszahl %5 (Mittel %6)</translation>
     </message>
     <message>
-        <source>Type II margin %1 deg, type I margin %2 deg, worst %3 um per step, worst motor speed %4 deg/s, footprint %5 cm²</source>
-        <translation>Abstand zu Typ II %1°, zu Typ I %2°, schlechtestens %3 µm pro Schritt, höchste Motordrehzahl %4 °/s, Platzbedarf %5 cm²</translation>
+        <source>Type II margin %1 deg, type I margin %2 deg, footprint %3 cm²</source>
+        <translation>Abstand zu Typ II %1°, zu Typ I %2°, Platzbedarf %3 cm²</translation>
+    </message>
+    <message>
+        <source>Worst %1 um per step, worst motor speed %2 deg/s</source>
+        <translation>Schlechtestens %1 µm pro Schritt, höchste Motordrehzahl %2 °/s</translation>
     </message>
 </context>
 <context>

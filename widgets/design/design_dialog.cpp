@@ -289,9 +289,11 @@ void DesignDialog::selectDesign(int row) {
     layerAdded_ = true;
   }
   DesignMaps maps = computeDesignMaps(d, searchedBrief_.rules);
-  const QRectF box = designBoxMm(d, maps);
+  QRectF box = designBoxMm(d, maps);
+  box.setBottom(box.bottom() + 0.2 * box.height());  // room above for the measures card (y up)
   layer_.show(d, std::move(maps));
   table_->selectRow(row);
+  table_->scrollToItem(table_->item(row, 0));
   plot_->setSelected(row);
   use_->setEnabled(true);
   export_->setEnabled(true);

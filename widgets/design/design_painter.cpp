@@ -131,12 +131,13 @@ QStringList designMeasureLines(const design::Design& d) {
                .arg(mm(d.rect.xMin), mm(d.rect.xMax), mm(d.rect.yMin), mm(d.rect.yMax))
                .arg(m.worstCondition, 0, 'f', 2)
                .arg(m.meanCondition, 0, 'f', 2);
-  lines << trD(QT_TRANSLATE_NOOP("DesignPainter", "Type II margin %1 deg, type I margin %2 deg, worst %3 um per step, worst motor speed %4 deg/s, footprint %5 cm\u00b2"))
+  lines << trD(QT_TRANSLATE_NOOP("DesignPainter", "Type II margin %1 deg, type I margin %2 deg, footprint %3 cm\u00b2"))
                .arg(degFromRad(m.minTypeIIMarginRad), 0, 'f', 1)
                .arg(degFromRad(m.minTypeIMarginRad), 0, 'f', 1)
-               .arg(m.worstMmPerStep * 1000.0, 0, 'f', 1)
-               .arg(degFromRad(m.worstMotorSpeedRadPerS), 0, 'f', 0)
                .arg(m.footprintMm2 / 100.0, 0, 'f', 0);
+  lines << trD(QT_TRANSLATE_NOOP("DesignPainter", "Worst %1 um per step, worst motor speed %2 deg/s"))
+               .arg(m.worstMmPerStep * 1000.0, 0, 'f', 1)
+               .arg(degFromRad(m.worstMotorSpeedRadPerS), 0, 'f', 0);
   return lines;
 }
 
