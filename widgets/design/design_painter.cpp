@@ -15,7 +15,7 @@ namespace {
 
 QString trD(const char* text) { return QCoreApplication::translate("DesignPainter", text); }
 
-constexpr double kHeaderPx = 120.0;
+constexpr double kHeaderPx = 145.0;
 constexpr double kPanelTitlePx = 30.0;
 constexpr double kColourBarPx = 64.0;
 
