@@ -348,6 +348,26 @@
         <translation>Platzbedarf</translation>
     </message>
     <message>
+        <source>Weighted mix</source>
+        <translation>Gewichtete Mischung</translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation>Kondition</translation>
+    </message>
+    <message>
+        <source>Resolution</source>
+        <translation>Auflösung</translation>
+    </message>
+    <message>
+        <source>Weight of this normalised term in the weighted mix</source>
+        <translation>Gewicht dieses normierten Terms in der gewichteten Mischung</translation>
+    </message>
+    <message>
+        <source>Mix weights</source>
+        <translation>Gewichte der Mischung</translation>
+    </message>
+    <message>
         <source>Paper</source>
         <translation>Papier</translation>
     </message>

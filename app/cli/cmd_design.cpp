@@ -23,11 +23,12 @@ using namespace fivebar::design;
 constexpr const char* kHelp =
     "usage: fivebar design --rect WxH [--max-link MM] [--min-link MM] [--max-base MM]\n"
     "                      [--min-base MM] [--clearance MM] [--symmetric] [--mode ++|+-|-+|--]\n"
-    "                      [--type2-margin DEG] [--objective condition|resolution|footprint]\n"
-    "                      [--json OUT.json] [--profile-out PROFILE.json] [--png ATLAS.png]\n"
-    "                      [--seed N] [--threads N]\n"
+    "                      [--type2-margin DEG]\n"
+    "                      [--objective condition|resolution|footprint|mix] [--weights C,R,F]\n"
+    "                      [--allow-rotation] [--json OUT.json] [--profile-out PROFILE.json]\n"
+    "                      [--png ATLAS.png] [--seed N] [--threads N]\n"
     "       fivebar design --rect WxH --machine PRESET|FILE [--mode M] [--type2-margin DEG]\n"
-    "                      [--clearance MM] [--json OUT.json] [--png ATLAS.png]\n"
+    "                      [--clearance MM] [--allow-rotation] [--json OUT.json] [--png ATLAS.png]\n"
     "Searches link lengths (a1, b1, a2, b2) and motor spacing w, with the placement of a\n"
     "W x H mm rectangle in the machine frame, for the best worst-case objective over the\n"
     "rectangle, keeping every point reachable, the type II margin (default 15 deg), a 2 deg\n"
@@ -35,8 +36,12 @@ constexpr const char* kHelp =
     "trade-off between worst-case condition number and footprint.\n"
     "Defaults: --min-link 30 --max-link 200 --min-base 0 --max-base 250 --clearance 10,\n"
     "all four working modes, --objective condition, --seed 1, --threads = CPU cores.\n"
-    "With --machine, evaluates that machine instead: the rectangle placed where its worst\n"
-    "condition number is lowest (in the profile's working mode unless --mode is given).\n"
+    "--objective mix minimises C*kappa + R*resolution + F*footprint on normalised terms\n"
+    "(docs/design.md \"Mix\"); --weights C,R,F (default 1,1,1) only with it.\n"
+    "--allow-rotation also tries the rectangle turned by 90 deg (width along y).\n"
+    "With --machine, evaluates that machine instead: the rectangle placed where the\n"
+    "objective (default its worst condition number) is lowest (in the profile's working\n"
+    "mode unless --mode is given).\n"
     "Exit status 1 when no design meets the brief (the message names the binding constraint).\n";
 
 double parseMm(const Options& o, const std::string& name, double fallback, double lo, double hi) {
@@ -74,6 +79,32 @@ void parseRect(const std::string& text, double& w, double& h) {
   if (!ok) throw UsageError("--rect must be WxH in mm, e.g. 110x90, got '" + text + "'");
 }
 
+// --weights C,R,F: three numbers >= 0, not all zero.
+MixWeights parseWeights(const std::string& text) {
+  double v[3] = {0.0, 0.0, 0.0};
+  std::size_t start = 0;
+  bool ok = true;
+  for (int i = 0; i < 3 && ok; ++i) {
+    const std::size_t comma = text.find(',', start);
+    if ((i < 2) == (comma == std::string::npos)) ok = false;
+    const std::string part = text.substr(start, i < 2 ? comma - start : std::string::npos);
+    try {
+      std::size_t used = 0;
+      v[i] = std::stod(part, &used);
+      ok = ok && used == part.size() && !part.empty();
+    } catch (const std::exception&) {
+      ok = false;
+    }
+    start = comma == std::string::npos ? text.size() : comma + 1;
+  }
+  const MixWeights w{v[0], v[1], v[2]};
+  std::string problem = ok ? validateWeights(w) : std::string("it needs three numbers");
+  if (!problem.empty())
+    throw UsageError("--weights must be C,R,F (three numbers >= 0, not all zero), e.g. 1,0,0.5, got '" +
+                     text + "': " + problem);
+  return w;
+}
+
 struct Request {
   DesignBrief brief;
   SearchOptions search;
@@ -98,9 +129,14 @@ Request parseRequest(const Options& o) {
   }
   if (auto obj = o.value("--objective")) {
     const auto parsed = parseObjective(*obj);
-    if (!parsed) throw UsageError("--objective must be condition, resolution or footprint, got '" + *obj + "'");
+    if (!parsed) throw UsageError("--objective must be condition, resolution, footprint or mix, got '" + *obj + "'");
     b.objective = *parsed;
   }
+  if (auto w = o.value("--weights")) {
+    if (b.objective != Objective::Mix) throw UsageError("--weights needs --objective mix");
+    b.weights = parseWeights(*w);
+  }
+  b.allowRotation = o.flag("--allow-rotation");
   r.search.seed = static_cast<std::uint32_t>(parseMm(o, "--seed", 1.0, 0.0, 4e9));
   r.search.threads = static_cast<unsigned>(
       parseMm(o, "--threads", std::max(1u, std::thread::hardware_concurrency()), 1.0, 64.0));
@@ -157,8 +193,13 @@ int evaluateMachine(const Request& req) {
   Design d;
   d.geometry = profile->geometry;
   d.mode = b.mode.value_or(profile->defaultMode);
-  const Placement p = bestPlacement(d.geometry, d.mode, b.widthMm, b.heightMm, b.rules);
+  PlacementOptions po;
+  po.objective = b.objective;
+  po.weights = b.weights;
+  po.allowRotation = b.allowRotation;
+  const Placement p = bestPlacement(d.geometry, d.mode, b.widthMm, b.heightMm, b.rules, po);
   d.rect = p.rect;
+  d.rotated = p.rotated;
   d.evaluation = p.evaluation;
   d.score = p.score;
   std::cout << "machine: " << profile->name << "\n";
@@ -192,8 +233,8 @@ int runDesign(const Args& args) {
     const Options o(args,
                     {"--rect", "--max-link", "--min-link", "--max-base", "--min-base", "--clearance",
                      "--mode", "--type2-margin", "--objective", "--json", "--profile-out", "--png",
-                     "--seed", "--threads", "--machine"},
-                    {"--symmetric", "--help"});
+                     "--seed", "--threads", "--machine", "--weights"},
+                    {"--symmetric", "--allow-rotation", "--help"});
     if (o.flag("--help")) {
       std::cout << kHelp;
       return 0;
@@ -218,7 +259,11 @@ int runDesign(const Args& args) {
             << num(degFromRad(b.rules.workspace.typeIIMarginRad), 1) << " deg, "
             << (b.bounds.symmetric ? "symmetric, " : "") << "mode "
             << (b.mode ? std::string(toString(*b.mode)) : std::string("any")) << ", objective "
-            << toString(b.objective) << "\n";
+            << toString(b.objective);
+  if (b.objective == Objective::Mix)
+    std::cout << " (weights " << num(b.weights.condition, 2) << "," << num(b.weights.resolution, 2)
+              << "," << num(b.weights.footprint, 2) << ")";
+  std::cout << (b.allowRotation ? ", rotation allowed" : "") << "\n";
   const SearchResult result = searchDesigns(b, req.search);
   if (req.jsonPath)
     if (const std::string err = writeText(*req.jsonPath, searchJson(b, result, req.search).dump(2) + "\n");

@@ -27,6 +27,7 @@ nlohmann::json designJson(const Design& d) {
   j["rectangle"] = {{"xMinMm", d.rect.xMin}, {"xMaxMm", d.rect.xMax}, {"yMinMm", d.rect.yMin},
                     {"yMaxMm", d.rect.yMax}};
   j["rotated"] = d.rotated;
+  j["rectangleRotated"] = d.rotated;  // the rectangle's width runs along the machine's y
   j["feasible"] = d.evaluation.feasible();
   j["measures"] = {
       {"samples", m.samples},
@@ -44,6 +45,9 @@ nlohmann::json designJson(const Design& d) {
       {"minDrivingLinkDistanceMm", finite(m.minDrivingLinkDistanceMm)},
       {"armsCanCollide", m.armsCanCollide},
       {"footprintMm2", m.footprintMm2},
+      {"normalisedCondition", finite(normalisedCondition(m))},
+      {"normalisedResolution", finite(normalisedResolution(m))},
+      {"normalisedFootprint", finite(normalisedFootprint(m))},
       {"footprint", {{"xMinMm", m.footprint.xMin}, {"xMaxMm", m.footprint.xMax},
                      {"yMinMm", m.footprint.yMin}, {"yMaxMm", m.footprint.yMax}}},
   };
@@ -58,6 +62,9 @@ nlohmann::json searchJson(const DesignBrief& b, const SearchResult& r, const Sea
     j["message"] = r.message;
   }
   j["objective"] = std::string(toString(b.objective));
+  if (b.objective == Objective::Mix)
+    j["weights"] = {{"condition", b.weights.condition}, {"resolution", b.weights.resolution},
+                    {"footprint", b.weights.footprint}};
   j["brief"] = {{"widthMm", b.widthMm},
                 {"heightMm", b.heightMm},
                 {"minLinkMm", b.bounds.minLinkMm},

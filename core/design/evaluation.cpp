@@ -100,6 +100,8 @@ Evaluation evaluateDesign(const Geometry& g, WorkingMode mode, const Rect& r,
   v.workSideMm = std::max(0.0, rules.minRectangleYMm - r.yMin);
   if (v.lengthsMm > 0.0) return e;
 
+  m.rectangleAreaMm2 = r.area();
+  m.stepRad = std::max(s.stepRad1, s.stepRad2);
   m.minReachSlackMm = m.minTypeIMarginRad = m.minTypeIIMarginRad = kInf;
   m.minDrivingLinkDistanceMm = kInf;
   m.footprint = {r.xMin, r.yMin, r.xMax, r.yMax};

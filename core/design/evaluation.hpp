@@ -52,6 +52,8 @@ struct DesignMeasures {
                                           // the rectangle's poses
   double footprintMm2 = 0.0;           // bounding box of motors, elbows and rectangle
   Rect footprint;                      // that bounding box
+  double rectangleAreaMm2 = 0.0;       // the target rectangle's area
+  double stepRad = 0.0;                // the larger of the two motor step angles
   // Criterion 1: the driving links can collide when they can come closer than the clearance:
   // w < a1 + a2 + clearance (they can when rotating fully; joint limits would then have to
   // keep them to the rectangle's poses, which minDrivingLinkDistanceMm describes).

@@ -28,6 +28,7 @@ struct LocalProblem {
   double w, h;
   const DesignRules* rules;
   Objective objective;
+  MixWeights weights;
   Sampling sampling;
 };
 
@@ -35,8 +36,10 @@ double localScore(unsigned n, const double* x, double* grad, void* data) {
   (void)n;
   (void)grad;
   const auto& p = *static_cast<const LocalProblem*>(data);
-  return penalisedScore(p.objective, evaluateDesign(*p.g, p.mode, centredRect(x[0], x[1], p.w, p.h),
-                                                    *p.rules, p.sampling));
+  return penalisedScore(p.objective,
+                        evaluateDesign(*p.g, p.mode, centredRect(x[0], x[1], p.w, p.h), *p.rules,
+                                       p.sampling),
+                        p.weights);
 }
 
 Placement placeOriented(const Geometry& g, WorkingMode mode, double w, double h,
@@ -47,7 +50,7 @@ Placement placeOriented(const Geometry& g, WorkingMode mode, double w, double h,
   const double yLo = rules.minRectangleYMm + 0.5 * h;
   const double yHi = std::max(yLo, std::min(reach1, reach2) - 0.5 * h);
   const double coarse = std::max(w, h) / 8.0;
-  LocalProblem problem{&g, mode, w, h, &rules, options.objective, Sampling{coarse}};
+  LocalProblem problem{&g, mode, w, h, &rules, options.objective, options.weights, Sampling{coarse}};
   std::vector<Candidate> scan;
   for (int j = 0; j < kScanPerAxis; ++j)
     for (int i = 0; i < kScanPerAxis; ++i) {
@@ -83,7 +86,7 @@ Placement placeOriented(const Geometry& g, WorkingMode mode, double w, double h,
     Placement p;
     p.rect = centredRect(x[0], x[1], w, h);
     p.evaluation = evaluateDesign(g, mode, p.rect, rules, options.finalSampling);
-    p.score = penalisedScore(options.objective, p.evaluation);
+    p.score = penalisedScore(options.objective, p.evaluation, options.weights);
     if (!have || p.score < best.score) {
       best = p;
       have = true;

@@ -11,6 +11,7 @@ namespace fivebar::design {
 
 struct PlacementOptions {
   Objective objective = Objective::Condition;
+  MixWeights weights;           // Objective::Mix only
   bool allowRotation = false;   // also try the rectangle turned by 90 degrees
   Sampling finalSampling{1.0};  // the sampling of the reported evaluation
 };

@@ -100,7 +100,7 @@ double runScore(unsigned n, const double* u, double* grad, void* data) {
   Rect r;
   run.enc.decode(u, g, r);
   const Evaluation e = evaluateDesign(g, run.mode, r, sh.rules, run.sampling);
-  const double score = penalisedScore(sh.brief->objective, e);
+  const double score = penalisedScore(sh.brief->objective, e, sh.brief->weights);
   if (e.feasible())
     run.archive->insert(e.measures.worstCondition, e.measures.footprintMm2,
                         std::vector<double>(u, u + n));
@@ -161,7 +161,7 @@ Design designAt(const DesignBrief& b, const Start& s, const std::vector<double>&
   d.rotated = s.rotated;
   encodingFor(b, s.rotated).decode(u.data(), d.geometry, d.rect);
   d.evaluation = evaluateDesign(d.geometry, d.mode, d.rect, b.rules, sampling);
-  d.score = penalisedScore(b.objective, d.evaluation);
+  d.score = penalisedScore(b.objective, d.evaluation, b.weights);
   return d;
 }
 
@@ -246,6 +246,8 @@ std::vector<ValidationIssue> validate(const DesignBrief& b) {
   const double t2 = b.rules.workspace.typeIIMarginRad;
   if (!(t2 >= 0.0 && t2 < 0.5 * kPi))
     issues.push_back({"rules.typeIIMargin", "the type II margin must be from 0 to below 90 deg"});
+  if (b.objective == Objective::Mix)
+    if (const std::string w = validateWeights(b.weights); !w.empty()) issues.push_back({"weights", w});
   return issues;
 }
 

@@ -33,6 +33,7 @@ struct DesignBrief {
   DesignRules rules;
   std::optional<WorkingMode> mode;  // nullopt: search all four working modes
   Objective objective = Objective::Condition;
+  MixWeights weights;               // Objective::Mix only
   bool allowRotation = false;       // also place the rectangle turned by 90 degrees
 };
 

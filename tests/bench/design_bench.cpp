@@ -73,7 +73,7 @@ void BM_RandomSearchSameTime(benchmark::State& state) {
         d.geometry = {link(rng), link(rng), link(rng), link(rng), base(rng)};
         d.mode = kAllWorkingModes[static_cast<std::size_t>(mode(rng))];
         d.rect = centredRect(cx(rng), cy(rng), b.widthMm, b.heightMm);
-        const double s = penalisedScore(b.objective, evaluateDesign(d.geometry, d.mode, d.rect, rules, Sampling{110.0 / 24.0}));
+        const double s = penalisedScore(b.objective, evaluateDesign(d.geometry, d.mode, d.rect, rules, Sampling{110.0 / 24.0}), b.weights);
         if (s < bestScore) {
           bestScore = s;
           bestDesign = d;

@@ -119,6 +119,50 @@ TEST_F(DesignCli, MachineEvaluatesHoang2015) {
   EXPECT_LE(kappa, 12.1);
 }
 
+TEST_F(DesignCli, MixObjectiveWithWeights) {
+  const CliResult r = run({"--rect", "110x90", "--mode", "+-", "--objective", "mix", "--weights", "1,0,0.5",
+                           "--json", path("m.json")});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(slurp(path("m.json")));
+  EXPECT_EQ(j["objective"], "mix");
+  EXPECT_EQ(j["weights"]["condition"].get<double>(), 1.0);
+  EXPECT_EQ(j["weights"]["resolution"].get<double>(), 0.0);
+  EXPECT_EQ(j["weights"]["footprint"].get<double>(), 0.5);
+  EXPECT_GE(j["measures"]["normalisedFootprint"].get<double>(), 1.0);
+  EXPECT_FALSE(j["rectangleRotated"].get<bool>());
+  EXPECT_NE(r.out.find("objective mix (weights 1.00,0.00,0.50)"), std::string::npos) << r.out;
+  CliResult e = run({"--rect", "110x90", "--objective", "mix", "--weights", "1,0"});
+  EXPECT_EQ(e.exitCode, 2);
+  EXPECT_NE(e.err.find("--weights must be C,R,F"), std::string::npos) << e.err;
+  e = run({"--rect", "110x90", "--objective", "mix", "--weights", "0,0,0"});
+  EXPECT_EQ(e.exitCode, 2);
+  EXPECT_NE(e.err.find("not all be zero"), std::string::npos) << e.err;
+  e = run({"--rect", "110x90", "--objective", "mix", "--weights", "1,-2,0"});
+  EXPECT_EQ(e.exitCode, 2);
+  e = run({"--rect", "110x90", "--weights", "1,0,0"});
+  EXPECT_EQ(e.exitCode, 2);
+  EXPECT_NE(e.err.find("--weights needs --objective mix"), std::string::npos) << e.err;
+}
+
+// A tall rectangle on Hoang's wide machine: turned, it fits better; the bounds in the machine
+// frame are the turned ones.
+TEST_F(DesignCli, AllowRotationTurnsTheRectangle) {
+  const CliResult plain = run({"--rect", "40x100", "--machine", "hoang2015", "--json", path("p.json")});
+  const CliResult turned =
+      run({"--rect", "40x100", "--machine", "hoang2015", "--allow-rotation", "--json", path("t.json")});
+  ASSERT_EQ(turned.exitCode, 0) << turned.err;
+  const nlohmann::json p = nlohmann::json::parse(slurp(path("p.json")));
+  const nlohmann::json t = nlohmann::json::parse(slurp(path("t.json")));
+  EXPECT_FALSE(p["rectangleRotated"].get<bool>());
+  EXPECT_NEAR(p["rectangle"]["xMaxMm"].get<double>() - p["rectangle"]["xMinMm"].get<double>(), 40.0, 1e-6);
+  ASSERT_TRUE(t["rectangleRotated"].get<bool>());
+  EXPECT_NEAR(t["rectangle"]["xMaxMm"].get<double>() - t["rectangle"]["xMinMm"].get<double>(), 100.0, 1e-6);
+  EXPECT_NEAR(t["rectangle"]["yMaxMm"].get<double>() - t["rectangle"]["yMinMm"].get<double>(), 40.0, 1e-6);
+  EXPECT_TRUE(t["feasible"].get<bool>());
+  EXPECT_LT(t["measures"]["worstConditionNumber"].get<double>(), p["measures"]["worstConditionNumber"].get<double>());
+  EXPECT_NE(turned.out.find("(turned)"), std::string::npos) << turned.out;
+}
+
 #ifdef FIVEBAR_CLI_HAS_PNG
 TEST_F(DesignCli, AtlasPngIsWritten) {
   const CliResult r = run({"--rect", "110x90", "--machine", "hoang2015", "--png", path("a.png")});

@@ -4,9 +4,12 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
+#include <utility>
 
 #include "core/design/design_json.hpp"
 #include "core/design/pareto.hpp"
+#include "core/design/placement.hpp"
 #include "core/design/search.hpp"
 
 namespace fivebar::design {
@@ -195,6 +198,88 @@ TEST(DesignProfile, IsCompleteValidAndRoundTrips) {
   EXPECT_EQ(j["workingMode"].get<std::string>(), std::string(toString(r.best->mode)));
   EXPECT_EQ(j["rectangle"]["xMinMm"].get<double>(), r.best->rect.xMin);
   EXPECT_EQ(j["pareto"]["designs"].size(), r.pareto.size());
+}
+
+// The weighted mix (docs/design.md "Mix"): a weight on one term alone ranks designs exactly as
+// that term's own objective does, so the search finds the same design.
+TEST(DesignMix, OneWeightGivesThatObjectivesDesign) {
+  struct Case {
+    Objective single;
+    MixWeights weights;
+  };
+  for (const Case& c : {Case{Objective::Condition, {1.0, 0.0, 0.0}},
+                        Case{Objective::Footprint, {0.0, 0.0, 2.5}}}) {
+    DesignBrief single = goalBrief();
+    single.mode = WorkingMode::PlusMinus;
+    single.objective = c.single;
+    DesignBrief mix = single;
+    mix.objective = Objective::Mix;
+    mix.weights = c.weights;
+    const SearchResult a = searchDesigns(single, quick()), b = searchDesigns(mix, quick());
+    ASSERT_TRUE(a.best && b.best) << toString(c.single);
+    const Geometry &ga = a.best->geometry, &gb = b.best->geometry;
+    for (auto [x, y] : {std::pair{ga.a1, gb.a1}, {ga.b1, gb.b1}, {ga.a2, gb.a2}, {ga.b2, gb.b2}, {ga.w, gb.w}})
+      EXPECT_NEAR(x, y, 1e-6) << toString(c.single);
+    EXPECT_NEAR(a.best->rect.xMin, b.best->rect.xMin, 1e-6);
+    EXPECT_NEAR(a.best->rect.yMin, b.best->rect.yMin, 1e-6);
+  }
+}
+
+TEST(DesignMix, FootprintWeightTradesConditionForASmallerMachine) {
+  DesignBrief cond = goalBrief();
+  cond.mode = WorkingMode::PlusMinus;
+  DesignBrief mix = cond;
+  mix.objective = Objective::Mix;
+  mix.weights = {1.0, 0.0, 1.0};
+  const SearchResult a = searchDesigns(cond, quick()), b = searchDesigns(mix, quick());
+  ASSERT_EQ(a.status, SearchStatus::Found);
+  ASSERT_EQ(b.status, SearchStatus::Found);
+  const DesignMeasures &ma = a.best->evaluation.measures, &mb = b.best->evaluation.measures;
+  EXPECT_LT(mb.footprintMm2, 0.9 * ma.footprintMm2);
+  EXPECT_GT(mb.worstCondition, ma.worstCondition);
+  // The mix's own score is better for the mix's design than for the condition design.
+  EXPECT_LT(objectiveValue(Objective::Mix, mb, mix.weights), objectiveValue(Objective::Mix, ma, mix.weights));
+  expectWithinBrief(*b.best, mix);
+}
+
+TEST(DesignMix, TermsAreNormalisedAndWeightsValidated) {
+  const Geometry g{70, 200, 70, 200, 250};
+  const DesignRules rules;
+  const Evaluation e = evaluateDesign(g, WorkingMode::PlusPlus, centredRect(0.0, 155.0, 110, 90), rules);
+  const DesignMeasures& m = e.measures;
+  EXPECT_DOUBLE_EQ(m.rectangleAreaMm2, 110.0 * 90.0);
+  EXPECT_DOUBLE_EQ(normalisedFootprint(m), m.footprintMm2 / (110.0 * 90.0));
+  EXPECT_GE(normalisedFootprint(m), 1.0);
+  EXPECT_DOUBLE_EQ(normalisedResolution(m), m.worstMmPerStep / (rules.workspace.stepRad1 * std::sqrt(110.0 * 90.0)));
+  EXPECT_DOUBLE_EQ(objectiveValue(Objective::Mix, m, {2.0, 0.0, 0.0}), 2.0 * m.worstCondition);
+  EXPECT_DOUBLE_EQ(objectiveValue(Objective::Mix, m, {1.0, 1.0, 1.0}),
+                   normalisedCondition(m) + normalisedResolution(m) + normalisedFootprint(m));
+  DesignBrief b = goalBrief();
+  b.objective = Objective::Mix;
+  b.weights = {0.0, 0.0, 0.0};
+  auto issues = validate(b);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].field, "weights");
+  b.weights = {1.0, -1.0, 0.0};
+  EXPECT_EQ(validate(b).size(), 1u);
+  b.objective = Objective::Condition;  // weights are the mix's only
+  EXPECT_TRUE(validate(b).empty());
+  EXPECT_EQ(parseObjective("mix"), Objective::Mix);
+}
+
+// The placement alone: one weight on resolution places the rectangle like the resolution
+// objective; rotation is tried when allowed and reported.
+TEST(DesignMix, PlacementWithOneWeightMatchesItsObjective) {
+  const Geometry g{70, 200, 70, 200, 250};
+  const DesignRules rules;
+  PlacementOptions single, mix;
+  single.objective = Objective::Resolution;
+  mix.objective = Objective::Mix;
+  mix.weights = {0.0, 1.0, 0.0};
+  const Placement a = bestPlacement(g, WorkingMode::PlusPlus, 100.0, 60.0, rules, single);
+  const Placement b = bestPlacement(g, WorkingMode::PlusPlus, 100.0, 60.0, rules, mix);
+  EXPECT_NEAR(a.rect.xMin, b.rect.xMin, 1e-6);
+  EXPECT_NEAR(a.rect.yMin, b.rect.yMin, 1e-6);
 }
 
 }  // namespace

@@ -98,7 +98,29 @@ QWidget* DesignDialog::makeBriefPanel() {
   mode_->addItem(tr("Any"));
   for (WorkingMode m : kAllWorkingModes) mode_->addItem(QString::fromUtf8(toString(m).data(), 2));
   objective_ = new QComboBox;
-  objective_->addItems({tr("Worst condition number"), tr("Worst resolution"), tr("Footprint")});
+  objective_->addItems({tr("Worst condition number"), tr("Worst resolution"), tr("Footprint"),
+                        tr("Weighted mix")});
+  // Mix weights on the normalised terms (docs/design.md "Mix"); used by the weighted mix only.
+  weightCondition_ = spin(0, 100, 1, QString());
+  weightResolution_ = spin(0, 100, 1, QString());
+  weightFootprint_ = spin(0, 100, 1, QString());
+  auto* weights = new QWidget;
+  auto* weightRow = new QHBoxLayout(weights);
+  weightRow->setContentsMargins(0, 0, 0, 0);
+  const struct {
+    QString label;
+    const char* name;
+    QDoubleSpinBox* box;
+  } weightFields[] = {{tr("Condition"), "weightCondition", weightCondition_},
+                      {tr("Resolution"), "weightResolution", weightResolution_},
+                      {tr("Footprint"), "weightFootprint", weightFootprint_}};
+  for (const auto& [label, name, field] : weightFields) {
+    field->setObjectName(QString::fromLatin1(name));
+    field->setToolTip(tr("Weight of this normalised term in the weighted mix"));
+    weightRow->addWidget(new QLabel(label));
+    weightRow->addWidget(field);
+  }
+  weights->setEnabled(false);
   form->addRow(tr("Paper"), paper_);
   form->addRow(tr("Orientation"), orientation_);
   form->addRow(tr("Width"), width_);
@@ -113,6 +135,9 @@ QWidget* DesignDialog::makeBriefPanel() {
   form->addRow(QString(), symmetric_);
   form->addRow(tr("Working mode"), mode_);
   form->addRow(tr("Objective"), objective_);
+  form->addRow(tr("Mix weights"), weights);
+  connect(objective_, &QComboBox::currentIndexChanged, weights,
+          [this, weights](int index) { weights->setEnabled(index == 3); });
   search_ = new QPushButton(tr("Search"));
   search_->setDefault(true);
   cancelButton_ = new QPushButton(tr("Cancel"));
@@ -205,8 +230,9 @@ design::DesignBrief DesignDialog::brief() const {
   b.rules.penSpeedMmPerS = doc_.profile().drawSpeedMmPerS;
   if (mode_->currentIndex() > 0) b.mode = kAllWorkingModes[static_cast<std::size_t>(mode_->currentIndex() - 1)];
   const design::Objective objectives[] = {design::Objective::Condition, design::Objective::Resolution,
-                                          design::Objective::Footprint};
-  b.objective = objectives[std::clamp(objective_->currentIndex(), 0, 2)];
+                                          design::Objective::Footprint, design::Objective::Mix};
+  b.objective = objectives[std::clamp(objective_->currentIndex(), 0, 3)];
+  b.weights = {weightCondition_->value(), weightResolution_->value(), weightFootprint_->value()};
   return b;
 }
 

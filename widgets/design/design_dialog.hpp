@@ -90,6 +90,9 @@ class DesignDialog : public QDialog {
   QCheckBox* symmetric_ = nullptr;
   QComboBox* mode_ = nullptr;
   QComboBox* objective_ = nullptr;
+  QDoubleSpinBox* weightCondition_ = nullptr;
+  QDoubleSpinBox* weightResolution_ = nullptr;
+  QDoubleSpinBox* weightFootprint_ = nullptr;
   QComboBox* mapKind_ = nullptr;
   QPushButton* search_ = nullptr;
   QPushButton* cancelButton_ = nullptr;
