@@ -12,6 +12,7 @@ using Args = std::vector<std::string>;
 int runIk(const Args& args);             // cmd_kinematics.cpp
 int runFk(const Args& args);             // cmd_kinematics.cpp
 int runWorkspace(const Args& args);      // cmd_workspace.cpp
+int runDesign(const Args& args);         // cmd_design.cpp
 int runProfile(const Args& args);        // cmd_profile.cpp
 int runPlan(const Args& args);           // cmd_plan.cpp
 int runGrblSettings(const Args& args);   // cmd_plan.cpp

@@ -18,6 +18,7 @@ constexpr Command kCommands[] = {
     {"ik", "inverse kinematics: x,y lines on stdin -> theta1,theta2 (deg)", fivebar::cli::runIk},
     {"fk", "forward kinematics: theta1,theta2 lines on stdin -> x,y (mm)", fivebar::cli::runFk},
     {"workspace", "workspace areas, inscribed rectangle, overlay image", fivebar::cli::runWorkspace},
+    {"design", "link lengths for a paper size: search, trade-off, profile", fivebar::cli::runDesign},
     {"profile", "machine profiles: check FILE", fivebar::cli::runProfile},
     {"plan", "SVG drawing -> GRBL G-code job and report", fivebar::cli::runPlan},
     {"grbl-settings", "the GRBL $ settings a machine profile expects", fivebar::cli::runGrblSettings},

@@ -18,6 +18,7 @@
 #include "app/studio/file_actions.hpp"
 #include "core/kinematics/kinematics.hpp"
 #include "widgets/canvas_view.hpp"
+#include "widgets/design/design_dialog.hpp"
 #include "widgets/import_controller.hpp"
 #include "widgets/fill_options_box.hpp"
 #include "widgets/import_warnings_panel.hpp"
@@ -69,6 +70,7 @@ MainWindow::MainWindow(const MachineProfile& profile, QWidget* parent) : QMainWi
                               Qt::DockWidgetArea area) { return addMachinePanel(panel, title, name, area); });
   machineMenu_->addSeparator();
   machineMenu_->addAction(machineUi->settingsAction());
+  machineMenu_->addAction(DesignDialog::createAction(*doc_, *canvas_, this));
   cursorLabel_ = new QLabel(this);
   statusBar()->addPermanentWidget(cursorLabel_);
   connect(canvas_, &CanvasView::cursorMoved, this, [this](QPointF mm) {

@@ -19,6 +19,8 @@
 #include "core/machine/profile.hpp"
 #include "widgets/console_panel.hpp"
 #include "widgets/fill_options_box.hpp"
+#include "widgets/design/design_dialog.hpp"
+#include "widgets/design/pareto_plot.hpp"
 #include "widgets/import_controller.hpp"
 #include "widgets/import_warnings_panel.hpp"
 #include "widgets/jog_controller.hpp"
@@ -61,10 +63,11 @@ std::set<QString> runtimeContexts() {
         &ProfileEditor::staticMetaObject, &RunController::staticMetaObject,
         &RunPanel::staticMetaObject, &SimulationPanel::staticMetaObject,
         &StudioDocument::staticMetaObject, &FillOptionsBox::staticMetaObject,
-        &ImportWarningsPanel::staticMetaObject})
+        &ImportWarningsPanel::staticMetaObject, &DesignDialog::staticMetaObject,
+        &ParetoPlot::staticMetaObject})
     names.insert(QString::fromLatin1(m->className()));
   for (const char* c : {"QObject", "main", "DocumentCommands", "JobPipeline", "MapPainter",
-                        "WorkspaceLegend", "ImportWarningsPanel"})
+                        "WorkspaceLegend", "ImportWarningsPanel", "DesignPainter"})
     names.insert(QString::fromLatin1(c));
   return names;
 }
