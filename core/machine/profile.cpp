@@ -6,6 +6,8 @@
 #include <sstream>
 
 #include "core/machine/junction_deviation.hpp"
+#include "core/kinematics/units.hpp"
+#include "core/machine/profile_fields.hpp"
 #include "core/machine/profile_json.hpp"
 
 namespace fivebar {
@@ -23,28 +25,6 @@ std::string fmt(double v) {
   return s.str();
 }
 
-// Appends an issue when v is not finite or not above (or, with allowZero, at) zero.
-void checkPositive(std::vector<ValidationIssue>& out, const std::string& field, double v,
-                   bool allowZero = false) {
-  if (!std::isfinite(v)) {
-    out.push_back({field, field + " must be a finite number"});
-  } else if (v < 0.0 || (!allowZero && v == 0.0)) {
-    out.push_back({field, field + " must be " + (allowZero ? "zero or positive" : "positive") +
-                              ", got " + fmt(v)});
-  }
-}
-
-void checkRange(std::vector<ValidationIssue>& out, const std::string& field, double v, double lo,
-                double hi, const char* unit) {
-  if (!std::isfinite(v) || v < lo || v > hi) {
-    out.push_back({field, field + " must be between " + fmt(lo) + " and " + fmt(hi) + " " + unit +
-                              ", got " + fmt(v)});
-  }
-}
-
-// Degrees for the file, rounded to 1e-9 deg so that 15 deg does not print as 14.999999999999998.
-double fileDeg(double angleRad) { return std::round(degFromRad(angleRad) * 1e9) / 1e9; }
-
 bool limitsAreUnlimited(const JointLimits& l) { return l == JointLimits{}; }
 
 void validateLimits(std::vector<ValidationIssue>& out, const JointLimits& l) {
@@ -60,29 +40,20 @@ void validateLimits(std::vector<ValidationIssue>& out, const JointLimits& l) {
   pair("theta2", l.theta2Min, l.theta2Max);
 }
 
-void validateMotorsAndTool(std::vector<ValidationIssue>& out, const MachineProfile& p) {
-  const MotorSettings& m = p.motors;
-  checkPositive(out, "motors.stepsPerDeg1", m.stepsPerDeg1);
-  checkPositive(out, "motors.stepsPerDeg2", m.stepsPerDeg2);
-  checkPositive(out, "motors.maxSpeedDegPerMin1", degFromRad(m.maxSpeedRadPerS1) * 60.0);
-  checkPositive(out, "motors.maxSpeedDegPerMin2", degFromRad(m.maxSpeedRadPerS2) * 60.0);
-  checkPositive(out, "motors.maxAccelDegPerS2_1", degFromRad(m.maxAccelRadPerS2_1));
-  checkPositive(out, "motors.maxAccelDegPerS2_2", degFromRad(m.maxAccelRadPerS2_2));
-  checkPositive(out, "motors.junctionDeviationDeg", m.junctionDeviationDeg);
+// The table's rule for every field of `section` (limits and home are checked against each other).
+void validateSection(std::vector<ValidationIssue>& out, const MachineProfile& p, const std::string& section) {
+  for (const ProfileField& f : profileFields())
+    if (sectionOf(f) == section)
+      for (const ValidationIssue& issue : checkField(f, f.get(p))) out.push_back(issue);
+}
+
+void validateTool(std::vector<ValidationIssue>& out, const MachineProfile& p) {
+  validateSection(out, p, "tool");
   const ToolSettings& t = p.tool;
-  checkPositive(out, "tool.penUpS", t.penUpS, true);
-  checkPositive(out, "tool.penDownS", t.penDownS, true);
-  checkRange(out, "tool.penUpDelayS", t.penUpDelayS, 0.0, 10.0, "s");
-  checkRange(out, "tool.penDownDelayS", t.penDownDelayS, 0.0, 10.0, "s");
-  if (!std::isfinite(t.zUpMm)) out.push_back({"tool.zUpMm", "tool.zUpMm must be a finite number"});
-  if (!std::isfinite(t.zDownMm))
-    out.push_back({"tool.zDownMm", "tool.zDownMm must be a finite number"});
   if (t.kind == ToolKind::ZAxis && std::isfinite(t.zUpMm) && std::isfinite(t.zDownMm) &&
       !(t.zUpMm > t.zDownMm))
     out.push_back({"tool.zUpMm", "tool.zUpMm (" + fmt(t.zUpMm) + ") must be above tool.zDownMm (" +
                                      fmt(t.zDownMm) + ")"});
-  checkPositive(out, "tool.zFeedMmPerMin", t.zFeedMmPerMin);
-  checkPositive(out, "tool.laserPowerS", t.laserPowerS, true);
 }
 
 void validateHome(std::vector<ValidationIssue>& out, const MachineProfile& p) {
@@ -120,11 +91,7 @@ std::vector<ValidationIssue> validate(const MachineProfile& p) {
   std::vector<ValidationIssue> out;
   if (p.name.empty()) out.push_back({"name", "name must not be empty"});
   const Geometry& g = p.geometry;
-  checkPositive(out, "geometry.a1", g.a1);
-  checkPositive(out, "geometry.b1", g.b1);
-  checkPositive(out, "geometry.a2", g.a2);
-  checkPositive(out, "geometry.b2", g.b2);
-  checkPositive(out, "geometry.w", g.w, true);
+  validateSection(out, p, "geometry");
   const std::size_t fieldIssues = out.size();
   validateLimits(out, p.limits);
   if (out.size() == fieldIssues) {
@@ -134,14 +101,9 @@ std::vector<ValidationIssue> validate(const MachineProfile& p) {
       out.push_back(issue);
     }
   }
-  validateMotorsAndTool(out, p);
-  checkPositive(out, "motion.drawSpeedMmPerS", p.drawSpeedMmPerS);
-  checkPositive(out, "motion.travelSpeedMmPerS", p.travelSpeedMmPerS);
-  checkRange(out, "safety.typeIIMarginDeg", degFromRad(p.typeIIMarginRad), 0.0, 89.0, "deg");
-  checkRange(out, "safety.typeIMarginDeg", degFromRad(p.typeIMarginRad), 0.0, 89.0, "deg");
-  if (p.baudRate <= 0)
-    out.push_back({"connection.baudRate",
-                   "connection.baudRate must be positive, got " + std::to_string(p.baudRate)});
+  for (const char* section : {"motors"}) validateSection(out, p, section);
+  validateTool(out, p);
+  for (const char* section : {"motion", "safety", "connection"}) validateSection(out, p, section);
   validateHome(out, p);
   return out;
 }
@@ -151,45 +113,37 @@ std::string toJson(const MachineProfile& p) {
   j["schema"] = kSchemaName;
   j["version"] = MachineProfile::kSchemaVersion;
   j["name"] = p.name;
-  const Geometry& g = p.geometry;
-  j["geometry"] = {{"a1", g.a1}, {"b1", g.b1}, {"a2", g.a2}, {"b2", g.b2}, {"w", g.w}};
-  if (!limitsAreUnlimited(p.limits)) {
-    const JointLimits& l = p.limits;
-    j["limits"] = {{"theta1MinDeg", fileDeg(l.theta1Min)}, {"theta1MaxDeg", fileDeg(l.theta1Max)},
-                   {"theta2MinDeg", fileDeg(l.theta2Min)}, {"theta2MaxDeg", fileDeg(l.theta2Max)}};
+  for (const ProfileField& f : profileFields()) {
+    const std::string section = sectionOf(f);
+    if (section == "limits" && limitsAreUnlimited(p.limits)) continue;
+    const double v = f.get(p);
+    if (f.integer) j[section][keyOf(f)] = static_cast<int>(v);
+    else j[section][keyOf(f)] = f.roundOnWrite ? roundForFile(v) : v;
   }
   j["workingMode"] = std::string(toString(p.defaultMode));
   j["assemblyMode"] = std::string(toString(p.assembly));
-  const MotorSettings& m = p.motors;
-  j["motors"] = {{"stepsPerDeg1", m.stepsPerDeg1},
-                 {"stepsPerDeg2", m.stepsPerDeg2},
-                 {"maxSpeedDegPerMin1", std::round(degFromRad(m.maxSpeedRadPerS1) * 60.0 * 1e9) / 1e9},
-                 {"maxSpeedDegPerMin2", std::round(degFromRad(m.maxSpeedRadPerS2) * 60.0 * 1e9) / 1e9},
-                 {"maxAccelDegPerS2_1", fileDeg(m.maxAccelRadPerS2_1)},
-                 {"maxAccelDegPerS2_2", fileDeg(m.maxAccelRadPerS2_2)},
-                 {"junctionDeviationDeg", m.junctionDeviationDeg}};
-  const ToolSettings& t = p.tool;
-  j["tool"] = {{"kind", toolName(t.kind)},       {"penUpS", t.penUpS},
-               {"penDownS", t.penDownS},         {"penUpDelayS", t.penUpDelayS},
-               {"penDownDelayS", t.penDownDelayS}, {"zUpMm", t.zUpMm},
-               {"zDownMm", t.zDownMm},           {"zFeedMmPerMin", t.zFeedMmPerMin},
-               {"laserPowerS", t.laserPowerS}};
-  j["motion"] = {{"drawSpeedMmPerS", p.drawSpeedMmPerS}, {"travelSpeedMmPerS", p.travelSpeedMmPerS}};
-  j["safety"] = {{"typeIIMarginDeg", fileDeg(p.typeIIMarginRad)},
-                 {"typeIMarginDeg", fileDeg(p.typeIMarginRad)}};
-  j["connection"] = {{"baudRate", p.baudRate}, {"hasHomingSwitches", p.hasHomingSwitches}};
-  j["home"] = {{"theta1Deg", fileDeg(p.homeAngles.theta1)},
-               {"theta2Deg", fileDeg(p.homeAngles.theta2)}};
+  j["tool"]["kind"] = toolName(p.tool.kind);
+  j["connection"]["hasHomingSwitches"] = p.hasHomingSwitches;
   return j.dump(2) + "\n";
 }
 
 namespace {
 
-// Reads "x...Deg" into a radian field.
-void degrees(ObjectReader& r, const char* key, double& outRad, bool required = false) {
-  double deg = degFromRad(outRad);
-  r.number(key, deg, required);
-  outRad = radFromDeg(deg);
+// Reads the table's fields of one section, in file units. An absent field keeps its value.
+void readNumbers(ObjectReader& r, const std::string& section, MachineProfile& p) {
+  for (const ProfileField& f : profileFields()) {
+    if (sectionOf(f) != section) continue;
+    const std::string key = keyOf(f);
+    if (f.integer) {
+      int v = static_cast<int>(f.get(p));
+      r.integer(key.c_str(), v, f.required);
+      f.set(p, v);
+    } else {
+      double v = f.get(p);
+      r.number(key.c_str(), v, f.required);
+      f.set(p, v);
+    }
+  }
 }
 
 void readModes(ObjectReader& root, MachineProfile& p, std::vector<ValidationIssue>& issues) {
@@ -203,23 +157,6 @@ void readModes(ObjectReader& root, MachineProfile& p, std::vector<ValidationIssu
   else issues.push_back({"assemblyMode", "assemblyMode must be + or -, got \"" + text + "\""});
 }
 
-void readMotors(const json* o, MachineProfile& p, std::vector<ValidationIssue>& issues) {
-  if (!o) return;
-  ObjectReader r(*o, "motors", issues);
-  MotorSettings& m = p.motors;
-  r.number("stepsPerDeg1", m.stepsPerDeg1);
-  r.number("stepsPerDeg2", m.stepsPerDeg2);
-  double v1 = degFromRad(m.maxSpeedRadPerS1) * 60.0, v2 = degFromRad(m.maxSpeedRadPerS2) * 60.0;
-  r.number("maxSpeedDegPerMin1", v1);
-  r.number("maxSpeedDegPerMin2", v2);
-  m.maxSpeedRadPerS1 = radFromDeg(v1 / 60.0);
-  m.maxSpeedRadPerS2 = radFromDeg(v2 / 60.0);
-  degrees(r, "maxAccelDegPerS2_1", m.maxAccelRadPerS2_1);
-  degrees(r, "maxAccelDegPerS2_2", m.maxAccelRadPerS2_2);
-  r.number("junctionDeviationDeg", m.junctionDeviationDeg);
-  r.finish();
-}
-
 void readTool(const json* o, MachineProfile& p, std::vector<ValidationIssue>& issues) {
   if (!o) return;
   ObjectReader r(*o, "tool", issues);
@@ -228,65 +165,41 @@ void readTool(const json* o, MachineProfile& p, std::vector<ValidationIssue>& is
   r.string("kind", kind);
   if (auto k = parseToolKind(kind)) t.kind = *k;
   else issues.push_back({"tool.kind", "tool.kind must be pen-servo, z-axis or laser, got \"" + kind + "\""});
-  r.number("penUpS", t.penUpS);
-  r.number("penDownS", t.penDownS);
-  r.number("penUpDelayS", t.penUpDelayS);
-  r.number("penDownDelayS", t.penDownDelayS);
-  r.number("zUpMm", t.zUpMm);
-  r.number("zDownMm", t.zDownMm);
-  r.number("zFeedMmPerMin", t.zFeedMmPerMin);
-  r.number("laserPowerS", t.laserPowerS);
+  readNumbers(r, "tool", p);
   r.finish();
+}
+
+// A section holding only table fields.
+void readSection(ObjectReader& root, const char* section, MachineProfile& p,
+                 std::vector<ValidationIssue>& issues, bool required = false) {
+  if (const json* o = root.object(section, required)) {
+    ObjectReader r(*o, section, issues);
+    readNumbers(r, section, p);
+    r.finish();
+  }
 }
 
 void readSections(ObjectReader& root, MachineProfile& p, std::vector<ValidationIssue>& issues) {
   if (const json* o = root.object("geometry", true)) {
     ObjectReader r(*o, "geometry", issues);
-    Geometry& g = p.geometry;
-    g = {std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan("")};
-    r.number("a1", g.a1, true);
-    r.number("b1", g.b1, true);
-    r.number("a2", g.a2, true);
-    r.number("b2", g.b2, true);
-    r.number("w", g.w, true);
+    p.geometry = {std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan("")};
+    readNumbers(r, "geometry", p);
     r.finish();
   }
-  if (const json* o = root.object("limits")) {
-    ObjectReader r(*o, "limits", issues);
-    degrees(r, "theta1MinDeg", p.limits.theta1Min, true);
-    degrees(r, "theta1MaxDeg", p.limits.theta1Max, true);
-    degrees(r, "theta2MinDeg", p.limits.theta2Min, true);
-    degrees(r, "theta2MaxDeg", p.limits.theta2Max, true);
-    r.finish();
-  }
+  readSection(root, "limits", p, issues);
   readModes(root, p, issues);
   const json* motors = root.object("motors");
-  readMotors(motors, p, issues);
+  readSection(root, "motors", p, issues);
   readTool(root.object("tool"), p, issues);
-  if (const json* o = root.object("motion")) {
-    ObjectReader r(*o, "motion", issues);
-    r.number("drawSpeedMmPerS", p.drawSpeedMmPerS);
-    r.number("travelSpeedMmPerS", p.travelSpeedMmPerS);
-    r.finish();
-  }
-  if (const json* o = root.object("safety")) {
-    ObjectReader r(*o, "safety", issues);
-    degrees(r, "typeIIMarginDeg", p.typeIIMarginRad);
-    degrees(r, "typeIMarginDeg", p.typeIMarginRad);
-    r.finish();
-  }
+  readSection(root, "motion", p, issues);
+  readSection(root, "safety", p, issues);
   if (const json* o = root.object("connection")) {
     ObjectReader r(*o, "connection", issues);
-    r.integer("baudRate", p.baudRate);
+    readNumbers(r, "connection", p);
     r.boolean("hasHomingSwitches", p.hasHomingSwitches);
     r.finish();
   }
-  if (const json* o = root.object("home")) {
-    ObjectReader r(*o, "home", issues);
-    degrees(r, "theta1Deg", p.homeAngles.theta1);
-    degrees(r, "theta2Deg", p.homeAngles.theta2);
-    r.finish();
-  }
+  readSection(root, "home", p, issues);
   // A profile without $11 gets the one that keeps corners within the default tolerance.
   if ((!motors || !motors->contains("junctionDeviationDeg")) && validate(p.geometry).empty())
     p.motors.junctionDeviationDeg = junctionDeviationDegFor(p, kCorneringToleranceMm);

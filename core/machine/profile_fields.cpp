@@ -1,0 +1,188 @@
+#include "core/machine/profile_fields.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "core/kinematics/units.hpp"
+
+namespace fivebar {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kLengthInputMm = 10000.0;
+constexpr double kAngleInputDeg = 3600.0;
+
+using R = FieldRule;
+
+// Field builders; the accessors are captureless lambdas (plain function pointers).
+ProfileField field(const char* path, const char* label, const char* unit, R rule, double inputMin,
+                   double inputMax, int decimals, double (*get)(const MachineProfile&),
+                   void (*set)(MachineProfile&, double)) {
+  return {path,     label,    unit,     rule,  0.0,   kInf, inputMin, inputMax,
+          decimals, false,    false,    false, get,   set};
+}
+ProfileField between(ProfileField f, double lo, double hi) {
+  f.validMin = lo;
+  f.validMax = hi;
+  return f;
+}
+ProfileField required(ProfileField f) {
+  f.required = true;
+  return f;
+}
+ProfileField rounded(ProfileField f) {
+  f.roundOnWrite = true;
+  return f;
+}
+
+std::vector<ProfileField> makeTable() {
+  using P = MachineProfile;
+  const double L = kLengthInputMm, A = kAngleInputDeg;
+  return {
+      required(field("geometry.a1", "Driving link a1", "mm", R::Positive, -L, L, 2,
+                     [](const P& p) { return p.geometry.a1; }, [](P& p, double v) { p.geometry.a1 = v; })),
+      required(field("geometry.b1", "Floating link b1", "mm", R::Positive, -L, L, 2,
+                     [](const P& p) { return p.geometry.b1; }, [](P& p, double v) { p.geometry.b1 = v; })),
+      required(field("geometry.a2", "Driving link a2", "mm", R::Positive, -L, L, 2,
+                     [](const P& p) { return p.geometry.a2; }, [](P& p, double v) { p.geometry.a2 = v; })),
+      required(field("geometry.b2", "Floating link b2", "mm", R::Positive, -L, L, 2,
+                     [](const P& p) { return p.geometry.b2; }, [](P& p, double v) { p.geometry.b2 = v; })),
+      required(field("geometry.w", "Motor distance w", "mm", R::NonNegative, -L, L, 2,
+                     [](const P& p) { return p.geometry.w; }, [](P& p, double v) { p.geometry.w = v; })),
+
+      required(rounded(field("limits.theta1MinDeg", "θ1 minimum", "deg", R::Finite, -A, A, 3,
+                             [](const P& p) { return degFromRad(p.limits.theta1Min); },
+                             [](P& p, double v) { p.limits.theta1Min = radFromDeg(v); }))),
+      required(rounded(field("limits.theta1MaxDeg", "θ1 maximum", "deg", R::Finite, -A, A, 3,
+                             [](const P& p) { return degFromRad(p.limits.theta1Max); },
+                             [](P& p, double v) { p.limits.theta1Max = radFromDeg(v); }))),
+      required(rounded(field("limits.theta2MinDeg", "θ2 minimum", "deg", R::Finite, -A, A, 3,
+                             [](const P& p) { return degFromRad(p.limits.theta2Min); },
+                             [](P& p, double v) { p.limits.theta2Min = radFromDeg(v); }))),
+      required(rounded(field("limits.theta2MaxDeg", "θ2 maximum", "deg", R::Finite, -A, A, 3,
+                             [](const P& p) { return degFromRad(p.limits.theta2Max); },
+                             [](P& p, double v) { p.limits.theta2Max = radFromDeg(v); }))),
+
+      field("motors.stepsPerDeg1", "Motor 1 steps per degree", "steps/deg", R::Positive, -1e6, 1e6, 4,
+            [](const P& p) { return p.motors.stepsPerDeg1; }, [](P& p, double v) { p.motors.stepsPerDeg1 = v; }),
+      field("motors.stepsPerDeg2", "Motor 2 steps per degree", "steps/deg", R::Positive, -1e6, 1e6, 4,
+            [](const P& p) { return p.motors.stepsPerDeg2; }, [](P& p, double v) { p.motors.stepsPerDeg2 = v; }),
+      rounded(field("motors.maxSpeedDegPerMin1", "Motor 1 maximum speed", "deg/min", R::Positive, -1e6, 1e6, 0,
+                    [](const P& p) { return degPerMinFromRadPerS(p.motors.maxSpeedRadPerS1); },
+                    [](P& p, double v) { p.motors.maxSpeedRadPerS1 = radPerSFromDegPerMin(v); })),
+      rounded(field("motors.maxSpeedDegPerMin2", "Motor 2 maximum speed", "deg/min", R::Positive, -1e6, 1e6, 0,
+                    [](const P& p) { return degPerMinFromRadPerS(p.motors.maxSpeedRadPerS2); },
+                    [](P& p, double v) { p.motors.maxSpeedRadPerS2 = radPerSFromDegPerMin(v); })),
+      rounded(field("motors.maxAccelDegPerS2_1", "Motor 1 acceleration", "deg/s²", R::Positive, -1e6, 1e6, 1,
+                    [](const P& p) { return degPerS2FromRadPerS2(p.motors.maxAccelRadPerS2_1); },
+                    [](P& p, double v) { p.motors.maxAccelRadPerS2_1 = radPerS2FromDegPerS2(v); })),
+      rounded(field("motors.maxAccelDegPerS2_2", "Motor 2 acceleration", "deg/s²", R::Positive, -1e6, 1e6, 1,
+                    [](const P& p) { return degPerS2FromRadPerS2(p.motors.maxAccelRadPerS2_2); },
+                    [](P& p, double v) { p.motors.maxAccelRadPerS2_2 = radPerS2FromDegPerS2(v); })),
+      field("motors.junctionDeviationDeg", "Junction deviation", "deg", R::Positive, -1e6, 1e6, 3,
+            [](const P& p) { return p.motors.junctionDeviationDeg; },
+            [](P& p, double v) { p.motors.junctionDeviationDeg = v; }),
+
+      field("tool.penUpS", "Pen up S value", "", R::NonNegative, -1e5, 1e5, 0,
+            [](const P& p) { return p.tool.penUpS; }, [](P& p, double v) { p.tool.penUpS = v; }),
+      field("tool.penDownS", "Pen down S value", "", R::NonNegative, -1e5, 1e5, 0,
+            [](const P& p) { return p.tool.penDownS; }, [](P& p, double v) { p.tool.penDownS = v; }),
+      between(field("tool.penUpDelayS", "Pen up delay", "s", R::Between, -100, 100, 2,
+                    [](const P& p) { return p.tool.penUpDelayS; }, [](P& p, double v) { p.tool.penUpDelayS = v; }),
+              0.0, 10.0),
+      between(field("tool.penDownDelayS", "Pen down delay", "s", R::Between, -100, 100, 2,
+                    [](const P& p) { return p.tool.penDownDelayS; },
+                    [](P& p, double v) { p.tool.penDownDelayS = v; }),
+              0.0, 10.0),
+      field("tool.zUpMm", "Z up", "mm", R::Finite, -1000, 1000, 2,
+            [](const P& p) { return p.tool.zUpMm; }, [](P& p, double v) { p.tool.zUpMm = v; }),
+      field("tool.zDownMm", "Z down", "mm", R::Finite, -1000, 1000, 2,
+            [](const P& p) { return p.tool.zDownMm; }, [](P& p, double v) { p.tool.zDownMm = v; }),
+      field("tool.zFeedMmPerMin", "Z feed", "mm/min", R::Positive, -1e5, 1e5, 0,
+            [](const P& p) { return p.tool.zFeedMmPerMin; }, [](P& p, double v) { p.tool.zFeedMmPerMin = v; }),
+      field("tool.laserPowerS", "Laser power S value", "", R::NonNegative, -1e5, 1e5, 0,
+            [](const P& p) { return p.tool.laserPowerS; }, [](P& p, double v) { p.tool.laserPowerS = v; }),
+
+      field("motion.drawSpeedMmPerS", "Drawing speed", "mm/s", R::Positive, -1e4, 1e4, 1,
+            [](const P& p) { return p.drawSpeedMmPerS; }, [](P& p, double v) { p.drawSpeedMmPerS = v; }),
+      field("motion.travelSpeedMmPerS", "Travel speed", "mm/s", R::Positive, -1e4, 1e4, 1,
+            [](const P& p) { return p.travelSpeedMmPerS; }, [](P& p, double v) { p.travelSpeedMmPerS = v; }),
+
+      rounded(between(field("safety.typeIIMarginDeg", "Type II singularity margin", "deg", R::Between, -180, 180, 2,
+                            [](const P& p) { return degFromRad(p.typeIIMarginRad); },
+                            [](P& p, double v) { p.typeIIMarginRad = radFromDeg(v); }),
+                      0.0, 89.0)),
+      rounded(between(field("safety.typeIMarginDeg", "Type I singularity margin", "deg", R::Between, -180, 180, 2,
+                            [](const P& p) { return degFromRad(p.typeIMarginRad); },
+                            [](P& p, double v) { p.typeIMarginRad = radFromDeg(v); }),
+                      0.0, 89.0)),
+
+      [] {
+        ProfileField f = field("connection.baudRate", "Baud rate", "baud", R::Positive, -1e7, 1e7, 0,
+                               [](const P& p) { return double(p.baudRate); },
+                               [](P& p, double v) { p.baudRate = int(v); });
+        f.integer = true;
+        return f;
+      }(),
+
+      rounded(field("home.theta1Deg", "Home θ1", "deg", R::Finite, -A, A, 4,
+                    [](const P& p) { return degFromRad(p.homeAngles.theta1); },
+                    [](P& p, double v) { p.homeAngles.theta1 = radFromDeg(v); })),
+      rounded(field("home.theta2Deg", "Home θ2", "deg", R::Finite, -A, A, 4,
+                    [](const P& p) { return degFromRad(p.homeAngles.theta2); },
+                    [](P& p, double v) { p.homeAngles.theta2 = radFromDeg(v); })),
+  };
+}
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s.precision(10);
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+const std::vector<ProfileField>& profileFields() {
+  static const std::vector<ProfileField> table = makeTable();
+  return table;
+}
+
+const ProfileField* findProfileField(const std::string& path) {
+  for (const ProfileField& f : profileFields())
+    if (path == f.path) return &f;
+  return nullptr;
+}
+
+std::string sectionOf(const ProfileField& f) {
+  const std::string path = f.path;
+  return path.substr(0, path.find('.'));
+}
+
+std::string keyOf(const ProfileField& f) {
+  const std::string path = f.path;
+  return path.substr(path.find('.') + 1);
+}
+
+std::vector<ValidationIssue> checkField(const ProfileField& f, double v) {
+  const std::string path = f.path;
+  if (!std::isfinite(v)) return {{path, path + " must be a finite number"}};
+  switch (f.rule) {
+    case FieldRule::Positive:
+      if (v <= 0.0) return {{path, path + " must be positive, got " + fmt(v)}};
+      break;
+    case FieldRule::NonNegative:
+      if (v < 0.0) return {{path, path + " must be zero or positive, got " + fmt(v)}};
+      break;
+    case FieldRule::Between:
+      if (v < f.validMin || v > f.validMax)
+        return {{path, path + " must be between " + fmt(f.validMin) + " and " + fmt(f.validMax) + " " +
+                           f.unit + ", got " + fmt(v)}};
+      break;
+    case FieldRule::Finite: break;
+  }
+  return {};
+}
+
+}  // namespace fivebar
