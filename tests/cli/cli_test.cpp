@@ -12,6 +12,7 @@
 #include <regex>
 #include <sstream>
 
+#include "cli_support.hpp"
 #include "core/kinematics/kinematics.hpp"
 #include "core/machine/profile.hpp"
 #include "core/kinematics/singularity.hpp"
@@ -21,6 +22,8 @@ namespace fivebar {
 namespace {
 
 namespace fs = std::filesystem;
+using cli_test::quote;
+using cli_test::slurp;
 
 struct CliRun {
   int exitCode = -1;
@@ -32,19 +35,6 @@ struct CliRun {
     return v;
   }
 };
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 class Cli : public ::testing::Test {
  protected:

@@ -14,6 +14,7 @@
 #include <sstream>
 #include <thread>
 
+#include "cli_support.hpp"
 #include "core/kinematics/units.hpp"
 #include "core/machine/profile.hpp"
 
@@ -21,24 +22,9 @@ namespace fivebar {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct CliResult {
-  int exitCode = -1;
-  std::string out, err;
-};
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using cli_test::quote;
+using cli_test::slurp;
+using cli_test::CliResult;
 
 std::string deg3(double rad) {
   char buf[32];
