@@ -1227,6 +1227,10 @@
     <context>
         <name>fivebar::widgets::PreviewPanel</name>
         <message>
+            <source>%1 % of what this machine can do</source>
+            <translation>%1 % dessen, was diese Maschine kann</translation>
+        </message>
+        <message>
             <source>%1 s</source>
             <translation>%1 s</translation>
         </message>

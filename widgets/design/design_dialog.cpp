@@ -8,6 +8,7 @@
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -105,8 +106,9 @@ QWidget* DesignDialog::makeBriefPanel() {
   weightResolution_ = spin(0, 100, 1, QString());
   weightFootprint_ = spin(0, 100, 1, QString());
   auto* weights = new QWidget;
-  auto* weightRow = new QHBoxLayout(weights);
-  weightRow->setContentsMargins(0, 0, 0, 0);
+  // One weight a row (label, field): the brief column stays narrow enough for the results table.
+  auto* weightRows = new QGridLayout(weights);
+  weightRows->setContentsMargins(0, 0, 0, 0);
   const struct {
     QString label;
     const char* name;
@@ -114,11 +116,13 @@ QWidget* DesignDialog::makeBriefPanel() {
   } weightFields[] = {{tr("Condition"), "weightCondition", weightCondition_},
                       {tr("Resolution"), "weightResolution", weightResolution_},
                       {tr("Footprint"), "weightFootprint", weightFootprint_}};
+  int row = 0;
   for (const auto& [label, name, field] : weightFields) {
     field->setObjectName(QString::fromLatin1(name));
     field->setToolTip(tr("Weight of this normalised term in the weighted mix"));
-    weightRow->addWidget(new QLabel(label));
-    weightRow->addWidget(field);
+    weightRows->addWidget(new QLabel(label), row, 0);
+    weightRows->addWidget(field, row, 1);
+    ++row;
   }
   weights->setEnabled(false);
   form->addRow(tr("Paper"), paper_);
