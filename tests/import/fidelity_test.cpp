@@ -20,6 +20,9 @@
 namespace fivebar::svg {
 namespace {
 
+using test::joined;
+using test::warned;
+
 using test::allPaths;
 using test::importText;
 using test::page;
@@ -56,18 +59,6 @@ double length(const Polyline& line) {
   for (std::size_t i = 1; i < line.points.size(); ++i) sum += (line.points[i] - line.points[i - 1]).norm();
   if (line.closed && line.points.size() > 2) sum += (line.points.front() - line.points.back()).norm();
   return sum;
-}
-
-bool warned(const ImportResult& r, const std::string& text) {
-  for (const std::string& w : r.warnings)
-    if (w.find(text) != std::string::npos) return true;
-  return false;
-}
-
-std::string joined(const ImportResult& r) {
-  std::string s;
-  for (const std::string& w : r.warnings) s += w + "\n";
-  return s;
 }
 
 const std::string kSquareSymbol =

@@ -23,6 +23,20 @@ inline std::string page(const std::string& body, double widthMm = 100, double he
          "mm\" height=\"" + h + "mm\" viewBox=\"0 0 " + w + " " + h + "\">" + body + "</svg>";
 }
 
+// True when one of the import's warnings contains `text`.
+inline bool warned(const svg::ImportResult& r, const std::string& text) {
+  for (const std::string& w : r.warnings)
+    if (w.find(text) != std::string::npos) return true;
+  return false;
+}
+
+// All warnings, a line each (for failure messages).
+inline std::string joined(const svg::ImportResult& r) {
+  std::string s;
+  for (const std::string& w : r.warnings) s += w + "\n";
+  return s;
+}
+
 inline std::size_t pathCount(const Drawing& d) {
   std::size_t n = 0;
   for (const Layer& l : d.layers) n += l.paths.size();

@@ -12,6 +12,9 @@
 namespace fivebar::svg {
 namespace {
 
+using test::joined;
+using test::warned;
+
 using test::allPaths;
 using test::importText;
 using test::page;
@@ -36,18 +39,6 @@ int segmentsFromTo(const Drawing& d, Vec2 a, Vec2 b, double tol = 1e-6) {
     if (((p - a).norm() < tol && (q - b).norm() < tol) || ((p - b).norm() < tol && (q - a).norm() < tol)) ++n;
   }
   return n;
-}
-
-bool warned(const ImportResult& r, const std::string& text) {
-  for (const std::string& w : r.warnings)
-    if (w.find(text) != std::string::npos) return true;
-  return false;
-}
-
-std::string joined(const ImportResult& r) {
-  std::string s;
-  for (const std::string& w : r.warnings) s += w + "\n";
-  return s;
 }
 
 // A 10-unit stick from the reference point along +x: its far end shows position, scale, angle.
