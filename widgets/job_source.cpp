@@ -26,6 +26,7 @@ std::optional<Drawing> importSvgText(const DrawingSource& source, double toleran
   svg::ImportOptions options;
   options.toleranceMm = toleranceMm;
   options.cancel = cancel;
+  options.maxPoints = source.maxPoints;
   svg::ImportResult r = svg::importSvgFile(file.fileName(), options);
   if (!r.ok()) {
     std::string message = r.message;
@@ -42,6 +43,10 @@ std::optional<Drawing> importSvgText(const DrawingSource& source, double toleran
   r.drawing.source = source.name.toStdString();
   r.drawing.flatteningToleranceMm = toleranceMm;
   return std::move(r.drawing);
+}
+
+bool isPointBudgetError(const std::string& error) {
+  return error.find("(the points budget)") != std::string::npos;
 }
 
 PlanResult planRefining(Drawing& drawing, const DrawingSource& source, const MachineProfile& profile,
@@ -72,7 +77,7 @@ bool readFile(const QString& path, QByteArray& out, std::string& error) {
 }
 
 std::optional<LoadedJob> loadProject(const QString& path, const std::optional<MachineProfile>& profile,
-                                     std::string& error) {
+                                     std::string& error, std::size_t maxPoints) {
   QByteArray text;
   if (!readFile(path, text, error)) return std::nullopt;
   ProjectLoad load = projectFromJson(text.toStdString(), path.toStdString());
@@ -86,8 +91,10 @@ std::optional<LoadedJob> loadProject(const QString& path, const std::optional<Ma
   job.isProject = true;
   Project& p = *load.project;
   if (profile) p.profile = *profile;
-  job.source = {QByteArray::fromStdString(p.drawingSvg), QString::fromStdString(p.drawingName)};
+  job.source.svg = QByteArray::fromStdString(p.drawingSvg);
+  job.source.name = QString::fromStdString(p.drawingName);
   if (job.source.name.isEmpty()) job.source.name = QFileInfo(path).fileName();
+  job.source.maxPoints = maxPoints;
   auto drawing = importSvgText(job.source, p.flatteningToleranceMm, error, nullptr, &job.warnings);
   if (!drawing) return std::nullopt;
   applyLayerStates(*drawing, p.layers);
@@ -126,8 +133,8 @@ std::optional<LoadedJob> loadDrawing(const DrawingSource& source, const MachineP
 
 std::optional<LoadedJob> loadJob(const QString& path, const std::optional<MachineProfile>& profile,
                                  PlanOptions options, std::string& error, FillMode fill,
-                                 const HatchSettings& hatch) {
-  if (isProjectPath(path)) return loadProject(path, profile, error);
+                                 const HatchSettings& hatch, std::size_t maxPoints) {
+  if (isProjectPath(path)) return loadProject(path, profile, error, maxPoints);
   if (!profile) {
     error = "no machine profile given";
     return std::nullopt;
@@ -136,6 +143,7 @@ std::optional<LoadedJob> loadJob(const QString& path, const std::optional<Machin
   source.name = QFileInfo(path).fileName();
   source.fill = fill;
   source.hatch = hatch;
+  source.maxPoints = maxPoints;
   if (!readFile(path, source.svg, error)) return std::nullopt;
   return loadDrawing(source, *profile, std::move(options), error);
 }

@@ -26,7 +26,14 @@ struct DrawingSource {
   // source, so a finer re-import keeps the same fill.
   FillMode fill = FillMode::Outline;
   HatchSettings hatch;
+  // Points after flattening an import of this source may produce (0 = no limit): the import
+  // stops reading as soon as the count passes it and fails naming the budget (every import of
+  // the source, the finer re-import too). kDefaultMaxPoints (drawing.hpp) is the usual budget.
+  std::size_t maxPoints = 0;
 };
+
+// True when `error` came from an import stopped by DrawingSource::maxPoints.
+bool isPointBudgetError(const std::string& error);
 
 // Imports SVG text flattened within toleranceMm (work mm); the result carries that tolerance
 // (Drawing::flatteningToleranceMm) and `name` as its source. On failure returns nullopt and
@@ -63,10 +70,12 @@ bool isProjectPath(const QString& path);
 // Loads a drawing or a project. For a drawing, `options` (mode, tolerance, placement options)
 // and `profile` apply and the placement is chosen as in planJob (autoPlacement unless fixed);
 // for a project its own settings apply, and `profile` replaces its machine when given.
-// `fill`/`hatch` apply to a drawing (a project keeps outline fills).
+// `fill`/`hatch` apply to a drawing (a project keeps outline fills); `maxPoints` to both (the
+// import stops past it, DrawingSource::maxPoints).
 std::optional<LoadedJob> loadJob(const QString& path, const std::optional<MachineProfile>& profile,
                                  PlanOptions options, std::string& error,
-                                 FillMode fill = FillMode::Outline, const HatchSettings& hatch = {});
+                                 FillMode fill = FillMode::Outline, const HatchSettings& hatch = {},
+                                 std::size_t maxPoints = 0);
 
 // The same for SVG text already in memory (the built-in demo).
 std::optional<LoadedJob> loadDrawing(const DrawingSource& source, const MachineProfile& profile,

@@ -158,8 +158,15 @@ int plan(const Options& o) {
   // The same steps as the studio (widgets/job_source.hpp): import, place, plan (importing again
   // more finely when the placement enlarges the drawing).
   std::string error;
+  // The points budget stops the import itself as soon as it is passed (a runaway file is never
+  // flattened whole); withinPointBudget checks it again after hatching.
   auto job = widgets::loadJob(QString::fromStdString(file), machine, opt, error, importSettings.fill,
-                              importSettings.hatch);
+                              importSettings.hatch, importSettings.maxPoints);
+  if (!job && widgets::isPointBudgetError(error)) {
+    std::cerr << "fivebar plan: " << error << "; nothing planned. Raise it with --max-points N if the "
+                 "drawing is meant to be this big\n";
+    return 1;
+  }
   if (!job) {
     std::cerr << "fivebar plan: " << error << "\n";
     return 1;

@@ -14,8 +14,6 @@
 
 namespace fivebar::cli {
 
-inline constexpr std::size_t kDefaultMaxPoints = 2'000'000;
-
 struct PlanImportSettings {
   std::size_t maxPoints = kDefaultMaxPoints;  // after flattening and hatching
   FillMode fill = FillMode::Outline;

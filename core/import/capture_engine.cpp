@@ -62,11 +62,14 @@ void appendFlattenedPath(const QPainterPath& path, const QTransform& transform,
   // Points gather in a reused scratch buffer; each polyline then gets one exact allocation.
   thread_local std::vector<Vec2> scratch;
   scratch.clear();
+  bool curved = false;  // the subpath so far holds a curve: its points are flattened
   auto finish = [&] {
     Polyline line;
     line.points.assign(scratch.begin(), scratch.end());
+    line.flattened = curved;
     finishPolyline(line, false, out);
     scratch.clear();
+    curved = false;
   };
   const int n = path.elementCount();
   for (int i = 0; i < n; ++i) {
@@ -83,6 +86,7 @@ void appendFlattenedPath(const QPainterPath& path, const QTransform& transform,
       const Vec2 start = scratch.back();
       flattenCubic(start, mapped(transform, e.x, e.y), mapped(transform, c2.x, c2.y),
                    mapped(transform, p3.x, p3.y), toleranceMm, scratch);
+      curved = true;
       i += 2;
     }
   }
@@ -123,7 +127,11 @@ void CaptureEngine::record(std::vector<Polyline>&& lines, std::uint32_t rgb) {
   if (runs_.empty() || runs_.back().topIndex != topIndex_ || runs_.back().rgb != rgb)
     runs_.push_back(CapturedRun{topIndex_, rgb, {}});
   auto& paths = runs_.back().paths;
-  for (Polyline& line : lines) paths.push_back(std::move(line));
+  for (Polyline& line : lines) {
+    points_ += line.points.size();
+    paths.push_back(std::move(line));
+  }
+  if (settings_.maxPoints > 0 && points_ > settings_.maxPoints) overBudget_ = true;
 }
 
 void CaptureEngine::flushPending() {
@@ -259,6 +267,7 @@ void CaptureEngine::drawEllipse(const QRectF& rect) {
   const Vec2 v = mapped(t, c.x(), c.y() + 0.5 * rect.height()) - centre;
   Polyline line;
   flattenEllipse(centre, u, v, settings_.toleranceMm, line.points);
+  line.flattened = true;
   std::vector<Polyline> out;
   finishPolyline(line, true, out);
   Signature s;

@@ -17,6 +17,7 @@
 #include <QTransform>
 
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -40,6 +41,9 @@ struct CaptureSettings {
   bool outlineFills = true;
   std::function<void(long long shapesPainted)> onShape;  // progress hook, may be empty
   const std::atomic<bool>* cancel = nullptr;             // when raised, further shapes are ignored
+  // Points recorded at most (0 = no limit): past it further shapes are ignored and
+  // CaptureEngine::overBudget() is true.
+  std::size_t maxPoints = 0;
 };
 
 class CaptureEngine final : public QPaintEngine {
@@ -64,6 +68,8 @@ class CaptureEngine final : public QPaintEngine {
   void drawPixmap(const QRectF&, const QPixmap&, const QRectF&) override {}
 
   std::vector<CapturedRun> takeRuns();
+  // More than CaptureSettings::maxPoints points were painted: the runs are incomplete.
+  bool overBudget() const { return overBudget_; }
 
  private:
   struct Paint {
@@ -89,12 +95,14 @@ class CaptureEngine final : public QPaintEngine {
              FillRule rule);
   void record(std::vector<Polyline>&& lines, std::uint32_t rgb);
   void flushPending();
-  bool cancelled() const { return settings_.cancel && settings_.cancel->load(); }
+  bool cancelled() const { return overBudget_ || (settings_.cancel && settings_.cancel->load()); }
 
   CaptureSettings settings_;
   std::vector<CapturedRun> runs_;
   int topIndex_ = -1;
   long long shapes_ = 0;
+  std::size_t points_ = 0;  // recorded so far
+  bool overBudget_ = false;
   bool hasPending_ = false;
   Signature pendingSignature_;
   std::vector<Polyline> pendingLines_;

@@ -69,6 +69,8 @@ class DirectReader {
   DirectCapture& out_;
   const RunSink& sink_;
   std::size_t pointsHeld_ = 0;  // points in out_.runs, for handing them to the sink
+  std::size_t pointsTotal_ = 0;  // points recorded so far
+  bool overBudget_ = false;      // more than options_.maxPoints: stop reading
   QTransform transform_;
   std::vector<std::pair<std::string_view, std::string_view>> namespaces_;  // prefix -> URI
   std::vector<Paint> paints_;  // one per open element, root first
@@ -178,8 +180,10 @@ void DirectReader::record(std::vector<Polyline>&& lines, std::uint32_t rgb) {
     runs.push_back(CapturedRun{topIndex_, rgb, {}});
   for (Polyline& line : lines) {
     pointsHeld_ += line.points.size();
+    pointsTotal_ += line.points.size();
     runs.back().paths.push_back(std::move(line));
   }
+  if (options_.maxPoints > 0 && pointsTotal_ > options_.maxPoints) overBudget_ = true;
   constexpr std::size_t kSinkPoints = std::size_t{1} << 15;  // 512 kB of points
   if (sink_ && pointsHeld_ >= kSinkPoints) {
     sink_.take(runs);
@@ -349,7 +353,7 @@ bool DirectReader::readContent() {
       }
       if (progress_) progress_(static_cast<double>(cursor_.position()) / total);
     }
-    if (!element(tagOf(tag.name), tag.attributes, tag.selfClosing)) return false;
+    if (!element(tagOf(tag.name), tag.attributes, tag.selfClosing) || overBudget_) return false;
     if (!tag.selfClosing) open.push_back(tag.name);
   }
   return cursor_.skipEpilog();
@@ -360,6 +364,7 @@ DirectStatus DirectReader::run() {
   if (cancelled()) return DirectStatus::Cancelled;
   const bool ok = readRoot() && readContent();
   if (cancelled_) return DirectStatus::Cancelled;
+  if (overBudget_) return DirectStatus::TooManyPoints;
   return ok ? DirectStatus::Captured : DirectStatus::Declined;
 }
 

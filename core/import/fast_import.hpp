@@ -30,6 +30,7 @@ enum class DirectStatus {
   Captured,   // the document is in the subset; `out` holds what the general path would capture
   Declined,   // outside the subset (or invalid): use the general path
   Cancelled,  // options.cancel was raised
+  TooManyPoints,  // more than options.maxPoints points (reading stopped there)
 };
 
 struct DirectCapture {

@@ -74,6 +74,12 @@ class Sanitizer {
   std::vector<double> fontSizes_;  // user units, one per open written element
   std::vector<int> extraEnds_;     // end tags to add when the element closes (symbol, use)
   std::map<QString, MarkerInfo> markers_;  // from scanMarkers
+  MarkerSheet markerSheet_;                // from scanMarkerSheet
+
+ public:
+  void setMarkerSheet(MarkerSheet sheet) { markerSheet_ = std::move(sheet); }
+
+ private:
   struct MarkerState {
     MarkerRefs refs;            // inherited marker properties
     double strokeWidth = 1.0;   // user units, inherited

@@ -16,6 +16,7 @@
 #include <QString>
 
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -45,6 +46,9 @@ struct ImportOptions {
   bool outlineFills = true;     // fill-only shapes are drawn as their outline; false: skipped
   LayerMode layerMode = LayerMode::Auto;
   double maxCoordinateMm = 1.0e6;  // any point beyond this (absolute, mm) refuses the file
+  // Points after flattening the import may produce; 0 = no limit. Reading stops as soon as the
+  // count passes it (status TooManyPoints), before the rest of the file is flattened.
+  std::size_t maxPoints = 0;
 
   // Process isolation (importSvgFile only).
   Isolation isolation = Isolation::WorkerProcess;
@@ -68,6 +72,7 @@ enum class ImportStatus {
   WorkerTimeout,       // the worker exceeded its time limit
   WorkerNotFound,      // no fivebar-svg-worker executable found
   InvalidOptions,      // tolerance <= 0, dpi <= 0, ...
+  TooManyPoints,       // more than ImportOptions::maxPoints points after flattening
 };
 
 const char* toString(ImportStatus status);

@@ -4,6 +4,7 @@
 #include <QRegularExpression>
 #include <QXmlStreamReader>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -195,7 +196,117 @@ std::vector<MarkerVertex> markerVertices(QStringView tag, const QXmlStreamAttrib
   return verticesOf(commands);
 }
 
-MarkerRefs markerRefs(const QXmlStreamAttributes& attributes, const MarkerRefs& inherited) {
+namespace {
+
+bool isMarkerProperty(QStringView name) {
+  return name == u"marker" || name == u"marker-start" || name == u"marker-mid" || name == u"marker-end";
+}
+
+// One compound selector (type, #id, .class, in any order after the type); false when it is not
+// that simple.
+bool parseSimpleSelector(QStringView text, MarkerRule& rule) {
+  static const QRegularExpression simple(
+      QStringLiteral("^([A-Za-z][\\w-]*|\\*)?((?:[.#][A-Za-z_][\\w-]*)*)$"));
+  const QRegularExpressionMatch m = simple.match(text.toString());
+  if (!m.hasMatch() || text.isEmpty()) return false;
+  rule.tag = m.captured(1) == u"*" ? QString() : m.captured(1);
+  rule.specificity = rule.tag.isEmpty() ? 0 : 1;
+  static const QRegularExpression part(QStringLiteral("([.#])([A-Za-z_][\\w-]*)"));
+  for (auto it = part.globalMatch(m.captured(2)); it.hasNext();) {
+    const QRegularExpressionMatch p = it.next();
+    if (p.captured(1) == u"#") {
+      if (!rule.id.isEmpty() && rule.id != p.captured(2)) return false;  // never matches
+      rule.id = p.captured(2);
+      rule.specificity += 100;
+    } else {
+      rule.classes.push_back(p.captured(2));
+      rule.specificity += 10;
+    }
+  }
+  return true;
+}
+
+bool matches(const MarkerRule& rule, QStringView tag, const QXmlStreamAttributes& attributes) {
+  if (!rule.tag.isEmpty() && rule.tag != tag) return false;
+  if (!rule.id.isEmpty() && attributes.value(QStringLiteral("id")) != rule.id) return false;
+  if (rule.classes.isEmpty()) return true;
+  static const QRegularExpression spaces(QStringLiteral("\\s+"));
+  const QStringList classes =
+      attributes.value(QStringLiteral("class")).toString().split(spaces, Qt::SkipEmptyParts);
+  for (const QString& c : rule.classes)
+    if (!classes.contains(c)) return false;
+  return true;
+}
+
+}  // namespace
+
+MarkerSheet parseMarkerSheet(QStringView cssText) {
+  MarkerSheet sheet;
+  QString css = cssText.toString();
+  static const QRegularExpression comments(QStringLiteral("/\\*.*?\\*/"),
+                                           QRegularExpression::DotMatchesEverythingOption);
+  css.remove(comments);
+  // Blocks "selectors { declarations }"; at-rules (@media ...) keep their inner blocks out.
+  qsizetype at = 0;
+  while (at < css.size()) {
+    const qsizetype open = css.indexOf(u'{', at);
+    if (open < 0) break;
+    const qsizetype close = css.indexOf(u'}', open);
+    if (close < 0) break;
+    const QString selectors = css.mid(at, open - at).trimmed();
+    if (selectors.startsWith(u'@')) {  // an at-rule block: skip it whole, nested blocks too
+      int depth = 0;
+      for (at = open; at < css.size(); ++at) {
+        if (css[at] == u'{') ++depth;
+        if (css[at] == u'}' && --depth == 0) break;
+      }
+      if (QStringView(css).mid(open, at - open).contains(u"marker"))
+        sheet.unsupported.push_back(selectors.simplified());
+      ++at;
+      continue;
+    }
+    const QStringView body = QStringView(css).mid(open + 1, close - open - 1);
+    at = close + 1;
+    std::vector<std::pair<QString, QString>> declarations;
+    for (QStringView decl : body.split(u';')) {
+      const qsizetype colon = decl.indexOf(u':');
+      if (colon < 0) continue;
+      const QString name = decl.left(colon).trimmed().toString();
+      QString value = decl.mid(colon + 1).trimmed().toString();
+      value.remove(QStringLiteral("!important"));
+      if (isMarkerProperty(name)) declarations.emplace_back(name, value.trimmed());
+    }
+    if (declarations.empty()) continue;
+    for (const QString& s : selectors.split(u',')) {
+      MarkerRule rule;
+      rule.declarations = declarations;
+      if (parseSimpleSelector(s.trimmed(), rule)) sheet.rules.push_back(std::move(rule));
+      else sheet.unsupported.push_back(s.simplified());
+    }
+  }
+  // Lower specificity first; stable, so document order decides between equals.
+  std::stable_sort(sheet.rules.begin(), sheet.rules.end(),
+                   [](const MarkerRule& a, const MarkerRule& b) { return a.specificity < b.specificity; });
+  return sheet;
+}
+
+MarkerSheet scanMarkerSheet(const QByteArray& document) {
+  MarkerSheet sheet;
+  if (!document.contains("marker") || !document.contains("<style")) return sheet;
+  QXmlStreamReader reader(document);
+  QString css;
+  bool inStyle = false;
+  while (!reader.atEnd()) {
+    const QXmlStreamReader::TokenType t = reader.readNext();
+    if (t == QXmlStreamReader::StartElement) inStyle = reader.name() == u"style";
+    else if (t == QXmlStreamReader::EndElement) inStyle = false;
+    else if (t == QXmlStreamReader::Characters && inStyle) css += reader.text().toString() + u'\n';
+  }
+  return css.contains(u"marker") ? parseMarkerSheet(css) : sheet;
+}
+
+MarkerRefs markerRefs(const QXmlStreamAttributes& attributes, const MarkerRefs& inherited,
+                      QStringView tag, const MarkerSheet* sheet) {
   MarkerRefs refs = inherited;
   auto apply = [&](const QString& name, QStringView value) {
     if (value.isEmpty() || value.trimmed() == u"inherit") return;
@@ -206,6 +317,10 @@ MarkerRefs markerRefs(const QXmlStreamAttributes& attributes, const MarkerRefs& 
   };
   for (const char* n : {"marker-start", "marker-mid", "marker-end"})
     apply(QString::fromLatin1(n), attributes.value(QString::fromLatin1(n)));
+  if (sheet != nullptr)
+    for (const MarkerRule& rule : sheet->rules)
+      if (matches(rule, tag, attributes))
+        for (const auto& [name, value] : rule.declarations) apply(name, value);
   const QStringView style = attributes.value(QStringLiteral("style"));
   if (style.contains(u"marker"))
     for (const char* n : {"marker", "marker-start", "marker-mid", "marker-end"})

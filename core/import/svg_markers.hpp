@@ -7,6 +7,7 @@
 
 #include <QByteArray>
 #include <QString>
+#include <QStringList>
 #include <QStringView>
 #include <QXmlStreamAttributes>
 
@@ -41,9 +42,34 @@ struct MarkerRefs {
   bool any() const { return !start.isEmpty() || !mid.isEmpty() || !end.isEmpty(); }
 };
 
-// Applies the element's marker-start/mid/end (attributes, and marker/marker-* in its style
-// attribute) over the inherited references.
-MarkerRefs markerRefs(const QXmlStreamAttributes& attributes, const MarkerRefs& inherited);
+// Marker properties (marker, marker-start/mid/end) set by document style sheets (<style>): the
+// rules whose selectors are simple (a type or *, #id, .class, or a compound of them such as
+// path.arrow#a; comma lists), in document order. Rules with other selectors (descendant, child,
+// attribute, pseudo-class) are listed in `unsupported` (the sanitiser warns about each).
+struct MarkerRule {
+  QString tag;          // empty or "*": any element
+  QString id;           // empty: any
+  QStringList classes;  // all must be present
+  int specificity = 0;  // CSS: 100 per id, 10 per class, 1 for a type
+  std::vector<std::pair<QString, QString>> declarations;  // property, value
+};
+struct MarkerSheet {
+  std::vector<MarkerRule> rules;
+  std::vector<QString> unsupported;  // selectors of rules with marker properties not applied
+  bool empty() const { return rules.empty(); }
+};
+
+// The marker rules of every <style> element of the document (one quick pass, only when the text
+// holds "marker").
+MarkerSheet scanMarkerSheet(const QByteArray& document);
+// The same for the text of one style sheet (exposed for tests).
+MarkerSheet parseMarkerSheet(QStringView css);
+
+// Applies the element's marker-start/mid/end over the inherited references, in CSS order:
+// presentation attributes, then the style-sheet rules that match the element (by specificity,
+// then document order), then marker/marker-* in its style attribute.
+MarkerRefs markerRefs(const QXmlStreamAttributes& attributes, const MarkerRefs& inherited,
+                      QStringView tag = {}, const MarkerSheet* sheet = nullptr);
 
 // The element's stroke-width in user units (attribute or style), else the inherited one.
 double strokeWidthUser(const QXmlStreamAttributes& attributes, double inherited);

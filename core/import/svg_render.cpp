@@ -37,6 +37,7 @@ const char* toString(ImportStatus status) {
     case ImportStatus::WorkerTimeout: return "SVG parser timed out";
     case ImportStatus::WorkerNotFound: return "SVG worker not found";
     case ImportStatus::InvalidOptions: return "invalid options";
+    case ImportStatus::TooManyPoints: return "too many points";
   }
   return "unknown";
 }
@@ -118,7 +119,7 @@ void toWorkFrame(Drawing& drawing, const ImportOptions& o) {
 // Renders the sanitised document into the capture engine; fills runs or returns an error.
 // The sanitised text is released once Qt SVG has parsed it.
 std::string render(SanitizeResult& clean, const PageSetup& page, const ImportOptions& o,
-                   const ProgressFn& progress, std::vector<CapturedRun>& runs) {
+                   const ProgressFn& progress, std::vector<CapturedRun>& runs, bool& overBudget) {
   QSvgRenderer renderer;
   bool loaded = false;
   {
@@ -133,6 +134,7 @@ std::string render(SanitizeResult& clean, const PageSetup& page, const ImportOpt
   settings.toleranceMm = o.toleranceMm;
   settings.outlineFills = o.outlineFills;
   settings.cancel = o.cancel;
+  settings.maxPoints = o.maxPoints;
   const double shapes = static_cast<double>(std::max<long long>(1, clean.shapeCount));
   if (progress)
     settings.onShape = [&](long long painted) {
@@ -142,8 +144,14 @@ std::string render(SanitizeResult& clean, const PageSetup& page, const ImportOpt
   QPainter painter(&device);
   renderer.render(&painter, page.targetMm);
   painter.end();
+  overBudget = device.engine().overBudget();
   runs = device.engine().takeRuns();
   return {};
+}
+
+std::string tooManyPoints(const ImportOptions& o) {
+  return "more than " + std::to_string(o.maxPoints) +
+         " points after flattening (the points budget): reading stopped there";
 }
 
 Capture failed(ImportStatus status, const QString& source, const std::string& message) {
@@ -167,8 +175,11 @@ Capture captureGeneral(QIODevice& input, const QString& source, const ImportOpti
     return failed(ImportStatus::InvalidDocument, source,
                   "line " + std::to_string(clean.root.line) + ": " + bad);
   if (progress) progress(0.5);
-  if (const std::string bad = render(clean, capture.page, o, progress, capture.runs); !bad.empty())
+  bool overBudget = false;
+  if (const std::string bad = render(clean, capture.page, o, progress, capture.runs, overBudget);
+      !bad.empty())
     return failed(ImportStatus::RenderFailed, source, bad);
+  if (overBudget) return failed(ImportStatus::TooManyPoints, source, tooManyPoints(o));
   if (cancelled()) return failed(ImportStatus::Cancelled, source, "import cancelled");
   capture.topLevel = std::move(clean.topLevel);
   capture.warnings = std::move(clean.warnings);
@@ -194,6 +205,8 @@ Capture captureBytes(const QByteArray& data, const QString& source, const Import
     };
     switch (captureDirect(data, o, scaled, direct, sink)) {
       case DirectStatus::Cancelled: return failed(ImportStatus::Cancelled, source, "import cancelled");
+      case DirectStatus::TooManyPoints:
+        return failed(ImportStatus::TooManyPoints, source, tooManyPoints(o));
       case DirectStatus::Captured: {
         Capture capture;
         capture.runs = std::move(direct.runs);

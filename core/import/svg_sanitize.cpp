@@ -343,7 +343,9 @@ void Sanitizer::characters() {
   if (skipDepth_ > 0 || depth_ == 0) return;
   QString text = reader_.text().toString();
   if (inStyle_ && text.contains(QStringLiteral("marker")))
-    warn("markers set in a style sheet are not drawn (marker attributes and style attributes are)");
+    for (const QString& selector : parseMarkerSheet(text).unsupported)
+      warn("markers set in a style sheet for the selector '" + selector.toStdString() +
+           "' are not drawn (only type, #id and .class selectors are applied)");
   if (inStyle_ && text.contains(QStringLiteral("@import"))) {
     static const QRegularExpression import(QStringLiteral("@import[^;]*;?"));
     text.remove(import);
@@ -359,11 +361,14 @@ SanitizeResult sanitizeSvg(QIODevice& input, double dpi,
                            const std::function<bool(double)>& progress) {
   std::map<QString, SymbolInfo> symbols;
   std::map<QString, MarkerInfo> markers;
+  MarkerSheet sheet;
   if (const auto* buffer = qobject_cast<const QBuffer*>(&input)) {
     symbols = scanSymbols(buffer->data());
     markers = scanMarkers(buffer->data());
+    sheet = scanMarkerSheet(buffer->data());
   }
   detail::Sanitizer sanitizer(input, dpi, progress, std::move(symbols), std::move(markers));
+  sanitizer.setMarkerSheet(std::move(sheet));
   return sanitizer.run();
 }
 

@@ -169,7 +169,7 @@ void Sanitizer::pushMarkerState(QStringView tag, const QXmlStreamAttributes& att
     state.strokeWidth = markerStates_.back().strokeWidth;
   }
   const MarkerRefs inherited = state.refs;
-  state.refs = markerRefs(attributes, inherited);
+  state.refs = markerRefs(attributes, inherited, tag, &markerSheet_);
   state.strokeWidth = strokeWidthUser(attributes, state.strokeWidth);
   if (markerContentDepth_ == 0 && state.refs.any()) {
     if (tag == u"path" || tag == u"line" || tag == u"polyline" || tag == u"polygon") {

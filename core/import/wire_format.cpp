@@ -59,9 +59,11 @@ class Writer {
 void writePolylines(const std::vector<Polyline>& lines, Writer& w) {
   w.raw(static_cast<std::uint32_t>(lines.size()));
   for (const Polyline& line : lines) {
-    // Flags: bit 0 closed, bits 1-2 fill rule, bit 3 fill start, bit 4 fill only.
+    // Flags: bit 0 closed, bits 1-2 fill rule, bit 3 fill start, bit 4 fill only, bit 5
+    // flattened.
     w.raw(static_cast<std::uint8_t>((line.closed ? 1 : 0) | static_cast<int>(line.fill) << 1 |
-                                    (line.fillStart ? 8 : 0) | (line.fillOnly ? 16 : 0)));
+                                    (line.fillStart ? 8 : 0) | (line.fillOnly ? 16 : 0) |
+                                    (line.flattened ? 32 : 0)));
     w.raw(static_cast<std::uint32_t>(line.points.size()));
     static_assert(sizeof(Vec2) == 2 * sizeof(double), "points are sent as x, y doubles");
     w.bytes(line.points.data(), line.points.size() * sizeof(Vec2));
@@ -139,11 +141,12 @@ bool readPolylines(Reader& r, std::vector<Polyline>& out) {
     std::uint32_t n = 0;
     if (!r.raw(closed) || !r.count(n)) return false;
     Polyline& line = out.emplace_back();
-    if ((closed >> 1 & 3) > 2 || closed > 31) return false;
+    if ((closed >> 1 & 3) > 2 || closed > 63) return false;
     line.closed = (closed & 1) != 0;
     line.fill = static_cast<FillRule>(closed >> 1 & 3);
     line.fillStart = (closed & 8) != 0;
     line.fillOnly = (closed & 16) != 0;
+    line.flattened = (closed & 32) != 0;
     if (!r.points(n, line.points)) return false;
   }
   return true;
@@ -203,7 +206,7 @@ bool decodeResult(ByteSource& source, ImportResult& result) {
   if (!r.literal(kMagic) || !r.raw(status) || !r.text(result.message) ||
       !readTexts(r, result.warnings))
     return false;
-  if (status > static_cast<std::uint32_t>(ImportStatus::InvalidOptions)) return false;
+  if (status > static_cast<std::uint32_t>(ImportStatus::TooManyPoints)) return false;
   result.status = static_cast<ImportStatus>(status);
   Drawing& d = result.drawing;
   if (!r.raw(d.widthMm) || !r.raw(d.heightMm) || !r.text(d.source) || !r.count(layers))
@@ -277,7 +280,7 @@ bool readFinal(Reader& r, StreamedCapture& out) {
   Capture& c = out.capture;
   std::uint32_t status = 0, elements = 0;
   std::uint8_t sizeKnown = 0;
-  if (!r.raw(status) || status > static_cast<std::uint32_t>(ImportStatus::InvalidOptions) ||
+  if (!r.raw(status) || status > static_cast<std::uint32_t>(ImportStatus::TooManyPoints) ||
       !r.text(c.message) || !readTexts(r, c.warnings) || !readTexts(r, out.qtMessages) ||
       !r.raw(sizeKnown) || !r.raw(c.page.widthMm) || !r.raw(c.page.heightMm) || !r.count(elements))
     return false;
@@ -328,6 +331,7 @@ QStringList workerArguments(const QString& path, const ImportOptions& o) {
           QStringLiteral("--width-mm"), number(o.forcedWidthMm),
           QStringLiteral("--height-mm"), number(o.forcedHeightMm),
           QStringLiteral("--max-coordinate-mm"), number(o.maxCoordinateMm),
+          QStringLiteral("--max-points"), QString::number(static_cast<qulonglong>(o.maxPoints)),
           QStringLiteral("--outline-fills"), o.outlineFills ? QStringLiteral("1") : QStringLiteral("0"),
           QStringLiteral("--layers"), QString::fromLatin1(mode),
           QStringLiteral("--"), path};
@@ -351,6 +355,7 @@ QString parseWorkerArguments(const QStringList& arguments, QString& path, Import
     else if (key == u"--height-mm") o.forcedHeightMm = value.toDouble(&ok);
     else if (key == u"--max-coordinate-mm") o.maxCoordinateMm = value.toDouble(&ok);
     else if (key == u"--outline-fills") o.outlineFills = value == u"1";
+    else if (key == u"--max-points") o.maxPoints = static_cast<std::size_t>(value.toULongLong(&ok));
     else if (key == QLatin1StringView(kResultFdOption) && resultFd) {
       *resultFd = value.toInt(&ok);
       ok = ok && *resultFd >= 0;

@@ -2,6 +2,7 @@
 // frame (millimetres, y up). Import produces it; placement maps it into the machine frame.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -21,6 +22,10 @@ struct Polyline {
   FillRule fill = FillRule::None;
   bool fillStart = false;  // first ring of a filled shape
   bool fillOnly = false;   // the outline of a shape that is filled but not stroked
+  // True when the points approximate curves (Bezier, arc, ellipse, glyph outline): they lie
+  // within Drawing::flatteningToleranceMm of the true geometry. False when the polyline IS the
+  // geometry (straight segments only): the planner spends no tolerance on flattening it.
+  bool flattened = false;
 };
 
 // Tool settings a layer may override; unset values fall back to the machine profile.
@@ -39,13 +44,18 @@ struct Layer {
   std::vector<Polyline> paths;
 };
 
+// The default budget of points a drawing may have after flattening and hatching: a guard against
+// runaway files (an entity expansion, a hatch at a tiny spacing), raised on request.
+inline constexpr std::size_t kDefaultMaxPoints = 2'000'000;
+
 struct Drawing {
   std::string source;      // file name it came from, for messages
   double widthMm = 0.0;    // physical page size
   double heightMm = 0.0;
   // Largest distance (work-frame mm) between the polylines and the curves they were flattened
-  // from: the tolerance the import was asked for; 0 when the polylines are the geometry. The
-  // planner scales it by the placement and spends the rest of the tolerance on the moves.
+  // from: the tolerance the import was asked for; 0 when the polylines are the geometry. It
+  // applies to the polylines marked `flattened` only; the planner scales it by the placement and
+  // spends the rest of the tolerance on the moves, stroke by stroke.
   double flatteningToleranceMm = 0.0;
   std::vector<Layer> layers;  // in plotting order
 };

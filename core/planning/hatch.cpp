@@ -223,18 +223,24 @@ std::vector<Polyline> applyFill(const std::vector<Polyline>& paths, FillMode mod
     std::size_t end = i + 1;
     while (end < paths.size() && paths[end].fill != FillRule::None && !paths[end].fillStart) ++end;
     std::vector<std::vector<Vec2>> rings;
+    bool flattened = false;  // a hatch line ends on a flattened ring: it carries that error
     for (std::size_t j = i; j < end; ++j) {
       const Polyline& ring = paths[j];
       if (!ring.fillOnly || (mode == FillMode::Hatch && settings.outline)) out.push_back(ring);
       rings.push_back(ring.points);
+      flattened = flattened || ring.flattened;
     }
     if (mode == FillMode::Hatch) {
-      for (Polyline& line : hatchArea(rings, first.fill, settings.spacingMm, settings.angleRad))
+      for (Polyline& line : hatchArea(rings, first.fill, settings.spacingMm, settings.angleRad)) {
+        line.flattened = flattened;
         out.push_back(std::move(line));
+      }
       if (settings.crosshatch)
         for (Polyline& line : hatchArea(rings, first.fill, settings.spacingMm,
-                                        settings.angleRad + 0.5 * std::numbers::pi))
+                                        settings.angleRad + 0.5 * std::numbers::pi)) {
+          line.flattened = flattened;
           out.push_back(std::move(line));
+        }
     }
     i = end;
   }

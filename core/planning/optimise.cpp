@@ -149,7 +149,10 @@ std::vector<Stroke> joinRun(std::vector<Stroke> run, const OptimiseOptions& o, s
       out.push_back(std::move(run[i]));
       continue;
     }
-    for (const Piece& pc : chain) appendPoints(joined.points, run[pc.stroke], pc.reversed);
+    for (const Piece& pc : chain) {
+      appendPoints(joined.points, run[pc.stroke], pc.reversed);
+      joined.flattened = joined.flattened || run[pc.stroke].flattened;
+    }
     out.push_back(std::move(joined));
   }
   return out;

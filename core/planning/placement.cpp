@@ -81,6 +81,7 @@ std::vector<Stroke> placeDrawing(const Drawing& drawing, const Eigen::Affine2d& 
     Stroke& s = out[k];
     s.layerIndex = li;
     s.pathIndex = pi;
+    s.flattened = path.flattened;
     s.points.reserve(path.points.size() + (path.closed ? 1 : 0));
     for (const Vec2& p : path.points) s.points.push_back(machineFromWorkT * p);
     if (path.closed && path.points.size() > 1) s.points.push_back(s.points.front());

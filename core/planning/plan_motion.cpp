@@ -30,6 +30,8 @@ constexpr int kTravelLengthSamples = 16;
 // Lever arm factor of the older estimate of the G-code rounding error, used when it is smaller
 // than the bound from the type II margin (gcodeRoundingBoundMm).
 constexpr double kRoundingLeverFactor = 4.0;
+// Decimals of a degree of the G-code angles (GcodeOptions::angleDecimals, core/output/gcode.hpp):
+// the segmentation measures its moves between angles rounded so.
 constexpr int kGcodeAngleDecimals = 4;
 
 std::string layerLabel(const std::vector<Layer>& layers, int layerIndex) {
@@ -51,8 +53,13 @@ class MotionPlanner {
     limits_.minSegmentDurationS = options.minSegmentDurationS;
   }
 
-  void run(double jointBudgetMm) {
-    segOpt_.deviationBudgetMm = jointBudgetMm;
+  // exactBudgetMm: the joint-linear budget of a stroke whose points are its geometry;
+  // flattenedBudgetMm: of a stroke of flattened curves (Stroke::flattened).
+  void run(double exactBudgetMm, double flattenedBudgetMm) {
+    segExact_.deviationBudgetMm = exactBudgetMm;
+    segFlattened_.deviationBudgetMm = flattenedBudgetMm;
+    // The moves are measured between the angles as the G-code carries them.
+    segExact_.angleDecimalsDeg = segFlattened_.angleDecimalsDeg = kGcodeAngleDecimals;
     job_.profileName = p_.name;
     job_.mode = mode_;
     job_.assembly = p_.assembly;
@@ -202,7 +209,8 @@ class MotionPlanner {
   void prepare(size_t k, Prepared& out) const {
     const Stroke& s = strokes_[k];
     if (s.points.empty()) return;
-    out.seg = segmentStroke(g_, mode_, p_.assembly, s.points, job_.start, segOpt_);
+    out.seg = segmentStroke(g_, mode_, p_.assembly, s.points, job_.start,
+                            s.flattened ? segFlattened_ : segExact_);
     if (!out.seg.ok()) return;
     out.check = checkWaypoints(out.seg);
     if (!out.check.ok()) return;
@@ -278,6 +286,12 @@ class MotionPlanner {
     penDown(static_cast<int>(k), layer);
     ps.firstMove = static_cast<int>(job_.moves.size());
     draw(seg, prepared, static_cast<int>(k), layer);
+    // This stroke's share of the report: its joint deviation plus its own flattening error.
+    const double flatteningMm = s.flattened ? opt_.flatteningToleranceMm : 0.0;
+    if (!seg.waypoints.empty()) {
+      maxFlatteningMm_ = std::max(maxFlatteningMm_, flatteningMm);
+      maxStrokeDeviationMm_ = std::max(maxStrokeDeviationMm_, seg.maxDeviationMm + flatteningMm);
+    }
     ps.moveCount = static_cast<int>(job_.moves.size()) - ps.firstMove;
     for (const JointWaypoint& w : seg.waypoints) ps.lengthMm += w.pathLengthMm;
     job_.summary.penDownMm += ps.lengthMm;
@@ -451,12 +465,16 @@ class MotionPlanner {
   PlanResult& out_;
   PlannedJob& job_;
   FeedLimits limits_;
-  SegmentationOptions segOpt_;
+  SegmentationOptions segExact_, segFlattened_;
   JointAngles at_;
   Vec2 atXY_ = Vec2::Zero();
   bool penDown_ = false;
   int lastLayer_ = std::numeric_limits<int>::min();
   double minMargin_ = kPi / 2.0;
+
+ public:
+  double maxFlatteningMm_ = 0.0;       // largest flattening error of a drawn stroke
+  double maxStrokeDeviationMm_ = 0.0;  // largest joint deviation + flattening of a drawn stroke
 };
 
 }  // namespace
@@ -477,9 +495,11 @@ double gcodeRoundingBoundMm(const MachineProfile& profile) {
   return std::min(lever, jacobian) * dThetaRad;
 }
 
-// Tolerance left for the joint-linear deviation once flattening and G-code rounding are paid.
-double jointDeviationBudgetMm(const MachineProfile& profile, const PlanOptions& options) {
-  return options.toleranceMm - options.flatteningToleranceMm - gcodeRoundingBoundMm(profile);
+// Tolerance left for the joint-linear deviation of a stroke once its flattening is paid (the
+// G-code rounding is part of the measured deviation: the moves are segmented between rounded
+// angles).
+double jointDeviationBudgetMm(const MachineProfile&, const PlanOptions& options, bool flattened) {
+  return options.toleranceMm - (flattened ? options.flatteningToleranceMm : 0.0);
 }
 
 PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Layer>& layers,
@@ -488,16 +508,24 @@ PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Lay
   PlanResult out;
   out.report.mode = mode;
   out.report.toleranceMm = options.toleranceMm;
-  const double budget = jointDeviationBudgetMm(profile, options);
-  if (!(budget > 0.0) || !(options.toleranceMm > 0.0)) {
+  const bool anyFlattened = std::any_of(strokes.begin(), strokes.end(),
+                                       [](const Stroke& s) { return s.flattened; });
+  // Below the worst case of the G-code rounding no tolerance can be promised (the rounding is
+  // measured move by move, but a budget under its bound would fail somewhere as "cannot follow").
+  const double budget = jointDeviationBudgetMm(profile, options, anyFlattened);
+  if (!(budget > gcodeRoundingBoundMm(profile)) || !(options.toleranceMm > 0.0)) {
     out.status = PlanStatus::BadOptions;
     out.message = "tolerance " + std::to_string(options.toleranceMm) +
                   " mm leaves nothing for the moves after flattening (" +
-                  std::to_string(options.flatteningToleranceMm) + " mm) and G-code rounding";
+                  std::to_string(anyFlattened ? options.flatteningToleranceMm : 0.0) +
+                  " mm) and the G-code rounding (up to " +
+                  std::to_string(gcodeRoundingBoundMm(profile)) + " mm)";
     return out;
   }
   StageClock clock(out.timings);
-  MotionPlanner(strokes, layers, profile, mode, options, out).run(budget);
+  MotionPlanner planner(strokes, layers, profile, mode, options, out);
+  planner.run(jointDeviationBudgetMm(profile, options, false),
+              jointDeviationBudgetMm(profile, options, true));
   clock.lap("segmentation, feeds, travel");
   if (options.cancel != nullptr && options.cancel->load()) {
     out.status = PlanStatus::Cancelled;
@@ -522,9 +550,9 @@ PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Lay
   r.travelMm = s.travelMm;
   r.segments = s.segments;
   r.jointDeviationMm = s.maxDeviationMm;
-  r.flatteningMm = options.flatteningToleranceMm;
-  r.roundingMm = gcodeRoundingBoundMm(profile);
-  r.maxDeviationMm = s.segments > 0 ? r.jointDeviationMm + r.flatteningMm + r.roundingMm : 0.0;
+  r.flatteningMm = planner.maxFlatteningMm_;
+  r.roundingMm = 0.0;  // measured: part of the joint deviation (moves between rounded angles)
+  r.maxDeviationMm = s.segments > 0 ? planner.maxStrokeDeviationMm_ : 0.0;
   r.minSingularityMarginDeg = degFromRad(s.minTypeIIMarginRad);
   r.feedLimitedSegments = s.feedLimitedSegments;
   out.status = r.feasible ? PlanStatus::Ok : PlanStatus::Infeasible;

@@ -36,6 +36,15 @@ struct Candidate {
   FeasibilityReport report;
 };
 
+// True when a visible path approximates curves (its points carry the flattening error).
+bool hasFlattenedPaths(const Drawing& d) {
+  for (const Layer& layer : d.layers)
+    if (layer.visible)
+      for (const Polyline& line : layer.paths)
+        if (line.flattened) return true;
+  return false;
+}
+
 double largestScale(const Placement& p) { return p.scale * std::max(1.0, std::abs(p.stretchY)); }
 
 std::string layerName(const Drawing& d, int layerIndex) {
@@ -198,10 +207,12 @@ PlanResult planJob(const Drawing& drawing, const MachineProfile& profile,
   }
   out.placement = placement;
   out.placementScale = placement.scale;
-  // The drawing must have been flattened finely enough for the scale it is drawn at.
+  // The drawing must have been flattened finely enough for the scale it is drawn at (straight
+  // lines carry no flattening error, whatever the scale).
   const double scale = largestScale(placement);
   const double share = kFlatteningShare * options.toleranceMm;
-  if (drawing.flatteningToleranceMm * scale > share * (1.0 + kShareSlack)) {
+  if (drawing.flatteningToleranceMm * scale > share * (1.0 + kShareSlack) &&
+      hasFlattenedPaths(drawing)) {
     out.status = PlanStatus::CoarseDrawing;
     out.requiredFlatteningToleranceMm = importToleranceMm(options.toleranceMm, scale);
     out.message = "the drawing was flattened within " + fixedText(drawing.flatteningToleranceMm, 4) +

@@ -74,12 +74,15 @@ struct PlanReport {
   double penDownMm = 0.0;
   double travelMm = 0.0;
   int segments = 0;
-  // Bound of the distance between the drawn line and the drawing: joint-linear deviation of the
-  // drawn moves + flattening error at the placement scale + G-code rounding bound.
+  // Bound of the distance between the drawn line and the drawing: the largest, over the drawn
+  // strokes, of the joint-linear deviation of its moves (measured between the angles as the
+  // G-code rounds them) + its flattening error at the placement scale (0 for straight lines).
   double maxDeviationMm = 0.0;
-  double jointDeviationMm = 0.0;     // the joint-linear part alone (measured)
-  double flatteningMm = 0.0;         // the flattening part (machine frame)
-  double roundingMm = 0.0;           // the G-code rounding bound
+  double jointDeviationMm = 0.0;     // the joint-linear part alone (measured, largest)
+  double flatteningMm = 0.0;         // the largest flattening error of a drawn stroke (machine mm)
+  // The G-code rounding reserve: 0, the rounding being measured in jointDeviationMm (kept for
+  // REPORT.json readers; gcodeRoundingBoundMm is the bound it would be).
+  double roundingMm = 0.0;
   double toleranceMm = 0.0;
   double minSingularityMarginDeg = 0.0;  // smallest type II margin at any planned target
   int feedLimitedSegments = 0;
@@ -119,11 +122,14 @@ PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Lay
                        const MachineProfile& profile, WorkingMode mode,
                        const PlanOptions& options);
 
-// The share of options.toleranceMm left for the joint-linear deviation of the moves: the total
-// minus the flattening error (options.flatteningToleranceMm, machine frame) minus the bound on
-// the G-code rounding error (gcodeRoundingBoundMm).
-double jointDeviationBudgetMm(const MachineProfile& profile, const PlanOptions& options);
-// Bound (mm) of how far the 4-decimal rounding of the G-code angles can move the pen.
+// The share of options.toleranceMm left for the joint-linear deviation of a stroke's moves: the
+// total minus its flattening error (options.flatteningToleranceMm, machine frame, for a stroke of
+// flattened curves; 0 for a stroke whose points are its geometry). The G-code rounding needs no
+// share: the moves are measured between the angles rounded as the G-code writes them.
+double jointDeviationBudgetMm(const MachineProfile& profile, const PlanOptions& options,
+                              bool flattened = true);
+// Bound (mm) of how far the 4-decimal rounding of the G-code angles can move the pen (for
+// comparison: the planner measures the rounding instead of reserving this).
 double gcodeRoundingBoundMm(const MachineProfile& profile);
 
 // REPORT.json text: mode, estimated_time_s, pen_down_mm, travel_mm, segments, max_deviation_mm,

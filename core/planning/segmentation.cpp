@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/kinematics/batch.hpp"
+#include "core/kinematics/units.hpp"
 #include "core/kinematics/move_samples.hpp"
 
 namespace fivebar {
@@ -16,12 +17,12 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kDuplicatePointMm = 1e-9;
 // FK samples along a joint-linear move: one per this much motor rotation, at least kMinSamples.
 constexpr double kSampleStepRad = 1.0 * kPi / 180.0;
-constexpr int kMinSamples = 4;
+constexpr int kMinSamples = 8;
 constexpr int kMaxSamples = 512;
 // Share of the deviation budget a split piece is aimed at, and the share below which one longer
 // piece is tried.
-constexpr double kSplitTarget = 0.97;
-constexpr double kSplitGrowBelow = 0.7;
+constexpr double kSplitTarget = 0.985;
+constexpr double kSplitGrowBelow = 0.9;
 
 double pointSegmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
   const Vec2 ab = b - a;
@@ -61,6 +62,14 @@ std::optional<JointAngles> unwrappedIk(const Geometry& g, WorkingMode mode, cons
                      unwrapNear(ik.angles.theta2, near.theta2)};
 }
 
+// The angles as the G-code carries them: `decimals` decimals of a degree (decimals < 0: as they are).
+JointAngles roundedAngles(const JointAngles& q, int decimals) {
+  if (decimals < 0) return q;
+  const double unitsPerDeg = std::pow(10.0, decimals);
+  auto round = [&](double rad) { return radFromDeg(std::nearbyint(degFromRad(rad) * unitsPerDeg) / unitsPerDeg); };
+  return {round(q.theta1), round(q.theta2)};
+}
+
 void withoutDuplicates(std::span<const Vec2> stroke, std::vector<Vec2>& pts) {
   pts.clear();
   pts.reserve(stroke.size());
@@ -71,7 +80,8 @@ void withoutDuplicates(std::span<const Vec2> stroke, std::vector<Vec2>& pts) {
 // Inverse kinematics of every point (batch kernels), unwrapped along the stroke; sets the
 // failure on `out`.
 bool solveAll(const Geometry& g, WorkingMode mode, const std::vector<Vec2>& pts,
-              const JointAngles& reference, std::vector<JointAngles>& qs, SegmentedStroke& out) {
+              const JointAngles& reference, std::vector<JointAngles>& qs, SegmentedStroke& out,
+              int angleDecimals = -1) {
   const std::size_t n = pts.size();
   thread_local std::vector<double> buf;  // scratch
   thread_local std::vector<std::uint8_t> ok;
@@ -92,7 +102,7 @@ bool solveAll(const Geometry& g, WorkingMode mode, const std::vector<Vec2>& pts,
       return false;
     }
     const JointAngles q{unwrapNear(t1[k], prev.theta1), unwrapNear(t2[k], prev.theta2)};
-    qs.push_back(q);
+    qs.push_back(roundedAngles(q, angleDecimals));
     prev = q;
   }
   return true;
@@ -151,7 +161,11 @@ class Segmenter {
     qcur_ = qs[0];
     thread_local std::vector<MotorTrig> trig;
     trig.resize(pts.size());
-    motorTrigOfPoints(g, mode, pts.data(), pts.size(), trig.data());
+    if (options.angleDecimalsDeg < 0) {
+      motorTrigOfPoints(g, mode, pts.data(), pts.size(), trig.data());
+    } else {  // of the rounded angles, which are no longer exactly the points'
+      for (std::size_t j = 0; j < pts.size(); ++j) trig[j] = MotorTrig::of(qs[j]);
+    }
     trig_ = trig.data();
     trigCur_ = trig_[0];
   }
@@ -170,7 +184,8 @@ class Segmenter {
 
  private:
   const MotorTrig& trigAt(size_t j) const { return trig_[j]; }
-  MotorTrig trigOf(const Vec2& p) const {
+  MotorTrig trigOf(const Vec2& p, const JointAngles& q) const {
+    if (opt_.angleDecimalsDeg >= 0) return MotorTrig::of(q);
     MotorTrig t;
     motorTrigOfPoints(g_, mode_, &p, 1, &t);
     return t;
@@ -264,7 +279,7 @@ class Segmenter {
     auto tryAt = [&](double u, JointAngles& qOut) {
       const auto qx = unwrappedIk(g_, mode_, a + u * (b - a), qcur_);
       if (!qx) return MoveEval{};
-      qOut = *qx;
+      qOut = roundedAngles(*qx, opt_.angleDecimalsDeg);
       const Vec2 piece[2] = {a, a + u * (b - a)};
       return evaluateMove(g_, assembly_, qcur_, trigCur_, qOut, piece);
     };
@@ -285,12 +300,12 @@ class Segmenter {
       if (e2.deviationMm <= budget) t = t2, e = e2, q = q2;
     }
     if (t >= 1.0) {  // the rest of the segment fits: the waypoint is vertex i+1 itself
-      push(q, trigOf(b), b, e, length);
+      push(q, trigOf(b, q), b, e, length);
       ++i_;
       hintMm_ = kInfinity;
       return true;
     }
-    push(q, trigOf(a + t * (b - a)), a + t * (b - a), e, t * length);
+    push(q, trigOf(a + t * (b - a), q), a + t * (b - a), e, t * length);
     // The next piece is predicted to use kSplitTarget of the budget too.
     hintMm_ = t * length * growth(e.deviationMm, 0.5, 1.5);
     return true;
@@ -343,9 +358,13 @@ SegmentedStroke segmentStroke(const Geometry& g, WorkingMode mode, AssemblyMode 
   thread_local std::vector<JointAngles> qs;
   withoutDuplicates(stroke, pts);
   if (pts.empty()) return out;
-  if (!solveAll(g, mode, pts, reference, qs, out)) return out;
+  if (!solveAll(g, mode, pts, reference, qs, out, options.angleDecimalsDeg)) return out;
   out.waypoints.reserve(pts.size());
   out.waypoints.push_back({qs[0], pts[0], 0.0, 0.0});
+  if (options.angleDecimalsDeg >= 0) {  // where the rounded angles put the pen down (a dot: all)
+    const FkResult fk = forward(g, qs[0], assembly);
+    out.maxDeviationMm = fk.ok() ? (fk.p - pts[0]).norm() : kInfinity;
+  }
   Segmenter(g, mode, assembly, pts, qs, options, out).run();
   return out;
 }

@@ -18,6 +18,10 @@ struct SegmentationOptions {
   // Shortest piece a straight polyline segment is split into while searching (mm): below this
   // the segmentation gives up (the move cannot follow the stroke, e.g. across a singularity).
   double minPieceMm = 1e-4;
+  // When >= 0: every waypoint's angles are rounded to this many decimals of a degree, as the
+  // G-code will carry them, before its moves are measured, so the deviations are those of the
+  // moves the machine is sent (the rounding is measured, not bounded). < 0: exact angles.
+  int angleDecimalsDeg = -1;
 };
 
 // One waypoint of a segmented stroke: the end of a joint-linear move (the first waypoint is the

@@ -14,6 +14,9 @@ struct Stroke {
   int layerIndex = 0;        // index into Drawing::layers
   int pathIndex = 0;         // index of the source polyline within its layer (for messages)
   bool reversed = false;     // drawn from the source polyline's end to its start
+  // The points approximate curves (Polyline::flattened): the flattening error at the placement
+  // scale (PlanOptions::flatteningToleranceMm) is part of this stroke's deviation.
+  bool flattened = false;
 };
 
 }  // namespace fivebar

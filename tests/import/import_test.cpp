@@ -121,6 +121,47 @@ TEST(ImportTolerance, ArcPathIsWithinTolerancePlusQtsArcApproximation) {
   EXPECT_LE(worstGap(p[0], {50, 25}, {r, 0}, {0, r}), tolerance + 3e-4 * r);
 }
 
+// Straight lines are their own geometry (no flattening error to pay for); curves are marked.
+TEST(ImportTolerance, CurvesAreMarkedFlattenedStraightLinesAreNot) {
+  const std::string shapes =
+      "<path d=\"M0 0 L10 0 L10 10 M20 0 C25 5 30 5 35 0 L40 0\" fill=\"none\" stroke=\"#000\"/>"
+      "<polyline points=\"0 20 10 20 10 30\" fill=\"none\" stroke=\"#000\"/>"
+      "<line x1=\"0\" y1=\"40\" x2=\"10\" y2=\"40\" stroke=\"#000\"/>";
+  for (const std::string& extra : {std::string(), std::string("<circle cx=\"60\" cy=\"20\" r=\"5\" "
+                                                             "fill=\"none\" stroke=\"#000\"/>")}) {
+    // Without the circle the direct reader reads the file, with it the general path.
+    const ImportResult r = importText(page(shapes + extra));
+    ASSERT_TRUE(r.ok()) << r.message;
+    const std::vector<Polyline> paths = allPaths(r.drawing);
+    ASSERT_EQ(paths.size(), extra.empty() ? 4u : 5u);
+    EXPECT_FALSE(paths[0].flattened);  // M0 0 L10 0 L10 10
+    EXPECT_TRUE(paths[1].flattened);   // the subpath with a cubic
+    EXPECT_FALSE(paths[2].flattened);  // polyline
+    EXPECT_FALSE(paths[3].flattened);  // line
+    if (!extra.empty()) EXPECT_TRUE(paths[4].flattened);  // circle
+  }
+}
+
+// The points budget stops the import as soon as it is passed (the direct reader and the general
+// path alike), naming the budget.
+TEST(ImportHostile, ThePointsBudgetStopsTheImportEarly) {
+  std::string many;
+  for (int i = 0; i < 400; ++i)
+    many += "<path d=\"M0 " + std::to_string(i % 50) + " L100 " + std::to_string(i % 50) +
+            "\" stroke=\"#000\"/>";
+  ImportOptions o;
+  o.maxPoints = 500;
+  for (const std::string& extra : {std::string(), std::string("<rect width=\"5\" height=\"5\" stroke=\"#000\"/>")}) {
+    const ImportResult stopped = importText(page(many + extra), o);
+    EXPECT_EQ(stopped.status, ImportStatus::TooManyPoints);
+    EXPECT_NE(stopped.message.find("more than 500 points after flattening (the points budget)"),
+              std::string::npos) << stopped.message;
+    o.maxPoints = 900;  // 800 points + the rectangle's 4
+    EXPECT_TRUE(importText(page(many + extra), o).ok());
+    o.maxPoints = 500;
+  }
+}
+
 TEST(ImportStructure, EachSubpathIsItsOwnPolylineWithTheClosedFlag) {
   const ImportResult r = importText(page(std::string("<path d=\"M10 10 L20 10 M30 10 L40 10 L35 20 Z\"") + kStroke + "/>"));
   ASSERT_TRUE(r.ok()) << r.message;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/import/svg_markers.hpp"
 #include "import_support.hpp"
 
 namespace fivebar::svg {
@@ -164,15 +165,57 @@ TEST(Markers, UnsupportedCasesAreWarned) {
   ASSERT_TRUE(rect.ok()) << rect.message;
   EXPECT_EQ(allPaths(rect.drawing).size(), 1u);
   EXPECT_TRUE(warned(rect, "markers on <rect> are not drawn")) << joined(rect);
-  // A style sheet's marker rule; a missing marker; explicit overflow clipping.
-  const ImportResult css = importText(page("<style>path { marker-end: url(#s) }</style><defs>" + marker +
-                                           "</defs><path d=\"M0 0 L10 0\" stroke=\"black\" marker-start=\"url(#s)\"/>"
-                                           "<path d=\"M0 5 L10 5\" stroke=\"black\" marker-start=\"url(#nope)\"/>"));
+  // A style sheet rule with a descendant selector; a missing marker; explicit overflow clipping.
+  const ImportResult css = importText(page("<style>g path { marker-end: url(#s) }</style><defs>" + marker +
+                                           "</defs><g><path d=\"M0 0 L10 0\" stroke=\"black\" marker-start=\"url(#s)\"/>"
+                                           "<path d=\"M0 5 L10 5\" stroke=\"black\" marker-start=\"url(#nope)\"/></g>"));
   ASSERT_TRUE(css.ok()) << css.message;
   EXPECT_EQ(allPaths(css.drawing).size(), 3u);
-  EXPECT_TRUE(warned(css, "markers set in a style sheet are not drawn")) << joined(css);
+  EXPECT_TRUE(warned(css, "markers set in a style sheet for the selector 'g path' are not drawn"))
+      << joined(css);
   EXPECT_TRUE(warned(css, "marker #nope not found")) << joined(css);
   EXPECT_TRUE(warned(css, "marker overflow clipping not applied")) << joined(css);
+}
+
+// Style sheets (<style>) set markers as attributes do, in CSS order: presentation attribute <
+// style-sheet rule (by specificity, then order) < style attribute.
+TEST(Markers, StyleSheetMarkersAreDrawnLikeAttributes) {
+  const std::string sheet =
+      "<style>/* markers */ .arrow { marker-end: url(#s) } path#plain { marker-end: none }\n"
+      "line, polyline.tick { marker-start: url(#s) !important }</style>";
+  const ImportResult r = importText(page(
+      sheet + "<defs>" + stick("s", "") + "</defs>"
+      "<path class=\"arrow\" d=\"M10 10 L30 10\" stroke=\"black\"/>"                    // end marker
+      "<path id=\"plain\" class=\"arrow\" d=\"M10 20 L30 20\" stroke=\"black\"/>"      // #id beats .class
+      "<path class=\"x arrow\" marker-end=\"url(#nope)\" d=\"M10 30 L30 30\" stroke=\"black\"/>"  // rule beats attribute
+      "<path class=\"arrow\" style=\"marker-end: none\" d=\"M10 40 L30 40\" stroke=\"black\"/>"  // style wins
+      "<line x1=\"50\" y1=\"10\" x2=\"70\" y2=\"10\" stroke=\"black\"/>"              // start marker
+      "<polyline points=\"50 30 70 30\" fill=\"none\" stroke=\"black\"/>"));          // no class: none
+  ASSERT_TRUE(r.ok()) << r.message;
+  // The stick of marker s runs 10 units along +x from the vertex (orient 0, stroke width 1).
+  EXPECT_EQ(segmentsFromTo(r.drawing, {30, 10}, {40, 10}), 1);
+  EXPECT_EQ(segmentsFromTo(r.drawing, {30, 20}, {40, 20}), 0);
+  EXPECT_EQ(segmentsFromTo(r.drawing, {30, 30}, {40, 30}), 1);
+  EXPECT_EQ(segmentsFromTo(r.drawing, {30, 40}, {40, 40}), 0);
+  EXPECT_EQ(segmentsFromTo(r.drawing, {50, 10}, {60, 10}), 1);
+  EXPECT_EQ(segmentsFromTo(r.drawing, {50, 30}, {60, 30}), 0);
+  EXPECT_EQ(allPaths(r.drawing).size(), 9u);  // 6 shapes + 3 markers
+  EXPECT_FALSE(warned(r, "style sheet")) << joined(r);
+  EXPECT_FALSE(warned(r, "marker #nope not found")) << joined(r);
+}
+
+TEST(Markers, StyleSheetSelectorsAreParsedAsCss) {
+  const MarkerSheet s = parseMarkerSheet(
+      u"a{fill:red} @media print { path { marker: url(#m) } } *{marker-mid:url(#m)} "
+      u"#i.c1.c2 { marker : url(#m) } g > path { marker-end: url(#m) } path:hover{marker:none}");
+  ASSERT_EQ(s.rules.size(), 2u);
+  EXPECT_EQ(s.rules[0].specificity, 0);  // * first: lowest specificity
+  EXPECT_EQ(s.rules[1].specificity, 120);
+  EXPECT_EQ(s.rules[1].id, QStringLiteral("i"));
+  EXPECT_EQ(s.rules[1].classes, QStringList({QStringLiteral("c1"), QStringLiteral("c2")}));
+  EXPECT_EQ(s.unsupported,
+            (std::vector<QString>{QStringLiteral("@media print"), QStringLiteral("g > path"),
+                                  QStringLiteral("path:hover")}));
 }
 
 }  // namespace

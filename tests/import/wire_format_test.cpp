@@ -25,6 +25,7 @@ ImportResult sample() {
   layer.paths.back().fill = FillRule::EvenOdd;
   layer.paths.back().fillStart = true;
   layer.paths.back().fillOnly = true;
+  layer.paths.back().flattened = true;
   r.drawing.layers.push_back(layer);
   return r;
 }
@@ -45,9 +46,9 @@ TEST(WireFormat, RoundTripIsExact) {
   EXPECT_EQ(l.paths[0].points, in.drawing.layers[0].paths[0].points);
   EXPECT_TRUE(l.paths[1].closed);
   EXPECT_EQ(l.paths[1].fill, FillRule::EvenOdd);
-  EXPECT_TRUE(l.paths[1].fillStart && l.paths[1].fillOnly);
+  EXPECT_TRUE(l.paths[1].fillStart && l.paths[1].fillOnly && l.paths[1].flattened);
   EXPECT_EQ(l.paths[0].fill, FillRule::None);
-  EXPECT_FALSE(l.paths[0].fillStart || l.paths[0].fillOnly);
+  EXPECT_FALSE(l.paths[0].fillStart || l.paths[0].fillOnly || l.paths[0].flattened);
 }
 
 TEST(WireFormat, TruncatedOrForeignBytesAreRejected) {
@@ -147,6 +148,17 @@ TEST(WireFormat, AFailedCaptureTravelsWithItsStatusAndMessage) {
   EXPECT_EQ(r.message, failed.message);
 }
 
+TEST(WireFormat, APointBudgetStopTravelsWithItsStatus) {
+  Capture failed;
+  failed.status = ImportStatus::TooManyPoints;
+  failed.message = "x.svg: more than 10 points after flattening (the points budget): reading stopped there";
+  StringSource source(streamBytes([&](CaptureStreamWriter& w) { EXPECT_TRUE(w.finish(failed, {})); }));
+  StreamedCapture out;
+  ASSERT_TRUE(decodeCaptureStream(source, out));
+  EXPECT_EQ(out.capture.status, ImportStatus::TooManyPoints);
+  EXPECT_EQ(out.capture.message, failed.message);
+}
+
 TEST(WireFormat, WorkerArgumentsRoundTrip) {
   ImportOptions in;
   in.toleranceMm = 0.0123;
@@ -154,6 +166,7 @@ TEST(WireFormat, WorkerArgumentsRoundTrip) {
   in.forcedWidthMm = 150;
   in.outlineFills = false;
   in.layerMode = LayerMode::ByColor;
+  in.maxPoints = 12345;
   QString path;
   ImportOptions out;
   EXPECT_EQ(parseWorkerArguments(workerArguments(QStringLiteral("x y.svg"), in), path, out), QString());
@@ -163,6 +176,7 @@ TEST(WireFormat, WorkerArgumentsRoundTrip) {
   EXPECT_EQ(out.forcedWidthMm, 150.0);
   EXPECT_FALSE(out.outlineFills);
   EXPECT_EQ(out.layerMode, LayerMode::ByColor);
+  EXPECT_EQ(out.maxPoints, 12345u);
   EXPECT_FALSE(parseWorkerArguments({QStringLiteral("--bogus"), QStringLiteral("1")}, path, out).isEmpty());
   int fd = -1;
   const QStringList withFd = QStringList{QString::fromLatin1(kResultFdOption), QStringLiteral("7")} +
