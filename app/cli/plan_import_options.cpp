@@ -6,6 +6,8 @@
 #include <iostream>
 #include <numbers>
 
+#include "core/kinematics/units.hpp"
+
 
 namespace fivebar::cli {
 
@@ -61,7 +63,7 @@ PlanImportSettings planImportSettingsFrom(const Options& o) {
     s.fill = *fill;
   }
   s.hatch.spacingMm = numberOption(o, "--hatch-spacing", 0.5);
-  s.hatch.angleRad = numberOption(o, "--hatch-angle", 45.0) * std::numbers::pi / 180.0;
+  s.hatch.angleRad = radFromDeg(numberOption(o, "--hatch-angle", 45.0));  // as the studio converts
   s.hatch.crosshatch = o.flag("--crosshatch");
   s.hatch.outline = !o.flag("--no-hatch-outline");
   if (const std::string bad = validate(s.hatch); !bad.empty()) throw UsageError("--hatch-spacing: " + bad);
@@ -76,7 +78,7 @@ std::size_t pointCount(const Drawing& drawing) {
   std::size_t n = 0;
   for (const Layer& layer : drawing.layers)
     if (layer.visible)
-      for (const Polyline& line : layer.paths) n += line.points.size();
+      for (const Polyline& line : filledPaths(layer)) n += line.points.size();
   return n;
 }
 

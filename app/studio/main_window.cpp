@@ -179,6 +179,10 @@ void MainWindow::createDocks() {
   auto* warningsDock = addDock(warnings, tr("Import warnings"), QStringLiteral("dockImportWarnings"),
                                Qt::BottomDockWidgetArea);
   connect(importer_, &ImportController::warningsReported, warnings, &ImportWarningsPanel::showWarnings);
+  // The panel takes room only while the last import has warnings to read.
+  warningsDock->hide();
+  connect(importer_, &ImportController::warningsReported, warningsDock,
+          [warningsDock](const QString&, const QStringList& list) { warningsDock->setVisible(!list.isEmpty()); });
   connect(warnings, &ImportWarningsPanel::attentionWanted, warningsDock, &QDockWidget::raise);
 }
 

@@ -28,6 +28,18 @@ struct Polyline {
   bool flattened = false;
 };
 
+// How a layer's filled shapes are drawn (core/planning/hatch.hpp): outline (the shape's geometry,
+// as AxiDraw and vpype draw it), hatch (parallel lines clipped by the shape), or none.
+enum class FillMode { Outline, Hatch, None };
+
+struct HatchSettings {
+  double spacingMm = 1.0;   // distance between neighbouring hatch lines
+  double angleRad = 0.0;    // direction of the lines, counter-clockwise from +x (work frame)
+  bool crosshatch = false;  // a second set at angle + 90 deg
+  bool outline = true;      // keep the outline of fill-only shapes when hatching
+  bool operator==(const HatchSettings&) const = default;
+};
+
 // Tool settings a layer may override; unset values fall back to the machine profile.
 struct LayerToolSettings {
   double drawSpeedMmPerS = 0.0;  // 0 = profile default
@@ -41,6 +53,10 @@ struct Layer {
   std::uint32_t rgb = 0;    // stroke colour 0xRRGGBB
   bool visible = true;      // hidden layers are neither drawn nor planned
   LayerToolSettings tool;
+  // The fill its filled shapes are drawn with; applied where the drawing is placed (placeDrawing,
+  // core/planning/placement.hpp), so `paths` keep the imported geometry and the fill can change.
+  FillMode fill = FillMode::Outline;
+  HatchSettings hatch;
   std::vector<Polyline> paths;
 };
 

@@ -13,17 +13,9 @@
 
 namespace fivebar {
 
-enum class FillMode { Outline, Hatch, None };
-
 const char* toString(FillMode mode);
 std::optional<FillMode> fillModeFromString(std::string_view text);  // outline|hatch|none
 
-struct HatchSettings {
-  double spacingMm = 1.0;   // distance between neighbouring hatch lines
-  double angleRad = 0.0;    // direction of the lines, counter-clockwise from +x (work frame)
-  bool crosshatch = false;  // a second set at angle + 90 deg
-  bool outline = true;      // keep the outline of fill-only shapes when hatching
-};
 
 // Empty when usable; else what is wrong (spacing must be finite and >= kMinHatchSpacingMm).
 inline constexpr double kMinHatchSpacingMm = 0.01;
@@ -40,5 +32,10 @@ std::vector<Polyline> hatchArea(const std::vector<std::vector<Vec2>>& rings, Fil
 // its outline (and drops fill-only outlines unless settings.outline).
 std::vector<Polyline> applyFill(const std::vector<Polyline>& paths, FillMode mode,
                                 const HatchSettings& settings);
+
+// The polylines a layer is drawn with: its paths under its own fill (Layer::fill, Layer::hatch).
+inline std::vector<Polyline> filledPaths(const Layer& layer) {
+  return layer.fill == FillMode::Outline ? layer.paths : applyFill(layer.paths, layer.fill, layer.hatch);
+}
 
 }  // namespace fivebar

@@ -6,6 +6,7 @@
 #include <limits>
 #include <utility>
 
+#include "core/planning/hatch.hpp"
 #include "core/support/parallel.hpp"
 
 namespace fivebar {
@@ -66,18 +67,29 @@ std::vector<Stroke> placeDrawing(const Drawing& drawing, const Placement& placem
 }
 
 std::vector<Stroke> placeDrawing(const Drawing& drawing, const Eigen::Affine2d& machineFromWorkT) {
-  std::vector<std::pair<int, int>> index;  // layer and path of each stroke, in order
+  // Each layer's polylines under its fill (hatch lines computed here, from the imported shapes).
+  std::vector<std::vector<Polyline>> filled(drawing.layers.size());
+  std::vector<const std::vector<Polyline>*> pathsOf(drawing.layers.size());
   for (std::size_t li = 0; li < drawing.layers.size(); ++li) {
     const Layer& layer = drawing.layers[li];
-    if (!layer.visible) continue;
-    for (std::size_t pi = 0; pi < layer.paths.size(); ++pi)
-      if (!layer.paths[pi].points.empty()) index.emplace_back(static_cast<int>(li), static_cast<int>(pi));
+    pathsOf[li] = &layer.paths;
+    if (layer.visible && layer.fill != FillMode::Outline) {
+      filled[li] = filledPaths(layer);
+      pathsOf[li] = &filled[li];
+    }
+  }
+  std::vector<std::pair<int, int>> index;  // layer and path of each stroke, in order
+  for (std::size_t li = 0; li < drawing.layers.size(); ++li) {
+    if (!drawing.layers[li].visible) continue;
+    const std::vector<Polyline>& paths = *pathsOf[li];
+    for (std::size_t pi = 0; pi < paths.size(); ++pi)
+      if (!paths[pi].points.empty()) index.emplace_back(static_cast<int>(li), static_cast<int>(pi));
   }
   // Copied in parallel: a large drawing is tens of MB of fresh memory.
   std::vector<Stroke> out(index.size());
   parallelFor(index.size(), planningThreads(), [&](std::size_t k) {
     const auto [li, pi] = index[k];
-    const Polyline& path = drawing.layers[static_cast<std::size_t>(li)].paths[static_cast<std::size_t>(pi)];
+    const Polyline& path = (*pathsOf[static_cast<std::size_t>(li)])[static_cast<std::size_t>(pi)];
     Stroke& s = out[k];
     s.layerIndex = li;
     s.pathIndex = pi;

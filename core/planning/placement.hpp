@@ -49,9 +49,11 @@ Eigen::Affine2d machineFromWork(const Drawing& drawing, const Placement& placeme
 // The same from the drawing's bounds (drawingBounds), for callers that place one drawing often.
 Eigen::Affine2d machineFromWork(const std::optional<RectMm>& workBounds, const Placement& placement);
 
-// The visible layers' polylines mapped into the machine frame, in layer order then path order.
-// Closed polylines get their first point appended so the stroke closes; polylines with no point
-// are skipped. layerIndex/pathIndex index the Drawing; reversed is false.
+// The visible layers' polylines, each layer under its fill (Layer::fill: hatch lines added after
+// their shape, fill-only outlines dropped for none; filledPaths in hatch.hpp), mapped into the
+// machine frame, in layer order then path order. Closed polylines get their first point appended
+// so the stroke closes; polylines with no point are skipped. layerIndex indexes the Drawing,
+// pathIndex the layer's filled polylines (its paths when the fill is outline); reversed is false.
 std::vector<Stroke> placeDrawing(const Drawing& drawing, const Placement& placement);
 std::vector<Stroke> placeDrawing(const Drawing& drawing, const Eigen::Affine2d& machineFromWorkT);
 

@@ -6,6 +6,7 @@
 
 #include "core/kinematics/units.hpp"
 #include "core/machine/profile_json.hpp"
+#include "core/planning/hatch.hpp"
 
 namespace fivebar {
 namespace {
@@ -28,6 +29,34 @@ void readTool(ObjectReader& layer, LayerToolSettings& t, std::vector<ValidationI
   if (!(t.drawSpeedMmPerS >= 0.0) || !std::isfinite(t.drawSpeedMmPerS))
     issues.push_back({layer.pathOf("tool") + ".draw_speed_mm_per_s",
                       layer.pathOf("tool") + ".draw_speed_mm_per_s must be 0 (profile default) or positive"});
+}
+
+json fillJson(const ProjectLayer& l) {
+  return {{"mode", toString(l.fill)},
+          {"hatch_spacing_mm", l.hatch.spacingMm},
+          {"hatch_angle_deg", degFromRad(l.hatch.angleRad)},
+          {"crosshatch", l.hatch.crosshatch},
+          {"hatch_outline", l.hatch.outline}};
+}
+
+void readFill(ObjectReader& layer, ProjectLayer& l, std::vector<ValidationIssue>& issues) {
+  const json* fj = layer.object("fill");
+  if (!fj) return;  // version 1: outline
+  const std::string path = layer.pathOf("fill");
+  ObjectReader r(*fj, path, issues);
+  std::string mode = "outline";
+  double angleDeg = degFromRad(l.hatch.angleRad);
+  r.string("mode", mode, true);
+  r.number("hatch_spacing_mm", l.hatch.spacingMm);
+  r.number("hatch_angle_deg", angleDeg);
+  r.boolean("crosshatch", l.hatch.crosshatch);
+  r.boolean("hatch_outline", l.hatch.outline);
+  r.finish();
+  l.hatch.angleRad = radFromDeg(angleDeg);
+  if (const auto m = fillModeFromString(mode)) l.fill = *m;
+  else issues.push_back({path + ".mode", path + ".mode must be outline, hatch or none, got '" + mode + "'"});
+  if (const std::string bad = validate(l.hatch); !bad.empty())
+    issues.push_back({path + ".hatch_spacing_mm", path + ": " + bad});
 }
 
 void readPlacement(ObjectReader& root, Placement& p, std::vector<ValidationIssue>& issues) {
@@ -66,6 +95,7 @@ void readLayers(const json& doc, std::vector<ProjectLayer>& out, std::vector<Val
     r.string("name", l.name);
     r.boolean("visible", l.visible);
     readTool(r, l.tool, issues);
+    readFill(r, l, issues);
     r.finish();
     out.push_back(std::move(l));
   }
@@ -89,7 +119,8 @@ void readMachine(ObjectReader& root, const std::string& sourceName, Project& p,
 std::string projectToJson(const Project& p) {
   json layers = json::array();
   for (const ProjectLayer& l : p.layers)
-    layers.push_back({{"id", l.id}, {"name", l.name}, {"visible", l.visible}, {"tool", toolJson(l.tool)}});
+    layers.push_back({{"id", l.id}, {"name", l.name}, {"visible", l.visible}, {"tool", toolJson(l.tool)},
+                      {"fill", fillJson(l)}});
   const json doc = {
       {"format", kProjectFormatName},
       {"version", kProjectFormatVersion},
@@ -170,7 +201,7 @@ ProjectLoad projectFromJson(const std::string& text, const std::string& sourceNa
 
 std::vector<ProjectLayer> layerStatesOf(const Drawing& drawing) {
   std::vector<ProjectLayer> out;
-  for (const Layer& l : drawing.layers) out.push_back({l.id, l.name, l.visible, l.tool});
+  for (const Layer& l : drawing.layers) out.push_back({l.id, l.name, l.visible, l.tool, l.fill, l.hatch});
   return out;
 }
 
@@ -184,6 +215,8 @@ void applyLayerStates(Drawing& drawing, const std::vector<ProjectLayer>& states)
         Layer l = std::move(drawing.layers[i]);
         l.visible = s.visible;
         l.tool = s.tool;
+        l.fill = s.fill;
+        l.hatch = s.hatch;
         ordered.push_back(std::move(l));
         break;
       }

@@ -16,7 +16,8 @@
 
 namespace fivebar {
 
-inline constexpr int kProjectFormatVersion = 1;
+// Version 2 adds each layer's fill; version 1 files load with outline fills.
+inline constexpr int kProjectFormatVersion = 2;
 inline constexpr const char* kProjectFormatName = "fivebar-project";
 
 // The user's settings of one layer, matched to the imported drawing by Layer::id.
@@ -25,6 +26,8 @@ struct ProjectLayer {
   std::string name;  // informative; the drawing's own name wins on load
   bool visible = true;
   LayerToolSettings tool;
+  FillMode fill = FillMode::Outline;  // how its filled shapes are drawn (format version 2)
+  HatchSettings hatch;
 };
 
 struct Project {

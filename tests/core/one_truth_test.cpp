@@ -4,12 +4,14 @@
 // and the project file round trip with its error messages.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cmath>
 #include <random>
 #include <thread>
 
 #include "core/output/gcode.hpp"
 #include "core/planning/auto_placement.hpp"
+#include "core/planning/hatch.hpp"
 #include "core/planning/planner.hpp"
 #include "core/project/project.hpp"
 #include "test_support.hpp"
@@ -172,7 +174,8 @@ Project sampleProject() {
                  "<path d=\"M1 1 L9 9\" stroke=\"#000\"/></svg>\n";
   p.flatteningToleranceMm = 0.04;
   p.placement = Placement{Vec2(3.5, 180.25), 0.5, 0.75, 1.25};
-  p.layers = {{"color:#ff0000", "red", false, {12.5, 400.0, true}}, {"ink", "ink", true, {}}};
+  p.layers = {{"color:#ff0000", "red", false, {12.5, 400.0, true}, FillMode::Hatch, {0.75, 0.5, true, false}},
+              {"ink", "ink", true, {}, FillMode::Outline, {}}};
   p.mode = WorkingMode::PlusMinus;
   p.toleranceMm = 0.05;
   p.profile = *preset("hoang2015");
@@ -197,6 +200,12 @@ TEST(OneTruth, ProjectRoundTripKeepsEverything) {
   EXPECT_EQ(q.layers[0].tool.drawSpeedMmPerS, 12.5);
   EXPECT_EQ(q.layers[0].tool.power, 400.0);
   EXPECT_TRUE(q.layers[0].tool.pauseBefore);
+  EXPECT_EQ(q.layers[0].fill, FillMode::Hatch);
+  EXPECT_EQ(q.layers[0].hatch.spacingMm, 0.75);
+  EXPECT_NEAR(q.layers[0].hatch.angleRad, 0.5, 1e-15);
+  EXPECT_TRUE(q.layers[0].hatch.crosshatch);
+  EXPECT_FALSE(q.layers[0].hatch.outline);
+  EXPECT_EQ(q.layers[1].fill, FillMode::Outline);
   EXPECT_EQ(q.mode, p.mode);
   EXPECT_EQ(q.toleranceMm, p.toleranceMm);
   EXPECT_EQ(toJson(q.profile), toJson(p.profile));
@@ -216,11 +225,62 @@ TEST(OneTruth, BadProjectsNameTheField) {
     t.replace(t.find(from), from.size(), to);
     return t;
   };
-  EXPECT_NE(issueOf(replace("\"version\": 1", "\"version\": 99")).find("version 99 is not supported"), std::string::npos);
+  EXPECT_NE(issueOf(replace("\"version\": 2", "\"version\": 99")).find("version 99 is not supported"), std::string::npos);
+  EXPECT_NE(issueOf(replace("\"mode\": \"hatch\"", "\"mode\": \"solid\"")).find("layers[0].fill.mode"), std::string::npos);
+  EXPECT_NE(issueOf(replace("\"hatch_spacing_mm\": 0.75", "\"hatch_spacing_mm\": 0")).find("layers[0].fill"),
+            std::string::npos);
   EXPECT_NE(issueOf(replace("\"scale\": 0.75", "\"scale\": -1")).find("placement.scale"), std::string::npos);
   EXPECT_NE(issueOf(replace("\"mode\": \"+-\"", "\"mode\": \"sideways\"")).find("mode must be"), std::string::npos);
   EXPECT_NE(issueOf(replace("\"a1\": 70.0", "\"a1\": \"long\"")).find("machine.geometry.a1"), std::string::npos);
   EXPECT_NE(issueOf(replace("\"tolerance_mm\"", "\"tolerance_mn\"")).find("tolerance_mn"), std::string::npos);
+}
+
+// A version 1 project (before layer fills) loads, its layers drawn with outline fills.
+TEST(OneTruth, AVersionOneProjectLoadsWithOutlineFills) {
+  std::string text = projectToJson(sampleProject());
+  const auto cut = [&](const std::string& from, const std::string& to) {
+    const std::size_t a = text.find(from);
+    ASSERT_NE(a, std::string::npos) << from;
+    text.replace(a, to.size(), to);
+  };
+  cut("\"version\": 2", "\"version\": 1");
+  // Drop every "fill" member (the first of its layer object: keys are written sorted).
+  for (std::size_t at = text.find("\"fill\": {"); at != std::string::npos; at = text.find("\"fill\": {")) {
+    std::size_t stop = text.find('}', at) + 1;
+    if (stop < text.size() && text[stop] == ',') ++stop;
+    while (stop < text.size() && std::isspace(static_cast<unsigned char>(text[stop]))) ++stop;
+    text.erase(at, stop - at);
+  }
+  ASSERT_EQ(text.find("\"fill\""), std::string::npos) << text;
+  const ProjectLoad load = projectFromJson(text, "old.fivebar");
+  ASSERT_TRUE(load.project) << load.issues.front().message;
+  EXPECT_EQ(load.project->layers[0].fill, FillMode::Outline);
+  EXPECT_FALSE(load.project->layers[0].visible);  // the rest as saved
+}
+
+// A layer's fill is applied where the drawing is placed: hatch lines for that layer only.
+TEST(OneTruth, EachLayerIsPlacedWithItsOwnFill) {
+  Drawing d;
+  d.layers.resize(2);
+  for (Layer& l : d.layers) {
+    Polyline square{{Vec2(0, 0), Vec2(10, 0), Vec2(10, 10), Vec2(0, 10)}, true};
+    square.fill = FillRule::NonZero;
+    square.fillStart = true;
+    l.paths.push_back(square);
+  }
+  d.layers[1].paths[0].points = {Vec2(20, 0), Vec2(30, 0), Vec2(30, 10), Vec2(20, 10)};
+  d.layers[1].fill = FillMode::Hatch;
+  d.layers[1].hatch.spacingMm = 1.0;
+  const std::vector<Stroke> strokes = placeDrawing(d, Placement{Vec2(0, 150), 0.0, 1.0});
+  int first = 0, second = 0;
+  for (const Stroke& s : strokes) (s.layerIndex == 0 ? first : second) += 1;
+  EXPECT_EQ(first, 1);   // the outline alone
+  EXPECT_GT(second, 1);  // the outline and its hatch lines (boustrophedon: few strokes)
+  std::size_t hatchPoints = 0;
+  for (const Polyline& l : filledPaths(d.layers[1])) hatchPoints += l.points.size();
+  EXPECT_GE(hatchPoints, 4u + 2u * 9u);  // 9 or 10 lines of two ends each, plus the square
+  d.layers[1].fill = FillMode::None;  // stroked shape: its outline stays
+  EXPECT_EQ(placeDrawing(d, Placement{Vec2(0, 150), 0.0, 1.0}).size(), 2u);
 }
 
 TEST(OneTruth, LayerStatesFollowTheProjectOrder) {
@@ -229,12 +289,14 @@ TEST(OneTruth, LayerStatesFollowTheProjectOrder) {
   d.layers[0].id = "a";
   d.layers[1].id = "b";
   d.layers[2].id = "c";
-  applyLayerStates(d, {{"c", "", false, {}}, {"a", "", true, {5.0, -1.0, false}}});
+  applyLayerStates(d, {{"c", "", false, {}, FillMode::Outline, {}},
+                       {"a", "", true, {5.0, -1.0, false}, FillMode::Hatch, {}}});
   ASSERT_EQ(d.layers.size(), 3u);
   EXPECT_EQ(d.layers[0].id, "c");
   EXPECT_FALSE(d.layers[0].visible);
   EXPECT_EQ(d.layers[1].id, "a");
   EXPECT_EQ(d.layers[1].tool.drawSpeedMmPerS, 5.0);
+  EXPECT_EQ(d.layers[1].fill, FillMode::Hatch);
   EXPECT_EQ(d.layers[2].id, "b");  // not named by the project: after, in its own order
 }
 

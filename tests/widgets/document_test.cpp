@@ -7,7 +7,13 @@
 #include <cmath>
 
 #include "core/kinematics/units.hpp"
+#include <QCheckBox>
+#include <QDoubleSpinBox>
+#include <QPushButton>
+
+#include "core/planning/auto_placement.hpp"
 #include "widgets/canvas/placement_tool.hpp"
+#include "widgets/panels/placement_panel.hpp"
 #include "widgets/document/studio_document.hpp"
 
 namespace fivebar::widgets {
@@ -170,6 +176,68 @@ void drag(PlacementTool& tool, const ViewTransform& view, QPointF from, QPointF 
   }
   QMouseEvent release(QEvent::MouseButtonRelease, to, to, Qt::LeftButton, Qt::NoButton, modifiers);
   EXPECT_TRUE(tool.mouseRelease(&release, view));
+}
+
+// The placement panel offscreen: width and height in mm (aspect kept unless unlocked), "Actual
+// size" back to 100 % and "Fit to workspace" as core's autoPlacement fits; each an undo step.
+TEST(PlacementPanel, SizeFieldsKeepTheAspectUnlessUnlockedAndActualSizeAndFitWork) {
+  StudioDocument doc(profile());
+  Drawing d;
+  d.source = "rect";
+  d.layers.resize(1);
+  d.layers[0].id = d.layers[0].name = "ink";
+  d.layers[0].paths.push_back({{Vec2(0, 0), Vec2(60, 0), Vec2(60, 40), Vec2(0, 40)}, true});  // 60 x 40 mm
+  Placement at;
+  at.centerMm = Vec2(0.0, 170.0);
+  doc.replaceDrawing(d, QStringLiteral("rect.svg"), at);
+  PlacementPanel panel(doc);
+  auto* width = panel.findChild<QDoubleSpinBox*>(QStringLiteral("placementWidth"));
+  auto* height = panel.findChild<QDoubleSpinBox*>(QStringLiteral("placementHeight"));
+  auto* scale = panel.findChild<QDoubleSpinBox*>(QStringLiteral("placementScale"));
+  auto* keep = panel.findChild<QCheckBox*>(QStringLiteral("placementKeepAspect"));
+  auto* actual = panel.findChild<QPushButton*>(QStringLiteral("placementActualSize"));
+  auto* fit = panel.findChild<QPushButton*>(QStringLiteral("placementFit"));
+  ASSERT_TRUE(width && height && scale && keep && actual && fit);
+  EXPECT_NEAR(width->value(), 60.0, 1e-9);
+  EXPECT_NEAR(height->value(), 40.0, 1e-9);
+  ASSERT_TRUE(keep->isChecked());
+  const int steps = doc.undoStack()->count();
+  // Width 90 mm with the aspect kept: 150 %, the height follows.
+  width->setValue(90.0);
+  EXPECT_NEAR(doc.placement().scale, 1.5, 1e-9);
+  EXPECT_NEAR(doc.placement().stretchY, 1.0, 1e-12);
+  EXPECT_NEAR(height->value(), 60.0, 1e-6);
+  EXPECT_NEAR(scale->value(), 150.0, 1e-6);
+  EXPECT_EQ(doc.undoStack()->count(), steps + 1);
+  // Height 30 mm with the aspect kept: 75 %.
+  height->setValue(30.0);
+  EXPECT_NEAR(doc.placement().scale, 0.75, 1e-9);
+  EXPECT_NEAR(width->value(), 45.0, 1e-6);
+  // Unlocked: the height changes alone (y stretch), the width stays.
+  keep->setChecked(false);
+  height->setValue(60.0);
+  EXPECT_NEAR(width->value(), 45.0, 1e-6);
+  EXPECT_NEAR(doc.placement().scale * doc.placement().stretchY * 40.0, 60.0, 1e-6);
+  EXPECT_NEAR(doc.placement().stretchY, 2.0, 1e-9);
+  // Actual size: 100 %, no stretch, aspect locked again, centre unchanged.
+  actual->click();
+  EXPECT_DOUBLE_EQ(doc.placement().scale, 1.0);
+  EXPECT_DOUBLE_EQ(doc.placement().stretchY, 1.0);
+  EXPECT_TRUE(keep->isChecked());
+  EXPECT_EQ(doc.placement().centerMm, Vec2(0.0, 170.0));
+  EXPECT_NEAR(width->value(), 60.0, 1e-9);
+  // Fit to workspace: what core's autoPlacement gives with PlacementSizing::Fit (enlarged here).
+  const auto expected = autoPlacement(doc.drawing(), doc.profile(), doc.modeSelection(),
+                                      doc.placement().rotationRad, PlacementSizing::Fit);
+  ASSERT_TRUE(expected.has_value());
+  fit->click();
+  EXPECT_DOUBLE_EQ(doc.placement().scale, expected->placement.scale);
+  EXPECT_EQ(doc.placement().centerMm, expected->placement.centerMm);
+  EXPECT_GT(doc.placement().scale, 1.0);
+  EXPECT_NEAR(width->value(), 60.0 * expected->placement.scale, 0.006);  // shown to 0.01 mm
+  // Every change was one undo step; undoing the fit restores 100 %.
+  doc.undoStack()->undo();
+  EXPECT_DOUBLE_EQ(doc.placement().scale, 1.0);
 }
 
 TEST(PlacementTool, DragsMoveScaleAndRotateInOneUndoStepEach) {

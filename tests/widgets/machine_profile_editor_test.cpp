@@ -3,12 +3,16 @@
 #include <gtest/gtest.h>
 
 #include <QDoubleSpinBox>
+#include <QFormLayout>
 #include <QFile>
 #include <QLabel>
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <cmath>
+
 #include "core/machine/profile.hpp"
+#include "core/machine/profile_fields.hpp"
 #include "machine_test_support.hpp"
 #include "widgets/panels/profile_editor.hpp"
 
@@ -45,6 +49,41 @@ TEST(ProfileEditor, BadValueShowsTheValidationMessageNextToTheField) {
   a1->setValue(before + 5.0);
   EXPECT_TRUE(message->isHidden());
   EXPECT_DOUBLE_EQ(doc.profile().geometry.a1, before + 5.0);
+}
+
+// The rows come from core's one table of profile fields: every field but the calibration ones
+// (written by the calibration tools) has its spin box with the table's range, decimals, value
+// and (translated) label and unit.
+TEST(ProfileEditor, RowsAreBuiltFromTheProfileFieldTable) {
+  widgets::StudioDocument doc(test::makerPlotter());
+  widgets::ProfileEditor editor(doc);
+  int rows = 0;
+  for (const ProfileField& f : profileFields()) {
+    QDoubleSpinBox* box = editor.numberField(f.path);
+    if (sectionOf(f) == "calibration") {
+      EXPECT_EQ(box, nullptr) << f.path;
+      continue;
+    }
+    ASSERT_NE(box, nullptr) << f.path;
+    ++rows;
+    EXPECT_EQ(box->minimum(), f.inputMin) << f.path;
+    EXPECT_EQ(box->maximum(), f.inputMax) << f.path;
+    EXPECT_EQ(box->decimals(), f.decimals) << f.path;
+    EXPECT_EQ(box->suffix(), widgets::profileUnitSuffix(f)) << f.path;
+    if (std::string(f.path).rfind("limits.", 0) != 0)  // shown at +-180 while unlimited
+      EXPECT_NEAR(box->value(), f.get(doc.profile()), 0.5 * std::pow(10.0, -f.decimals)) << f.path;
+    // The label in the form row is the table's label in the UI language.
+    auto* form = qobject_cast<QFormLayout*>(box->parentWidget()->layout());
+    ASSERT_NE(form, nullptr) << f.path;
+    auto* label = qobject_cast<QLabel*>(form->labelForField(box));
+    ASSERT_NE(label, nullptr) << f.path;
+    EXPECT_EQ(label->text(), widgets::profileFieldLabel(f)) << f.path;
+    EXPECT_FALSE(label->text().isEmpty()) << f.path;
+  }
+  EXPECT_GE(rows, 31);
+  // Units a maker reads: degrees as a sign, rates per minute.
+  EXPECT_EQ(editor.numberField("motors.maxSpeedDegPerMin1")->suffix(), QStringLiteral(" °/min"));
+  EXPECT_EQ(editor.numberField("geometry.a1")->suffix(), QStringLiteral(" mm"));
 }
 
 TEST(ProfileEditor, ValidEditsUpdateTheDocumentAndUndoRestoresTheField) {

@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QCloseEvent>
 #include <QDir>
 #include <QFile>
@@ -146,6 +149,74 @@ TEST(ProjectFlow, SavedReopenedAndExportedGivesTheSameGcode) {
   ASSERT_EQ(runTool(QStringLiteral(FIVEBAR_CLI), {QStringLiteral("plan"), project, QStringLiteral("-o"), cli}, &err), 0)
       << err.toStdString();
   EXPECT_TRUE(slurp(cli) == slurp(first));
+}
+
+// A layer's fill set in the layers panel plans exactly as `fivebar plan --fill hatch` with the same
+// spacing, angle and crosshatch; it is saved in the project and comes back with it.
+TEST(ProjectFlow, LayerFillFromTheLayersPanelEqualsFivebarPlanFillAndIsSaved) {
+  QTemporaryDir dir;
+  const QString svg = dir.filePath(QStringLiteral("filled.svg"));
+  {
+    QFile f(svg);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write(R"(<svg xmlns="http://www.w3.org/2000/svg" width="80mm" height="60mm" viewBox="0 0 80 60">
+  <path d="M 10 10 H 70 V 50 H 10 Z M 30 20 H 50 V 40 H 30 Z" fill="#000" fill-rule="evenodd"/>
+  <circle cx="60" cy="45" r="8" fill="#000" stroke="#000"/>
+</svg>)");
+  }
+  const QString cli = dir.filePath(QStringLiteral("cli.gcode"));
+  const QString window = dir.filePath(QStringLiteral("window.gcode"));
+  const QString reopened = dir.filePath(QStringLiteral("reopened.gcode"));
+  const QString project = dir.filePath(QStringLiteral("filled.fivebar"));
+  QString err;
+  ASSERT_EQ(runTool(QStringLiteral(FIVEBAR_CLI),
+                    {QStringLiteral("plan"), svg, QStringLiteral("--machine"), QStringLiteral("maker-plotter"),
+                     QStringLiteral("--fill"), QStringLiteral("hatch"), QStringLiteral("--hatch-spacing"),
+                     QStringLiteral("0.8"), QStringLiteral("--hatch-angle"), QStringLiteral("30"),
+                     QStringLiteral("--crosshatch"), QStringLiteral("-o"), cli}, &err), 0)
+      << err.toStdString();
+  {
+    studio::MainWindow w(makerPlotter());
+    ASSERT_TRUE(openAndPlan(w, svg));
+    ASSERT_EQ(w.document().drawing().layers.size(), 1u);
+    auto* mode = w.findChild<QComboBox*>(QStringLiteral("layerFill"));
+    auto* spacing = w.findChild<QDoubleSpinBox*>(QStringLiteral("layerHatchSpacing"));
+    auto* angle = w.findChild<QDoubleSpinBox*>(QStringLiteral("layerHatchAngle"));
+    auto* cross = w.findChild<QCheckBox*>(QStringLiteral("layerCrosshatch"));
+    ASSERT_TRUE(mode && spacing && angle && cross);
+    const int steps = w.document().undoStack()->count();
+    mode->setCurrentIndex(mode->findData(static_cast<int>(FillMode::Hatch)));
+    spacing->setValue(0.8);
+    angle->setValue(30.0);
+    cross->setChecked(true);
+    EXPECT_EQ(w.document().undoStack()->count(), steps + 4);  // one undo step per change
+    const Layer& layer = w.document().drawing().layers[0];
+    EXPECT_EQ(layer.fill, FillMode::Hatch);
+    EXPECT_DOUBLE_EQ(layer.hatch.spacingMm, 0.8);
+    EXPECT_TRUE(layer.hatch.crosshatch);
+    QSignalSpy replanned(&w.preview(), &PreviewController::resultChanged);
+    w.preview().replanNow();
+    while (w.preview().busy()) ASSERT_TRUE(replanned.wait(kWaitMs));
+    ASSERT_EQ(w.preview().result().status, PreviewStatus::Planned) << w.preview().result().message.toStdString();
+    QString error;
+    ASSERT_TRUE(w.files().exportGcodeTo(window, &error)) << error.toStdString();
+    ASSERT_TRUE(w.files().saveTo(project, &error)) << error.toStdString();
+  }
+  const QByteArray expected = slurp(cli);
+  ASSERT_GT(expected.size(), 1000);
+  EXPECT_TRUE(slurp(window) == expected) << "the studio's hatch differs from fivebar plan --fill hatch";
+  EXPECT_TRUE(slurp(project).contains("\"mode\": \"hatch\""));
+  // Reopened, the layer keeps its fill and plans the same job; so does fivebar plan PROJECT.
+  studio::MainWindow w(makerPlotter());
+  ASSERT_TRUE(openAndPlan(w, project));
+  EXPECT_EQ(w.document().drawing().layers[0].fill, FillMode::Hatch);
+  QString error;
+  ASSERT_TRUE(w.files().exportGcodeTo(reopened, &error)) << error.toStdString();
+  EXPECT_TRUE(slurp(reopened) == expected);
+  const QString fromProject = dir.filePath(QStringLiteral("project.gcode"));
+  ASSERT_EQ(runTool(QStringLiteral(FIVEBAR_CLI), {QStringLiteral("plan"), project, QStringLiteral("-o"), fromProject}, &err), 0)
+      << err.toStdString();
+  EXPECT_TRUE(slurp(fromProject) == expected);
 }
 
 TEST(ProjectFlow, UnsavedChangesAskBeforeClosing) {

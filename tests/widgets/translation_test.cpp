@@ -9,6 +9,7 @@
 #include <QFile>
 #include <QGroupBox>
 #include <QLabel>
+#include <QListWidget>
 #include <QMenu>
 #include <QRegularExpression>
 #include <QTranslator>
@@ -67,7 +68,7 @@ std::set<QString> runtimeContexts() {
         &ParetoPlot::staticMetaObject})
     names.insert(QString::fromLatin1(m->className()));
   for (const char* c : {"QObject", "main", "DocumentCommands", "JobPipeline", "MapPainter",
-                        "WorkspaceLegend", "ImportWarningsPanel", "DesignPainter"})
+                        "WorkspaceLegend", "ImportWarningsPanel", "DesignPainter", "ImportWarning"})
     names.insert(QString::fromLatin1(c));
   return names;
 }
@@ -103,6 +104,30 @@ TEST(Translations, RuntimeTrReturnsGerman) {
   EXPECT_EQ(LayersPanel::tr("%n path(s)", nullptr, 2), QStringLiteral("2 Pfade"));
   EXPECT_EQ(QCoreApplication::translate("WorkspaceLegend", "reach boundary"),
             QStringLiteral("Reichweitengrenze"));
+  QCoreApplication::removeTranslator(&translator);
+}
+
+// The importer's warnings (core, English) reach the warnings panel in German: the message
+// translated, the line, element and counts kept; an unknown message stays as it is.
+TEST(Translations, ImportWarningsAreShownInGerman) {
+  QTranslator translator;
+  ASSERT_TRUE(translator.load(QStringLiteral(":/i18n/fivebar_de.qm")));
+  ASSERT_TRUE(QCoreApplication::installTranslator(&translator));
+  using fivebar::widgets::translatedImportWarning;
+  EXPECT_EQ(translatedImportWarning(QStringLiteral(
+                "line 9: <path id=\"wave\"> attribute d: invalid path data at character 53 (\"x\"): drawn up to the error")),
+            QStringLiteral("Zeile 9: <path id=\"wave\"> Attribut d: ungültige Pfaddaten bei Zeichen 53 (\"x\"): "
+                           "bis zum Fehler gezeichnet"));
+  EXPECT_EQ(translatedImportWarning(QStringLiteral("<image> element removed (2x, first at line 3)")),
+            QStringLiteral("Element <image> entfernt (2x, zuerst in Zeile 3)"));
+  EXPECT_EQ(translatedImportWarning(QStringLiteral("clip-path not applied: clipped shapes are drawn whole")),
+            QStringLiteral("clip-path nicht angewandt: beschnittene Formen werden ganz gezeichnet"));
+  EXPECT_EQ(translatedImportWarning(QStringLiteral("something new")), QStringLiteral("something new"));
+  // The panel shows them so.
+  fivebar::widgets::ImportWarningsPanel panel;
+  panel.showWarnings(QStringLiteral("a.svg"), {QStringLiteral("CSS @import removed (1x, first at line 2)")});
+  ASSERT_EQ(panel.list()->count(), 1);
+  EXPECT_EQ(panel.list()->item(0)->text(), QStringLiteral("CSS-@import entfernt (1x, zuerst in Zeile 2)"));
   QCoreApplication::removeTranslator(&translator);
 }
 

@@ -4,6 +4,7 @@
 
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QLocale>
 #include <QMessageBox>
 #include <QSettings>
 #include <QtConcurrent/QtConcurrentRun>
@@ -64,11 +65,13 @@ void ImportController::openFile(const QString& path) {
   const std::optional<MachineProfile> profile =
       isProjectPath(path) ? std::nullopt : std::optional<MachineProfile>(doc_.profile());
   const PlanOptions options = importOptions(doc_);
-  start([path, profile, options, fill = fill_, hatch = hatch_](const std::atomic<bool>* cancel) {
+  retry_ = [this, path] { openFile(path); };
+  start([path, profile, options, fill = fill_, hatch = hatch_,
+         maxPoints = maxPoints_](const std::atomic<bool>* cancel) {
           ImportOutcome out;
           PlanOptions o = options;
           o.cancel = cancel;
-          out.job = loadJob(path, profile, o, out.error, fill, hatch);
+          out.job = loadJob(path, profile, o, out.error, fill, hatch, maxPoints);
           if (out.job) out.job->options.cancel = nullptr;
           return out;
         },
@@ -78,11 +81,13 @@ void ImportController::openFile(const QString& path) {
 void ImportController::openData(const QByteArray& svg, const QString& name) {
   const MachineProfile profile = doc_.profile();
   const PlanOptions options = importOptions(doc_);
-  start([svg, name, profile, options, fill = fill_, hatch = hatch_](const std::atomic<bool>* cancel) {
+  retry_ = [this, svg, name] { openData(svg, name); };
+  start([svg, name, profile, options, fill = fill_, hatch = hatch_,
+         maxPoints = maxPoints_](const std::atomic<bool>* cancel) {
           ImportOutcome out;
           PlanOptions o = options;
           o.cancel = cancel;
-          out.job = loadDrawing(DrawingSource{svg, name, fill, hatch}, profile, o, out.error);
+          out.job = loadDrawing(DrawingSource{svg, name, fill, hatch, maxPoints}, profile, o, out.error);
           if (out.job) out.job->options.cancel = nullptr;
           return out;
         },
@@ -130,6 +135,24 @@ void ImportController::onFinished() {
   if (dialog_) dialog_->deleteLater();
   ImportOutcome result = watcher_.result();
   const QString name = pendingName_;
+  const bool waived = budgetWaived_;
+  budgetWaived_ = false;
+  if (!result.cancelled && !result.job && isPointBudgetError(result.error) && interactive_) {
+    // Stopped early by the points budget: ask before reading the whole file.
+    const auto answer = QMessageBox::question(
+        dialogParent_, tr("Very large drawing"),
+        tr("%1 has more than %2 points after flattening (a runaway file?). Reading it was stopped "
+           "there.\n\nPlanning and plotting it may take very long. Import it whole anyway?")
+            .arg(QFileInfo(name).fileName(), QLocale().toString(static_cast<qulonglong>(kDefaultMaxPoints))),
+        QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
+    if (answer == QMessageBox::Yes && retry_) {
+      maxPoints_ = 0;
+      budgetWaived_ = true;
+      retry_();
+      maxPoints_ = kDefaultMaxPoints;
+      return;
+    }
+  }
   if (result.cancelled || !result.job) {
     QString message = QString::fromStdString(result.error);
     if (result.cancelled) message = tr("Import of %1 cancelled.").arg(name);
@@ -153,7 +176,8 @@ void ImportController::onFinished() {
   } else {  // no singularity-free area: in front of the motors, true size
     placement.centerMm = Vec2(0.0, 0.5 * (doc_.profile().geometry.a1 + doc_.profile().geometry.b1));
   }
-  if (QString refusal; !acceptPointBudget(dialogParent_, job.drawing, name, interactive_, refusal)) {
+  // After hatching the drawing may have grown past the budget: asked here (unless already waived).
+  if (QString refusal; !waived && !acceptPointBudget(dialogParent_, job.drawing, name, interactive_, refusal)) {
     emit finished(false, refusal);
     return;
   }

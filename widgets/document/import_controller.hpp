@@ -83,6 +83,11 @@ class ImportController : public QObject {
   QString note_;
   bool pendingRemember_ = false;
   bool interactive_ = true;
+  // The points budget (kDefaultMaxPoints after flattening) stops an import early; the user may
+  // then import the same file again without it (retry_), and is not asked twice.
+  std::size_t maxPoints_ = kDefaultMaxPoints;
+  bool budgetWaived_ = false;
+  std::function<void()> retry_;
   FillMode fill_ = FillMode::Outline;
   HatchSettings hatch_;
 };

@@ -38,8 +38,11 @@ std::optional<Drawing> importSvgText(const DrawingSource& source, double toleran
     return std::nullopt;
   }
   if (warnings) warnings->insert(warnings->end(), r.warnings.begin(), r.warnings.end());
-  if (source.fill != FillMode::Outline)
-    for (Layer& layer : r.drawing.layers) layer.paths = applyFill(layer.paths, source.fill, source.hatch);
+  // The fill is the layers' own (applied where the drawing is placed), so it can change per layer.
+  for (Layer& layer : r.drawing.layers) {
+    layer.fill = source.fill;
+    layer.hatch = source.hatch;
+  }
   r.drawing.source = source.name.toStdString();
   r.drawing.flatteningToleranceMm = toleranceMm;
   return std::move(r.drawing);

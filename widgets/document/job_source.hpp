@@ -22,8 +22,8 @@ namespace fivebar::widgets {
 struct DrawingSource {
   QByteArray svg;  // the SVG text
   QString name;    // file name, for messages and the project
-  // How filled shapes are drawn (core/planning/hatch.hpp): applied after every import of this
-  // source, so a finer re-import keeps the same fill.
+  // How filled shapes are drawn (core/planning/hatch.hpp): every layer of an import of this source
+  // gets it as its fill (Layer::fill; a project's layers then take their saved fills).
   FillMode fill = FillMode::Outline;
   HatchSettings hatch;
   // Points after flattening an import of this source may produce (0 = no limit): the import

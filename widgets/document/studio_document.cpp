@@ -65,7 +65,7 @@ void StudioDocument::setModeSelection(ModeSelection choice) {
 std::vector<LayerSettings> StudioDocument::layerSettings() const {
   std::vector<LayerSettings> out;
   out.reserve(drawing_.layers.size());
-  for (const Layer& l : drawing_.layers) out.push_back({l.visible, l.tool});
+  for (const Layer& l : drawing_.layers) out.push_back({l.visible, l.tool, l.fill, l.hatch});
   return out;
 }
 
@@ -104,6 +104,15 @@ void StudioDocument::setLayerTool(int layerIndex, const LayerToolSettings& tool)
   settings[layerIndex].tool = tool;
   undo_.push(new SetLayersCommand(*this, identity(settings.size()), settings,
                                   tr("Change layer tool settings")));
+}
+
+void StudioDocument::setLayerFill(int layerIndex, FillMode fill, const HatchSettings& hatch) {
+  if (layerIndex < 0 || layerIndex >= static_cast<int>(drawing_.layers.size())) return;
+  auto settings = layerSettings();
+  if (settings[layerIndex].fill == fill && settings[layerIndex].hatch == hatch) return;
+  settings[layerIndex].fill = fill;
+  settings[layerIndex].hatch = hatch;
+  undo_.push(new SetLayersCommand(*this, identity(settings.size()), settings, tr("Change layer fill")));
 }
 
 void StudioDocument::setProfile(const MachineProfile& profile) {
@@ -148,6 +157,8 @@ void StudioDocument::applyLayers(const std::vector<int>& order,
   for (std::size_t i = 0; i < layers.size() && i < settings.size(); ++i) {
     layers[i].visible = settings[i].visible;
     layers[i].tool = settings[i].tool;
+    layers[i].fill = settings[i].fill;
+    layers[i].hatch = settings[i].hatch;
   }
   drawing_.layers = std::move(layers);
   emit layersChanged();

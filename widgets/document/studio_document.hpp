@@ -25,6 +25,8 @@ using ModeSelection = std::optional<WorkingMode>;
 struct LayerSettings {
   bool visible = true;
   LayerToolSettings tool;
+  FillMode fill = FillMode::Outline;  // how its filled shapes are drawn (Layer::fill)
+  HatchSettings hatch;
 };
 
 class StudioDocument : public QObject {
@@ -58,6 +60,8 @@ class StudioDocument : public QObject {
   void setLayerVisible(int layerIndex, bool visible);
   void moveLayer(int from, int to);
   void setLayerTool(int layerIndex, const LayerToolSettings& tool);
+  // How the layer's filled shapes are drawn: outline, hatch (spacing, angle, crosshatch) or none.
+  void setLayerFill(int layerIndex, FillMode fill, const HatchSettings& hatch);
   // The machine profile (the profile editor's door). Undoable like every edit.
   void setProfile(const MachineProfile& profile);
 

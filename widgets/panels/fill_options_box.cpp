@@ -10,6 +10,7 @@
 
 #include <numbers>
 
+#include "core/kinematics/units.hpp"
 #include "widgets/document/import_controller.hpp"
 #include "widgets/document/studio_document.hpp"
 
@@ -63,7 +64,7 @@ void FillOptionsBox::setChoice(FillMode mode, const HatchSettings& hatch) {
       blockCross(cross_), blockOutline(outline_);
   mode_->setCurrentIndex(mode_->findData(static_cast<int>(mode)));
   spacing_->setValue(hatch.spacingMm);
-  angle_->setValue(hatch.angleRad * 180.0 / std::numbers::pi);
+  angle_->setValue(degFromRad(hatch.angleRad));
   cross_->setChecked(hatch.crosshatch);
   outline_->setChecked(hatch.outline);
   push();
@@ -73,7 +74,7 @@ void FillOptionsBox::push() {
   const auto mode = static_cast<FillMode>(mode_->currentData().toInt());
   HatchSettings hatch;
   hatch.spacingMm = spacing_->value();
-  hatch.angleRad = angle_->value() * std::numbers::pi / 180.0;
+  hatch.angleRad = radFromDeg(angle_->value());  // as the CLI converts
   hatch.crosshatch = cross_->isChecked();
   hatch.outline = outline_->isChecked();
   importer_.setFill(mode, hatch);
@@ -99,7 +100,7 @@ bool applyFillOption(QWidget& window, const QString& text) {
   hatch.angleRad = std::numbers::pi / 4.0;
   bool ok = true;
   if (parts.size() > 1) hatch.spacingMm = parts[1].toDouble(&ok);
-  if (ok && parts.size() > 2) hatch.angleRad = parts[2].toDouble(&ok) * std::numbers::pi / 180.0;
+  if (ok && parts.size() > 2) hatch.angleRad = radFromDeg(parts[2].toDouble(&ok));
   if (!ok || !validate(hatch).empty()) return false;
   box->setChoice(*mode, hatch);
   return true;

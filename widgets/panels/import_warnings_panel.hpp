@@ -40,10 +40,15 @@ class ImportWarningsPanel : public QWidget {
 
 QStringList toQStringList(const std::vector<std::string>& texts);
 
+// An importer warning (core/import, English) in the UI language: the location prefix ("line 12:
+// <path id="p3">") and the count suffix ("(3x, first at line 9)") kept, the message translated
+// (context "ImportWarning"); a message the table does not know is shown as it is.
+QString translatedImportWarning(const QString& warning);
+
 // Points of the visible layers after flattening.
 std::size_t drawingPointCount(const Drawing& drawing);
 
-inline constexpr std::size_t kImportPointBudget = 2'000'000;
+inline constexpr std::size_t kImportPointBudget = kDefaultMaxPoints;  // drawing.hpp
 
 // true when the drawing is within the budget, or the user chose to import it anyway
 // (interactive); false otherwise, with `refusal` set to the message to show.

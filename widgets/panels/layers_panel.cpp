@@ -1,6 +1,7 @@
 #include "widgets/panels/layers_panel.hpp"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -12,6 +13,8 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include "core/kinematics/units.hpp"
+#include "core/planning/hatch.hpp"
 #include "widgets/document/studio_document.hpp"
 
 namespace fivebar::widgets {
@@ -66,6 +69,36 @@ LayersPanel::LayersPanel(StudioDocument& doc, QWidget* parent) : QWidget(parent)
   form->addRow(pause_);
   layout->addWidget(toolBox);
 
+  auto* fillBox = new QGroupBox(tr("Fill of the selected layer"), this);
+  auto* fillForm = new QFormLayout(fillBox);
+  fill_ = new QComboBox(fillBox);
+  fill_->setObjectName(QStringLiteral("layerFill"));
+  fill_->addItem(tr("Outline"), static_cast<int>(FillMode::Outline));
+  fill_->addItem(tr("Hatch"), static_cast<int>(FillMode::Hatch));
+  fill_->addItem(tr("None"), static_cast<int>(FillMode::None));
+  fill_->setToolTip(tr("How the layer's filled shapes are drawn: their outline, parallel hatch "
+                       "lines inside them, or not at all (stroked shapes keep their stroke)."));
+  spacing_ = new QDoubleSpinBox(fillBox);
+  spacing_->setObjectName(QStringLiteral("layerHatchSpacing"));
+  spacing_->setRange(kMinHatchSpacingMm, 50.0);
+  spacing_->setDecimals(2);
+  spacing_->setSingleStep(0.1);
+  spacing_->setSuffix(tr(" mm"));
+  spacing_->setKeyboardTracking(false);
+  angle_ = new QDoubleSpinBox(fillBox);
+  angle_->setObjectName(QStringLiteral("layerHatchAngle"));
+  angle_->setRange(-180.0, 180.0);
+  angle_->setDecimals(1);
+  angle_->setSuffix(tr(" °"));
+  angle_->setKeyboardTracking(false);
+  cross_ = new QCheckBox(tr("Crosshatch"), fillBox);
+  cross_->setObjectName(QStringLiteral("layerCrosshatch"));
+  fillForm->addRow(tr("Fill:"), fill_);
+  fillForm->addRow(tr("Hatch spacing:"), spacing_);
+  fillForm->addRow(tr("Hatch angle:"), angle_);
+  fillForm->addRow(cross_);
+  layout->addWidget(fillBox);
+
   connect(list_, &QListWidget::itemChanged, this, &LayersPanel::onItemChanged);
   connect(list_, &QListWidget::currentRowChanged, this, &LayersPanel::showSelectedTool);
   connect(up_, &QToolButton::clicked, this, [this] { moveSelected(-1); });
@@ -73,6 +106,10 @@ LayersPanel::LayersPanel(StudioDocument& doc, QWidget* parent) : QWidget(parent)
   connect(speed_, &QDoubleSpinBox::valueChanged, this, &LayersPanel::commitTool);
   connect(power_, &QDoubleSpinBox::valueChanged, this, &LayersPanel::commitTool);
   connect(pause_, &QCheckBox::toggled, this, &LayersPanel::commitTool);
+  connect(fill_, &QComboBox::currentIndexChanged, this, &LayersPanel::commitFill);
+  connect(spacing_, &QDoubleSpinBox::valueChanged, this, &LayersPanel::commitFill);
+  connect(angle_, &QDoubleSpinBox::valueChanged, this, &LayersPanel::commitFill);
+  connect(cross_, &QCheckBox::toggled, this, &LayersPanel::commitFill);
   connect(&doc_, &StudioDocument::layersChanged, this, &LayersPanel::showDocument);
   showDocument();
 }
@@ -101,7 +138,7 @@ void LayersPanel::showSelectedTool() {
   const auto& layers = doc_.drawing().layers;
   const bool valid = row >= 0 && row < static_cast<int>(layers.size());
   for (QWidget* w : {static_cast<QWidget*>(speed_), static_cast<QWidget*>(power_),
-                     static_cast<QWidget*>(pause_)}) {
+                     static_cast<QWidget*>(pause_), static_cast<QWidget*>(fill_)}) {
     w->setEnabled(valid);
   }
   up_->setEnabled(valid && row > 0);
@@ -112,6 +149,26 @@ void LayersPanel::showSelectedTool() {
   speed_->setValue(tool.drawSpeedMmPerS);
   power_->setValue(tool.power < 0.0 ? -1.0 : tool.power);
   pause_->setChecked(tool.pauseBefore);
+  const Layer& layer = layers[static_cast<std::size_t>(row)];
+  const QSignalBlocker b4(fill_), b5(spacing_), b6(angle_), b7(cross_);
+  fill_->setCurrentIndex(fill_->findData(static_cast<int>(layer.fill)));
+  spacing_->setValue(layer.hatch.spacingMm);
+  angle_->setValue(degFromRad(layer.hatch.angleRad));
+  cross_->setChecked(layer.hatch.crosshatch);
+  const bool hatch = layer.fill == FillMode::Hatch;
+  for (QWidget* w : {static_cast<QWidget*>(spacing_), static_cast<QWidget*>(angle_), static_cast<QWidget*>(cross_)})
+    w->setEnabled(hatch);
+}
+
+void LayersPanel::commitFill() {
+  const int row = list_->currentRow();
+  const auto& layers = doc_.drawing().layers;
+  if (row < 0 || row >= static_cast<int>(layers.size())) return;
+  HatchSettings hatch = layers[static_cast<std::size_t>(row)].hatch;
+  hatch.spacingMm = spacing_->value();
+  hatch.angleRad = radFromDeg(angle_->value());
+  hatch.crosshatch = cross_->isChecked();
+  doc_.setLayerFill(row, static_cast<FillMode>(fill_->currentData().toInt()), hatch);
 }
 
 void LayersPanel::commitTool() {

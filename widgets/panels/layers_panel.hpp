@@ -1,11 +1,13 @@
 // The layers of the drawing: visibility (check box), plotting order (up/down) and the tool
-// settings of the selected layer (draw speed, power, pause for a pen change). Every change is an
-// undoable document edit; the list mirrors the document.
+// settings of the selected layer (draw speed, power, pause for a pen change) and its fill (outline,
+// hatch with spacing, angle and crosshatch, or none). Every change is an undoable document edit;
+// the list mirrors the document.
 #pragma once
 
 #include <QWidget>
 
 class QCheckBox;
+class QComboBox;
 class QDoubleSpinBox;
 class QListWidget;
 class QListWidgetItem;
@@ -26,6 +28,7 @@ class LayersPanel : public QWidget {
   void showDocument();
   void showSelectedTool();
   void commitTool();
+  void commitFill();
   void onItemChanged(QListWidgetItem* item);
   void moveSelected(int delta);
 
@@ -36,6 +39,10 @@ class LayersPanel : public QWidget {
   QDoubleSpinBox* speed_ = nullptr;
   QDoubleSpinBox* power_ = nullptr;
   QCheckBox* pause_ = nullptr;
+  QComboBox* fill_ = nullptr;
+  QDoubleSpinBox* spacing_ = nullptr;
+  QDoubleSpinBox* angle_ = nullptr;
+  QCheckBox* cross_ = nullptr;
 };
 
 }  // namespace fivebar::widgets

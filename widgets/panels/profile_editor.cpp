@@ -1,6 +1,7 @@
 #include "widgets/panels/profile_editor.hpp"
 
 #include <QCheckBox>
+#include <QCoreApplication>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
@@ -14,14 +15,16 @@
 #include <QScrollArea>
 #include <QVBoxLayout>
 #include <cmath>
+#include <map>
+#include <string_view>
 
 #include "core/machine/profile.hpp"
+#include "core/machine/profile_fields.hpp"
 #include "core/kinematics/units.hpp"
 
 namespace fivebar::widgets {
 namespace {
 
-constexpr double kLengthMaxMm = 10000.0;
 constexpr double kDefaultLimitDeg = 180.0;  // limits offered when "joint limits" is switched on
 
 bool unlimited(const JointLimits& l) {
@@ -31,13 +34,48 @@ bool unlimited(const JointLimits& l) {
 using Get = std::function<double(const MachineProfile&)>;
 using Set = std::function<void(MachineProfile&, double)>;
 
-// Accessors for an angle stored in radians and edited in degrees.
-std::pair<Get, Set> degrees(double MachineProfile::*member) {
-  return {[member](const MachineProfile& p) { return degFromRad(p.*member); },
-          [member](MachineProfile& p, double v) { p.*member = radFromDeg(v); }};
-}
+// The table's labels and units (core/machine/profile_fields.cpp), for lupdate: translated in
+// the ProfileEditor's context (ProfileEditor::tr).
+[[maybe_unused]] const char* const kFieldTexts[] = {
+    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Driving link a1"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Floating link b1"),
+    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Driving link a2"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Floating link b2"),
+    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Motor distance w"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "θ1 minimum"),
+    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "θ1 maximum"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "θ2 minimum"),
+    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "θ2 maximum"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Motor 1 steps per degree"),
+    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Motor 2 steps per degree"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Motor 1 maximum speed"),
+    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Motor 2 maximum speed"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Motor 1 acceleration"),
+    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Motor 2 acceleration"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Junction deviation"),
+    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Pen up S value"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Pen down S value"),
+    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Pen up delay"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Pen down delay"),
+    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Z up"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Z down"),
+    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Z feed"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Laser power S value"),
+    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Drawing speed"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Travel speed"),
+    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Type II singularity margin"),
+    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Type I singularity margin"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Baud rate"),
+    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Home θ1"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Home θ2"),
+    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " mm"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " °"),
+    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " s"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " °/min"),
+    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " °/s²"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " mm/min"),
+    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " mm/s"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " steps/°"),
+    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " baud"),
+};
 
 }  // namespace
+
+QString profileFieldLabel(const ProfileField& f) {
+  return ProfileEditor::tr(f.label);
+}
+
+QString profileUnitSuffix(const ProfileField& f) {
+  // The file's unit names (deg, deg/min, ...) as a maker reads them, translated.
+  static const std::map<std::string, const char*> shown = {
+      {"mm", " mm"},         {"deg", " °"},          {"s", " s"},           {"deg/min", " °/min"},
+      {"deg/s²", " °/s²"},   {"mm/min", " mm/min"},  {"mm/s", " mm/s"},     {"steps/deg", " steps/°"},
+      {"baud", " baud"}};
+  const auto it = shown.find(f.unit);
+  if (it != shown.end()) return ProfileEditor::tr(it->second);
+  return *f.unit ? QStringLiteral(" ") + QString::fromUtf8(f.unit) : QString();
+}
 
 ProfileEditor::ProfileEditor(StudioDocument& doc, QWidget* parent) : QWidget(parent), doc_(doc) {
   setObjectName(QStringLiteral("profileEditor"));
@@ -100,64 +138,9 @@ ProfileEditor::ProfileEditor(StudioDocument& doc, QWidget* parent) : QWidget(par
 
 void ProfileEditor::buildFields(QFormLayout* geometry, QFormLayout* limits, QFormLayout* motors,
                                 QFormLayout* tool, QFormLayout* motion, QFormLayout* home) {
-  const QString mm = tr(" mm"), deg = tr(" °"), s = tr(" s");
-  auto length = [&](const char* path, const QString& label, double Geometry::*member) {
-    addNumber(geometry, path, label, mm, -kLengthMaxMm, kLengthMaxMm, 2,
-              [member](const MachineProfile& p) { return p.geometry.*member; },
-              [member](MachineProfile& p, double v) { p.geometry.*member = v; });
-  };
-  length("geometry.a1", tr("Driving link a1"), &Geometry::a1);
-  length("geometry.b1", tr("Floating link b1"), &Geometry::b1);
-  length("geometry.a2", tr("Driving link a2"), &Geometry::a2);
-  length("geometry.b2", tr("Floating link b2"), &Geometry::b2);
-  length("geometry.w", tr("Motor distance w"), &Geometry::w);
-
+  // The rows that are not numbers, each before the numbers of its group.
   limited_ = new QCheckBox(tr("Limit the motor angles"), this);
   limits->addRow(limited_);
-  auto limit = [&](const char* path, const QString& label, double JointLimits::*member) {
-    addNumber(limits, path, label, deg, -3600.0, 3600.0, 3,
-              [member](const MachineProfile& p) { return degFromRad(p.limits.*member); },
-              [member](MachineProfile& p, double v) { p.limits.*member = radFromDeg(v); });
-  };
-  limit("limits.theta1MinDeg", tr("θ1 minimum"), &JointLimits::theta1Min);
-  limit("limits.theta1MaxDeg", tr("θ1 maximum"), &JointLimits::theta1Max);
-  limit("limits.theta2MinDeg", tr("θ2 minimum"), &JointLimits::theta2Min);
-  limit("limits.theta2MaxDeg", tr("θ2 maximum"), &JointLimits::theta2Max);
-  connect(limited_, &QCheckBox::toggled, this, [this](bool on) {
-    for (const char* path : {"limits.theta1MinDeg", "limits.theta1MaxDeg", "limits.theta2MinDeg",
-                             "limits.theta2MaxDeg"}) {
-      QDoubleSpinBox* box = numberField(path);
-      box->setEnabled(on);
-      if (on && std::abs(box->value()) >= box->maximum())
-        box->setValue(QString(path).contains(QStringLiteral("Min")) ? -kDefaultLimitDeg : kDefaultLimitDeg);
-    }
-    onEdited();
-  });
-
-  auto motor = [&](const char* path, const QString& label, const QString& suffix, int decimals,
-                   Get get, Set set) { addNumber(motors, path, label, suffix, -1e6, 1e6, decimals, get, set); };
-  motor("motors.stepsPerDeg1", tr("Motor 1 steps per degree"), QString(), 4,
-        [](const MachineProfile& p) { return p.motors.stepsPerDeg1; },
-        [](MachineProfile& p, double v) { p.motors.stepsPerDeg1 = v; });
-  motor("motors.stepsPerDeg2", tr("Motor 2 steps per degree"), QString(), 4,
-        [](const MachineProfile& p) { return p.motors.stepsPerDeg2; },
-        [](MachineProfile& p, double v) { p.motors.stepsPerDeg2 = v; });
-  motor("motors.maxSpeedDegPerMin1", tr("Motor 1 maximum speed"), tr(" °/min"), 0,
-        [](const MachineProfile& p) { return degFromRad(p.motors.maxSpeedRadPerS1) * 60.0; },
-        [](MachineProfile& p, double v) { p.motors.maxSpeedRadPerS1 = radFromDeg(v / 60.0); });
-  motor("motors.maxSpeedDegPerMin2", tr("Motor 2 maximum speed"), tr(" °/min"), 0,
-        [](const MachineProfile& p) { return degFromRad(p.motors.maxSpeedRadPerS2) * 60.0; },
-        [](MachineProfile& p, double v) { p.motors.maxSpeedRadPerS2 = radFromDeg(v / 60.0); });
-  motor("motors.maxAccelDegPerS2_1", tr("Motor 1 acceleration"), tr(" °/s²"), 1,
-        [](const MachineProfile& p) { return degFromRad(p.motors.maxAccelRadPerS2_1); },
-        [](MachineProfile& p, double v) { p.motors.maxAccelRadPerS2_1 = radFromDeg(v); });
-  motor("motors.maxAccelDegPerS2_2", tr("Motor 2 acceleration"), tr(" °/s²"), 1,
-        [](const MachineProfile& p) { return degFromRad(p.motors.maxAccelRadPerS2_2); },
-        [](MachineProfile& p, double v) { p.motors.maxAccelRadPerS2_2 = radFromDeg(v); });
-  motor("motors.junctionDeviationDeg", tr("Junction deviation"), deg, 3,
-        [](const MachineProfile& p) { return p.motors.junctionDeviationDeg; },
-        [](MachineProfile& p, double v) { p.motors.junctionDeviationDeg = v; });
-
   toolKind_ = new QComboBox(this);
   toolKind_->addItem(tr("Pen servo (M3 S / M5)"), int(ToolKind::PenServo));
   toolKind_->addItem(tr("Z axis"), int(ToolKind::ZAxis));
@@ -165,21 +148,6 @@ void ProfileEditor::buildFields(QFormLayout* geometry, QFormLayout* limits, QFor
   tool->addRow(tr("Tool"), toolKind_);
   addMessage(tool, "tool.kind");
   connect(toolKind_, &QComboBox::currentIndexChanged, this, &ProfileEditor::onEdited);
-  auto toolNumber = [&](const char* path, const QString& label, const QString& suffix, double min,
-                        double max, int decimals, double ToolSettings::*member) {
-    addNumber(tool, path, label, suffix, min, max, decimals,
-              [member](const MachineProfile& p) { return p.tool.*member; },
-              [member](MachineProfile& p, double v) { p.tool.*member = v; });
-  };
-  toolNumber("tool.penUpS", tr("Pen up S value"), QString(), -1e5, 1e5, 0, &ToolSettings::penUpS);
-  toolNumber("tool.penDownS", tr("Pen down S value"), QString(), -1e5, 1e5, 0, &ToolSettings::penDownS);
-  toolNumber("tool.penUpDelayS", tr("Pen up delay"), s, -100, 100, 2, &ToolSettings::penUpDelayS);
-  toolNumber("tool.penDownDelayS", tr("Pen down delay"), s, -100, 100, 2, &ToolSettings::penDownDelayS);
-  toolNumber("tool.zUpMm", tr("Z up"), mm, -1000, 1000, 2, &ToolSettings::zUpMm);
-  toolNumber("tool.zDownMm", tr("Z down"), mm, -1000, 1000, 2, &ToolSettings::zDownMm);
-  toolNumber("tool.zFeedMmPerMin", tr("Z feed"), tr(" mm/min"), -1e5, 1e5, 0, &ToolSettings::zFeedMmPerMin);
-  toolNumber("tool.laserPowerS", tr("Laser power S value"), QString(), -1e5, 1e5, 0, &ToolSettings::laserPowerS);
-
   workingMode_ = new QComboBox(this);
   for (WorkingMode m : {WorkingMode::PlusPlus, WorkingMode::PlusMinus, WorkingMode::MinusPlus, WorkingMode::MinusMinus})
     workingMode_->addItem(QString::fromUtf8(toString(m).data(), qsizetype(toString(m).size())), int(m));
@@ -190,29 +158,38 @@ void ProfileEditor::buildFields(QFormLayout* geometry, QFormLayout* limits, QFor
   motion->addRow(tr("Assembly mode"), assembly_);
   connect(workingMode_, &QComboBox::currentIndexChanged, this, &ProfileEditor::onEdited);
   connect(assembly_, &QComboBox::currentIndexChanged, this, &ProfileEditor::onEdited);
-  addNumber(motion, "motion.drawSpeedMmPerS", tr("Drawing speed"), tr(" mm/s"), -1e4, 1e4, 1,
-            [](const MachineProfile& p) { return p.drawSpeedMmPerS; },
-            [](MachineProfile& p, double v) { p.drawSpeedMmPerS = v; });
-  addNumber(motion, "motion.travelSpeedMmPerS", tr("Travel speed"), tr(" mm/s"), -1e4, 1e4, 1,
-            [](const MachineProfile& p) { return p.travelSpeedMmPerS; },
-            [](MachineProfile& p, double v) { p.travelSpeedMmPerS = v; });
-  const auto [getII, setII] = degrees(&MachineProfile::typeIIMarginRad);
-  addNumber(motion, "safety.typeIIMarginDeg", tr("Type II singularity margin"), deg, -180, 180, 2, getII, setII);
-  const auto [getI, setI] = degrees(&MachineProfile::typeIMarginRad);
-  addNumber(motion, "safety.typeIMarginDeg", tr("Type I singularity margin"), deg, -180, 180, 2, getI, setI);
 
-  addNumber(home, "connection.baudRate", tr("Baud rate"), QString(), -1e7, 1e7, 0,
-            [](const MachineProfile& p) { return double(p.baudRate); },
-            [](MachineProfile& p, double v) { p.baudRate = int(v); });
-  homing_ = new QCheckBox(tr("The machine has homing switches ($H)"), this);
-  home->addRow(homing_);
-  connect(homing_, &QCheckBox::toggled, this, &ProfileEditor::onEdited);
-  addNumber(home, "home.theta1Deg", tr("Home θ1"), deg, -3600, 3600, 4,
-            [](const MachineProfile& p) { return degFromRad(p.homeAngles.theta1); },
-            [](MachineProfile& p, double v) { p.homeAngles.theta1 = radFromDeg(v); });
-  addNumber(home, "home.theta2Deg", tr("Home θ2"), deg, -3600, 3600, 4,
-            [](const MachineProfile& p) { return degFromRad(p.homeAngles.theta2); },
-            [](MachineProfile& p, double v) { p.homeAngles.theta2 = radFromDeg(v); });
+  // Every number from core's one table of profile fields (core/machine/profile_fields.hpp):
+  // label, unit, input range and decimals as the table gives them, the label translated.
+  for (const ProfileField& f : profileFields()) {
+    const std::string section = sectionOf(f);
+    QFormLayout* form = section == "geometry"                         ? geometry
+                        : section == "limits"                         ? limits
+                        : section == "motors"                         ? motors
+                        : section == "tool"                           ? tool
+                        : section == "motion" || section == "safety"  ? motion
+                        : section == "connection" || section == "home" ? home
+                                                                      : nullptr;
+    if (form == nullptr) continue;  // calibration: written by the calibration tools, not typed here
+    addNumber(form, f.path, profileFieldLabel(f), profileUnitSuffix(f), f.inputMin, f.inputMax,
+              f.decimals, [get = f.get](const MachineProfile& p) { return get(p); },
+              [set = f.set](MachineProfile& p, double v) { set(p, v); });
+    if (std::string_view(f.path) == "connection.baudRate") {
+      homing_ = new QCheckBox(tr("The machine has homing switches ($H)"), this);
+      home->addRow(homing_);
+      connect(homing_, &QCheckBox::toggled, this, &ProfileEditor::onEdited);
+    }
+  }
+  connect(limited_, &QCheckBox::toggled, this, [this](bool on) {
+    for (const char* path : {"limits.theta1MinDeg", "limits.theta1MaxDeg", "limits.theta2MinDeg",
+                             "limits.theta2MaxDeg"}) {
+      QDoubleSpinBox* box = numberField(path);
+      box->setEnabled(on);
+      if (on && std::abs(box->value()) >= box->maximum())
+        box->setValue(QString(path).contains(QStringLiteral("Min")) ? -kDefaultLimitDeg : kDefaultLimitDeg);
+    }
+    onEdited();
+  });
 }
 
 void ProfileEditor::addNumber(QFormLayout* form, const std::string& path, const QString& label,

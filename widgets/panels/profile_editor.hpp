@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/machine/profile_fields.hpp"
 #include "widgets/document/studio_document.hpp"
 
 class QCheckBox;
@@ -82,4 +83,7 @@ class ProfileEditor : public QWidget {
   bool valid_ = true;
 };
 
+// A field's label and unit suffix (" mm", " °/min") from core's table, in the UI language.
+QString profileFieldLabel(const fivebar::ProfileField& field);
+QString profileUnitSuffix(const fivebar::ProfileField& field);
 }  // namespace fivebar::widgets
