@@ -111,6 +111,7 @@ void SimMachine::realtimeByte(char c) {
   namespace rt = grbl::realtime;
   if (c == rt::kStatus) {
     if (criticalAlarm_) return;  // a hard or soft limit alarm: silent until the reset
+    if (homing_) return;         // limits_go_home serves no status request
     // protocol.c reports at its next real-time check point: after the lines received before
     // the '?' are executed (or while one waits for planner room).
     serviceLines();
@@ -149,6 +150,19 @@ void SimMachine::setPen(bool down) {
 }
 
 void SimMachine::softReset() {
+  homingSucceeded_ = false;
+  if (homing_) {  // a reset during the homing cycle: ALARM:6 (homing fail: reset)
+    homing_ = false;
+    homingMoves_.clear();
+    planner_.clear();
+    rx_.clear();
+    haveCurrent_ = false;
+    state_ = MachineState::Alarm;
+    reply("ALARM:6");
+    resetAlarm_ = true;
+    resetLeftS_ = config_.instant ? 1e-9 : kResetBannerDelayS;
+    return;
+  }
   const bool moving = planner_.moving() ||
                       ((state_ == MachineState::Run || state_ == MachineState::Jog) &&
                        !planner_.empty());
@@ -169,7 +183,7 @@ void SimMachine::softReset() {
   coordSelect_ = 0;
   g92_ = {};
   feedPerMin_ = spindleS_ = 0.0;
-  spindleOn_ = false;
+  spindleOn_ = spindleCcw_ = coolantFlood_ = false;
   checkMode_ = false;
   resetAlarm_ = moving || state_ == MachineState::Alarm;
   if (moving) {
@@ -183,6 +197,8 @@ void SimMachine::softReset() {
 
 void SimMachine::finishReset() {
   resetLeftS_ = -1.0;
+  if (homingOkOwed_) reply("ok");  // the $H that failed returns before the reset completes
+  homingOkOwed_ = false;
   updateWco();
   wcoCounter_ = ovrCounter_ = 0;  // main.c clears sys: WCO on the first report
   out_ += std::string("\r\n") + kBanner + "\r\n";
@@ -206,7 +222,7 @@ void SimMachine::finishReset() {
 void SimMachine::raiseAlarm(int code, bool critical) {
   setPen(false);
   planner_.clear();
-  spindleOn_ = false;
+  spindleOn_ = coolantFlood_ = false;  // mc_reset stops the spindle and the coolant
   holding_ = jogCancel_ = false;
   haveCurrent_ = false;
   state_ = MachineState::Alarm;
@@ -266,6 +282,13 @@ void SimMachine::advance(double machineDtS) {
     return;
   }
   if (linkDropped_ || criticalAlarm_) return;
+  if (homing_) {
+    planner_.advance(machineDtS, false, config_.instant, [](const Block&) {});
+    if (planner_.empty() && homingPauseS_ > 0.0) homingPauseS_ = config_.instant ? 0.0 : homingPauseS_ - machineDtS;
+    homingStep();
+    if (!homing_) serviceLines();
+    return;
+  }
   const bool hadBlocks = !planner_.empty();
   planner_.advance(machineDtS, holding_ || jogCancel_, config_.instant,
                    [this](const Block& b) { blockDone(b); });
@@ -345,7 +368,11 @@ void SimMachine::reportStatus() {
   } else {
     ovrCounter_ = busy ? 19 : 9;
     s += "|Ov:100,100,100";
-    if (spindleOn_) s += "|A:S";
+    // spindle_get_state: on while its PWM runs (S > 0), S clockwise (M3), C counter-clockwise
+    // (M4); F flood coolant (M8). No Ln: (USE_LINE_NUMBERS is off in the stock config.h).
+    const bool spindleRuns = spindleOn_ && spindleS_ > 0.0;
+    if (spindleRuns || coolantFlood_)
+      s += std::string("|A:") + (spindleRuns ? (spindleCcw_ ? "C" : "S") : "") + (coolantFlood_ ? "F" : "");
   }
   reply(s + ">");
 }

@@ -53,6 +53,10 @@ struct SimConfig {
   // referenced at the pose it was powered up in (`fivebar reference` at the home pose, then a
   // power cycle there): MPos 0,0 reads as the profile's home pose.
   bool referenced = false;
+  // false: no homing switches wired (as the firmware in ../shared/tools/grbl-sim): $H searches
+  // Z for 1.5 x $132 and fails with ALARM:9. true: every axis has its switch at machine
+  // position 0 (the + end of travel, homing direction mask 0).
+  bool homingSwitches = false;
 };
 
 // The firmware's default settings (defaults.h, DEFAULTS_GENERIC).
@@ -87,6 +91,8 @@ class SimMachine {
   LineResult setSetting(const std::string& line);
   bool arc(const gcode::Words& w, bool clockwise);  // false when it replied an error
   void reportParameters();
+  LineResult home();   // $H: starts or continues the homing cycle
+  void homingStep();   // called as machine time passes while homing
   void finishReset();
   Axes3 coordSystem(int index) const;  // G54 = 0 .. G59 = 5, machine offsets
   bool motion(const gcode::Words& w, bool jog, bool rapidMove);  // false: replied an error/alarm
@@ -129,6 +135,15 @@ class SimMachine {
   bool checkMode_ = false;
   double resetLeftS_ = -1.0;        // > 0: a reset in motion, banner when it reaches 0
   bool resetAlarm_ = false;
+  // Homing ($H): the moves still to make (target, rate per minute; one block at a time, each
+  // followed by the $26 debounce), whether it ends with the switch not found.
+  struct HomingMove {
+    Axes3 target{};
+    double feedPerMin = 0.0;
+  };
+  std::deque<HomingMove> homingMoves_;
+  bool homing_ = false, homingFails_ = false, homingSucceeded_ = false, homingOkOwed_ = false;
+  double homingPauseS_ = 0.0;
   int wcoCounter_ = 0, ovrCounter_ = 0;
   bool statusRequested_ = false;
   int motionMode_ = 0;  // G0..G3
@@ -137,6 +152,8 @@ class SimMachine {
   double feedPerMin_ = 0.0;
   double spindleS_ = 0.0;
   bool spindleOn_ = false;
+  bool spindleCcw_ = false;    // M4
+  bool coolantFlood_ = false;  // M8
   bool penDown_ = false;
   Axes3 wco_{};
   long linesReceived_ = 0;

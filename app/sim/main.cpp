@@ -1,7 +1,8 @@
 // fivebar-sim: the simulated GRBL 1.1 five-bar controller on a pseudo-terminal, so that
 // QSerialPort (the studio, `fivebar stream`) or any other sender opens it like a real board.
 //
-//   fivebar-sim --pty PATH [--machine PRESET|FILE] [--set-up] [--referenced] [--speedup N]
+//   fivebar-sim --pty PATH [--machine PRESET|FILE] [--set-up] [--referenced] [--homing-switches]
+//               [--speedup N]
 //               [--instant] [--fault drop-after=N|reset-after=N|error-on=N|alarm-after=N]
 //               [--record FILE] [--baud N]
 //
@@ -40,6 +41,7 @@ struct Args {
   bool instant = false;
   bool setUp = false;
   bool referenced = false;
+  bool homingSwitches = false;
   bool help = false;
   fivebar::sim::Fault fault;
   std::string recordPath;
@@ -48,6 +50,7 @@ struct Args {
 
 constexpr const char* kUsage =
     "usage: fivebar-sim --pty PATH [--machine PRESET|FILE] [--set-up] [--referenced]\n"
+    "                   [--homing-switches]\n"
     "                   [--speedup N] [--instant] [--baud N] [--record FILE]\n"
     "                   [--fault drop-after=N|reset-after=N|error-on=N|alarm-after=N]\n"
     "A simulated GRBL 1.1h board driving the five-bar of --machine (default maker-plotter) on a\n"
@@ -55,6 +58,8 @@ constexpr const char* kUsage =
     "MPos 0,0,0, sends nothing when the port opens and has the firmware's default settings.\n"
     "  --set-up       settings as after 'fivebar setup --write' for the machine\n"
     "  --referenced   G54 as after 'fivebar reference' at the power-up pose (reads as home)\n"
+    "  --homing-switches  switches at machine 0 on every axis ($H homes); without it none\n"
+    "                 are wired and $H ends in ALARM:9, as the firmware in ../shared\n"
     "  --speedup N    machine seconds per wall second; --instant: moves complete at once\n"
     "  --baud N       time the bytes as on a serial wire of N baud\n"
     "  --record FILE  the pen-down joint path and counters as JSON on exit\n"
@@ -72,6 +77,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
     if (opt == "--instant") { a.instant = true; continue; }
     if (opt == "--set-up") { a.setUp = true; continue; }
     if (opt == "--referenced") { a.referenced = true; continue; }
+    if (opt == "--homing-switches") { a.homingSwitches = true; continue; }
     if (opt == "--help" || opt == "-h") { a.help = true; return ""; }
     if (i + 1 >= argc) return "option " + opt + " needs a value";
     const std::string value = argv[++i];
@@ -118,7 +124,8 @@ int main(int argc, char** argv) {
     std::cerr << "fivebar-sim: " << error << "\n";
     return 1;
   }
-  fivebar::sim::SimMachine machine({*load.profile, args.fault, args.instant, args.setUp, args.referenced});
+  fivebar::sim::SimMachine machine({*load.profile, args.fault, args.instant, args.setUp, args.referenced,
+                                        args.homingSwitches});
   std::signal(SIGTERM, onSignal);
   std::signal(SIGINT, onSignal);
 

@@ -52,7 +52,12 @@ class PtyClient {
 // The probes: queries, settings, parser errors, offsets, check mode, program end. None moves the
 // machine, so the answers do not depend on timing.
 const std::vector<std::string> kProbes = {
-    "?", "?", "$I\n", "$#\n", "$N\n", "$$\n", "$20=1\n", "$G\n", "G2X1Y1I1\n", "G2X1Y1R0.2F100\n",
+    "?", "?", "$I\n", "$#\n", "$N\n", "$$\n", "$20=1\n", "$G\n",
+    // The accessory field A: (spindle S/C while its PWM runs, F flood) on the Ov: reports, which
+    // a spindle or coolant change brings forward; no Ln: for N-numbered lines (stock config).
+    "M3S1000\n", "?", "?", "?", "M5\n", "?", "M3S0\n", "?", "M4S100\n", "?", "M8\n", "?", "M9M5\n",
+    "?", "S500\n", "?", "M3\n", "?", "S600\n", "?", "?", "M5\n", "N10G4P0\n", "?", "M1\n", "M7\n",
+    "G2X1Y1I1\n", "G2X1Y1R0.2F100\n",
     "G2X10Y10I0J0F100\n", "G1X1\n", "G1 X1 Y1 Z1 F100 G4 P0\n", "$N0=G54\n", "$N\n",
     "G10L20P0X5Y5\n", "?", "?", "?", "$#\n", "M2\n", "$G\n", "$C\n", "G0X50\n", "?", "$C\n", "?",
     "?", "G1 X5 Y5                                                                 F9\n",
@@ -60,7 +65,7 @@ const std::vector<std::string> kProbes = {
     "$20=1\n", "$X\n", "G1X5F100\n", "?", "$10=3\n", "\x18", "?", "$10=3\n", "?"};
 // From this probe on (a soft-limit alarm: the board answers nothing until reset) the answers are
 // compared as one text, since when the firmware prints its [MSG:] varies by a few ms.
-constexpr std::size_t kJoinFrom = 36;  // one past "G1X5F100"
+constexpr std::size_t kJoinFrom = 62;  // one past "G1X5F100"
 
 std::vector<std::string> transcript(const std::string& pty) {
   PtyClient c(pty);
