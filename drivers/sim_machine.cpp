@@ -115,6 +115,7 @@ void SimMachine::realtimeByte(char c) {
     // protocol.c reports at its next real-time check point: after the lines received before
     // the '?' are executed (or while one waits for planner room).
     serviceLines();
+    if (homing_) return;  // a '?' behind "$H": the cycle started first and serves none
     reportStatus();
   } else if (c == rt::kFeedHold) {
     if (state_ == MachineState::Run) {

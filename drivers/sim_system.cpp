@@ -116,8 +116,9 @@ SimMachine::LineResult SimMachine::setSetting(const std::string& line) {
 // Each cycle approaches the switches in + direction at the seek rate $25 (at most 1.5 x the
 // axes' max travel $13x), pulls off $27, approaches again at the feed rate $24 and pulls off
 // again; the machine position is then -$27 (no HOMING_FORCE_SET_ORIGIN). Without a switch the
-// first approach runs its whole search distance and ends in ALARM:9, and the board resets as
-// after mc_reset: the $H line's "ok", the banner and the unlock message 0.6 s later. While
+// first approach runs its whole search distance (the axis counted from 0) and ends in ALARM:9,
+// and the board resets as after mc_reset: the $H line's "ok", the banner and the unlock
+// message 0.6 s later. While
 // homing, '?' is not answered and received lines wait. Timing: one block per phase (the axes
 // of cycle 1 arrive together), each followed by the $26 debounce.
 SimMachine::LineResult SimMachine::home() {
@@ -144,6 +145,14 @@ SimMachine::LineResult SimMachine::home() {
       approach[i] = at[i] + search;
     }
     if (!found) {  // the switch is not within the search distance
+      // limits_go_home zeroes the cycle's axes before each approach: after the failed search
+      // they read the search distance, wherever they started.
+      Axes3 zeroed = at;
+      for (size_t i : cycle) {
+        zeroed[i] = 0.0;
+        approach[i] = search;
+      }
+      planner_.setPosition(zeroed);
       homingMoves_.push_back({approach, rate});
       homingFails_ = true;
       break;
