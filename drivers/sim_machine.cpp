@@ -47,7 +47,9 @@ std::optional<Fault> parseFault(std::string_view text) {
   return std::nullopt;
 }
 
-SimMachine::SimMachine(const SimConfig& config) : config_(config), planner_(MotionLimits{}) {
+SimMachine::SimMachine(const SimConfig& config)
+    : config_(config), planner_(MotionLimits{}), trace_(config.trueMachine.value_or(config.profile)) {
+
   settings_ = firmwareDefaultSettings();
   if (config.setUp)
     for (const auto& [id, value] : setup::expectedSettings(config.profile)) settings_[id] = value;
@@ -62,6 +64,18 @@ SimMachine::SimMachine(const SimConfig& config) : config_(config), planner_(Moti
     updateWco();
   }
   if (settings_[22] == 1) state_ = MachineState::Alarm;
+  // The arms stand at the profile's home pose at power-up (to the nearest step, as --referenced
+  // reads it).
+  const Axes3 home = planner_.quantize(
+      {degFromRad(config.profile.homeAngles.theta1), degFromRad(config.profile.homeAngles.theta2), 0.0});
+  physicalOffsetDeg_ = {home[0], home[1]};
+  trace_.place(physicalDeg(planner_.position()));
+}
+
+void SimMachine::redefinePosition(const Axes3& m) {
+  const Axes3 before = planner_.position();
+  for (size_t i = 0; i < 2; ++i) physicalOffsetDeg_[i] += before[i] - m[i];
+  planner_.setPosition(m);
 }
 
 void SimMachine::updateWco() {
@@ -147,6 +161,7 @@ void SimMachine::setPen(bool down) {
   } else if (!strokes_.empty() && strokes_.back().back() != here) {
     strokes_.back().push_back(here);  // a move cut short by a stop or an alarm
   }
+  if (!down) trace_.liftPen();
   penDown_ = down;
 }
 
@@ -284,7 +299,9 @@ void SimMachine::advance(double machineDtS) {
   }
   if (linkDropped_ || criticalAlarm_) return;
   if (homing_) {
-    planner_.advance(machineDtS, false, config_.instant, [](const Block&) {});
+    planner_.advance(machineDtS, false, config_.instant,
+                     [this](const Block& b) { trace_.moveTo(physicalDeg(b.target), false); });
+    trace_.moveTo(physicalDeg(planner_.position()), false);
     if (planner_.empty() && homingPauseS_ > 0.0) homingPauseS_ = config_.instant ? 0.0 : homingPauseS_ - machineDtS;
     homingStep();
     if (!homing_) serviceLines();
@@ -293,6 +310,8 @@ void SimMachine::advance(double machineDtS) {
   const bool hadBlocks = !planner_.empty();
   planner_.advance(machineDtS, holding_ || jogCancel_, config_.instant,
                    [this](const Block& b) { blockDone(b); });
+  if (!planner_.empty())  // the pen's true path along the block under way
+    trace_.moveTo(physicalDeg(planner_.position()), planner_.blocks().front().penDown);
   if (jogCancel_ && !planner_.moving()) {
     planner_.clear();
     jogCancel_ = false;
@@ -309,6 +328,7 @@ void SimMachine::advance(double machineDtS) {
 }
 
 void SimMachine::blockDone(const Block& b) {
+  trace_.moveTo(physicalDeg(b.target), b.penDown);
   const Point2 start{b.start[0] - wco_[0], b.start[1] - wco_[1]};
   const Point2 end{b.target[0] - wco_[0], b.target[1] - wco_[1]};
   if (b.penDown) {

@@ -25,6 +25,7 @@
 #include "core/machine/profile.hpp"
 #include "gcode_words.hpp"
 #include "grbl_parser.hpp"
+#include "pen_trace.hpp"
 #include "sim_planner.hpp"
 
 namespace fivebar::sim {
@@ -57,6 +58,10 @@ struct SimConfig {
   // Z for 1.5 x $132 and fails with ALARM:9. true: every axis has its switch at machine
   // position 0 (the + end of travel, homing direction mask 0).
   bool homingSwitches = false;
+  // The real machine the simulated motors drive (issue 13; pen_trace.hpp): its geometry, and
+  // in its calibration section the true zero offsets, backlash and pen offset. nullopt: the
+  // profile itself. The arms stand at the profile's home pose at power-up.
+  std::optional<MachineProfile> trueMachine;
 };
 
 // The firmware's default settings (defaults.h, DEFAULTS_GENERIC).
@@ -81,6 +86,8 @@ class SimMachine {
   std::size_t plannerBlocks() const { return planner_.size(); }
   bool linkDropped() const { return linkDropped_; }
   bool penDown() const { return penDown_; }
+  // What the pen of the true machine really drew: polylines in the machine (base) frame, mm.
+  const std::vector<std::vector<Vec2>>& drawnTrace() const { return trace_.polylines(); }
 
  private:
   enum class LineResult { Done, Blocked };
@@ -111,6 +118,12 @@ class SimMachine {
   bool withinLimits(const Axes3& machineTarget) const;
   bool fireFault(FaultKind kind) const;
   bool penDownFor(double spindleS, bool spindleOn, double z) const;
+  // The motors' physical angles (commanded frame, deg) at machine position m: the power-up
+  // pose is the profile's home pose; a redefined position (homing) shifts the offset.
+  std::array<double, 2> physicalDeg(const Axes3& m) const {
+    return {m[0] + physicalOffsetDeg_[0], m[1] + physicalOffsetDeg_[1]};
+  }
+  void redefinePosition(const Axes3& m);  // the position reads m from now on; nothing moves
 
   SimConfig config_;
   Planner planner_;
@@ -161,6 +174,8 @@ class SimMachine {
   long starvations_ = 0;
   bool faultFired_ = false;
   std::vector<std::vector<Point2>> strokes_;
+  std::array<double, 2> physicalOffsetDeg_{0.0, 0.0};
+  PenTrace trace_;
 };
 
 }  // namespace fivebar::sim

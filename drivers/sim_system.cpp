@@ -152,7 +152,7 @@ SimMachine::LineResult SimMachine::home() {
         zeroed[i] = 0.0;
         approach[i] = search;
       }
-      planner_.setPosition(zeroed);
+      redefinePosition(zeroed);
       homingMoves_.push_back({approach, rate});
       homingFails_ = true;
       break;
@@ -181,7 +181,8 @@ void SimMachine::homingStep() {
     const HomingMove m = homingMoves_.front();
     homingMoves_.pop_front();
     if (!planner_.add(m.target, m.feedPerMin / 60.0, false, false, false)) planner_.setPosition(m.target);
-    if (config_.instant) planner_.advance(0.0, false, true, [](const Block&) {});
+    if (config_.instant)
+      planner_.advance(0.0, false, true, [this](const Block& b) { trace_.moveTo(physicalDeg(b.target), false); });
     homingPauseS_ = homingMoves_.empty() && homingFails_ ? 0.0 : settings_[26] / 1000.0;
     if (!planner_.empty() || homingPauseS_ > 0.0) return;
     homingStep();
