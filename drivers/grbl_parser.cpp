@@ -47,6 +47,11 @@ bool applyField(StatusReport& r, std::string_view name, std::string_view value) 
   if (name == "WPos") return bool(r.wpos = parseAxes(value));
   if (name == "WCO") return bool(r.wco = parseAxes(value));
   if (name == "Pn") { r.pins = std::string(value); return true; }
+  if (name == "A") {  // report.c: S or C (spindle), F (flood), M (mist), only with some on
+    if (value.empty() || value.find_first_not_of("SCFM") != std::string_view::npos) return false;
+    r.accessories = std::string(value);
+    return true;
+  }
   const auto parts = split(value, ',');
   if (name == "Bf") {
     if (parts.size() != 2) return false;
@@ -75,7 +80,7 @@ bool applyField(StatusReport& r, std::string_view name, std::string_view value) 
     if (v) r.lineNumber = *v;
     return v.has_value();
   }
-  return true;  // fields this host does not use (A:, T:, ...) are ignored
+  return true;  // fields this host does not use (T:, ...) are ignored
 }
 
 }  // namespace

@@ -34,7 +34,13 @@ struct StatusReport {
   std::optional<double> spindle;         // FS: current spindle speed
   std::optional<std::array<int, 3>> overrides;  // Ov: feed, rapid, spindle (%)
   std::string pins;                      // Pn: letters, e.g. "XYP"
-  std::optional<long> lineNumber;        // Ln
+  // Ln: the block being executed; only from firmware built with USE_LINE_NUMBERS (a stock
+  // GRBL 1.1h never sends it).
+  std::optional<long> lineNumber;
+  // A: accessories, sent with Ov: (every 10th/20th report and after a spindle or coolant
+  // change): "S" spindle clockwise / "C" counter-clockwise (while S > 0), "F" flood, "M" mist;
+  // empty when the report had no A: (all off, or no Ov: on this report).
+  std::string accessories;
 };
 
 enum class LineKind {

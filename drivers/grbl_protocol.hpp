@@ -32,6 +32,11 @@ inline constexpr int kRxBufferBytes = 128;  // GRBL 1.1 serial receive buffer
 // stores neither spaces nor comments, so this counts the characters of the compacted line.
 inline constexpr int kMaxLineChars = 79;
 inline constexpr int kPlannerBlocks = 15;   // usable planner blocks (Bf reports 15 when empty)
+// Blocks that may still be running after the planner dropped them: stepper.c discards a planner
+// block once it is cut into step segments, and its ring of SEGMENT_BUFFER_SIZE 6 holds up to 5
+// segments (about 10 ms each, each of one block) still to execute. Measured on the real firmware:
+// a reset right after Bf: freed a block lost up to 2 mm of that block's drawing.
+inline constexpr int kSegmentBufferBlocks = 5;
 inline constexpr double kMinPollIntervalS = 0.2;  // 5 Hz: polling never faster than this
 
 namespace realtime {

@@ -177,9 +177,12 @@ void JobRunner::onStatus(const grbl::StatusReport& r) {
   else if (!idleSinceS_) idleSinceS_ = nowS_;
   // Executed progress: an acknowledged motion sits in the planner until it is executed. With
   // Bf: the planner's depth is reported; without it (a stock board, $10=1) at most all 15
-  // planner blocks can still be queued: a lower bound that keeps the resume point safe.
-  const int queued = r.plannerBlocksFree ? std::max(0, grbl::kPlannerBlocks - *r.plannerBlocksFree)
-                                         : grbl::kPlannerBlocks;
+  // planner blocks can still be queued. While the machine moves, up to 5 more blocks may still
+  // run from the stepper's segment buffer after the planner dropped them. A lower bound that
+  // keeps the resume point safe (never beyond what was drawn).
+  int queued = r.plannerBlocksFree ? std::max(0, grbl::kPlannerBlocks - *r.plannerBlocksFree)
+                                   : grbl::kPlannerBlocks;
+  if (r.state != MachineState::Idle) queued += grbl::kSegmentBufferBlocks;
   if (r.plannerBlocksFree || r.state != MachineState::Idle)
     markCompleted(ackedBlocks_ > std::uint64_t(queued) ? ackedBlocks_ - std::uint64_t(queued) : 0);
   const bool allAcked = inFlight_.empty() && nextSeq_ >= sequenceLength();

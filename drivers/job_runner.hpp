@@ -1,7 +1,8 @@
 // JobRunner: streams a job through GrblProtocol (character counting) and follows it on the
 // machine: progress by acknowledged line and by executed line (acknowledged motions minus the
 // planner blocks still queued, from the Bf field of status reports, or without Bf: minus the
-// planner's 15 blocks, all executed once the board is Idle), ETA, a stall watchdog, hold (!) and resume
+// planner's 15 blocks; while moving minus 5 more still in the stepper's segment buffer; all
+// executed once the board is Idle), ETA, a stall watchdog, hold (!) and resume
 // (~), the stop sequence (hold, wait for Hold:0, soft reset, wait for the banner, re-sync with a
 // status report, $X when the board is in alarm), and pausing with a plain explanation when an
 // error, an alarm, an unexpected reset or a disconnect happens. Pure logic: time comes in by

@@ -20,7 +20,7 @@ bool supportedG(double g) {
                      [g](double c) { return std::abs(g - c) < 1e-9; });
 }
 bool supportedM(double m) {
-  static constexpr double kCodes[] = {0, 2, 3, 4, 5, 8, 9, 30};
+  static constexpr double kCodes[] = {0, 1, 2, 3, 4, 5, 8, 9, 30};  // no M7: not compiled in
   return std::any_of(std::begin(kCodes), std::end(kCodes),
                      [m](double c) { return std::abs(m - c) < 1e-9; });
 }
@@ -101,9 +101,21 @@ SimMachine::LineResult SimMachine::executeGcode(const std::string& line, bool jo
     for (int m = 0; m < 4; ++m)
       if (w.hasCode('G', m) && m != 4) motionMode_ = m;
     if (w.has('F')) feedPerMin_ = *w.get('F');
+    // gcode.c: the spindle is set (spindle_sync) when its mode changes, or its speed while it
+    // runs; spindle_set_state and coolant_set_state put Ov: (and A:) in the next report.
+    const bool wasOn = spindleOn_, wasCcw = spindleCcw_, wasFlood = coolantFlood_;
+    const double speedBefore = spindleS_;
     if (w.has('S')) spindleS_ = *w.get('S');
-    if (w.hasCode('M', 3) || w.hasCode('M', 4)) spindleOn_ = true;
+    if (w.hasCode('M', 3) || w.hasCode('M', 4)) {
+      spindleOn_ = true;
+      spindleCcw_ = w.hasCode('M', 4);
+    }
     if (w.hasCode('M', 5) || programEnd) spindleOn_ = false;
+    if (w.hasCode('M', 8)) coolantFlood_ = true;
+    if (w.hasCode('M', 9) || programEnd) coolantFlood_ = false;
+    const bool spindleSet = spindleOn_ != wasOn || (spindleOn_ && spindleCcw_ != wasCcw) ||
+                            (wasOn && spindleS_ != speedBefore);
+    if (!checkMode_ && (spindleSet || coolantFlood_ != wasFlood || programEnd)) ovrCounter_ = 0;
     if (select >= 0 && select != coordSelect_) {
       coordSelect_ = select;
       updateWco();
@@ -124,7 +136,7 @@ SimMachine::LineResult SimMachine::executeGcode(const std::string& line, bool jo
       absolute_ = true;
       coordSelect_ = 0;
       updateWco();
-      wcoCounter_ = 0;  // system_flag_wco_change: WCO in the next report
+      if (!checkMode_) wcoCounter_ = 0;  // system_flag_wco_change: WCO in the next report
       reply("[MSG:Pgm End]");
     }
   }

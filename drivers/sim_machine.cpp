@@ -47,7 +47,9 @@ std::optional<Fault> parseFault(std::string_view text) {
   return std::nullopt;
 }
 
-SimMachine::SimMachine(const SimConfig& config) : config_(config), planner_(MotionLimits{}) {
+SimMachine::SimMachine(const SimConfig& config)
+    : config_(config), planner_(MotionLimits{}), trace_(config.trueMachine.value_or(config.profile)) {
+
   settings_ = firmwareDefaultSettings();
   if (config.setUp)
     for (const auto& [id, value] : setup::expectedSettings(config.profile)) settings_[id] = value;
@@ -62,6 +64,18 @@ SimMachine::SimMachine(const SimConfig& config) : config_(config), planner_(Moti
     updateWco();
   }
   if (settings_[22] == 1) state_ = MachineState::Alarm;
+  // The arms stand at the profile's home pose at power-up (to the nearest step, as --referenced
+  // reads it).
+  const Axes3 home = planner_.quantize(
+      {degFromRad(config.profile.homeAngles.theta1), degFromRad(config.profile.homeAngles.theta2), 0.0});
+  physicalOffsetDeg_ = {home[0], home[1]};
+  trace_.place(physicalDeg(planner_.position()));
+}
+
+void SimMachine::redefinePosition(const Axes3& m) {
+  const Axes3 before = planner_.position();
+  for (size_t i = 0; i < 2; ++i) physicalOffsetDeg_[i] += before[i] - m[i];
+  planner_.setPosition(m);
 }
 
 void SimMachine::updateWco() {
@@ -111,9 +125,11 @@ void SimMachine::realtimeByte(char c) {
   namespace rt = grbl::realtime;
   if (c == rt::kStatus) {
     if (criticalAlarm_) return;  // a hard or soft limit alarm: silent until the reset
+    if (homing_) return;         // limits_go_home serves no status request
     // protocol.c reports at its next real-time check point: after the lines received before
     // the '?' are executed (or while one waits for planner room).
     serviceLines();
+    if (homing_) return;  // a '?' behind "$H": the cycle started first and serves none
     reportStatus();
   } else if (c == rt::kFeedHold) {
     if (state_ == MachineState::Run) {
@@ -145,10 +161,24 @@ void SimMachine::setPen(bool down) {
   } else if (!strokes_.empty() && strokes_.back().back() != here) {
     strokes_.back().push_back(here);  // a move cut short by a stop or an alarm
   }
+  if (!down) trace_.liftPen();
   penDown_ = down;
 }
 
 void SimMachine::softReset() {
+  homingSucceeded_ = false;
+  if (homing_) {  // a reset during the homing cycle: ALARM:6 (homing fail: reset)
+    homing_ = false;
+    homingMoves_.clear();
+    planner_.clear();
+    rx_.clear();
+    haveCurrent_ = false;
+    state_ = MachineState::Alarm;
+    reply("ALARM:6");
+    resetAlarm_ = true;
+    resetLeftS_ = config_.instant ? 1e-9 : kResetBannerDelayS;
+    return;
+  }
   const bool moving = planner_.moving() ||
                       ((state_ == MachineState::Run || state_ == MachineState::Jog) &&
                        !planner_.empty());
@@ -169,7 +199,7 @@ void SimMachine::softReset() {
   coordSelect_ = 0;
   g92_ = {};
   feedPerMin_ = spindleS_ = 0.0;
-  spindleOn_ = false;
+  spindleOn_ = spindleCcw_ = coolantFlood_ = false;
   checkMode_ = false;
   resetAlarm_ = moving || state_ == MachineState::Alarm;
   if (moving) {
@@ -183,6 +213,8 @@ void SimMachine::softReset() {
 
 void SimMachine::finishReset() {
   resetLeftS_ = -1.0;
+  if (homingOkOwed_) reply("ok");  // the $H that failed returns before the reset completes
+  homingOkOwed_ = false;
   updateWco();
   wcoCounter_ = ovrCounter_ = 0;  // main.c clears sys: WCO on the first report
   out_ += std::string("\r\n") + kBanner + "\r\n";
@@ -206,7 +238,7 @@ void SimMachine::finishReset() {
 void SimMachine::raiseAlarm(int code, bool critical) {
   setPen(false);
   planner_.clear();
-  spindleOn_ = false;
+  spindleOn_ = coolantFlood_ = false;  // mc_reset stops the spindle and the coolant
   holding_ = jogCancel_ = false;
   haveCurrent_ = false;
   state_ = MachineState::Alarm;
@@ -266,9 +298,20 @@ void SimMachine::advance(double machineDtS) {
     return;
   }
   if (linkDropped_ || criticalAlarm_) return;
+  if (homing_) {
+    planner_.advance(machineDtS, false, config_.instant,
+                     [this](const Block& b) { trace_.moveTo(physicalDeg(b.target), false); });
+    trace_.moveTo(physicalDeg(planner_.position()), false);
+    if (planner_.empty() && homingPauseS_ > 0.0) homingPauseS_ = config_.instant ? 0.0 : homingPauseS_ - machineDtS;
+    homingStep();
+    if (!homing_) serviceLines();
+    return;
+  }
   const bool hadBlocks = !planner_.empty();
   planner_.advance(machineDtS, holding_ || jogCancel_, config_.instant,
                    [this](const Block& b) { blockDone(b); });
+  if (!planner_.empty())  // the pen's true path along the block under way
+    trace_.moveTo(physicalDeg(planner_.position()), planner_.blocks().front().penDown);
   if (jogCancel_ && !planner_.moving()) {
     planner_.clear();
     jogCancel_ = false;
@@ -285,6 +328,7 @@ void SimMachine::advance(double machineDtS) {
 }
 
 void SimMachine::blockDone(const Block& b) {
+  trace_.moveTo(physicalDeg(b.target), b.penDown);
   const Point2 start{b.start[0] - wco_[0], b.start[1] - wco_[1]};
   const Point2 end{b.target[0] - wco_[0], b.target[1] - wco_[1]};
   if (b.penDown) {
@@ -345,7 +389,11 @@ void SimMachine::reportStatus() {
   } else {
     ovrCounter_ = busy ? 19 : 9;
     s += "|Ov:100,100,100";
-    if (spindleOn_) s += "|A:S";
+    // spindle_get_state: on while its PWM runs (S > 0), S clockwise (M3), C counter-clockwise
+    // (M4); F flood coolant (M8). No Ln: (USE_LINE_NUMBERS is off in the stock config.h).
+    const bool spindleRuns = spindleOn_ && spindleS_ > 0.0;
+    if (spindleRuns || coolantFlood_)
+      s += std::string("|A:") + (spindleRuns ? (spindleCcw_ ? "C" : "S") : "") + (coolantFlood_ ? "F" : "");
   }
   reply(s + ">");
 }

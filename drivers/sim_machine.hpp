@@ -25,6 +25,7 @@
 #include "core/machine/profile.hpp"
 #include "gcode_words.hpp"
 #include "grbl_parser.hpp"
+#include "pen_trace.hpp"
 #include "sim_planner.hpp"
 
 namespace fivebar::sim {
@@ -53,6 +54,14 @@ struct SimConfig {
   // referenced at the pose it was powered up in (`fivebar reference` at the home pose, then a
   // power cycle there): MPos 0,0 reads as the profile's home pose.
   bool referenced = false;
+  // false: no homing switches wired (as the firmware in ../shared/tools/grbl-sim): $H searches
+  // Z for 1.5 x $132 and fails with ALARM:9. true: every axis has its switch at machine
+  // position 0 (the + end of travel, homing direction mask 0).
+  bool homingSwitches = false;
+  // The real machine the simulated motors drive (issue 13; pen_trace.hpp): its geometry, and
+  // in its calibration section the true zero offsets, backlash and pen offset. nullopt: the
+  // profile itself. The arms stand at the profile's home pose at power-up.
+  std::optional<MachineProfile> trueMachine;
 };
 
 // The firmware's default settings (defaults.h, DEFAULTS_GENERIC).
@@ -77,6 +86,8 @@ class SimMachine {
   std::size_t plannerBlocks() const { return planner_.size(); }
   bool linkDropped() const { return linkDropped_; }
   bool penDown() const { return penDown_; }
+  // What the pen of the true machine really drew: polylines in the machine (base) frame, mm.
+  const std::vector<std::vector<Vec2>>& drawnTrace() const { return trace_.polylines(); }
 
  private:
   enum class LineResult { Done, Blocked };
@@ -87,6 +98,8 @@ class SimMachine {
   LineResult setSetting(const std::string& line);
   bool arc(const gcode::Words& w, bool clockwise);  // false when it replied an error
   void reportParameters();
+  LineResult home();   // $H: starts or continues the homing cycle
+  void homingStep();   // called as machine time passes while homing
   void finishReset();
   Axes3 coordSystem(int index) const;  // G54 = 0 .. G59 = 5, machine offsets
   bool motion(const gcode::Words& w, bool jog, bool rapidMove);  // false: replied an error/alarm
@@ -105,6 +118,12 @@ class SimMachine {
   bool withinLimits(const Axes3& machineTarget) const;
   bool fireFault(FaultKind kind) const;
   bool penDownFor(double spindleS, bool spindleOn, double z) const;
+  // The motors' physical angles (commanded frame, deg) at machine position m: the power-up
+  // pose is the profile's home pose; a redefined position (homing) shifts the offset.
+  std::array<double, 2> physicalDeg(const Axes3& m) const {
+    return {m[0] + physicalOffsetDeg_[0], m[1] + physicalOffsetDeg_[1]};
+  }
+  void redefinePosition(const Axes3& m);  // the position reads m from now on; nothing moves
 
   SimConfig config_;
   Planner planner_;
@@ -129,6 +148,15 @@ class SimMachine {
   bool checkMode_ = false;
   double resetLeftS_ = -1.0;        // > 0: a reset in motion, banner when it reaches 0
   bool resetAlarm_ = false;
+  // Homing ($H): the moves still to make (target, rate per minute; one block at a time, each
+  // followed by the $26 debounce), whether it ends with the switch not found.
+  struct HomingMove {
+    Axes3 target{};
+    double feedPerMin = 0.0;
+  };
+  std::deque<HomingMove> homingMoves_;
+  bool homing_ = false, homingFails_ = false, homingSucceeded_ = false, homingOkOwed_ = false;
+  double homingPauseS_ = 0.0;
   int wcoCounter_ = 0, ovrCounter_ = 0;
   bool statusRequested_ = false;
   int motionMode_ = 0;  // G0..G3
@@ -137,6 +165,8 @@ class SimMachine {
   double feedPerMin_ = 0.0;
   double spindleS_ = 0.0;
   bool spindleOn_ = false;
+  bool spindleCcw_ = false;    // M4
+  bool coolantFlood_ = false;  // M8
   bool penDown_ = false;
   Axes3 wco_{};
   long linesReceived_ = 0;
@@ -144,6 +174,8 @@ class SimMachine {
   long starvations_ = 0;
   bool faultFired_ = false;
   std::vector<std::vector<Point2>> strokes_;
+  std::array<double, 2> physicalOffsetDeg_{0.0, 0.0};
+  PenTrace trace_;
 };
 
 }  // namespace fivebar::sim

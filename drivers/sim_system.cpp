@@ -1,4 +1,5 @@
 // SimMachine: the "$" system commands, as GRBL 1.1h's system.c and settings.c answer them.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -28,6 +29,7 @@ std::map<int, double> firmwareDefaultSettings() {
 
 SimMachine::LineResult SimMachine::executeSystem(const std::string& line) {
   // system.c: $J= jogs in Idle or Jog; $$ $G $C $X $N... need Idle or Alarm where noted.
+  if (line == "$H" && (homing_ || homingSucceeded_)) return home();  // the cycle under way
   const bool idleOrAlarm = state_ == MachineState::Idle || state_ == MachineState::Alarm;
   if (line.rfind("$J=", 0) == 0) {
     if (state_ != MachineState::Idle && state_ != MachineState::Jog) {
@@ -80,11 +82,7 @@ SimMachine::LineResult SimMachine::executeSystem(const std::string& line) {
     startupLines_[size_t(line[2] - '0')] = line.substr(4);
   } else if (line == "$H") {
     if (settings_[22] != 1) { reply("error:5"); return LineResult::Done; }
-    // Homing with switches: the pull-off position, -$27 in machine coordinates on every axis
-    // (limits.c without HOMING_FORCE_SET_ORIGIN, homing direction mask 0).
-    const double pullOff = settings_[27];
-    planner_.setPosition(planner_.quantize({-pullOff, -pullOff, -pullOff}));
-    state_ = MachineState::Idle;
+    return home();
   } else {
     return setSetting(line);
   }
@@ -112,6 +110,96 @@ SimMachine::LineResult SimMachine::setSetting(const std::string& line) {
   applySettings();
   reply("ok");
   return LineResult::Done;
+}
+
+// limits.c limits_go_home, homing direction mask 0: cycle 0 homes Z, cycle 1 X and Y together.
+// Each cycle approaches the switches in + direction at the seek rate $25 (at most 1.5 x the
+// axes' max travel $13x), pulls off $27, approaches again at the feed rate $24 and pulls off
+// again; the machine position is then -$27 (no HOMING_FORCE_SET_ORIGIN). Without a switch the
+// first approach runs its whole search distance (the axis counted from 0) and ends in ALARM:9,
+// and the board resets as after mc_reset: the $H line's "ok", the banner and the unlock
+// message 0.6 s later. While
+// homing, '?' is not answered and received lines wait. Timing: one block per phase (the axes
+// of cycle 1 arrive together), each followed by the $26 debounce.
+SimMachine::LineResult SimMachine::home() {
+  if (homing_) return LineResult::Blocked;  // the cycle runs; the ok comes at its end
+  if (homingSucceeded_) {
+    homingSucceeded_ = false;
+    state_ = MachineState::Idle;
+    reply("ok");
+    return LineResult::Done;
+  }
+  planner_.clear();
+  homingMoves_.clear();
+  homingFails_ = false;
+  const double seek = settings_[25], feed = settings_[24], pullOff = settings_[27];
+  Axes3 at = planner_.position();
+  for (const std::vector<size_t>& cycle : {std::vector<size_t>{2}, std::vector<size_t>{0, 1}}) {
+    double search = 0.0;
+    for (size_t i : cycle) search = std::max(search, 1.5 * settings_[int(130 + i)]);
+    const double rate = seek * std::sqrt(double(cycle.size()));
+    Axes3 approach = at;
+    bool found = true;
+    for (size_t i : cycle) {
+      found = found && config_.homingSwitches && at[i] <= 0.0 && -at[i] <= search;
+      approach[i] = at[i] + search;
+    }
+    if (!found) {  // the switch is not within the search distance
+      // limits_go_home zeroes the cycle's axes before each approach: after the failed search
+      // they read the search distance, wherever they started.
+      Axes3 zeroed = at;
+      for (size_t i : cycle) {
+        zeroed[i] = 0.0;
+        approach[i] = search;
+      }
+      redefinePosition(zeroed);
+      homingMoves_.push_back({approach, rate});
+      homingFails_ = true;
+      break;
+    }
+    Axes3 atSwitch = at, pulledOff = at;
+    for (size_t i : cycle) {
+      atSwitch[i] = 0.0;
+      pulledOff[i] = -pullOff;
+    }
+    homingMoves_.push_back({atSwitch, rate});
+    homingMoves_.push_back({pulledOff, rate});
+    homingMoves_.push_back({atSwitch, feed * std::sqrt(double(cycle.size()))});
+    homingMoves_.push_back({pulledOff, rate});
+    at = pulledOff;
+  }
+  homing_ = true;
+  homingPauseS_ = 0.0;
+  state_ = MachineState::Home;
+  homingStep();
+  return homing_ ? LineResult::Blocked : LineResult::Done;
+}
+
+void SimMachine::homingStep() {
+  if (!homing_ || !planner_.empty() || homingPauseS_ > 0.0) return;
+  if (!homingMoves_.empty()) {
+    const HomingMove m = homingMoves_.front();
+    homingMoves_.pop_front();
+    if (!planner_.add(m.target, m.feedPerMin / 60.0, false, false, false)) planner_.setPosition(m.target);
+    if (config_.instant)
+      planner_.advance(0.0, false, true, [this](const Block& b) { trace_.moveTo(physicalDeg(b.target), false); });
+    homingPauseS_ = homingMoves_.empty() && homingFails_ ? 0.0 : settings_[26] / 1000.0;
+    if (!planner_.empty() || homingPauseS_ > 0.0) return;
+    homingStep();
+    return;
+  }
+  homing_ = false;
+  if (homingFails_) {  // EXEC_ALARM_HOMING_FAIL_APPROACH, then mc_reset
+    haveCurrent_ = false;
+    rx_.clear();
+    state_ = MachineState::Alarm;
+    reply("ALARM:9");
+    homingOkOwed_ = true;  // answered at the reset, before the banner
+    resetAlarm_ = true;
+    resetLeftS_ = config_.instant ? 1e-9 : 0.6;
+    return;
+  }
+  homingSucceeded_ = true;  // the $H line completes on its next service
 }
 
 void SimMachine::reportParameters() {

@@ -1,9 +1,11 @@
 // fivebar-sim: the simulated GRBL 1.1 five-bar controller on a pseudo-terminal, so that
 // QSerialPort (the studio, `fivebar stream`) or any other sender opens it like a real board.
 //
-//   fivebar-sim --pty PATH [--machine PRESET|FILE] [--set-up] [--referenced] [--speedup N]
+//   fivebar-sim --pty PATH [--machine PRESET|FILE] [--set-up] [--referenced] [--homing-switches]
+//               [--speedup N]
 //               [--instant] [--fault drop-after=N|reset-after=N|error-on=N|alarm-after=N]
-//               [--record FILE] [--baud N]
+//               [--record FILE] [--baud N] [--true-machine FILE]
+//               [--drawn FILE.svg|FILE.csv]
 //
 // PATH becomes a symlink to the pty's slave device. --record writes the pen-down joint path
 // and counters as JSON on exit (SIGTERM / SIGINT) and when an injected drop closes the link.
@@ -40,14 +42,18 @@ struct Args {
   bool instant = false;
   bool setUp = false;
   bool referenced = false;
+  bool homingSwitches = false;
   bool help = false;
   fivebar::sim::Fault fault;
   std::string recordPath;
+  std::string trueMachine;  // profile file or preset of the real machine ("" the --machine one)
+  std::string drawnPath;
   double baud = 0.0;  // 0: no wire emulation
 };
 
 constexpr const char* kUsage =
     "usage: fivebar-sim --pty PATH [--machine PRESET|FILE] [--set-up] [--referenced]\n"
+    "                   [--homing-switches] [--true-machine FILE] [--drawn FILE.svg|FILE.csv]\n"
     "                   [--speedup N] [--instant] [--baud N] [--record FILE]\n"
     "                   [--fault drop-after=N|reset-after=N|error-on=N|alarm-after=N]\n"
     "A simulated GRBL 1.1h board driving the five-bar of --machine (default maker-plotter) on a\n"
@@ -55,10 +61,17 @@ constexpr const char* kUsage =
     "MPos 0,0,0, sends nothing when the port opens and has the firmware's default settings.\n"
     "  --set-up       settings as after 'fivebar setup --write' for the machine\n"
     "  --referenced   G54 as after 'fivebar reference' at the power-up pose (reads as home)\n"
+    "  --homing-switches  switches at machine 0 on every axis ($H homes); without it none\n"
+    "                 are wired and $H ends in ALARM:9, as the firmware in ../shared\n"
     "  --speedup N    machine seconds per wall second; --instant: moves complete at once\n"
     "  --baud N       time the bytes as on a serial wire of N baud\n"
     "  --record FILE  the pen-down joint path and counters as JSON on exit\n"
-    "  --fault ...    one injected fault after N received lines\n";
+    "  --fault ...    one injected fault after N received lines\n"
+    "  --true-machine FILE  the real machine the motors drive: a profile whose geometry is the\n"
+    "                 true geometry and whose calibration section gives the true motor zero\n"
+    "                 offsets, backlash and pen offset (default: --machine itself)\n"
+    "  --drawn FILE   what its pen really drew, written on exit like --record: SVG when FILE\n"
+    "                 ends in .svg, else CSV stroke,x_mm,y_mm (machine frame, mm)\n";
 
 int usage(const std::string& problem) {
   std::cerr << "fivebar-sim: " << problem << "\n" << kUsage;
@@ -72,12 +85,15 @@ std::string parseArgs(int argc, char** argv, Args& a) {
     if (opt == "--instant") { a.instant = true; continue; }
     if (opt == "--set-up") { a.setUp = true; continue; }
     if (opt == "--referenced") { a.referenced = true; continue; }
+    if (opt == "--homing-switches") { a.homingSwitches = true; continue; }
     if (opt == "--help" || opt == "-h") { a.help = true; return ""; }
     if (i + 1 >= argc) return "option " + opt + " needs a value";
     const std::string value = argv[++i];
     if (opt == "--pty") a.ptyPath = value;
     else if (opt == "--machine") a.machine = value;
     else if (opt == "--record") a.recordPath = value;
+    else if (opt == "--true-machine") a.trueMachine = value;
+    else if (opt == "--drawn") a.drawnPath = value;
     else if (opt == "--baud") {
       try { a.baud = std::stod(value); } catch (...) { a.baud = -1; }
       if (!(a.baud > 0)) return "--baud needs a positive number, got '" + value + "'";
@@ -112,19 +128,36 @@ int main(int argc, char** argv) {
               << "\n";
     return 1;
   }
+  fivebar::sim::SimConfig config{*load.profile, args.fault, args.instant, args.setUp, args.referenced,
+                                  args.homingSwitches, std::nullopt};
+  if (!args.trueMachine.empty()) {
+    const fivebar::ProfileLoad real = fivebar::resolveMachine(args.trueMachine);
+    if (!real.profile) {
+      std::cerr << "fivebar-sim: --true-machine " << args.trueMachine << ": "
+                << (real.issues.empty() ? "unknown"
+                                        : real.issues.front().field + ": " + real.issues.front().message)
+                << "\n";
+      return 1;
+    }
+    config.trueMachine = real.profile;
+  }
   std::string error;
   fivebar::simapp::Pty pty;
   if (!pty.open(args.ptyPath, &error)) {
     std::cerr << "fivebar-sim: " << error << "\n";
     return 1;
   }
-  fivebar::sim::SimMachine machine({*load.profile, args.fault, args.instant, args.setUp, args.referenced});
+  fivebar::sim::SimMachine machine(config);
   std::signal(SIGTERM, onSignal);
   std::signal(SIGINT, onSignal);
 
   const auto finish = [&](int code) {
     if (!args.recordPath.empty()) {
       const std::string err = fivebar::simapp::writeRecord(machine, args.recordPath);
+      if (!err.empty()) std::cerr << "fivebar-sim: " << err << "\n";
+    }
+    if (!args.drawnPath.empty()) {
+      const std::string err = fivebar::simapp::writeDrawn(machine, args.drawnPath);
       if (!err.empty()) std::cerr << "fivebar-sim: " << err << "\n";
     }
     pty.close();

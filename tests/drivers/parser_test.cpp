@@ -117,5 +117,21 @@ TEST(GrblParser, StatusReportVariants) {
     EXPECT_EQ(parseLine(bad).kind, LineKind::Unknown) << bad;
 }
 
+// The accessory and line-number fields as GRBL 1.1h's report.c writes them (A: only with Ov:,
+// Ln: only from firmware built with USE_LINE_NUMBERS).
+TEST(GrblParser, AccessoryAndLineNumberFields) {
+  const auto a = parseLine("<Idle|MPos:0.000,0.000,0.000|FS:0,100|Ov:100,100,100|A:CF>");
+  ASSERT_EQ(a.kind, LineKind::Status);
+  EXPECT_EQ(a.status.accessories, "CF");
+  EXPECT_FALSE(a.status.lineNumber);
+  const auto s = parseLine("<Run|MPos:0.176,0.000,0.000|Bf:14,127|Ln:10|FS:100,600|Ov:100,100,100|A:S>");
+  ASSERT_EQ(s.kind, LineKind::Status);
+  EXPECT_EQ(s.status.accessories, "S");
+  EXPECT_EQ(s.status.lineNumber, 10);
+  EXPECT_EQ(parseLine("<Idle|MPos:0,0,0|FS:0,0>").status.accessories, "");
+  for (const char* bad : {"<Idle|MPos:0,0,0|A:>", "<Idle|MPos:0,0,0|A:X>", "<Idle|MPos:0,0,0|Ln:x>"})
+    EXPECT_EQ(parseLine(bad).kind, LineKind::Unknown) << bad;
+}
+
 }  // namespace
 }  // namespace fivebar::grbl

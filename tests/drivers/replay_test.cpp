@@ -52,7 +52,12 @@ class PtyClient {
 // The probes: queries, settings, parser errors, offsets, check mode, program end. None moves the
 // machine, so the answers do not depend on timing.
 const std::vector<std::string> kProbes = {
-    "?", "?", "$I\n", "$#\n", "$N\n", "$$\n", "$20=1\n", "$G\n", "G2X1Y1I1\n", "G2X1Y1R0.2F100\n",
+    "?", "?", "$I\n", "$#\n", "$N\n", "$$\n", "$20=1\n", "$G\n",
+    // The accessory field A: (spindle S/C while its PWM runs, F flood) on the Ov: reports, which
+    // a spindle or coolant change brings forward; no Ln: for N-numbered lines (stock config).
+    "M3S1000\n", "?", "?", "?", "M5\n", "?", "M3S0\n", "?", "M4S100\n", "?", "M8\n", "?", "M9M5\n",
+    "?", "S500\n", "?", "M3\n", "?", "S600\n", "?", "?", "M5\n", "N10G4P0\n", "?", "M1\n", "M7\n",
+    "G2X1Y1I1\n", "G2X1Y1R0.2F100\n",
     "G2X10Y10I0J0F100\n", "G1X1\n", "G1 X1 Y1 Z1 F100 G4 P0\n", "$N0=G54\n", "$N\n",
     "G10L20P0X5Y5\n", "?", "?", "?", "$#\n", "M2\n", "$G\n", "$C\n", "G0X50\n", "?", "$C\n", "?",
     "?", "G1 X5 Y5                                                                 F9\n",
@@ -60,14 +65,20 @@ const std::vector<std::string> kProbes = {
     "$20=1\n", "$X\n", "G1X5F100\n", "?", "$10=3\n", "\x18", "?", "$10=3\n", "?"};
 // From this probe on (a soft-limit alarm: the board answers nothing until reset) the answers are
 // compared as one text, since when the firmware prints its [MSG:] varies by a few ms.
-constexpr std::size_t kJoinFrom = 36;  // one past "G1X5F100"
+constexpr std::size_t kJoinFrom = 62;  // one past "G1X5F100"
 
-std::vector<std::string> transcript(const std::string& pty) {
+// Each probe's bytes, and how long its answers are collected.
+struct Probe {
+  std::string bytes;
+  int windowMs = 350;
+};
+
+std::vector<std::string> transcript(const std::string& pty, const std::vector<Probe>& probes) {
   PtyClient c(pty);
   std::vector<std::string> answers;
   if (!c.ok()) return answers;
   c.exchange("", 1500);  // a booting firmware's banner, if the pty opened before it
-  for (const std::string& p : kProbes) answers.push_back(p + " -> " + c.exchange(p, 350));
+  for (const Probe& p : probes) answers.push_back(p.bytes + " -> " + c.exchange(p.bytes, p.windowMs));
   return answers;
 }
 
@@ -76,33 +87,64 @@ bool waitFor(const QString& path) {
   return QFileInfo::exists(path);
 }
 
-TEST(FirmwareReplay, FivebarSimAnswersAsTheRealGrbl) {
+// The transcript through the real firmware, on its second power-up (a first one writes the
+// EEPROM: a fresh one answers error:7 and restores the defaults, as a board that is used).
+// Empty when the firmware is absent or does not start.
+std::vector<std::string> firmwareTranscript(const QTemporaryDir& dir, const std::vector<Probe>& probes) {
   const QString shared = QStringLiteral(FIVEBAR_SHARED_DIR "/tools/grbl-sim");
-  if (!QFileInfo::exists(shared + "/start.sh")) GTEST_SKIP() << "../shared/tools/grbl-sim absent";
-  QTemporaryDir dir;
-  // A first power-up writes the EEPROM (a fresh one answers error:7 and restores the defaults);
-  // the transcript runs on the second, as on a board that has been used before.
   std::vector<std::string> expected;
   for (int run = 0; run < 2; ++run) {
     QProcess real;
     real.setProcessChannelMode(QProcess::ForwardedErrorChannel);
     real.start("sh", {shared + "/start.sh", dir.path() + "/real", "1", dir.path() + "/state"});
-    if (!waitFor(dir.path() + "/real")) GTEST_SKIP() << "the real firmware did not start (build it per its README)";
+    if (!waitFor(dir.path() + "/real")) return {};
     QThread::msleep(1000);
-    if (run == 0) PtyClient(( dir.path() + "/real").toStdString()).exchange("?", 1000);
-    else expected = transcript((dir.path() + "/real").toStdString());
+    if (run == 0) PtyClient((dir.path() + "/real").toStdString()).exchange("?", 1000);
+    else expected = transcript((dir.path() + "/real").toStdString(), probes);
     real.terminate();
     real.waitForFinished(5000);
     for (int i = 0; i < 100 && QFileInfo::exists(dir.path() + "/real"); ++i) QThread::msleep(20);
   }
+  return expected;
+}
 
+std::vector<std::string> simTranscript(const QTemporaryDir& dir, const std::vector<Probe>& probes) {
   QProcess ours;
   ours.setProcessChannelMode(QProcess::ForwardedErrorChannel);
   ours.start(FIVEBAR_SIM_EXE, {"--pty", dir.path() + "/ours", "--machine", "maker-plotter"});
-  ASSERT_TRUE(waitFor(dir.path() + "/ours"));
-  const auto got = transcript((dir.path() + "/ours").toStdString());
+  if (!waitFor(dir.path() + "/ours")) return {};
+  const auto got = transcript((dir.path() + "/ours").toStdString(), probes);
   ours.terminate();
   ours.waitForFinished(5000);
+  return got;
+}
+
+// Homing on a board without switches (the firmware in ../shared has none wired): $H searches Z
+// for 1.5 x $132 at $25, answers no status request meanwhile, fails with ALARM:9, then the $H
+// line's ok, the banner and the unlock message; $H without $22=1 is error:5.
+TEST(FirmwareReplay, HomingWithoutSwitchesAsTheRealGrbl) {
+  if (!QFileInfo::exists(QStringLiteral(FIVEBAR_SHARED_DIR "/tools/grbl-sim/start.sh")))
+    GTEST_SKIP() << "../shared/tools/grbl-sim absent";
+  const std::vector<Probe> probes = {
+      {"$H\n"}, {"$22=1\n"}, {"$132=2\n"}, {"$25=1000\n"}, {"$H\n", 3500}, {"?"}, {"G0X1\n"}, {"$X\n"},
+      {"$H\n?", 3500}, {"?"}, {"$X\n"}, {"$22=0\n"}, {"$H\n"}, {"?"}};
+  QTemporaryDir dir;
+  const auto expected = firmwareTranscript(dir, probes);
+  if (expected.empty()) GTEST_SKIP() << "the real firmware did not start (build it per its README)";
+  const auto got = simTranscript(dir, probes);
+  ASSERT_EQ(got.size(), expected.size());
+  for (size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], expected[i]) << "probe " << i;
+}
+
+TEST(FirmwareReplay, FivebarSimAnswersAsTheRealGrbl) {
+  const QString shared = QStringLiteral(FIVEBAR_SHARED_DIR "/tools/grbl-sim");
+  if (!QFileInfo::exists(shared + "/start.sh")) GTEST_SKIP() << "../shared/tools/grbl-sim absent";
+  QTemporaryDir dir;
+  std::vector<Probe> probes;
+  for (const std::string& p : kProbes) probes.push_back({p});
+  const auto expected = firmwareTranscript(dir, probes);
+  if (expected.empty()) GTEST_SKIP() << "the real firmware did not start (build it per its README)";
+  const auto got = simTranscript(dir, probes);
 
   ASSERT_EQ(got.size(), expected.size());
   ASSERT_GT(got.size(), kJoinFrom);

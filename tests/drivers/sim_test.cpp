@@ -269,5 +269,39 @@ TEST(SimMachine, RealSpeedStreamingNeverStarvesThePlannerInAStroke) {
   EXPECT_EQ(link.sim.strokes().size(), 1u);
 }
 
+// A board with homing switches (fivebar-sim --homing-switches): the switches sit at machine 0
+// in + direction; $H moves there (Z, then X and Y), answers no status request meanwhile, and
+// ends at the pull-off position -$27 on every axis, Idle, then answers ok.
+TEST(SimMachine, HomingWithSwitchesEndsAtThePullOffPosition) {
+  sim::SimConfig config{testProfile(), {}, false, false, false};
+  config.homingSwitches = true;
+  sim::SimMachine m(config);
+  std::string out;
+  const auto run = [&](double seconds) {
+    for (double t = 0; t < seconds; t += 0.01) {
+      m.advance(0.01);
+      out += m.takeOutput();
+    }
+  };
+  m.receive("$22=1\nG0X-10Y-20\n");  // the firmware's default rates: about 3.5 s
+  run(6.0);
+  ASSERT_EQ(m.state(), grbl::MachineState::Idle);
+  EXPECT_NEAR(m.machinePosition()[1], -20.0, 1e-9);
+  out.clear();
+  m.receive("$H\n");
+  run(0.5);
+  EXPECT_EQ(m.state(), grbl::MachineState::Home);
+  m.receive("?");
+  EXPECT_EQ(m.takeOutput(), "") << "a status request answered while homing";
+  run(30.0);
+  EXPECT_EQ(out, "ok\r\n");
+  EXPECT_EQ(m.state(), grbl::MachineState::Idle);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(m.machinePosition()[size_t(i)], -1.0, 0.02) << "axis " << i;  // -$27
+  // Without $22=1 there is no homing cycle.
+  m.receive("$22=0\n$H\n");
+  run(0.1);
+  EXPECT_NE(out.find("error:5"), std::string::npos) << out;
+}
+
 }  // namespace
 }  // namespace fivebar::test

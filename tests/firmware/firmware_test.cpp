@@ -28,23 +28,20 @@
 #include "core/output/gcode.hpp"
 #include "core/planning/feeds.hpp"
 #include "core/planning/planner.hpp"
+#include "firmware_support.hpp"
 
 namespace fivebar {
 namespace {
 
 namespace fs = std::filesystem;
+using firmware::Sample;
+using firmware::readTrace;
+using firmware::simulatorExe;
+const fs::path kStartScript = firmware::startScript();
 
 constexpr double kToleranceMm = 0.05;
 const Vec2 kPageCentreMm(0.0, 170.0);  // machine frame, true size
 constexpr double kFrameWMm = 200.0, kFrameHMm = 138.0, kCircleRMm = 30.0;
-
-fs::path simulatorExe() {
-  const char* build = std::getenv("GRBL_SIM_BUILD");
-  const char* home = std::getenv("HOME");
-  if (build) return fs::path(build) / "grbl_sim.exe";
-  return home ? fs::path(home) / ".cache/grbl-sim/grbl_sim.exe" : fs::path();
-}
-const fs::path kStartScript = fs::path(FIVEBAR_SHARED_DIR) / "tools/grbl-sim/start.sh";
 
 // The page in the work frame, centred on the origin; the circle flattened at 0.4 T like the
 // importer.
@@ -86,28 +83,6 @@ double distanceToPage(const Vec2& machine) {
   for (int i = 0; i < 4; ++i) d = std::min(d, segmentDistance(p, c[i], c[(i + 1) % 4]));
   d = std::min(d, segmentDistance(p, c[0], c[2]));
   return std::min(d, segmentDistance(p, c[3], c[1]));
-}
-
-struct Sample {
-  double t = 0.0;
-  long s1 = 0, s2 = 0;
-  int spindle = 0;
-};
-
-std::vector<Sample> readTrace(const fs::path& file) {
-  std::vector<Sample> out;
-  std::ifstream in(file);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    for (char& c : line)
-      if (c == ',') c = ' ';
-    std::istringstream s(line);
-    Sample x;
-    long z = 0;
-    if (s >> x.t >> x.s1 >> x.s2 >> z >> x.spindle) out.push_back(x);
-  }
-  return out;
 }
 
 int run(const std::string& command) { return std::system(command.c_str()); }

@@ -1,0 +1,52 @@
+// PenTrace: what the pen of a real, imperfect five-bar draws (issue 13), for the simulated
+// machine. It follows the motors' commanded angles (degrees, the G-code X/Y frame) and records
+// the pen's true path in the machine (base) frame, millimetres, while the pen is down:
+//   motor angle -> backlash (per motor: the drive's output follows the motor within a dead
+//   band of the backlash width, centred on the motor at the start) -> true angle = output +
+//   zero offset -> forward kinematics of the true geometry (and its pen offset, if any).
+// The true machine is a profile whose geometry is the true geometry and whose `calibration`
+// section gives the true zero offsets, backlash and pen offset; without a calibration section
+// it is perfect. Pure logic.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "core/calibration/model.hpp"
+#include "core/machine/profile.hpp"
+
+namespace fivebar::sim {
+
+class PenTrace {
+ public:
+  explicit PenTrace(const MachineProfile& trueMachine);
+
+  // The motors stand at `commandedDeg` without having moved there (power-up, a redefined
+  // position): the backlash play is centred there; nothing is drawn.
+  void place(const std::array<double, 2>& commandedDeg);
+  // A joint-linear move of the motors from the last point to `commandedDeg`; drawn when penDown.
+  void moveTo(const std::array<double, 2>& commandedDeg, bool penDown);
+  // The pen leaves the paper: the current polyline ends.
+  void liftPen() { open_ = false; }
+
+  // What the pen drew: polylines in the machine frame, mm (points at least 0.01 mm apart, and
+  // every move's end).
+  const std::vector<std::vector<Vec2>>& polylines() const { return drawn_; }
+  // The drive outputs (degrees) after the backlash, e.g. for tests.
+  std::array<double, 2> outputDeg() const { return out_; }
+
+ private:
+  void penAt(const std::array<double, 2>& outputDeg, bool keep);  // keep: a move's end
+
+  calibration::MachineParameters params_;
+  AssemblyMode assembly_;
+  std::array<double, 2> backlashDeg_{0.0, 0.0};
+  double maxPieceDeg_;                      // the longest piece a move is cut into (one step)
+  std::array<double, 2> motor_{0.0, 0.0};   // commanded angles, deg
+  std::array<double, 2> out_{0.0, 0.0};     // drive outputs, deg
+  bool open_ = false;                       // a polyline is being drawn
+  std::vector<std::vector<Vec2>> drawn_;
+};
+
+}  // namespace fivebar::sim
