@@ -79,10 +79,11 @@ JogPlan walkLine(const MachineProfile& p, const JointAngles& start, const Vec2& 
       return plan;
     }
     const Vec2 target = here + dir * step;
-    plan.lines.push_back(asJog ? jogLine(*next, jointFeed(q, *next, step, speedMmPerS))
-                               : job::moveTo({degFromRad(next->theta1), degFromRad(next->theta2)}, false,
+    const JointAngles commanded = commandedFromKinematic(p.calibration, *next);  // what GRBL counts
+    plan.lines.push_back(asJog ? jogLine(commanded, jointFeed(q, *next, step, speedMmPerS))
+                               : job::moveTo({degFromRad(commanded.theta1), degFromRad(commanded.theta2)}, false,
                                              jointFeed(q, *next, step, speedMmPerS)));
-    plan.targets.push_back(*next);
+    plan.targets.push_back(commanded);
     q = *next;
     here = target;
     done += step;
@@ -93,8 +94,9 @@ JogPlan walkLine(const MachineProfile& p, const JointAngles& start, const Vec2& 
 
 }  // namespace
 
-JogPlan planCartesianJog(const MachineProfile& p, const JointAngles& current, const Vec2& direction,
+JogPlan planCartesianJog(const MachineProfile& p, const JointAngles& currentCommanded, const Vec2& direction,
                          double distanceMm, double speedMmPerS, double maxDeviationMm) {
+  const JointAngles current = kinematicFromCommanded(p.calibration, currentCommanded);
   const FkResult fk = forward(p.geometry, current, p.assembly);
   if (!fk.ok() || direction.norm() == 0.0) {
     JogPlan plan;
@@ -107,9 +109,10 @@ JogPlan planCartesianJog(const MachineProfile& p, const JointAngles& current, co
                   mode, true);
 }
 
-JogPlan planMotorJog(const MachineProfile& p, const JointAngles& current, int motor, double deltaDeg,
+JogPlan planMotorJog(const MachineProfile& p, const JointAngles& currentCommanded, int motor, double deltaDeg,
                      double feedDegPerMin) {
   JogPlan plan;
+  const JointAngles current = kinematicFromCommanded(p.calibration, currentCommanded);
   JointAngles target = current;
   (motor == 1 ? target.theta1 : target.theta2) += radFromDeg(deltaDeg);
   MoveCheck c = checkJointMove(p, current, target);
@@ -125,13 +128,15 @@ JogPlan planMotorJog(const MachineProfile& p, const JointAngles& current, int mo
     }
     plan.status = JogStatus::Clipped;
   }
-  plan.lines.push_back(jogLine(target, feedDegPerMin));
-  plan.targets.push_back(target);
+  const JointAngles commanded = commandedFromKinematic(p.calibration, target);
+  plan.lines.push_back(jogLine(commanded, feedDegPerMin));
+  plan.targets.push_back(commanded);
   return plan;
 }
 
-JogPlan planGoTo(const MachineProfile& p, const JointAngles& current, const Vec2& targetMm) {
+JogPlan planGoTo(const MachineProfile& p, const JointAngles& currentCommanded, const Vec2& targetMm) {
   JogPlan plan;
+  const JointAngles current = kinematicFromCommanded(p.calibration, currentCommanded);
   const FkResult fk = forward(p.geometry, current, p.assembly);
   if (!fk.ok()) {
     plan.status = JogStatus::NoPosition;
@@ -147,7 +152,8 @@ JogPlan planGoTo(const MachineProfile& p, const JointAngles& current, const Vec2
     return plan;
   }
   for (const std::string& s : job::penUpCommands(p.tool)) plan.lines.push_back(s);
-  for (const JointAngles& w : *travel) {
+  for (const JointAngles& kinematic : *travel) {
+    const JointAngles w = commandedFromKinematic(p.calibration, kinematic);
     plan.lines.push_back(job::moveTo({degFromRad(w.theta1), degFromRad(w.theta2)}, true));
     plan.targets.push_back(w);
   }

@@ -32,11 +32,14 @@ enum class JogStatus {
 struct JogPlan {
   JogStatus status = JogStatus::Ok;
   std::vector<std::string> lines;        // $J= or G-code lines, in order
-  std::vector<JointAngles> targets;      // joint target of each motion line (rad)
+  std::vector<JointAngles> targets;      // joint target of each motion line (rad, commanded)
   double lengthMm = 0.0;                 // XY length covered
   std::string reason;                    // for Clipped / Blocked / NoPosition
   bool ok() const { return status == JogStatus::Ok || status == JogStatus::Clipped; }
 };
+
+// `current` and the plan's targets and lines are commanded angles (what GRBL's MPos and $J= carry);
+// the kinematics inside uses kinematic = commanded + the profile's zero offsets (docs/calibration.md).
 
 // Straight XY jog from the current pose along `direction` (any non-zero vector, machine frame)
 // for distanceMm at speedMmPerS, in the current pose's working mode.

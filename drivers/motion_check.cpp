@@ -16,8 +16,10 @@ constexpr const char* kReferenceHint =
 
 bool isCode(double value, double code) { return std::abs(value - code) < 1e-6; }
 
-JointAngles jointsOf(const Axes3& workDeg) {
-  return {radFromDeg(workDeg[0]), radFromDeg(workDeg[1])};
+// The kinematic angles of a board position: X, Y are commanded angles (what GRBL counts); the
+// checks work on kinematic = commanded + the profile's zero offsets (docs/calibration.md).
+JointAngles jointsOf(const MachineProfile& profile, const Axes3& workDeg) {
+  return kinematicFromCommanded(profile.calibration, {radFromDeg(workDeg[0]), radFromDeg(workDeg[1])});
 }
 
 LineCheck refuse(std::string reason) {
@@ -118,14 +120,14 @@ void applyLine(std::string_view line, const LineCheck& check, BoardPose& pose) {
 LineCheck checkLine(const MachineProfile& profile, std::string_view line, const BoardPose& pose) {
   LineCheck c = interpretLine(line, pose);
   if (c.verdict != Verdict::Motion) return c;
-  const MoveCheck here = checkPose(profile, jointsOf(pose.workDeg));
+  const MoveCheck here = checkPose(profile, jointsOf(profile, pose.workDeg));
   if (!here.ok())
     return refuse("the machine's position " + anglesText(pose.workDeg[0], pose.workDeg[1]) +
                   " is not a safe pose of " + profile.name + " (" + std::string(toString(here.status)) +
                   "), so no move from it can be checked: " + kReferenceHint + " first");
   Axes3 from = pose.workDeg;
   for (const Axes3& to : c.targetsWork) {
-    const MoveCheck m = checkJointMove(profile, jointsOf(from), jointsOf(to));
+    const MoveCheck m = checkJointMove(profile, jointsOf(profile, from), jointsOf(profile, to));
     if (!m.ok())
       return refuse("the move from " + anglesText(from[0], from[1]) + " to " +
                     anglesText(to[0], to[1]) + " " + describe(m) +
@@ -152,7 +154,7 @@ FileCheck checkFile(const MachineProfile& profile, std::string_view text,
   BoardPose pose;
   if (startWork) pose.workDeg = *startWork;
   std::vector<JointAngles> poses;
-  if (startWork) poses.push_back(jointsOf(*startWork));
+  if (startWork) poses.push_back(jointsOf(profile, *startWork));
   std::vector<int> moveLine;  // file line of move i (poses[i] -> poses[i + 1])
   std::vector<std::string> moveText;
   const auto fail = [&](int fileLine, const std::string& lineText, const std::string& why) {
@@ -180,10 +182,10 @@ FileCheck checkFile(const MachineProfile& profile, std::string_view text,
       if (!out.firstTargetWork) out.firstTargetWork = c.targetsWork.front();
       if (poses.empty()) {
         startWork = c.targetsWork.front();
-        poses.push_back(jointsOf(*startWork));
+        poses.push_back(jointsOf(profile, *startWork));
       }
       for (const Axes3& t : c.targetsWork) {
-        poses.push_back(jointsOf(t));
+        poses.push_back(jointsOf(profile, t));
         moveLine.push_back(fileLine);
         moveText.push_back(gcode::compact(raw));
       }
@@ -198,8 +200,8 @@ FileCheck checkFile(const MachineProfile& profile, std::string_view text,
   const PathCheck path = checkJointPath(profile, poses);
   if (!path.ok()) {
     const PathProblem& p = path.problems.front();
-    const JointAngles& a = poses[p.move];
-    const JointAngles& b = poses[p.move + 1];
+    const JointAngles a = commandedFromKinematic(profile.calibration, poses[p.move]);
+    const JointAngles b = commandedFromKinematic(profile.calibration, poses[p.move + 1]);
     return fail(moveLine[p.move], moveText[p.move],
                 "the move from " + anglesText(degFromRad(a.theta1), degFromRad(a.theta2)) + " to " +
                     anglesText(degFromRad(b.theta1), degFromRad(b.theta2)) + " " + describe(p.check));

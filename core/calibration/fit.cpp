@@ -205,13 +205,13 @@ CalibrationFit run(const MachineProfile& nominalProfile, const Measurements& m, 
     bestSolution = detail::solve(best, bestSolution.x, allFree(best), o.maxFunctionEvaluations);
     out.functionEvaluations += bestSolution.evaluations;
   }
-  if (!bestSolution.converged) {
+  // Conditioning first: an ill-conditioned problem is the usual reason for not converging.
+  out.status = analyse(best, bestSolution, o, out);
+  if (out.ok() && !bestSolution.converged) {
     out.status = FitStatus::DidNotConverge;
     out.reason = "the fit did not converge within " + std::to_string(o.maxFunctionEvaluations) +
                  " evaluations (are the commanded angles and measurements of the same marks?)";
-    return out;
   }
-  out.status = analyse(best, bestSolution, o, out);
   if (!out.ok()) return out;
   // Held-out measurements, under the model and paper pose fitted without them; the same robust
   // rule applies to them.

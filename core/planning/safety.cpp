@@ -75,7 +75,8 @@ Sample evaluate(const MachineProfile& pr, const JointAngles& q) {
   const auto p = closeLoop(g, R1, R2, pr.assembly);
   if (!p) {
     s.p = 0.5 * (R1 + R2);
-    s.status = withinLimits(pr.limits, q) ? MoveStatus::CannotClose : MoveStatus::BeyondJointLimit;
+    s.status = withinLimits(pr.limits, commandedFromKinematic(pr.calibration, q)) ? MoveStatus::CannotClose
+                                                                                 : MoveStatus::BeyondJointLimit;
     return s;
   }
   s.closes = true;
@@ -84,7 +85,7 @@ Sample evaluate(const MachineProfile& pr, const JointAngles& q) {
   s.sinTypeII = std::min(1.0, std::abs(cross(d1, d2)) / (g.b1 * g.b2));
   s.sinTypeI = std::min(std::abs(cross(R1 - g.motor1(), d1)) / (g.a1 * g.b1),
                         std::abs(cross(R2 - g.motor2(), d2)) / (g.a2 * g.b2));
-  if (!withinLimits(pr.limits, q))
+  if (!withinLimits(pr.limits, commandedFromKinematic(pr.calibration, q)))
     s.status = MoveStatus::BeyondJointLimit;
   else if (s.sinTypeII < kSinAssemblyFlipMargin)
     s.status = MoveStatus::AssemblyChange;
@@ -108,9 +109,10 @@ Sample evaluate(const MachineProfile& pr, const JointAngles& q) {
 // first sample beyond it is reported as precisely as with dense sampling.
 double nextStepRad(const MachineProfile& pr, const JointAngles& q, const Sample& s) {
   const Geometry& g = pr.geometry;
-  const JointLimits& l = pr.limits;
-  const double toLimit = std::min({q.theta1 - l.theta1Min, l.theta1Max - q.theta1,
-                                   q.theta2 - l.theta2Min, l.theta2Max - q.theta2});
+  const JointLimits& l = pr.limits;  // commanded angles
+  const JointAngles c = commandedFromKinematic(pr.calibration, q);
+  const double toLimit = std::min({c.theta1 - l.theta1Min, l.theta1Max - c.theta1,
+                                   c.theta2 - l.theta2Min, l.theta2Max - c.theta2});
   const double sinThrII = std::max(sinOfThreshold(pr.typeIIMarginRad), kSinAssemblyFlipMargin);
   const double gapII = s.sinTypeII - sinThrII;
   const double sinWorst = std::max(sinThrII + 0.5 * gapII, 1e-9);
