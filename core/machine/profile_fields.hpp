@@ -38,7 +38,8 @@ struct ProfileField {
 };
 
 // All numeric fields, grouped by section in file order: geometry, limits, motors, tool, motion,
-// safety, connection, home.
+// safety, connection, home, calibration. Reading a calibration field of an uncalibrated profile
+// gives its default; setting one creates the section (and, for penOffset*, the pen offset).
 const std::vector<ProfileField>& profileFields();
 // The field at `path`, or nullptr.
 const ProfileField* findProfileField(const std::string& path);
