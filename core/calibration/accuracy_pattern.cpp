@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/calibration/pattern_checks.hpp"
+#include "core/planning/segmentation.hpp"
 #include "core/workspace/workspace.hpp"
 
 namespace fivebar {
@@ -17,6 +18,10 @@ constexpr double kCandidateStepMm = 2.5;
 
 bool fits(const MachineProfile& profile, const AccuracyPattern& a, double clearanceMm) {
   for (const AccuracyLine& l : a.lines) {
+    // The planner must be able to follow the line with joint-linear moves.
+    const std::vector<Vec2> line{l.startMm, l.endMm};
+    if (!segmentStroke(profile.geometry, profile.defaultMode, profile.assembly, line, profile.homeAngles, {}).ok())
+      return false;
     const double length = (l.endMm - l.startMm).norm();
     const int n = std::max(1, static_cast<int>(std::ceil(length / kCheckStepMm)));
     for (int k = 0; k <= n; ++k) {

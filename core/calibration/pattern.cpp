@@ -258,12 +258,19 @@ class Builder {
       at = poses[static_cast<size_t>(best)];
     }
     auto poseAt = [&](size_t k) { return k == 0 || k > n ? p_.homeAngles : poses[static_cast<size_t>(order[k - 1])]; };
-    for (bool improved = true; improved;) {  // 2-opt on the closed tour through home
+    // 2-opt on the open tour from home; the cost of a jump grows with its fourth power, so that
+    // the longest jumps shrink first.
+    auto cost = [&](size_t a, size_t b) {
+      if (b > n) return 0.0;  // the way back home is a checked travel, not a stroke
+      const double j = jump(poseAt(a), poseAt(b));
+      return j * j * j * j;
+    };
+    for (bool improved = true; improved;) {
       improved = false;
       for (size_t i = 1; i < n; ++i)
         for (size_t j = i + 1; j <= n; ++j) {
-          const double before = jump(poseAt(i - 1), poseAt(i)) + jump(poseAt(j), poseAt(j + 1));
-          const double after = jump(poseAt(i - 1), poseAt(j)) + jump(poseAt(i), poseAt(j + 1));
+          const double before = cost(i - 1, i) + cost(j, j + 1);
+          const double after = cost(i - 1, j) + cost(i, j + 1);
           if (after < before - 1e-9) {
             std::reverse(order.begin() + static_cast<long>(i - 1), order.begin() + static_cast<long>(j));
             improved = true;

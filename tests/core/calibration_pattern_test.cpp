@@ -166,6 +166,12 @@ TEST(CalibrationPattern, OtherPresetsGetAPatternOrAClearReason) {
       continue;
     }
     const PlanResult plan = planCalibrationPattern(*r.pattern, p);
+    // dai2022 (links all equal, a workspace around the motors) is not planned yet: see
+    // docs/calibration-pattern.md "Limits"; its failure must still name the problem.
+    if (name == "dai2022" && !plan.ok()) {
+      EXPECT_FALSE(plan.message.empty());
+      continue;
+    }
     EXPECT_TRUE(plan.ok()) << name << ": " << plan.message;
   }
 }
