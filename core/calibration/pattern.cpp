@@ -63,6 +63,7 @@ class Builder {
     pat.mode = mode_;
     pat.ringRadiusMm = o_.ringRadiusMm;
     if (o_.accuracyLines) pat.accuracy = placeAccuracyPattern(p_);
+    accuracy_ = pat.accuracy;
     candidates(pat.accuracy);
     if (cands_.empty()) {
       out.error = "no point of the working area (mode " + std::string(toString(mode_)) +
@@ -180,7 +181,7 @@ class Builder {
         (motor == 1 ? q.theta1 : q.theta2) += i * step;
         const Approach reversed = i == 1 ? Approach::Minus : Approach::Plus;
         row[i] = markAt(q, motor == 1 ? reversed : Approach::Plus, motor == 2 ? reversed : Approach::Plus);
-        ok = row[i] && farFromChosen(row[i]->nominalMm);
+        ok = row[i] && farFromChosen(row[i]->nominalMm) && !(accuracy_ && nearLines(*accuracy_, row[i]->nominalMm));
         if (ok && i > 0) ok = (row[i]->nominalMm - row[i - 1]->nominalMm).norm() >= o_.minSpacingMm * 0.99;
       }
       if (!ok) continue;
@@ -337,6 +338,7 @@ class Builder {
   WorkingMode mode_;
   std::vector<Candidate> cands_;
   std::vector<Vec2> chosen_;
+  std::optional<AccuracyPattern> accuracy_;
   Vec2 lo_ = Vec2::Zero(), hi_ = Vec2::Zero();
 };
 

@@ -50,6 +50,13 @@ TEST(CalibrationPattern, MarksAreSafeSpreadAndNumbered) {
   EXPECT_EQ(backlash, 12);  // two rows of three per motor
   ASSERT_TRUE(pat.accuracy);
   EXPECT_EQ(pat.accuracy->lines.size(), 10u);
+  // No mark (ring and number) touches an accuracy line.
+  for (const PatternMark& m : pat.marks)
+    for (const AccuracyLine& l : pat.accuracy->lines) {
+      const Vec2 d = l.endMm - l.startMm;
+      const double t = std::clamp((m.nominalMm - l.startMm).dot(d) / d.squaredNorm(), 0.0, 1.0);
+      EXPECT_GT((l.startMm + t * d - m.nominalMm).norm(), PatternOptions{}.clearanceMm) << "mark " << m.id;
+    }
   // The edge is included: several marks lie within a few mm of clearance of the safe region's
   // boundary (a point a little further out is not safe).
   const WorkspaceSettings s = workspaceSettings(p);
@@ -165,6 +172,13 @@ TEST(CalibrationPattern, OtherPresetsGetAPatternOrAClearReason) {
       EXPECT_NE(r.error.find("marks"), std::string::npos) << name << ": " << r.error;
       continue;
     }
+    if (r.pattern->accuracy)  // marks keep off the accuracy lines on every machine
+      for (const PatternMark& m : r.pattern->marks)
+        for (const AccuracyLine& l : r.pattern->accuracy->lines) {
+          const Vec2 d = l.endMm - l.startMm;
+          const double t = std::clamp((m.nominalMm - l.startMm).dot(d) / d.squaredNorm(), 0.0, 1.0);
+          EXPECT_GT((l.startMm + t * d - m.nominalMm).norm(), PatternOptions{}.clearanceMm) << name << " mark " << m.id;
+        }
     const PlanResult plan = planCalibrationPattern(*r.pattern, p);
     // dai2022 (links all equal, a workspace around the motors) is not planned yet: see
     // docs/calibration-pattern.md "Limits"; its failure must still name the problem.
