@@ -1,26 +1,42 @@
-// fivebar calibrate: the calibration commands (docs/calibration-pattern.md).
-//   calibrate pattern   the calibration pattern: G-code, MARKS.csv, optional SVG
-//   calibrate scan      marks found in a scanned sheet -> MEASURED.csv
+// fivebar calibrate: the calibration commands (issue 13). A tiny dispatcher:
+//   calibrate pattern ...  cmd_calibrate_pattern.cpp (docs/calibration-pattern.md)
+//   calibrate scan ...     cmd_calibrate_scan.cpp (Qt builds only)
+//   calibrate fit ...      cmd_calibrate_fit.cpp (docs/calibration.md)
 #include <iostream>
 
 #include "commands.hpp"
 
 namespace fivebar::cli {
 
+namespace {
+constexpr const char* kHelp =
+    "usage: fivebar calibrate pattern --machine PRESET|FILE -o PATTERN.gcode --marks MARKS.csv\n"
+    "                                 [--svg PATTERN.svg]\n"
+#ifdef FIVEBAR_HAVE_QT
+    "       fivebar calibrate scan --marks MARKS.csv --image SCAN.png --dpi 600 -o MEASURED.csv\n"
+#endif
+    "       fivebar calibrate fit --machine PRESET|FILE --measured MEASURED.csv -o CALIBRATED.json\n"
+    "                             [--report REPORT.json] [--marks MARKS.csv] [--fit-pen-offset]\n"
+    "Run 'fivebar calibrate SUBCOMMAND --help' for details (docs/calibration-pattern.md,\n"
+    "docs/calibration.md).\n";
+}
+
 int runCalibrate(const Args& args) {
-  constexpr const char* kHelp =
-      "usage: fivebar calibrate pattern|scan [OPTIONS]\n"
-      "  pattern   draw the calibration pattern: G-code, MARKS.csv, optional SVG\n"
-      "  scan      find the pattern's marks in a scanned sheet: MEASURED.csv\n"
-      "Run 'fivebar calibrate SUBCOMMAND --help' for its options.\n";
   if (args.empty() || args[0] == "--help" || args[0] == "-h") {
     (args.empty() ? std::cerr : std::cout) << kHelp;
     return args.empty() ? 2 : 0;
   }
   const Args rest(args.begin() + 1, args.end());
   if (args[0] == "pattern") return runCalibratePattern(rest);
+#ifdef FIVEBAR_HAVE_QT
   if (args[0] == "scan") return runCalibrateScan(rest);
-  std::cerr << "fivebar calibrate: unknown subcommand '" << args[0] << "'\n" << kHelp;
+#endif
+  if (args[0] == "fit") return runCalibrateFit(rest);
+  std::cerr << "fivebar calibrate: unknown subcommand '" << args[0] << "' (expected pattern, "
+#ifdef FIVEBAR_HAVE_QT
+            << "scan, "
+#endif
+            << "fit)\n" << kHelp;
   return 2;
 }
 

@@ -21,9 +21,10 @@ int runSend(const Args& args);           // cmd_send.cpp (Qt builds only)
 int runSetup(const Args& args);          // cmd_machine.cpp (Qt builds only)
 int runReference(const Args& args);      // cmd_reference.cpp (Qt builds only)
 int runHome(const Args& args);           // cmd_reference.cpp (Qt builds only)
-int runCalibrate(const Args& args);      // cmd_calibrate.cpp (Qt builds only: the scan reads images)
+int runCalibrate(const Args& args);      // cmd_calibrate.cpp (dispatches to the subcommands)
+int runCalibrateFit(const Args& args);   // cmd_calibrate_fit.cpp
 int runCalibratePattern(const Args& args);  // cmd_calibrate_pattern.cpp
-int runCalibrateScan(const Args& args);     // cmd_calibrate_scan.cpp
+int runCalibrateScan(const Args& args);     // cmd_calibrate_scan.cpp (Qt builds only: reads images)
 // Further commands are declared here as they land (plan, grbl-settings, stream, send).
 
 }  // namespace fivebar::cli

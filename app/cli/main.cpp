@@ -22,15 +22,13 @@ constexpr Command kCommands[] = {
     {"profile", "machine profiles: check FILE", fivebar::cli::runProfile},
     {"plan", "SVG drawing -> GRBL G-code job and report", fivebar::cli::runPlan},
     {"grbl-settings", "the GRBL $ settings a machine profile expects", fivebar::cli::runGrblSettings},
+    {"calibrate", "calibration: pattern (G-code, MARKS.csv), scan (MEASURED.csv), fit -> calibrated profile", fivebar::cli::runCalibrate},
 #ifdef FIVEBAR_HAVE_DRIVERS
     {"stream", "stream a G-code job to a GRBL board (character counting, resume)", fivebar::cli::runStream},
     {"send", "send one-off lines or settings to a GRBL board", fivebar::cli::runSend},
     {"reference", "declare the machine's current pose its home pose (G10 L20)", fivebar::cli::runReference},
     {"home", "home the machine ($H, or a checked move to the home pose)", fivebar::cli::runHome},
     {"setup", "compare a GRBL board's settings with a profile; --write applies them", fivebar::cli::runSetup},
-#endif
-#ifdef FIVEBAR_HAVE_QT
-    {"calibrate", "calibration: pattern (G-code, MARKS.csv), scan (MEASURED.csv)", fivebar::cli::runCalibrate},
 #endif
 };
 

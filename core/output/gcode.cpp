@@ -183,8 +183,13 @@ class Writer {
     comment("profile: " + job_.profileName);
     comment("working mode " + std::string(toString(job_.mode)) + ", assembly " +
             std::string(toString(job_.assembly)));
-    comment("start pose X" + fixedDecimal(degFromRad(job_.start.theta1), o_.angleDecimals) + " Y" +
-            fixedDecimal(degFromRad(job_.start.theta2), o_.angleDecimals));
+    const JointAngles start = commandedFromKinematic(p_.calibration, job_.start);
+    comment("start pose X" + fixedDecimal(degFromRad(start.theta1), o_.angleDecimals) + " Y" +
+            fixedDecimal(degFromRad(start.theta2), o_.angleDecimals));
+    if (p_.calibration)
+      comment("calibrated: X, Y are commanded angles = kinematic - zero offset (" +
+              fixedDecimal(degFromRad(p_.calibration->zeroOffsetRad1), 4) + ", " +
+              fixedDecimal(degFromRad(p_.calibration->zeroOffsetRad2), 4) + " deg)");
     comment("estimated time " + fixedDecimal(job_.summary.estimatedTimeS, 1) + " s, " +
             std::to_string(job_.summary.segments) + " drawing segments");
     comment("expects these GRBL settings:");
@@ -271,8 +276,10 @@ class Writer {
       commentedStroke_ = m.strokeIndex;
     }
     Line line;
-    (line << "G1 X").number(degFromRad(m.target.theta1), o_.angleDecimals);
-    (line << " Y").number(degFromRad(m.target.theta2), o_.angleDecimals);
+    // The plan holds kinematic angles; GRBL counts commanded ones (docs/calibration.md).
+    const JointAngles target = commandedFromKinematic(p_.calibration, m.target);
+    (line << "G1 X").number(degFromRad(target.theta1), o_.angleDecimals);
+    (line << " Y").number(degFromRad(target.theta2), o_.angleDecimals);
     scratch_->format(feedDegPerMin(m), o_.feedDecimals);
     if (!scratch_->sameAs(*lastFeed_)) {
       line << " F" << *scratch_;

@@ -104,7 +104,7 @@ class MotionPlanner {
   bool cancelled() const { return opt_.cancel != nullptr && opt_.cancel->load(); }
 
   bool startPose() {
-    job_.start = p_.homeAngles;
+    job_.start = kinematicFromCommanded(p_.calibration, p_.homeAngles);  // home is commanded
     const FkResult fk = forward(g_, job_.start, p_.assembly);
     if (!fk.ok()) {
       problem("start pose", Vec2::Zero(), "the profile's home pose does not close the linkage",

@@ -116,7 +116,7 @@ PlanResult planInMode(const Drawing& drawing, const std::optional<RectMm>& bound
   clock.lap("placement");
   if (options.optimise) {
     OptimiseOptions oo;
-    oo.start = profile.homeAngles;
+    oo.start = kinematicFromCommanded(profile.calibration, profile.homeAngles);  // home is commanded
     oo.maxTwoOptSteps = kTwoOptSteps;  // under 0.1 s on 40,000 strokes
     oo.measureTravel = false;
     strokes = optimise(std::move(strokes), profile, m.mode, oo).strokes;
