@@ -1,6 +1,7 @@
-// fivebar calibrate: the calibration commands (issue 13, docs/calibration.md). A tiny dispatcher:
-//   calibrate fit ...      cmd_calibrate_fit.cpp
-// (calibrate pattern and calibrate scan are added beside it.)
+// fivebar calibrate: the calibration commands (issue 13). A tiny dispatcher:
+//   calibrate pattern ...  cmd_calibrate_pattern.cpp (docs/calibration-pattern.md)
+//   calibrate scan ...     cmd_calibrate_scan.cpp (Qt builds only)
+//   calibrate fit ...      cmd_calibrate_fit.cpp (docs/calibration.md)
 #include <iostream>
 
 #include "commands.hpp"
@@ -9,9 +10,15 @@ namespace fivebar::cli {
 
 namespace {
 constexpr const char* kHelp =
-    "usage: fivebar calibrate fit --machine PRESET|FILE --measured MEASURED.csv -o CALIBRATED.json\n"
+    "usage: fivebar calibrate pattern --machine PRESET|FILE -o PATTERN.gcode --marks MARKS.csv\n"
+    "                                 [--svg PATTERN.svg]\n"
+#ifdef FIVEBAR_HAVE_QT
+    "       fivebar calibrate scan --marks MARKS.csv --image SCAN.png --dpi 600 -o MEASURED.csv\n"
+#endif
+    "       fivebar calibrate fit --machine PRESET|FILE --measured MEASURED.csv -o CALIBRATED.json\n"
     "                             [--report REPORT.json] [--marks MARKS.csv] [--fit-pen-offset]\n"
-    "Run 'fivebar calibrate SUBCOMMAND --help' for details (docs/calibration.md).\n";
+    "Run 'fivebar calibrate SUBCOMMAND --help' for details (docs/calibration-pattern.md,\n"
+    "docs/calibration.md).\n";
 }
 
 int runCalibrate(const Args& args) {
@@ -20,8 +27,16 @@ int runCalibrate(const Args& args) {
     return args.empty() ? 2 : 0;
   }
   const Args rest(args.begin() + 1, args.end());
+  if (args[0] == "pattern") return runCalibratePattern(rest);
+#ifdef FIVEBAR_HAVE_QT
+  if (args[0] == "scan") return runCalibrateScan(rest);
+#endif
   if (args[0] == "fit") return runCalibrateFit(rest);
-  std::cerr << "fivebar calibrate: unknown subcommand '" << args[0] << "' (expected fit)\n" << kHelp;
+  std::cerr << "fivebar calibrate: unknown subcommand '" << args[0] << "' (expected pattern, "
+#ifdef FIVEBAR_HAVE_QT
+            << "scan, "
+#endif
+            << "fit)\n" << kHelp;
   return 2;
 }
 

@@ -23,6 +23,8 @@ int runReference(const Args& args);      // cmd_reference.cpp (Qt builds only)
 int runHome(const Args& args);           // cmd_reference.cpp (Qt builds only)
 int runCalibrate(const Args& args);      // cmd_calibrate.cpp (dispatches to the subcommands)
 int runCalibrateFit(const Args& args);   // cmd_calibrate_fit.cpp
+int runCalibratePattern(const Args& args);  // cmd_calibrate_pattern.cpp
+int runCalibrateScan(const Args& args);     // cmd_calibrate_scan.cpp (Qt builds only: reads images)
 // Further commands are declared here as they land (plan, grbl-settings, stream, send).
 
 }  // namespace fivebar::cli

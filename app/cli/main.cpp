@@ -22,7 +22,7 @@ constexpr Command kCommands[] = {
     {"profile", "machine profiles: check FILE", fivebar::cli::runProfile},
     {"plan", "SVG drawing -> GRBL G-code job and report", fivebar::cli::runPlan},
     {"grbl-settings", "the GRBL $ settings a machine profile expects", fivebar::cli::runGrblSettings},
-    {"calibrate", "calibration: fit measured marks -> calibrated profile", fivebar::cli::runCalibrate},
+    {"calibrate", "calibration: pattern (G-code, MARKS.csv), scan (MEASURED.csv), fit -> calibrated profile", fivebar::cli::runCalibrate},
 #ifdef FIVEBAR_HAVE_DRIVERS
     {"stream", "stream a G-code job to a GRBL board (character counting, resume)", fivebar::cli::runStream},
     {"send", "send one-off lines or settings to a GRBL board", fivebar::cli::runSend},
