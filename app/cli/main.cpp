@@ -34,7 +34,8 @@ constexpr Command kCommands[] = {
 void usage(std::ostream& out) {
   out << "usage: fivebar COMMAND [OPTIONS]\n\ncommands:\n";
   for (const Command& c : kCommands) out << "  " << c.name << "\t" << c.summary << "\n";
-  out << "\nRun 'fivebar COMMAND --help' for a command's options.\n";
+  out << "\nRun 'fivebar COMMAND --help' for a command's options; 'fivebar --version' prints the\n"
+         "version.\n";
 }
 
 }  // namespace
@@ -43,6 +44,10 @@ int main(int argc, char** argv) {
   if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
     usage(argc < 2 ? std::cerr : std::cout);
     return argc < 2 ? 2 : 0;
+  }
+  if (std::strcmp(argv[1], "--version") == 0) {
+    std::cout << "fivebar " FIVEBAR_VERSION "\n";
+    return 0;
   }
   const fivebar::cli::Args args(argv + 2, argv + argc);
   for (const Command& c : kCommands) {

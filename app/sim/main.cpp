@@ -4,6 +4,7 @@
 //   fivebar-sim --pty PATH [--machine PRESET|FILE] [--set-up] [--referenced] [--speedup N]
 //               [--instant] [--fault drop-after=N|reset-after=N|error-on=N|alarm-after=N]
 //               [--record FILE] [--baud N]
+//   fivebar-sim --help | --version
 //
 // PATH becomes a symlink to the pty's slave device. --record writes the pen-down joint path
 // and counters as JSON on exit (SIGTERM / SIGINT) and when an injected drop closes the link.
@@ -41,6 +42,7 @@ struct Args {
   bool setUp = false;
   bool referenced = false;
   bool help = false;
+  bool version = false;
   fivebar::sim::Fault fault;
   std::string recordPath;
   double baud = 0.0;  // 0: no wire emulation
@@ -58,7 +60,8 @@ constexpr const char* kUsage =
     "  --speedup N    machine seconds per wall second; --instant: moves complete at once\n"
     "  --baud N       time the bytes as on a serial wire of N baud\n"
     "  --record FILE  the pen-down joint path and counters as JSON on exit\n"
-    "  --fault ...    one injected fault after N received lines\n";
+    "  --fault ...    one injected fault after N received lines\n"
+    "  --help         this text; --version: the version\n";
 
 int usage(const std::string& problem) {
   std::cerr << "fivebar-sim: " << problem << "\n" << kUsage;
@@ -73,6 +76,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
     if (opt == "--set-up") { a.setUp = true; continue; }
     if (opt == "--referenced") { a.referenced = true; continue; }
     if (opt == "--help" || opt == "-h") { a.help = true; return ""; }
+    if (opt == "--version") { a.version = true; return ""; }
     if (i + 1 >= argc) return "option " + opt + " needs a value";
     const std::string value = argv[++i];
     if (opt == "--pty") a.ptyPath = value;
@@ -103,6 +107,10 @@ int main(int argc, char** argv) {
   if (const std::string problem = parseArgs(argc, argv, args); !problem.empty()) return usage(problem);
   if (args.help) {
     std::cout << kUsage;
+    return 0;
+  }
+  if (args.version) {
+    std::cout << "fivebar-sim " FIVEBAR_VERSION "\n";
     return 0;
   }
   const fivebar::ProfileLoad load = fivebar::resolveMachine(args.machine);

@@ -16,6 +16,7 @@
 #include <QUndoStack>
 
 #include "app/studio/file_actions.hpp"
+#include "app/studio/language_menu.hpp"
 #include "core/kinematics/kinematics.hpp"
 #include "widgets/canvas_view.hpp"
 #include "widgets/design/design_dialog.hpp"
@@ -227,6 +228,7 @@ void MainWindow::createMenus() {
   zoomOut->setShortcut(QKeySequence::ZoomOut);
   QAction* zoomFit = viewMenu_->addAction(tr("Zoom to &fit"), this, &MainWindow::fitView);
   zoomFit->setShortcut(QKeySequence(tr("Ctrl+0")));
+  new LanguageMenu(viewMenu_, this);
   viewMenu_->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>()) {
     viewMenu_->addAction(dock->toggleViewAction());
