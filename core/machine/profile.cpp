@@ -105,6 +105,7 @@ std::vector<ValidationIssue> validate(const MachineProfile& p) {
   validateTool(out, p);
   for (const char* section : {"motion", "safety", "connection"}) validateSection(out, p, section);
   validateHome(out, p);
+  detail::validateCalibration(out, p);
   return out;
 }
 
@@ -116,6 +117,7 @@ std::string toJson(const MachineProfile& p) {
   for (const ProfileField& f : profileFields()) {
     const std::string section = sectionOf(f);
     if (section == "limits" && limitsAreUnlimited(p.limits)) continue;
+    if (section == "calibration") continue;  // detail::writeCalibration
     const double v = f.get(p);
     if (f.integer) j[section][keyOf(f)] = static_cast<int>(v);
     else j[section][keyOf(f)] = f.roundOnWrite ? roundForFile(v) : v;
@@ -124,6 +126,7 @@ std::string toJson(const MachineProfile& p) {
   j["assemblyMode"] = std::string(toString(p.assembly));
   j["tool"]["kind"] = toolName(p.tool.kind);
   j["connection"]["hasHomingSwitches"] = p.hasHomingSwitches;
+  detail::writeCalibration(j, p);
   return j.dump(2) + "\n";
 }
 
@@ -200,6 +203,7 @@ void readSections(ObjectReader& root, MachineProfile& p, std::vector<ValidationI
     r.finish();
   }
   readSection(root, "home", p, issues);
+  detail::readCalibration(root, p, issues);
   // A profile without $11 gets the one that keeps corners within the default tolerance.
   if ((!motors || !motors->contains("junctionDeviationDeg")) && validate(p.geometry).empty())
     p.motors.junctionDeviationDeg = junctionDeviationDegFor(p, kCorneringToleranceMm);

@@ -10,6 +10,7 @@
 #include "core/kinematics/geometry.hpp"
 #include "core/kinematics/kinematics.hpp"
 #include "core/kinematics/modes.hpp"
+#include "core/machine/calibration.hpp"
 
 namespace fivebar {
 
@@ -56,6 +57,9 @@ struct MachineProfile {
   int baudRate = 115200;
   bool hasHomingSwitches = false;
   JointAngles homeAngles;  // reference pose after $H or "set reference pose"
+  // Set once the machine has been calibrated (issue 13). homeAngles and limits are commanded
+  // angles (what G-code and GRBL see); the kinematics uses commanded + zero offset.
+  std::optional<MachineCalibration> calibration;
 };
 
 struct ProfileLoad {

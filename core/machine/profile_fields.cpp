@@ -35,6 +35,80 @@ ProfileField rounded(ProfileField f) {
   f.roundOnWrite = true;
   return f;
 }
+ProfileField integral(ProfileField f) {
+  f.integer = true;
+  return f;
+}
+
+// The calibration section's accessors: reading an uncalibrated profile gives the defaults,
+// writing a field creates the section (and the pen offset) when it is absent.
+const MachineCalibration& calibrationOf(const MachineProfile& p) {
+  static const MachineCalibration none;
+  return p.calibration ? *p.calibration : none;
+}
+MachineCalibration& calibrationIn(MachineProfile& p) {
+  if (!p.calibration) p.calibration.emplace();
+  return *p.calibration;
+}
+PenOffset penOffsetOf(const MachineProfile& p) { return calibrationOf(p).penOffset.value_or(PenOffset{}); }
+PenOffset& penOffsetIn(MachineProfile& p) {
+  MachineCalibration& c = calibrationIn(p);
+  if (!c.penOffset) c.penOffset.emplace();
+  return *c.penOffset;
+}
+
+std::vector<ProfileField> calibrationFields() {
+  using P = MachineProfile;
+  const double A = kAngleInputDeg, L = kLengthInputMm;
+  return {
+      required(integral(between(
+          field("calibration.version", "Calibration format version", "", R::Between, 0, 1000, 0,
+                [](const P& p) { return double(calibrationOf(p).version); },
+                [](P& p, double v) { calibrationIn(p).version = int(v); }),
+          1, MachineCalibration::kSchemaVersion))),
+      required(rounded(between(
+          field("calibration.zeroOffsetDeg1", "Motor 1 zero offset", "deg", R::Between, -A, A, 4,
+                [](const P& p) { return degFromRad(calibrationOf(p).zeroOffsetRad1); },
+                [](P& p, double v) { calibrationIn(p).zeroOffsetRad1 = radFromDeg(v); }),
+          -180.0, 180.0))),
+      required(rounded(between(
+          field("calibration.zeroOffsetDeg2", "Motor 2 zero offset", "deg", R::Between, -A, A, 4,
+                [](const P& p) { return degFromRad(calibrationOf(p).zeroOffsetRad2); },
+                [](P& p, double v) { calibrationIn(p).zeroOffsetRad2 = radFromDeg(v); }),
+          -180.0, 180.0))),
+      rounded(between(field("calibration.backlashDeg1", "Motor 1 backlash", "deg", R::Between, -A, A, 4,
+                            [](const P& p) { return degFromRad(calibrationOf(p).backlashRad1); },
+                            [](P& p, double v) { calibrationIn(p).backlashRad1 = radFromDeg(v); }),
+                      0.0, 10.0)),
+      rounded(between(field("calibration.backlashDeg2", "Motor 2 backlash", "deg", R::Between, -A, A, 4,
+                            [](const P& p) { return degFromRad(calibrationOf(p).backlashRad2); },
+                            [](P& p, double v) { calibrationIn(p).backlashRad2 = radFromDeg(v); }),
+                      0.0, 10.0)),
+      rounded(between(field("calibration.penOffsetAlongMm", "Pen offset along b1", "mm", R::Between, -L, L, 3,
+                            [](const P& p) { return penOffsetOf(p).alongMm; },
+                            [](P& p, double v) { penOffsetIn(p).alongMm = v; }),
+                      -1000.0, 1000.0)),
+      rounded(between(field("calibration.penOffsetNormalMm", "Pen offset across b1", "mm", R::Between, -L, L, 3,
+                            [](const P& p) { return penOffsetOf(p).normalMm; },
+                            [](P& p, double v) { penOffsetIn(p).normalMm = v; }),
+                      -1000.0, 1000.0)),
+      integral(field("calibration.marksUsed", "Marks used by the fit", "", R::NonNegative, -1e6, 1e6, 0,
+                     [](const P& p) { return double(calibrationOf(p).fit.marksUsed); },
+                     [](P& p, double v) { calibrationIn(p).fit.marksUsed = int(v); })),
+      integral(field("calibration.heldOutMarks", "Held-out marks", "", R::NonNegative, -1e6, 1e6, 0,
+                     [](const P& p) { return double(calibrationOf(p).fit.heldOutMarks); },
+                     [](P& p, double v) { calibrationIn(p).fit.heldOutMarks = int(v); })),
+      rounded(field("calibration.rmsResidualMm", "RMS residual of the fit", "mm", R::NonNegative, -L, L, 4,
+                    [](const P& p) { return calibrationOf(p).fit.rmsResidualMm; },
+                    [](P& p, double v) { calibrationIn(p).fit.rmsResidualMm = v; })),
+      rounded(field("calibration.maxResidualMm", "Largest residual of the fit", "mm", R::NonNegative, -L, L, 4,
+                    [](const P& p) { return calibrationOf(p).fit.maxResidualMm; },
+                    [](P& p, double v) { calibrationIn(p).fit.maxResidualMm = v; })),
+      rounded(field("calibration.heldOutErrorMm", "RMS error on held-out marks", "mm", R::NonNegative, -L, L, 4,
+                    [](const P& p) { return calibrationOf(p).fit.heldOutErrorMm; },
+                    [](P& p, double v) { calibrationIn(p).fit.heldOutErrorMm = v; })),
+  };
+}
 
 std::vector<ProfileField> makeTable() {
   using P = MachineProfile;
@@ -145,7 +219,11 @@ std::string fmt(double v) {
 }  // namespace
 
 const std::vector<ProfileField>& profileFields() {
-  static const std::vector<ProfileField> table = makeTable();
+  static const std::vector<ProfileField> table = [] {
+    std::vector<ProfileField> t = makeTable();
+    for (ProfileField& f : calibrationFields()) t.push_back(f);
+    return t;
+  }();
   return table;
 }
 

@@ -77,6 +77,23 @@ void ObjectReader::string(const char* key, std::string& out, bool required) {
   out = v->get<std::string>();
 }
 
+void ObjectReader::strings(const char* key, std::vector<std::string>& out, bool required) {
+  const nlohmann::json* v = member(key, required);
+  if (!v) return;
+  if (!v->is_array()) return typeError(key, "an array of strings", *v);
+  std::vector<std::string> values;
+  for (std::size_t i = 0; i < v->size(); ++i) {
+    const nlohmann::json& e = (*v)[i];
+    if (!e.is_string()) {
+      const std::string path = pathOf(key) + "[" + std::to_string(i) + "]";
+      issues_.push_back({path, path + " must be a string, got " + typeName(e)});
+      return;
+    }
+    values.push_back(e.get<std::string>());
+  }
+  out = std::move(values);
+}
+
 const nlohmann::json* ObjectReader::object(const char* key, bool required) {
   const nlohmann::json* v = member(key, required);
   if (!v) return nullptr;

@@ -9,6 +9,10 @@
 
 #include "core/kinematics/geometry.hpp"
 
+namespace fivebar {
+struct MachineProfile;
+}
+
 namespace fivebar::detail {
 
 // Reads the members of one JSON object. Every accessor marks its key as known; finish() reports
@@ -24,6 +28,8 @@ class ObjectReader {
   void string(const char* key, std::string& out, bool required = false);
   // A sub-object; nullptr (with an issue when present but not an object, or when required).
   const nlohmann::json* object(const char* key, bool required = false);
+  // An array of strings; leaves `out` unchanged when absent, reports any non-string element.
+  void strings(const char* key, std::vector<std::string>& out, bool required = false);
   // Path of a member, e.g. "geometry.a1".
   std::string pathOf(const char* key) const;
   // Reports unknown members; call after all accessors.
@@ -39,6 +45,14 @@ class ObjectReader {
   std::set<std::string> known_;
   bool isObject_ = false;
 };
+
+// The profile's "calibration" section (core/machine/calibration_section.cpp).
+// Adds the section to `j` when the profile has a calibration.
+void writeCalibration(nlohmann::json& j, const MachineProfile& p);
+// Reads the section when the document has one; an absent section leaves p.calibration empty.
+void readCalibration(ObjectReader& root, MachineProfile& p, std::vector<ValidationIssue>& issues);
+// Range checks of a present calibration (field paths "calibration.*").
+void validateCalibration(std::vector<ValidationIssue>& out, const MachineProfile& p);
 
 // Line and column (1-based) of a byte offset into `text`.
 struct TextPosition {
