@@ -1,5 +1,8 @@
 // fivebar: the command-line tool on the FiveBar Studio core.
 #include <cstring>
+#ifdef FIVEBAR_HAVE_QT
+#include <QLocale>
+#endif
 #include <exception>
 #include <iostream>
 #include <string_view>
@@ -49,6 +52,11 @@ int main(int argc, char** argv) {
     std::cout << "fivebar " FIVEBAR_VERSION "\n";
     return 0;
   }
+#ifdef FIVEBAR_HAVE_QT
+  // Numbers in the images the CLI paints (workspace/design --png) keep the decimal point, as
+  // all its output does, whatever the user's locale.
+  QLocale::setDefault(QLocale::c());
+#endif
   const fivebar::cli::Args args(argv + 2, argv + argc);
   for (const Command& c : kCommands) {
     if (c.name != argv[1]) continue;

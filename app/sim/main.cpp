@@ -18,6 +18,7 @@
 #include <QSocketNotifier>
 #include <QTimer>
 #include <atomic>
+#include <clocale>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
@@ -103,6 +104,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
 
 int main(int argc, char** argv) {
   QCoreApplication app(argc, argv);
+  std::setlocale(LC_NUMERIC, "C");  // Qt took the environment's; the GRBL wire keeps the point
   Args args;
   if (const std::string problem = parseArgs(argc, argv, args); !problem.empty()) return usage(problem);
   if (args.help) {

@@ -11,6 +11,7 @@
 #include <QIcon>
 #include <QLocale>
 #include <QTimer>
+#include <clocale>
 #include <cstdio>
 #include <cstring>
 
@@ -103,6 +104,7 @@ int main(int argc, char** argv) {
   if (fivebar::studio::wantsHeadlessExport(argc, argv)) return fivebar::studio::runHeadlessExport(argc, argv);
   if (wantsTextOnly(argc, argv)) {
     QCoreApplication app(argc, argv);
+    std::setlocale(LC_NUMERIC, "C");
     setApplicationNames();
     fivebar::studio::installTranslations(fivebar::studio::startupLocale(argc, argv));
     QCommandLineParser parser;
@@ -112,6 +114,9 @@ int main(int argc, char** argv) {
     return 0;
   }
   QApplication app(argc, argv);
+  // Qt set the C library's locale from the environment: G-code, profiles and project files are
+  // written with the decimal point whatever the language (the UI formats numbers with QLocale).
+  std::setlocale(LC_NUMERIC, "C");
   setApplicationNames();
   QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/fivebar-studio.svg")));
   QApplication::setDesktopFileName(QStringLiteral("fivebar-studio"));

@@ -6,6 +6,7 @@
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
@@ -75,7 +76,7 @@ MainWindow::MainWindow(const MachineProfile& profile, QWidget* parent) : QMainWi
   cursorLabel_ = new QLabel(this);
   statusBar()->addPermanentWidget(cursorLabel_);
   connect(canvas_, &CanvasView::cursorMoved, this, [this](QPointF mm) {
-    cursorLabel_->setText(tr("x %1 mm, y %2 mm").arg(mm.x(), 0, 'f', 1).arg(mm.y(), 0, 'f', 1));
+    cursorLabel_->setText(tr("x %1 mm, y %2 mm").arg(QLocale().toString(mm.x(), 'f', 1)).arg(QLocale().toString(mm.y(), 'f', 1)));
   });
   connect(preview_, &PreviewController::planningStarted, this,
           [this] { statusBar()->showMessage(tr("Planning...")); });
