@@ -44,113 +44,6 @@
     </message>
 </context>
 <context>
-    <name>ImportWarning</name>
-    <message>
-        <source>attribute d: invalid path data at character %1 %2: drawn up to the error</source>
-        <translation>Attribut d: ungültige Pfaddaten bei Zeichen %1 %2: bis zum Fehler gezeichnet</translation>
-    </message>
-    <message>
-        <source>attribute d: invalid path data at character %1: drawn up to the error</source>
-        <translation>Attribut d: ungültige Pfaddaten bei Zeichen %1: bis zum Fehler gezeichnet</translation>
-    </message>
-    <message>
-        <source>transform-origin=&quot;%1&quot; not understood: ignored</source>
-        <translation>transform-origin=&quot;%1&quot; nicht verstanden: ignoriert</translation>
-    </message>
-    <message>
-        <source>marker #%1 not found: not drawn</source>
-        <translation>Marker #%1 nicht gefunden: nicht gezeichnet</translation>
-    </message>
-    <message>
-        <source>markers on %1 are not drawn (drawn on path, line, polyline and polygon)</source>
-        <translation>Marker an %1 werden nicht gezeichnet (nur an path, line, polyline und polygon)</translation>
-    </message>
-    <message>
-        <source>markers set in a style sheet for the selector &apos;%1&apos; are not drawn (only type, #id and .class selectors are applied)</source>
-        <translation>Marker aus einem Stylesheet für den Selektor &apos;%1&apos; werden nicht gezeichnet (nur Typ-, #id- und .class-Selektoren werden angewandt)</translation>
-    </message>
-    <message>
-        <source>external reference removed from %1</source>
-        <translation>Externer Verweis aus %1 entfernt</translation>
-    </message>
-    <message>
-        <source>%1 element removed</source>
-        <translation>Element %1 entfernt</translation>
-    </message>
-    <message>
-        <source>long &lt;path&gt; split into %1 parts to avoid Qt SVG&apos;s 32,767-element truncation</source>
-        <translation>Langer &lt;path&gt; in %1 Teile geteilt, um die Kürzung von Qt SVG auf 32.767 Elemente zu vermeiden</translation>
-    </message>
-    <message>
-        <source>further element warnings not listed</source>
-        <translation>weitere Warnungen zu Elementen nicht aufgeführt</translation>
-    </message>
-    <message>
-        <source>DOCTYPE with entity declarations removed (internal entities were expanded)</source>
-        <translation>DOCTYPE mit Entity-Deklarationen entfernt (interne Entities wurden aufgelöst)</translation>
-    </message>
-    <message>
-        <source>unresolved entity reference dropped</source>
-        <translation>nicht auflösbare Entity-Referenz verworfen</translation>
-    </message>
-    <message>
-        <source>external style sheet (xml-stylesheet) ignored</source>
-        <translation>externes Stylesheet (xml-stylesheet) ignoriert</translation>
-    </message>
-    <message>
-        <source>event attribute (on...) removed</source>
-        <translation>Ereignisattribut (on...) entfernt</translation>
-    </message>
-    <message>
-        <source>CSS @import removed</source>
-        <translation>CSS-@import entfernt</translation>
-    </message>
-    <message>
-        <source>transform-origin in a style is not applied</source>
-        <translation>transform-origin in einem style wird nicht angewandt</translation>
-    </message>
-    <message>
-        <source>clip-path not applied: clipped shapes are drawn whole</source>
-        <translation>clip-path nicht angewandt: beschnittene Formen werden ganz gezeichnet</translation>
-    </message>
-    <message>
-        <source>mask not applied: masked shapes are drawn whole</source>
-        <translation>mask nicht angewandt: maskierte Formen werden ganz gezeichnet</translation>
-    </message>
-    <message>
-        <source>per-glyph rotate on &lt;text&gt; is not applied: glyphs are drawn upright</source>
-        <translation>Drehung einzelner Zeichen (rotate) an &lt;text&gt; wird nicht angewandt: Zeichen werden aufrecht gezeichnet</translation>
-    </message>
-    <message>
-        <source>text on a path (&lt;textPath&gt;) is not drawn</source>
-        <translation>Text auf einem Pfad (&lt;textPath&gt;) wird nicht gezeichnet</translation>
-    </message>
-    <message>
-        <source>pattern fills are drawn as outlines, without the pattern</source>
-        <translation>Musterfüllungen werden als Umrisse gezeichnet, ohne das Muster</translation>
-    </message>
-    <message>
-        <source>more than 100000 marker instances: the rest are not drawn</source>
-        <translation>mehr als 100000 Marker: der Rest wird nicht gezeichnet</translation>
-    </message>
-    <message>
-        <source>marker overflow clipping not applied: marker content is drawn whole</source>
-        <translation>Marker-Beschnitt (overflow) nicht angewandt: der Inhalt wird ganz gezeichnet</translation>
-    </message>
-    <message>
-        <source>no usable width/height/viewBox: page size taken from the drawing&apos;s extent</source>
-        <translation>keine brauchbare width/height/viewBox: Seitengröße aus der Ausdehnung der Zeichnung</translation>
-    </message>
-    <message>
-        <source>line %1: %2 %3</source>
-        <translation>Zeile %1: %2 %3</translation>
-    </message>
-    <message>
-        <source>%1 (%2x, first at line %3)</source>
-        <translation>%1 (%2x, zuerst in Zeile %3)</translation>
-    </message>
-</context>
-<context>
     <name>ImportWarningsPanel</name>
     <message>
         <source>%1 has %2 points after flattening, more than the budget of %3 (a runaway file?).</source>
@@ -310,6 +203,25 @@
     <message>
         <source>Clear list</source>
         <translation>Liste leeren</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::studio::LanguageMenu</name>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <source>System default</source>
+        <translation>Systemvorgabe</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Sprache</translation>
+    </message>
+    <message>
+        <source>The new language applies when FiveBar Studio starts again.</source>
+        <translation>Die neue Sprache gilt, sobald FiveBar Studio neu gestartet wird.</translation>
     </message>
 </context>
 <context>
@@ -841,18 +753,6 @@
         <source>Drawings and projects (*.svg *.fivebar);;SVG drawings (*.svg);;FiveBar projects (*.fivebar);;All files (*)</source>
         <translation>Zeichnungen und Projekte (*.svg *.fivebar);;SVG-Zeichnungen (*.svg);;FiveBar-Projekte (*.fivebar);;Alle Dateien (*)</translation>
     </message>
-    <message>
-        <source>Very large drawing</source>
-        <translation>Sehr große Zeichnung</translation>
-    </message>
-    <message>
-        <source>%1 has more than %2 points after flattening (a runaway file?). Reading it was stopped there.
-
-Planning and plotting it may take very long. Import it whole anyway?</source>
-        <translation>%1 hat nach dem Glätten mehr als %2 Punkte (eine außer Kontrolle geratene Datei?). Das Einlesen wurde dort angehalten.
-
-Planen und Zeichnen können sehr lange dauern. Trotzdem ganz importieren?</translation>
-    </message>
 </context>
 <context>
     <name>fivebar::widgets::ImportWarningsPanel</name>
@@ -1029,50 +929,6 @@ Planen und Zeichnen können sehr lange dauern. Trotzdem ganz importieren?</trans
             <numerusform>%n Punkt</numerusform>
             <numerusform>%n Punkte</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Fill of the selected layer</source>
-        <translation>Füllung der gewählten Ebene</translation>
-    </message>
-    <message>
-        <source>Outline</source>
-        <translation>Umriss</translation>
-    </message>
-    <message>
-        <source>Hatch</source>
-        <translation>Schraffur</translation>
-    </message>
-    <message>
-        <source>None</source>
-        <translation>Keine</translation>
-    </message>
-    <message>
-        <source>How the layer&apos;s filled shapes are drawn: their outline, parallel hatch lines inside them, or not at all (stroked shapes keep their stroke).</source>
-        <translation>Wie die gefüllten Formen der Ebene gezeichnet werden: ihr Umriss, parallele Schraffurlinien darin oder gar nicht (Formen mit Kontur behalten ihre Kontur).</translation>
-    </message>
-    <message>
-        <source> mm</source>
-        <translation> mm</translation>
-    </message>
-    <message>
-        <source> °</source>
-        <translation> °</translation>
-    </message>
-    <message>
-        <source>Crosshatch</source>
-        <translation>Kreuzschraffur</translation>
-    </message>
-    <message>
-        <source>Fill:</source>
-        <translation>Füllung:</translation>
-    </message>
-    <message>
-        <source>Hatch spacing:</source>
-        <translation>Linienabstand:</translation>
-    </message>
-    <message>
-        <source>Hatch angle:</source>
-        <translation>Schraffurwinkel:</translation>
     </message>
 </context>
 <context>
@@ -1951,14 +1807,6 @@ Planen und Zeichnen können sehr lange dauern. Trotzdem ganz importieren?</trans
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
-    <message>
-        <source> steps/°</source>
-        <translation> Schritte/°</translation>
-    </message>
-    <message>
-        <source> baud</source>
-        <translation> Baud</translation>
-    </message>
 </context>
 <context>
     <name>fivebar::widgets::RunController</name>
@@ -2166,10 +2014,6 @@ Planen und Zeichnen können sehr lange dauern. Trotzdem ganz importieren?</trans
         <source>Change layer tool settings</source>
         <translation>Werkzeugeinstellungen der Ebene ändern</translation>
     </message>
-    <message>
-        <source>Change layer fill</source>
-        <translation>Füllung der Ebene ändern</translation>
-    </message>
 </context>
 <context>
     <name>main</name>
@@ -2180,10 +2024,6 @@ Planen und Zeichnen können sehr lange dauern. Trotzdem ganz importieren?</trans
     <message>
         <source>Open the demo drawing on the default maker plotter.</source>
         <translation>Die Demo-Zeichnung auf dem Standard-Maker-Plotter öffnen.</translation>
-    </message>
-    <message>
-        <source>User interface language (e.g. de, en); default: system.</source>
-        <translation>Sprache der Oberfläche (z. B. de, en); Vorgabe: System.</translation>
     </message>
     <message>
         <source>Save a picture of the window once the job is planned, then quit.</source>
@@ -2212,6 +2052,10 @@ Planen und Zeichnen können sehr lange dauern. Trotzdem ganz importieren?</trans
     <message>
         <source>Filled shapes: outline (default), hatch or none; with hatch: SPACING_MM and ANGLE_DEG after colons.</source>
         <translation>Gefüllte Formen: outline (Standard), hatch oder none; bei hatch: SPACING_MM und ANGLE_DEG nach Doppelpunkten.</translation>
+    </message>
+    <message>
+        <source>User interface language: de, en, es or fr (default: View &gt; Language, else the system&apos;s).</source>
+        <translation>Sprache der Oberfläche: de, en, es oder fr (Vorgabe: Ansicht &gt; Sprache, sonst die des Systems).</translation>
     </message>
 </context>
 </TS>

@@ -15,6 +15,7 @@
 
 #ifdef FIVEBAR_HAVE_IMPORT
 #include <QCoreApplication>
+#include <clocale>
 
 #include "widgets/document/job_source.hpp"
 #endif
@@ -152,6 +153,7 @@ int plan(const Options& o) {
   char* argv[] = {name, nullptr};
   std::optional<QCoreApplication> app;  // the import's worker process needs one
   if (!QCoreApplication::instance()) app.emplace(argc, argv);
+  std::setlocale(LC_NUMERIC, "C");  // Qt took the environment's; output keeps the decimal point
   const auto start = std::chrono::steady_clock::now();
   StageTimes times;
   StageClock clock(times);

@@ -1,6 +1,7 @@
 #include "design_png.hpp"
 
 #include <QGuiApplication>
+#include <clocale>
 #include <memory>
 
 #include "widgets/design/design_painter.hpp"
@@ -17,6 +18,7 @@ std::string writeDesignPng(const std::string& path, const design::Design& d,
     static char name[] = "fivebar";
     static char* argv[] = {name, nullptr};
     app = std::make_unique<QGuiApplication>(argc, argv);
+    std::setlocale(LC_NUMERIC, "C");  // Qt took the environment's; CLI output keeps the point
   }
   const widgets::DesignMaps maps = widgets::computeDesignMaps(d, brief.rules);
   const QString title = QStringLiteral("Design for a %1 x %2 mm rectangle")

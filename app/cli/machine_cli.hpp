@@ -3,6 +3,7 @@
 #pragma once
 
 #include <QCoreApplication>
+#include <clocale>
 #include <string>
 
 #include "options.hpp"
@@ -15,6 +16,9 @@ struct QtApp {
   char name[8] = "fivebar";
   char* argv[2] = {name, nullptr};
   QCoreApplication app{argc, argv};
+  // QCoreApplication sets the C library's locale from the environment; CLI output and files
+  // keep the decimal point.
+  QtApp() { std::setlocale(LC_NUMERIC, "C"); }
 };
 
 inline int baudFrom(const Options& o) {

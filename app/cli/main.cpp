@@ -1,5 +1,8 @@
 // fivebar: the command-line tool on the FiveBar Studio core.
 #include <cstring>
+#ifdef FIVEBAR_HAVE_QT
+#include <QLocale>
+#endif
 #include <exception>
 #include <iostream>
 #include <string_view>
@@ -35,7 +38,8 @@ constexpr Command kCommands[] = {
 void usage(std::ostream& out) {
   out << "usage: fivebar COMMAND [OPTIONS]\n\ncommands:\n";
   for (const Command& c : kCommands) out << "  " << c.name << "\t" << c.summary << "\n";
-  out << "\nRun 'fivebar COMMAND --help' for a command's options.\n";
+  out << "\nRun 'fivebar COMMAND --help' for a command's options; 'fivebar --version' prints the\n"
+         "version.\n";
 }
 
 }  // namespace
@@ -45,6 +49,15 @@ int main(int argc, char** argv) {
     usage(argc < 2 ? std::cerr : std::cout);
     return argc < 2 ? 2 : 0;
   }
+  if (std::strcmp(argv[1], "--version") == 0) {
+    std::cout << "fivebar " FIVEBAR_VERSION "\n";
+    return 0;
+  }
+#ifdef FIVEBAR_HAVE_QT
+  // Numbers in the images the CLI paints (workspace/design --png) keep the decimal point, as
+  // all its output does, whatever the user's locale.
+  QLocale::setDefault(QLocale::c());
+#endif
   const fivebar::cli::Args args(argv + 2, argv + argc);
   for (const Command& c : kCommands) {
     if (c.name != argv[1]) continue;

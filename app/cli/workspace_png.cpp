@@ -1,6 +1,7 @@
 #include "workspace_png.hpp"
 
 #include <QGuiApplication>
+#include <clocale>
 #include <QImage>
 #include <QPainter>
 #include <memory>
@@ -28,7 +29,9 @@ std::unique_ptr<QGuiApplication> ensureGuiApplication() {
   static int argc = 1;
   static char name[] = "fivebar";
   static char* argv[] = {name, nullptr};
-  return std::make_unique<QGuiApplication>(argc, argv);
+  auto app = std::make_unique<QGuiApplication>(argc, argv);
+  std::setlocale(LC_NUMERIC, "C");  // Qt took the environment's; CLI output keeps the point
+  return app;
 }
 
 // A pose of the analysed mode to draw: at the rectangle's centre, else the profile's home.

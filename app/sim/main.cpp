@@ -6,6 +6,7 @@
 //               [--instant] [--fault drop-after=N|reset-after=N|error-on=N|alarm-after=N]
 //               [--record FILE] [--baud N] [--true-machine FILE]
 //               [--drawn FILE.svg|FILE.csv]
+//   fivebar-sim --help | --version
 //
 // PATH becomes a symlink to the pty's slave device. --record writes the pen-down joint path
 // and counters as JSON on exit (SIGTERM / SIGINT) and when an injected drop closes the link.
@@ -19,6 +20,7 @@
 #include <QSocketNotifier>
 #include <QTimer>
 #include <atomic>
+#include <clocale>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
@@ -44,6 +46,7 @@ struct Args {
   bool referenced = false;
   bool homingSwitches = false;
   bool help = false;
+  bool version = false;
   fivebar::sim::Fault fault;
   std::string recordPath;
   std::string trueMachine;  // profile file or preset of the real machine ("" the --machine one)
@@ -71,7 +74,8 @@ constexpr const char* kUsage =
     "                 true geometry and whose calibration section gives the true motor zero\n"
     "                 offsets, backlash and pen offset (default: --machine itself)\n"
     "  --drawn FILE   what its pen really drew, written on exit like --record: SVG when FILE\n"
-    "                 ends in .svg, else CSV stroke,x_mm,y_mm (machine frame, mm)\n";
+    "                 ends in .svg, else CSV stroke,x_mm,y_mm (machine frame, mm)\n"
+    "  --help         this text; --version: the version\n";
 
 int usage(const std::string& problem) {
   std::cerr << "fivebar-sim: " << problem << "\n" << kUsage;
@@ -87,6 +91,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
     if (opt == "--referenced") { a.referenced = true; continue; }
     if (opt == "--homing-switches") { a.homingSwitches = true; continue; }
     if (opt == "--help" || opt == "-h") { a.help = true; return ""; }
+    if (opt == "--version") { a.version = true; return ""; }
     if (i + 1 >= argc) return "option " + opt + " needs a value";
     const std::string value = argv[++i];
     if (opt == "--pty") a.ptyPath = value;
@@ -115,10 +120,15 @@ std::string parseArgs(int argc, char** argv, Args& a) {
 
 int main(int argc, char** argv) {
   QCoreApplication app(argc, argv);
+  std::setlocale(LC_NUMERIC, "C");  // Qt took the environment's; the GRBL wire keeps the point
   Args args;
   if (const std::string problem = parseArgs(argc, argv, args); !problem.empty()) return usage(problem);
   if (args.help) {
     std::cout << kUsage;
+    return 0;
+  }
+  if (args.version) {
+    std::cout << "fivebar-sim " FIVEBAR_VERSION "\n";
     return 0;
   }
   const fivebar::ProfileLoad load = fivebar::resolveMachine(args.machine);

@@ -3,6 +3,7 @@
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QSaveFile>
+#include <clocale>
 #include <cstdio>
 #include <cstring>
 
@@ -29,6 +30,7 @@ bool wantsHeadlessExport(int argc, char** argv) {
 
 int runHeadlessExport(int argc, char** argv) {
   QCoreApplication app(argc, argv);
+  std::setlocale(LC_NUMERIC, "C");  // Qt took the environment's; files keep the decimal point
   QCoreApplication::setOrganizationName(QStringLiteral("FiveBar"));
   QCoreApplication::setApplicationName(QStringLiteral("FiveBar Studio"));
   QCommandLineParser parser;

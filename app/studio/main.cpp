@@ -1,4 +1,5 @@
 // fivebar-studio: the desktop application. Composition and start-up only:
+//   fivebar-studio --help | --version     (no display needed)
 //   fivebar-studio [--demo] [--machine PRESET|FILE] [--lang LANG] [--screenshot FILE.png]
 //                  [FILE.svg|PROJECT.fivebar]
 //   fivebar-studio FILE.svg|PROJECT.fivebar [--machine PRESET|FILE] --export-gcode OUT.gcode
@@ -8,12 +9,13 @@
 #include <QDir>
 #include <QFile>
 #include <QIcon>
-#include <QLibraryInfo>
 #include <QLocale>
 #include <QTimer>
-#include <QTranslator>
+#include <clocale>
 #include <cstdio>
+#include <cstring>
 
+#include "app/studio/data_files.hpp"
 #include "app/studio/headless.hpp"
 #include "app/studio/main_window.hpp"
 #include "app/studio/startup.hpp"
@@ -23,75 +25,118 @@
 
 using fivebar::studio::MainWindow;
 
+namespace {
+
+struct StudioOptions {
+  QCommandLineOption demo{QStringLiteral("demo"),
+                          QCoreApplication::translate("main", "Open the demo drawing on the "
+                                                              "default maker plotter.")};
+  QCommandLineOption machine{
+      QStringLiteral("machine"),
+      QCoreApplication::translate("main", "Machine profile: a preset name or a profile JSON file "
+                                          "(default: the last one used, else maker-plotter)."),
+      QStringLiteral("PRESET|FILE")};
+  QCommandLineOption lang{
+      QStringLiteral("lang"),
+      QCoreApplication::translate("main", "User interface language: de, en, es or fr (default: "
+                                          "View > Language, else the system's)."),
+      QStringLiteral("LANG")};
+  QCommandLineOption screenshot{
+      QStringLiteral("screenshot"),
+      QCoreApplication::translate("main", "Save a picture of the window once the job is planned, "
+                                          "then quit."),
+      QStringLiteral("FILE.png")};
+  QCommandLineOption overlay{
+      QStringLiteral("overlay"),
+      QCoreApplication::translate("main", "With --screenshot: show the workspace legend "
+                                          "(legend) or a map (transmission, conditioning or "
+                                          "resolution)."),
+      QStringLiteral("MAP")};
+  QCommandLineOption atTime{
+      QStringLiteral("at-time"),
+      QCoreApplication::translate("main", "With --screenshot: simulation position as a fraction "
+                                          "of the job (0 to 1)."),
+      QStringLiteral("FRACTION")};
+  QCommandLineOption exportGcode{
+      QStringLiteral("export-gcode"),
+      QCoreApplication::translate("main", "Plan the drawing or project as the studio does, write "
+                                          "the G-code and exit (no window)."),
+      QStringLiteral("OUT.gcode")};
+  QCommandLineOption fill{
+      QStringLiteral("fill"),
+      QCoreApplication::translate("main", "Filled shapes: outline (default), hatch or none; "
+                                          "with hatch: SPACING_MM and ANGLE_DEG after colons."),
+      QStringLiteral("MODE[:SPACING[:ANGLE]]")};
+
+  void addTo(QCommandLineParser& parser) const {
+    parser.setApplicationDescription(
+        QCoreApplication::translate("main", "Plan and simulate drawings for five-bar robots."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addOptions({demo, machine, lang, screenshot, overlay, atTime, exportGcode, fill});
+    parser.addPositionalArgument(
+        QStringLiteral("drawing"),
+        QCoreApplication::translate("main", "SVG drawing or project to open."),
+        QStringLiteral("[FILE.svg|PROJECT.fivebar]"));
+  }
+};
+
+// --help and --version print and exit: they need no display, so no QApplication.
+bool wantsTextOnly(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const char* a = argv[i];
+    if (!std::strcmp(a, "--help") || !std::strcmp(a, "-h") || !std::strcmp(a, "--help-all") ||
+        !std::strcmp(a, "--version") || !std::strcmp(a, "-v"))
+      return true;
+  }
+  return false;
+}
+
+void setApplicationNames() {
+  QCoreApplication::setOrganizationName(QStringLiteral("FiveBar"));
+  QCoreApplication::setApplicationName(QStringLiteral("FiveBar Studio"));
+  QCoreApplication::setApplicationVersion(QStringLiteral(FIVEBAR_VERSION));
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   if (fivebar::studio::wantsHeadlessExport(argc, argv)) return fivebar::studio::runHeadlessExport(argc, argv);
+  if (wantsTextOnly(argc, argv)) {
+    QCoreApplication app(argc, argv);
+    std::setlocale(LC_NUMERIC, "C");
+    setApplicationNames();
+    fivebar::studio::installTranslations(fivebar::studio::startupLocale(argc, argv));
+    QCommandLineParser parser;
+    const StudioOptions options;
+    options.addTo(parser);
+    parser.process(app);  // prints help or version and exits
+    return 0;
+  }
   QApplication app(argc, argv);
-  QApplication::setOrganizationName(QStringLiteral("FiveBar"));
-  QApplication::setApplicationName(QStringLiteral("FiveBar Studio"));
-  QApplication::setApplicationVersion(QStringLiteral(FIVEBAR_VERSION));
+  // Qt set the C library's locale from the environment: G-code, profiles and project files are
+  // written with the decimal point whatever the language (the UI formats numbers with QLocale).
+  std::setlocale(LC_NUMERIC, "C");
+  setApplicationNames();
   QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/fivebar-studio.svg")));
   QApplication::setDesktopFileName(QStringLiteral("fivebar-studio"));
+  const QLocale locale = fivebar::studio::startupLocale(argc, argv);
+  if (!fivebar::studio::installTranslations(locale)) {
+    std::fprintf(stderr, "fivebar-studio: no translation for '%s' (languages: en, %s)\n",
+                 qPrintable(locale.name()),
+                 qPrintable(fivebar::studio::translatedLanguages().join(QStringLiteral(", "))));
+  }
 
   QCommandLineParser parser;
-  parser.setApplicationDescription(
-      QApplication::translate("main", "Plan and simulate drawings for five-bar robots."));
-  parser.addHelpOption();
-  parser.addVersionOption();
-  const QCommandLineOption demo(QStringLiteral("demo"),
-                                QApplication::translate("main", "Open the demo drawing on the "
-                                                                "default maker plotter."));
-  const QCommandLineOption machine(
-      QStringLiteral("machine"),
-      QApplication::translate("main", "Machine profile: a preset name or a profile JSON file "
-                                      "(default: the last one used, else maker-plotter)."),
-      QStringLiteral("PRESET|FILE"));
-  const QCommandLineOption lang(
-      QStringLiteral("lang"),
-      QApplication::translate("main", "User interface language (e.g. de, en); default: system."),
-      QStringLiteral("LANG"));
-  const QCommandLineOption screenshot(
-      QStringLiteral("screenshot"),
-      QApplication::translate("main", "Save a picture of the window once the job is planned, "
-                                      "then quit."),
-      QStringLiteral("FILE.png"));
-  const QCommandLineOption overlay(
-      QStringLiteral("overlay"),
-      QApplication::translate("main", "With --screenshot: show the workspace legend "
-                                      "(legend) or a map (transmission, conditioning or "
-                                      "resolution)."),
-      QStringLiteral("MAP"));
-  const QCommandLineOption atTime(
-      QStringLiteral("at-time"),
-      QApplication::translate("main", "With --screenshot: simulation position as a fraction "
-                                      "of the job (0 to 1)."),
-      QStringLiteral("FRACTION"));
-  const QCommandLineOption exportGcode(
-      QStringLiteral("export-gcode"),
-      QApplication::translate("main", "Plan the drawing or project as the studio does, write the "
-                                      "G-code and exit (no window)."),
-      QStringLiteral("OUT.gcode"));
-  const QCommandLineOption fill(
-      QStringLiteral("fill"),
-      QApplication::translate("main", "Filled shapes: outline (default), hatch or none; "
-                                      "with hatch: SPACING_MM and ANGLE_DEG after colons."),
-      QStringLiteral("MODE[:SPACING[:ANGLE]]"));
-  parser.addOptions({demo, machine, lang, screenshot, overlay, atTime, exportGcode, fill});
-  parser.addPositionalArgument(QStringLiteral("drawing"),
-                               QApplication::translate("main", "SVG drawing or project to open."),
-                               QStringLiteral("[FILE.svg|PROJECT.fivebar]"));
+  const StudioOptions options;
+  options.addTo(parser);
   parser.process(app);
-
-  QTranslator translator;
-  const QLocale locale = parser.isSet(lang) ? QLocale(parser.value(lang)) : QLocale::system();
-  if (translator.load(locale, QStringLiteral("fivebar"), QStringLiteral("_"),
-                      QStringLiteral(":/i18n"))) {
-    QApplication::installTranslator(&translator);
-  }
-  QTranslator qtTranslator;
-  if (qtTranslator.load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
-                        QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
-    QApplication::installTranslator(&qtTranslator);
-  }
+  const QCommandLineOption& machine = options.machine;
+  const QCommandLineOption& screenshot = options.screenshot;
+  const QCommandLineOption& overlay = options.overlay;
+  const QCommandLineOption& atTime = options.atTime;
+  const QCommandLineOption& fill = options.fill;
+  const QCommandLineOption& demo = options.demo;
 
   std::string error;
   const auto profile = fivebar::studio::startupProfile(
@@ -112,7 +157,7 @@ int main(int argc, char** argv) {
   if (!files.isEmpty()) {
     window.importer().openFile(files.front());
   } else if (parser.isSet(demo)) {
-    QFile demoFile(QStringLiteral(":/demo/fivebar-demo.svg"));
+    QFile demoFile(fivebar::studio::demoDrawingPath());
     if (demoFile.open(QIODevice::ReadOnly)) {
       window.importer().openData(demoFile.readAll(), QStringLiteral("fivebar-demo.svg"));
     }

@@ -6,6 +6,7 @@
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
@@ -16,6 +17,7 @@
 #include <QUndoStack>
 
 #include "app/studio/file_actions.hpp"
+#include "app/studio/language_menu.hpp"
 #include "core/kinematics/kinematics.hpp"
 #include "widgets/canvas/canvas_view.hpp"
 #include "widgets/design/design_dialog.hpp"
@@ -74,7 +76,7 @@ MainWindow::MainWindow(const MachineProfile& profile, QWidget* parent) : QMainWi
   cursorLabel_ = new QLabel(this);
   statusBar()->addPermanentWidget(cursorLabel_);
   connect(canvas_, &CanvasView::cursorMoved, this, [this](QPointF mm) {
-    cursorLabel_->setText(tr("x %1 mm, y %2 mm").arg(mm.x(), 0, 'f', 1).arg(mm.y(), 0, 'f', 1));
+    cursorLabel_->setText(tr("x %1 mm, y %2 mm").arg(QLocale().toString(mm.x(), 'f', 1)).arg(QLocale().toString(mm.y(), 'f', 1)));
   });
   connect(preview_, &PreviewController::planningStarted, this,
           [this] { statusBar()->showMessage(tr("Planning...")); });
@@ -231,6 +233,7 @@ void MainWindow::createMenus() {
   zoomOut->setShortcut(QKeySequence::ZoomOut);
   QAction* zoomFit = viewMenu_->addAction(tr("Zoom to &fit"), this, &MainWindow::fitView);
   zoomFit->setShortcut(QKeySequence(tr("Ctrl+0")));
+  new LanguageMenu(viewMenu_, this);
   viewMenu_->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>()) {
     viewMenu_->addAction(dock->toggleViewAction());

@@ -16,6 +16,7 @@
 #include <QXmlStreamReader>
 #include <set>
 
+#include "app/studio/language_menu.hpp"
 #include "app/studio/main_window.hpp"
 #include "core/machine/profile.hpp"
 #include "widgets/machine/console_panel.hpp"
@@ -65,7 +66,7 @@ std::set<QString> runtimeContexts() {
         &RunPanel::staticMetaObject, &SimulationPanel::staticMetaObject,
         &StudioDocument::staticMetaObject, &FillOptionsBox::staticMetaObject,
         &ImportWarningsPanel::staticMetaObject, &DesignDialog::staticMetaObject,
-        &ParetoPlot::staticMetaObject})
+        &ParetoPlot::staticMetaObject, &fivebar::studio::LanguageMenu::staticMetaObject})
     names.insert(QString::fromLatin1(m->className()));
   for (const char* c : {"QObject", "main", "DocumentCommands", "JobPipeline", "MapPainter",
                         "WorkspaceLegend", "ImportWarningsPanel", "DesignPainter", "ImportWarning"})
@@ -145,9 +146,9 @@ QStringList visibleTexts(const QWidget& window) {
 }
 
 // Translations identical to their source in the .ts ("Status", "Alarm", "F5"): legitimately
-// the same in German.
-std::set<QString> sameInGerman() {
-  QFile ts(QStringLiteral(FIVEBAR_TS_DE));
+// the same in that language.
+std::set<QString> sameAsEnglish(const QString& tsPath) {
+  QFile ts(tsPath);
   std::set<QString> same;
   if (!ts.open(QIODevice::ReadOnly)) return same;
   QXmlStreamReader xml(&ts);
@@ -163,9 +164,9 @@ std::set<QString> sameInGerman() {
   return same;
 }
 
-// The main window built under the German translator shows no text it shows in English, except
-// words that are the same in both languages, texts without letters (numbers, units) and file
-// names.
+// The main window built under each translator (German, French, Spanish) shows no text it shows
+// in English, except words that are the same in both languages, texts without letters (numbers,
+// units) and file names.
 TEST(Translations, MainWindowShowsNoEnglish) {
   const auto profile = fivebar::preset("maker-plotter");
   ASSERT_TRUE(profile.has_value());
@@ -174,27 +175,34 @@ TEST(Translations, MainWindowShowsNoEnglish) {
     fivebar::studio::MainWindow window(*profile);
     english = visibleTexts(window);
   }
-  QTranslator translator;
-  ASSERT_TRUE(translator.load(QStringLiteral(":/i18n/fivebar_de.qm")));
-  QCoreApplication::installTranslator(&translator);
-  QStringList german;
-  {
-    fivebar::studio::MainWindow window(*profile);
-    german = visibleTexts(window);
+  for (const QString lang : {QStringLiteral("de"), QStringLiteral("fr"), QStringLiteral("es")}) {
+    QTranslator translator;
+    ASSERT_TRUE(translator.load(QStringLiteral(":/i18n/fivebar_%1.qm").arg(lang)));
+    QCoreApplication::installTranslator(&translator);
+    QStringList translated;
+    {
+      fivebar::studio::MainWindow window(*profile);
+      translated = visibleTexts(window);
+    }
+    QCoreApplication::removeTranslator(&translator);
+    ASSERT_EQ(english.size(), translated.size());
+    const std::set<QString> same =
+        sameAsEnglish(QStringLiteral(FIVEBAR_TS_DIR "/fivebar_%1.ts").arg(lang));
+    const QRegularExpression words(QStringLiteral("[A-Za-z]{3,}"));
+    // Data, not UI text: file names (the recent-files menu).
+    const QRegularExpression fileName(QStringLiteral("\\.[a-z]{2,7}$"));  // .svg, .fivebar
+    // View > Language lists each language in its own name, the same in every translation.
+    const std::set<QString> languageNames = {QStringLiteral("Deutsch"), QStringLiteral("English"),
+                                             QStringLiteral("Español"), QStringLiteral("Français")};
+    QStringList untranslated;
+    for (qsizetype i = 0; i < english.size(); ++i)
+      if (english[i] == translated[i] && english[i].contains(words) && !same.count(english[i]) &&
+          !english[i].contains(fileName) && !languageNames.count(english[i]))
+        untranslated << english[i];
+    EXPECT_GT(english.size(), 40);
+    EXPECT_TRUE(untranslated.isEmpty())
+        << lang.toStdString() << ": " << untranslated.join(QStringLiteral(" | ")).toStdString();
   }
-  QCoreApplication::removeTranslator(&translator);
-  ASSERT_EQ(english.size(), german.size());
-  const std::set<QString> same = sameInGerman();
-  const QRegularExpression words(QStringLiteral("[A-Za-z]{3,}"));
-  // Data, not UI text: file names (the recent-files menu).
-  const QRegularExpression fileName(QStringLiteral("\\.[a-z]{2,7}$"));  // .svg, .fivebar
-  QStringList untranslated;
-  for (qsizetype i = 0; i < english.size(); ++i)
-    if (english[i] == german[i] && english[i].contains(words) && !same.count(english[i]) &&
-        !english[i].contains(fileName))
-      untranslated << english[i];
-  EXPECT_GT(english.size(), 40);
-  EXPECT_TRUE(untranslated.isEmpty()) << untranslated.join(QStringLiteral(" | ")).toStdString();
 }
 
 TEST(Translations, GermanIsComplete) {

@@ -1,5 +1,6 @@
 #include "widgets/canvas/machine_painter.hpp"
 
+#include <QLocale>
 #include <QPen>
 #include <array>
 #include <cmath>
@@ -69,13 +70,13 @@ void paintGrid(QPainter& painter, const ViewTransform& view) {
   const long jx1 = static_cast<long>(std::floor(r.right() / major));
   for (long j = jx0; j <= jx1; ++j) {
     const double x = t.map(QPointF(j * major, 0.0)).x();
-    painter.drawText(QPointF(x + 3.0, 12.0), QString::number(j * major, 'g', 6));
+    painter.drawText(QPointF(x + 3.0, 12.0), QLocale().toString(j * major, 'g', 6));
   }
   const long jy0 = static_cast<long>(std::ceil(r.top() / major));
   const long jy1 = static_cast<long>(std::floor(r.bottom() / major));
   for (long j = jy0; j <= jy1; ++j) {
     const double y = t.map(QPointF(0.0, j * major)).y();
-    painter.drawText(QPointF(3.0, y - 3.0), QString::number(j * major, 'g', 6));
+    painter.drawText(QPointF(3.0, y - 3.0), QLocale().toString(j * major, 'g', 6));
   }
   painter.restore();
 }

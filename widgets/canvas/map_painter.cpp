@@ -2,6 +2,7 @@
 
 #include <QCoreApplication>
 #include <QLinearGradient>
+#include <QLocale>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -146,7 +147,7 @@ void paintColourBar(QPainter& painter, const QRectF& rectPx, const MapScale& sca
     const double x = bar.left() + f * bar.width();
     painter.drawLine(QPointF(x, bar.bottom()), QPointF(x, bar.bottom() + 3.0));
     const QString label =
-        QString::number(scale.low + f * (scale.high - scale.low), 'f', scale.decimals);
+        QLocale().toString(scale.low + f * (scale.high - scale.low), 'f', scale.decimals);
     const Qt::Alignment align = k == 0 ? Qt::AlignLeft : (k == kTicks ? Qt::AlignRight
                                                                        : Qt::AlignHCenter);
     const double w = 60.0;

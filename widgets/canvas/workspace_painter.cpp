@@ -3,6 +3,7 @@
 #include <QCoreApplication>
 #include <QFontMetricsF>
 #include <QImage>
+#include <QLocale>
 #include <QPainterPath>
 #include <QPen>
 #include <QPolygonF>
@@ -56,7 +57,7 @@ void drawPolylines(QPainter& painter, const QTransform& widgetFromMachine,
 }
 
 QString sizeText(const Rect& r) {
-  return QStringLiteral("%1 x %2 mm").arg(r.width(), 0, 'f', 1).arg(r.height(), 0, 'f', 1);
+  return QStringLiteral("%1 x %2 mm").arg(QLocale().toString(r.width(), 'f', 1)).arg(QLocale().toString(r.height(), 'f', 1));
 }
 
 void drawRectangle(QPainter& painter, const QTransform& widgetFromMachine, const Rect& r) {
@@ -116,8 +117,8 @@ double paintWorkspaceLegend(QPainter& painter, QPointF topLeftPx, const Workspac
   // Legend text: translation context "WorkspaceLegend" (no QObject here).
   const QString marginText =
       QCoreApplication::translate("WorkspaceLegend", "type II >= %1 deg, type I >= %2 deg")
-          .arg(degFromRad(map.typeIIMarginRad), 0, 'f', 0)
-          .arg(degFromRad(map.typeIMarginRad), 0, 'f', 0);
+          .arg(QLocale().toString(degFromRad(map.typeIIMarginRad), 'f', 0))
+          .arg(QLocale().toString(degFromRad(map.typeIMarginRad), 'f', 0));
   struct Entry {
     QString text;
     QColor fill;
@@ -143,9 +144,9 @@ double paintWorkspaceLegend(QPainter& painter, QPointF topLeftPx, const Workspac
   };
   const QStringList areas{
       QCoreApplication::translate("WorkspaceLegend", "reachable area: %1 cm\u00b2")
-          .arg(analysis.reachableAreaMm2 / 100.0, 0, 'f', 1),
+          .arg(QLocale().toString(analysis.reachableAreaMm2 / 100.0, 'f', 1)),
       QCoreApplication::translate("WorkspaceLegend", "singularity-free area: %1 cm\u00b2")
-          .arg(analysis.safeAreaMm2 / 100.0, 0, 'f', 1)};
+          .arg(QLocale().toString(analysis.safeAreaMm2 / 100.0, 'f', 1))};
   double width = 0.0;
   for (const Entry& e : entries) width = std::max(width, fm.horizontalAdvance(e.text));
   for (const QString& a : areas) width = std::max(width, fm.horizontalAdvance(a));
@@ -202,7 +203,7 @@ void paintScaleBar(QPainter& painter, const QTransform& widgetFromMachine, QPoin
   font.setPointSizeF(9.0);
   painter.setFont(font);
   painter.drawText(QRectF(leftPx.x(), leftPx.y() - 24.0, lengthPx, 16.0), Qt::AlignHCenter,
-                   QStringLiteral("%1 mm").arg(lengthMm, 0, 'g', 6));
+                   QStringLiteral("%1 mm").arg(QLocale().toString(lengthMm, 'g', 6)));
   painter.restore();
 }
 

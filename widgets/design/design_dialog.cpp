@@ -7,11 +7,12 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
-#include <QGroupBox>
 #include <QGridLayout>
+#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLocale>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QTableWidget>
@@ -43,7 +44,7 @@ QDoubleSpinBox* spin(double lo, double hi, double value, const QString& suffix) 
   return s;
 }
 
-QString num(double v, int decimals) { return QString::number(v, 'f', decimals); }
+QString num(double v, int decimals) { return QLocale().toString(v, 'f', decimals); }
 
 }  // namespace
 

@@ -1,6 +1,7 @@
 #include "widgets/design/design_painter.hpp"
 
 #include <QCoreApplication>
+#include <QLocale>
 #include <QPainterPath>
 #include <cmath>
 
@@ -26,7 +27,7 @@ std::optional<Pose> centrePose(const design::Design& d) {
   return makePose(d.geometry, ik.angles, c);
 }
 
-QString mm(double v) { return QString::number(v, 'f', 1); }
+QString mm(double v) { return QLocale().toString(v, 'f', 1); }
 
 }  // namespace
 
@@ -129,15 +130,15 @@ QStringList designMeasureLines(const design::Design& d) {
                .arg(mm(g.a1), mm(g.b1), mm(g.a2), mm(g.b2), mm(g.w), QString::fromUtf8(toString(d.mode).data(), 2));
   lines << trD(QT_TRANSLATE_NOOP("DesignPainter", "Rectangle x %1 .. %2, y %3 .. %4 mm; worst condition number %5 (mean %6)"))
                .arg(mm(d.rect.xMin), mm(d.rect.xMax), mm(d.rect.yMin), mm(d.rect.yMax))
-               .arg(m.worstCondition, 0, 'f', 2)
-               .arg(m.meanCondition, 0, 'f', 2);
+               .arg(QLocale().toString(m.worstCondition, 'f', 2))
+               .arg(QLocale().toString(m.meanCondition, 'f', 2));
   lines << trD(QT_TRANSLATE_NOOP("DesignPainter", "Type II margin %1 deg, type I margin %2 deg, footprint %3 cm\u00b2"))
-               .arg(degFromRad(m.minTypeIIMarginRad), 0, 'f', 1)
-               .arg(degFromRad(m.minTypeIMarginRad), 0, 'f', 1)
-               .arg(m.footprintMm2 / 100.0, 0, 'f', 0);
+               .arg(QLocale().toString(degFromRad(m.minTypeIIMarginRad), 'f', 1))
+               .arg(QLocale().toString(degFromRad(m.minTypeIMarginRad), 'f', 1))
+               .arg(QLocale().toString(m.footprintMm2 / 100.0, 'f', 0));
   lines << trD(QT_TRANSLATE_NOOP("DesignPainter", "Worst %1 um per step, worst motor speed %2 deg/s"))
-               .arg(m.worstMmPerStep * 1000.0, 0, 'f', 1)
-               .arg(degFromRad(m.worstMotorSpeedRadPerS), 0, 'f', 0);
+               .arg(QLocale().toString(m.worstMmPerStep * 1000.0, 'f', 1))
+               .arg(QLocale().toString(degFromRad(m.worstMotorSpeedRadPerS), 'f', 0));
   return lines;
 }
 

@@ -1,5 +1,6 @@
 #include "widgets/design/pareto_plot.hpp"
 
+#include <QLocale>
 #include <QMouseEvent>
 #include <QPainter>
 #include <algorithm>
@@ -54,8 +55,8 @@ void ParetoPlot::paintEvent(QPaintEvent*) {
   for (int k = 0; k <= 4; ++k) {
     const double fx = x0_ + (x1_ - x0_) * k / 4.0, fy = y0_ + (y1_ - y0_) * k / 4.0;
     const double px = r.left() + r.width() * k / 4.0, py = r.bottom() - r.height() * k / 4.0;
-    painter.drawText(QRectF(px - 30, r.bottom() + 2, 60, 14), Qt::AlignCenter, QString::number(fx, 'f', 0));
-    painter.drawText(QRectF(0, py - 7, 44, 14), Qt::AlignRight | Qt::AlignVCenter, QString::number(fy, 'f', 2));
+    painter.drawText(QRectF(px - 30, r.bottom() + 2, 60, 14), Qt::AlignCenter, QLocale().toString(fx, 'f', 0));
+    painter.drawText(QRectF(0, py - 7, 44, 14), Qt::AlignRight | Qt::AlignVCenter, QLocale().toString(fy, 'f', 2));
   }
   painter.drawText(QRectF(r.left(), height() - 16, r.width(), 14), Qt::AlignCenter, tr("Footprint (cm\u00b2)"));
   painter.save();

@@ -1,6 +1,7 @@
 #include "widgets/document/job_pipeline.hpp"
 
 #include <QCoreApplication>
+#include <QLocale>
 #include <set>
 #include <utility>
 
@@ -72,7 +73,7 @@ QString longJobQuestion(const PlannedJob& job) {
   return trPipe(QT_TRANSLATE_NOOP("JobPipeline",
                                   "This job is long: about %1 hours and %2 pen-down moves. The "
                                   "machine will be busy all that time. Start it anyway?"))
-      .arg(s.estimatedTimeS / 3600.0, 0, 'f', 1)
+      .arg(QLocale().toString(s.estimatedTimeS / 3600.0, 'f', 1))
       .arg(s.segments);
 }
 

@@ -1,5 +1,6 @@
 #include "widgets/machine/jog_goto_tool.hpp"
 
+#include <QLocale>
 #include <QPainterPath>
 
 #include "widgets/canvas/studio_palette.hpp"
@@ -22,8 +23,8 @@ void GoToTool::pick(QPointF machineMm) {
   pending_ = planGoTo(session_.profile(), *start, Vec2(machineMm.x(), machineMm.y()));
   if (pending_->ok()) {
     emit picked(true, tr("Go to %1, %2 mm? The dashed path is the pen's travel (%3 checked moves).")
-                          .arg(machineMm.x(), 0, 'f', 1)
-                          .arg(machineMm.y(), 0, 'f', 1)
+                          .arg(QLocale().toString(machineMm.x(), 'f', 1))
+                          .arg(QLocale().toString(machineMm.y(), 'f', 1))
                           .arg(pending_->targets.size()));
   } else {
     emit picked(false, tr("Cannot go there: %1").arg(QString::fromStdString(pending_->reason)));

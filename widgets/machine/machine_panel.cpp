@@ -6,6 +6,7 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QVBoxLayout>
@@ -165,13 +166,13 @@ void MachinePanel::refreshStatus() {
   state_->setText(session_.isConnected() ? stateName(s) : tr("Offline"));
   state_->setStyleSheet(QStringLiteral("color: %1").arg(colourOfState(s)));
   const auto pen = session_.penMm();
-  xy_->setText(pen ? tr("%1, %2 mm").arg(pen->x(), 0, 'f', 2).arg(pen->y(), 0, 'f', 2)
+  xy_->setText(pen ? tr("%1, %2 mm").arg(QLocale().toString(pen->x(), 'f', 2)).arg(QLocale().toString(pen->y(), 'f', 2))
                    : QStringLiteral("–"));
   const auto q = session_.motorAngles();
   // Single poses are shown normalised to (-180, 180] (conventions.md).
   angles_->setText(q ? tr("%1°, %2°")
-                           .arg(normalizeDeg(degFromRad(q->theta1)), 0, 'f', 2)
-                           .arg(normalizeDeg(degFromRad(q->theta2)), 0, 'f', 2)
+                           .arg(QLocale().toString(normalizeDeg(degFromRad(q->theta1)), 'f', 2))
+                           .arg(QLocale().toString(normalizeDeg(degFromRad(q->theta2)), 'f', 2))
                      : QStringLiteral("–"));
   if (report && report->plannerBlocksFree && report->rxBytesFree) {
     buffers_->setText(tr("planner %1 of %2 blocks free, RX %3 of %4 bytes free")

@@ -7,6 +7,7 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QSignalBlocker>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -113,7 +114,7 @@ void ModePanel::showDocument() {
   }
   if (r.mode && r.status != PreviewStatus::Empty) {
     text += QLatin1Char(' ') +
-            tr("Smallest singularity margin: %1 deg.").arg(degFromRad(r.minMarginRad), 0, 'f', 1);
+            tr("Smallest singularity margin: %1 deg.").arg(QLocale().toString(degFromRad(r.minMarginRad), 'f', 1));
   }
   resolved_->setText(text);
 }

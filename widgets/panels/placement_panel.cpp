@@ -5,6 +5,7 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
@@ -148,7 +149,7 @@ void PlacementPanel::fitToWorkspace() {
     return;
   }
   doc_.setPlacement(placed->placement);
-  setNote(tr("Fitted: %1 %").arg(placed->placement.scale * 100.0, 0, 'f', 0));
+  setNote(tr("Fitted: %1 %").arg(QLocale().toString(placed->placement.scale * 100.0, 'f', 0)));
 }
 
 void PlacementPanel::actualSize() {

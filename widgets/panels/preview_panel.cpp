@@ -6,6 +6,7 @@
 #include <QLabel>
 #include <QLinearGradient>
 #include <QListWidget>
+#include <QLocale>
 #include <QPainter>
 #include <QSignalBlocker>
 #include <QSlider>
@@ -23,7 +24,7 @@ namespace fivebar::widgets {
 
 QString formatJobTime(double seconds) {
   if (!std::isfinite(seconds) || seconds < 0.0) return QStringLiteral("-");
-  if (seconds < 60.0) return PreviewPanel::tr("%1 s").arg(seconds, 0, 'f', 1);
+  if (seconds < 60.0) return PreviewPanel::tr("%1 s").arg(QLocale().toString(seconds, 'f', 1));
   const long total = std::lround(seconds);
   const long h = total / 3600, m = (total % 3600) / 60, s = total % 60;
   if (h > 0) return PreviewPanel::tr("%1 h %2 min").arg(h).arg(m, 2, 10, QLatin1Char('0'));
@@ -59,7 +60,7 @@ void SpeedLegend::paintEvent(QPaintEvent*) {
   p.setFont(f);
   const QRectF text(bar.left(), bar.bottom() + 2.0, bar.width(), 16.0);
   p.drawText(text, Qt::AlignLeft | Qt::AlignTop, tr("0 mm/s"));
-  p.drawText(text, Qt::AlignRight | Qt::AlignTop, tr("%1 mm/s").arg(maxSpeed_, 0, 'f', 0));
+  p.drawText(text, Qt::AlignRight | Qt::AlignTop, tr("%1 mm/s").arg(QLocale().toString(maxSpeed_, 'f', 0)));
 }
 
 PreviewPanel::PreviewPanel(PreviewController& preview, JobLayer& layer, QWidget* parent)
@@ -149,11 +150,11 @@ void PreviewPanel::showResult() {
                        "<tr><td>Max deviation:</td><td>%6 mm</td></tr>"
                        "<tr><td>Singularity margin:</td><td>%7 deg</td></tr></table>")
                         .arg(mode, formatJobTime(r.trajectory->durationS()))
-                        .arg(s.penDownMm, 0, 'f', 0)
-                        .arg(s.travelMm, 0, 'f', 0)
+                        .arg(QLocale().toString(s.penDownMm, 'f', 0))
+                        .arg(QLocale().toString(s.travelMm, 'f', 0))
                         .arg(s.segments)
-                        .arg(r.report.maxDeviationMm, 0, 'f', 3)
-                        .arg(degFromRad(s.minTypeIIMarginRad), 0, 'f', 1)
+                        .arg(QLocale().toString(r.report.maxDeviationMm, 'f', 3))
+                        .arg(QLocale().toString(degFromRad(s.minTypeIIMarginRad), 'f', 1))
                         .arg(speedShare(s)));
   } else {
     stats_->setText(tr("Working mode: <b>%1</b>").arg(mode));

@@ -3,6 +3,7 @@
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QStyle>
@@ -108,15 +109,15 @@ void SimulationPanel::showTime() {
          "<tr><td>Transmission angle:</td><td>%6 deg at the pen</td></tr>"
          "<tr><td></td><td>%7 / %8 deg at the elbows</td></tr>"
          "<tr><td>Type II margin:</td><td><b>%9 deg</b></td></tr></table>")
-          .arg(degFromRad(s.q.theta1), 0, 'f', 2)
-          .arg(degFromRad(s.q.theta2), 0, 'f', 2)
-          .arg(printable(s.p.x(), 2), 0, 'f', 2)
-          .arg(printable(s.p.y(), 2), 0, 'f', 2)
+          .arg(QLocale().toString(degFromRad(s.q.theta1), 'f', 2))
+          .arg(QLocale().toString(degFromRad(s.q.theta2), 'f', 2))
+          .arg(QLocale().toString(printable(s.p.x(), 2), 'f', 2))
+          .arg(QLocale().toString(printable(s.p.y(), 2), 'f', 2))
           .arg(s.penDown ? tr("down") : tr("up"))
-          .arg(degFromRad(mu.mu), 0, 'f', 1)
-          .arg(degFromRad(mu.mu1), 0, 'f', 1)
-          .arg(degFromRad(mu.mu2), 0, 'f', 1)
-          .arg(degFromRad(m.typeII), 0, 'f', 1));
+          .arg(QLocale().toString(degFromRad(mu.mu), 'f', 1))
+          .arg(QLocale().toString(degFromRad(mu.mu1), 'f', 1))
+          .arg(QLocale().toString(degFromRad(mu.mu2), 'f', 1))
+          .arg(QLocale().toString(degFromRad(m.typeII), 'f', 1)));
 }
 
 }  // namespace fivebar::widgets

@@ -1,0 +1,29 @@
+# The Debian package (CPack DEB): scripts/package.sh writes
+# build/package/fivebar-studio_VERSION_ARCH.deb from the release build. Everything the install
+# rules put under the prefix goes in; the dependencies are computed by dpkg-shlibdeps from the
+# installed executables (Debian package dpkg-dev).
+set(CPACK_GENERATOR "DEB")
+set(CPACK_PACKAGE_NAME "fivebar-studio")
+set(CPACK_PACKAGE_VERSION "${PROJECT_VERSION}")
+set(CPACK_PACKAGE_VENDOR "The FiveBar Studio developers")
+set(CPACK_PACKAGE_CONTACT "The FiveBar Studio developers <maintainers@users.noreply.github.com>")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "${PROJECT_DESCRIPTION}")
+set(CPACK_PACKAGE_DESCRIPTION
+    "FiveBar Studio makes a five-bar linkage robot (two motors on a base, two driving links, two\n"
+    "floating links meeting at the pen) as easy to use as an x-y gantry: load an SVG, see it placed\n"
+    "on the machine's real workspace with its singularities drawn, preview and simulate the job,\n"
+    "and stream motor angles to a stock GRBL 1.1 board. Includes the command-line tool fivebar and\n"
+    "the simulated GRBL machine fivebar-sim.")
+set(CPACK_PACKAGING_INSTALL_PREFIX "/usr")
+set(CPACK_PACKAGE_DIRECTORY "${CMAKE_SOURCE_DIR}/build/package")
+set(CPACK_STRIP_FILES ON)
+set(CPACK_DEBIAN_PACKAGE_NAME "fivebar-studio")
+set(CPACK_DEBIAN_FILE_NAME "DEB-DEFAULT")  # NAME_VERSION_ARCH.deb
+set(CPACK_DEBIAN_PACKAGE_SECTION "graphics")
+set(CPACK_DEBIAN_PACKAGE_PRIORITY "optional")
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+# Qt loads its platform plugins at run time, so shlibdeps cannot see them (Qt Svg, whose
+# icon engine the icons need, is a link dependency and found by shlibdeps).
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "qt6-qpa-plugins")
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "qt6-translations-l10n")
+include(CPack)

@@ -1,0 +1,115 @@
+#!/usr/bin/env bash
+# check_package.sh BUILD_DIR VERSION SOURCE_DIR: builds the .deb with CPack from BUILD_DIR (already
+# built) into a temporary directory and checks it: file name and control fields (dependencies
+# computed by dpkg-shlibdeps), the installed files, the desktop entry (desktop-file-validate),
+# the AppStream metainfo (appstreamcli validate --pedantic), the man pages (no groff warnings, every
+# command and option of each --help described), and runs the packaged executables from the
+# extracted tree: the versions, the presets, a plan of the packaged demo drawing, the studio's
+# --help without a display. Prints every failure and exits 1 when there is any.
+set -uo pipefail
+build=$1 version=$2 source=$3
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+arch=$(dpkg --print-architecture)
+if ! cpack --config "$build/CPackConfig.cmake" -B "$tmp/out" >"$tmp/cpack.log" 2>&1; then
+  tail -n 40 "$tmp/cpack.log"; echo "FAIL: cpack"; exit 1
+fi
+deb="$tmp/out/fivebar-studio_${version}_${arch}.deb"
+[ -f "$deb" ] || { ls "$tmp/out"; echo "FAIL: no $deb"; exit 1; }
+echo "built $(basename "$deb") ($(du -k "$deb" | cut -f1) kB)"
+
+# Control fields: name, version, and the dependencies dpkg-shlibdeps found.
+[ "$(dpkg-deb -f "$deb" Package)" = fivebar-studio ] || fail "Package field"
+[ "$(dpkg-deb -f "$deb" Version)" = "$version" ] || fail "Version field: $(dpkg-deb -f "$deb" Version)"
+depends=$(dpkg-deb -f "$deb" Depends)
+for lib in libc6 libstdc++6 libqt6widgets6 libqt6svg6 libqt6serialport6 libnlopt0 qt6-qpa-plugins; do
+  grep -q "\b$lib\b" <<<"$depends" || fail "Depends lacks $lib: $depends"
+done
+
+root="$tmp/root"
+dpkg-deb -x "$deb" "$root"
+share="$root/usr/share"
+for f in usr/bin/fivebar usr/bin/fivebar-studio usr/bin/fivebar-sim \
+         usr/share/applications/fivebar-studio.desktop \
+         usr/share/metainfo/io.github.fivebar.studio.metainfo.xml \
+         usr/share/icons/hicolor/scalable/apps/fivebar-studio.svg \
+         usr/share/man/man1/fivebar.1 usr/share/man/man1/fivebar-studio.1 usr/share/man/man1/fivebar-sim.1 \
+         usr/share/fivebar-studio/demo/fivebar-demo.svg; do
+  [ -s "$root/$f" ] || fail "missing $f"
+done
+for size in 16 22 24 32 48 64 128 256; do
+  png="$share/icons/hicolor/${size}x${size}/apps/fivebar-studio.png"
+  # PNG header: width and height are the big-endian words at bytes 16 and 20.
+  dims=$(od -An -tu1 -j16 -N8 "$png" 2>/dev/null | awk '{print $3*256+$4 "x" $7*256+$8}')
+  [ "$dims" = "${size}x${size}" ] || fail "icon ${size}x${size}: got '$dims'"
+done
+for ts in "$source"/translations/fivebar_*.ts; do
+  lang=$(basename "$ts" .ts)
+  [ -s "$share/fivebar-studio/translations/$lang.qm" ] || fail "missing translation $lang.qm"
+done
+# Nothing but /usr (no build tree paths, no stray headers or static libraries).
+stray=$(cd "$root" && find . -type f ! -path './usr/*'; cd "$root" && find . -name '*.a' -o -name '*.h' -o -name '*.hpp')
+[ -z "$stray" ] || fail "unexpected files: $stray"
+
+desktop-file-validate "$share/applications/fivebar-studio.desktop" || fail "desktop-file-validate"
+appstreamcli validate --pedantic --no-net "$share/metainfo/io.github.fivebar.studio.metainfo.xml" \
+  >"$tmp/appstream.log" 2>&1 || { cat "$tmp/appstream.log"; fail "appstreamcli validate --pedantic"; }
+grep -q "<release version=\"$version\"" "$share/metainfo/io.github.fivebar.studio.metainfo.xml" \
+  || fail "metainfo release is not $version"
+
+bin="$root/usr/bin"
+# The versions: one, from CMake.
+[ "$("$bin/fivebar" --version)" = "fivebar $version" ] || fail "fivebar --version: $("$bin/fivebar" --version)"
+[ "$("$bin/fivebar-sim" --version)" = "fivebar-sim $version" ] || fail "fivebar-sim --version"
+# The studio's --help and --version without any display (no QApplication before parsing).
+studio_version=$(env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM "$bin/fivebar-studio" --version 2>&1)
+[ "$studio_version" = "FiveBar Studio $version" ] || fail "fivebar-studio --version: $studio_version"
+env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM "$bin/fivebar-studio" --help >"$tmp/studio-help.txt" 2>&1 \
+  || { cat "$tmp/studio-help.txt"; fail "fivebar-studio --help without a display"; }
+# Translated help (French) from the packaged translations.
+env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM "$bin/fivebar-studio" --lang fr --help >"$tmp/studio-help-fr.txt" 2>&1
+if [ -s "$share/fivebar-studio/translations/fivebar_fr.qm" ]; then
+  cmp -s "$tmp/studio-help.txt" "$tmp/studio-help-fr.txt" && fail "fivebar-studio --lang fr --help is not translated"
+fi
+
+# Man pages: clean for groff, and describe every command and option of the real --help.
+for page in fivebar fivebar-studio fivebar-sim; do
+  warnings=$(LC_ALL=C.UTF-8 MANWIDTH=80 man --warnings -l "$share/man/man1/$page.1" 2>&1 >/dev/null)
+  [ -z "$warnings" ] || fail "man $page: $warnings"
+  # lexgrog finds the NAME section as mandb would
+  lexgrog "$share/man/man1/$page.1" >/dev/null 2>&1 || fail "man $page: no parsable NAME section"
+  LC_ALL=C.UTF-8 MANWIDTH=200 man -l "$share/man/man1/$page.1" 2>/dev/null | sed 's/\xe2\x80\x90/-/g' >"$tmp/$page.txt"
+done
+covers() {  # covers PAGE HELP_TEXT_FILE WHAT: every --option in the help is in the page
+  for opt in $(grep -oE -- '(^|[^[:alnum:]-])--[a-z][a-z0-9-]*' "$2" | grep -oE -- '--[a-z][a-z0-9-]*' | sort -u); do
+    grep -qF -- "$opt" "$tmp/$1.txt" || fail "man $1 does not describe $opt ($3)"
+  done
+}
+covers fivebar-studio "$tmp/studio-help.txt" "fivebar-studio --help"
+"$bin/fivebar-sim" --help >"$tmp/sim-help.txt" 2>&1
+covers fivebar-sim "$tmp/sim-help.txt" "fivebar-sim --help"
+"$bin/fivebar" --help >"$tmp/cli-help.txt" 2>&1
+for cmd in $(awk '/^commands:/{on=1; next} on && /^  [a-z]/{print $1}' "$tmp/cli-help.txt"); do
+  grep -qE "^ *$cmd( |$)" "$tmp/fivebar.txt" || fail "man fivebar does not describe the command $cmd"
+  "$bin/fivebar" "$cmd" --help >"$tmp/cli-$cmd.txt" 2>&1
+  covers fivebar "$tmp/cli-$cmd.txt" "fivebar $cmd --help"
+done
+
+# Presets: the installed files are exactly the built-in presets, each a valid profile.
+listed=$("$bin/fivebar" profile list | sort | tr '\n' ' ')
+installed=$(cd "$share/fivebar-studio/presets" && ls *.json | sed 's/\.json$//' | sort | tr '\n' ' ')
+[ "$listed" = "$installed" ] || fail "presets: listed '$listed', installed '$installed'"
+"$bin/fivebar" profile check "$share"/fivebar-studio/presets/*.json >"$tmp/check.txt" || { cat "$tmp/check.txt"; fail "profile check of the installed presets"; }
+
+# A plan of the packaged demo drawing on the packaged preset file, from the extracted tree.
+( cd "$tmp" && "$bin/fivebar" plan "$share/fivebar-studio/demo/fivebar-demo.svg" \
+    --machine "$share/fivebar-studio/presets/maker-plotter.json" -o job.gcode --report report.json ) \
+  >"$tmp/plan.log" 2>&1 || { cat "$tmp/plan.log"; fail "fivebar plan with the packaged demo and preset"; }
+moves=$(grep -cE '^G1 X-?[0-9]+\.[0-9]+ Y-?[0-9]+\.[0-9]+' "$tmp/job.gcode" 2>/dev/null)
+[ "${moves:-0}" -gt 100 ] || fail "the planned demo job has ${moves:-0} G1 moves with C-locale numbers"
+
+[ "$failures" -eq 0 ] && echo "package OK: $(basename "$deb")"
+exit $((failures > 0))

@@ -1,0 +1,2061 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="es_ES">
+<context>
+    <name>DesignPainter</name>
+    <message>
+        <source>Workspace, singularity-free region and type II curves</source>
+        <translation>Espacio de trabajo, zona sin singularidades y curvas de tipo II</translation>
+    </message>
+    <message>
+        <source>a1 = %1, b1 = %2, a2 = %3, b2 = %4, w = %5 mm, working mode %6</source>
+        <translation>a1 = %1, b1 = %2, a2 = %3, b2 = %4, w = %5 mm, modo de trabajo %6</translation>
+    </message>
+    <message>
+        <source>Rectangle x %1 .. %2, y %3 .. %4 mm; worst condition number %5 (mean %6)</source>
+        <translation>Rectángulo x %1 .. %2, y %3 .. %4 mm; peor número de condición %5 (media %6)</translation>
+    </message>
+    <message>
+        <source>Type II margin %1 deg, type I margin %2 deg, footprint %3 cm²</source>
+        <translation>Margen tipo II %1°, margen tipo I %2°, superficie ocupada %3 cm²</translation>
+    </message>
+    <message>
+        <source>Worst %1 um per step, worst motor speed %2 deg/s</source>
+        <translation>Peor %1 µm por paso, peor velocidad de motor %2°/s</translation>
+    </message>
+</context>
+<context>
+    <name>DocumentCommands</name>
+    <message>
+        <source>Import drawing</source>
+        <translation>Importar dibujo</translation>
+    </message>
+    <message>
+        <source>Move drawing</source>
+        <translation>Mover dibujo</translation>
+    </message>
+    <message>
+        <source>Change working mode</source>
+        <translation>Cambiar modo de trabajo</translation>
+    </message>
+    <message>
+        <source>Change machine profile</source>
+        <translation>Cambiar perfil de máquina</translation>
+    </message>
+</context>
+<context>
+    <name>ImportWarningsPanel</name>
+    <message>
+        <source>%1 has %2 points after flattening, more than the budget of %3 (a runaway file?).</source>
+        <translation>%1 tiene %2 puntos tras aplanarlo, más que el presupuesto de %3 (¿un archivo desbocado?).</translation>
+    </message>
+    <message>
+        <source>Very large drawing</source>
+        <translation>Dibujo muy grande</translation>
+    </message>
+    <message>
+        <source>Planning and plotting it may take very long. Import it anyway?</source>
+        <translation>Planificarlo y trazarlo puede tardar mucho. ¿Importarlo de todos modos?</translation>
+    </message>
+</context>
+<context>
+    <name>JobPipeline</name>
+    <message>
+        <source>Nothing to plan: the drawing has no visible path.</source>
+        <translation>Nada que planificar: el dibujo no tiene ningún trazo visible.</translation>
+    </message>
+    <message>
+        <source>Planning cancelled.</source>
+        <translation>Planificación cancelada.</translation>
+    </message>
+    <message>
+        <source>Planned in working mode %1.</source>
+        <translation>Planificado en el modo de trabajo %1.</translation>
+    </message>
+    <message>
+        <source>This job is long: about %1 hours and %2 pen-down moves. The machine will be busy all that time. Start it anyway?</source>
+        <translation>Este trabajo es largo: unas %1 horas y %2 movimientos con la pluma bajada. La máquina estará ocupada todo ese tiempo. ¿Iniciarlo de todos modos?</translation>
+    </message>
+</context>
+<context>
+    <name>MapPainter</name>
+    <message>
+        <source>Transmission angle at the pen (deg)</source>
+        <translation>Ángulo de transmisión en la pluma (°)</translation>
+    </message>
+    <message>
+        <source>Conditioning (1 = isotropic)</source>
+        <translation>Condicionamiento (1 = isótropo)</translation>
+    </message>
+    <message>
+        <source>Resolution (um per motor step)</source>
+        <translation>Resolución (µm por paso de motor)</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>Planning failed: %1</source>
+        <translation>La planificación falló: %1</translation>
+    </message>
+</context>
+<context>
+    <name>WorkspaceLegend</name>
+    <message>
+        <source>type II &gt;= %1 deg, type I &gt;= %2 deg</source>
+        <translation>tipo II &gt;= %1°, tipo I &gt;= %2°</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>ninguno</translation>
+    </message>
+    <message>
+        <source>singularity-free (%1)</source>
+        <translation>sin singularidades (%1)</translation>
+    </message>
+    <message>
+        <source>reachable, within a singularity margin</source>
+        <translation>alcanzable, dentro de un margen de singularidad</translation>
+    </message>
+    <message>
+        <source>reach boundary</source>
+        <translation>límite de alcance</translation>
+    </message>
+    <message>
+        <source>singularity-free boundary</source>
+        <translation>límite de la zona sin singularidades</translation>
+    </message>
+    <message>
+        <source>type II singularity (%1 curves)</source>
+        <translation>singularidad de tipo II (%1 curvas)</translation>
+    </message>
+    <message>
+        <source>largest rectangle: %1</source>
+        <translation>mayor rectángulo: %1</translation>
+    </message>
+    <message>
+        <source>reachable area: %1 cm²</source>
+        <translation>área alcanzable: %1 cm²</translation>
+    </message>
+    <message>
+        <source>singularity-free area: %1 cm²</source>
+        <translation>área sin singularidades: %1 cm²</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::studio::FileActions</name>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Cambios sin guardar</translation>
+    </message>
+    <message>
+        <source>%1 has changes that are not saved. Save them first?</source>
+        <translation>%1 tiene cambios sin guardar. ¿Guardarlos primero?</translation>
+    </message>
+    <message>
+        <source>Cannot save %1: %2</source>
+        <translation>No se puede guardar %1: %2</translation>
+    </message>
+    <message>
+        <source>Nothing to save: open a drawing first.</source>
+        <translation>Nada que guardar: abre primero un dibujo.</translation>
+    </message>
+    <message>
+        <source>Save failed</source>
+        <translation>Error al guardar</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 guardado</translation>
+    </message>
+    <message>
+        <source>Save project</source>
+        <translation>Guardar proyecto</translation>
+    </message>
+    <message>
+        <source>FiveBar projects (*.fivebar)</source>
+        <translation>Proyectos FiveBar (*.fivebar)</translation>
+    </message>
+    <message>
+        <source>The job is still being planned; export it when planning is done.</source>
+        <translation>El trabajo aún se está planificando; expórtalo cuando termine la planificación.</translation>
+    </message>
+    <message>
+        <source>There is no planned job to export (see the job preview).</source>
+        <translation>No hay ningún trabajo planificado que exportar (ver la vista previa del trabajo).</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>No se puede escribir %1: %2</translation>
+    </message>
+    <message>
+        <source>Export G-code</source>
+        <translation>Exportar código G</translation>
+    </message>
+    <message>
+        <source>G-code (*.gcode *.nc);;All files (*)</source>
+        <translation>Código G (*.gcode *.nc);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>%1 exportado</translation>
+    </message>
+    <message>
+        <source>Clear list</source>
+        <translation>Vaciar lista</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::studio::LanguageMenu</name>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Idioma</translation>
+    </message>
+    <message>
+        <source>System default</source>
+        <translation>Idioma del sistema</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Idioma</translation>
+    </message>
+    <message>
+        <source>The new language applies when FiveBar Studio starts again.</source>
+        <translation>El nuevo idioma se aplica la próxima vez que se inicie FiveBar Studio.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::studio::MainWindow</name>
+    <message>
+        <source>FiveBar Studio</source>
+        <translation>FiveBar Studio</translation>
+    </message>
+    <message>
+        <source>x %1 mm, y %2 mm</source>
+        <translation>x %1 mm, y %2 mm</translation>
+    </message>
+    <message>
+        <source>Planning...</source>
+        <translation>Planificando…</translation>
+    </message>
+    <message>
+        <source>Workspace</source>
+        <translation>Espacio de trabajo</translation>
+    </message>
+    <message>
+        <source>Placement</source>
+        <translation>Colocación</translation>
+    </message>
+    <message>
+        <source>Layers</source>
+        <translation>Capas</translation>
+    </message>
+    <message>
+        <source>Job preview</source>
+        <translation>Vista previa del trabajo</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulación</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Archivo</translation>
+    </message>
+    <message>
+        <source>Open &amp;recent</source>
+        <translation>Abrir &amp;reciente</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Salir</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Editar</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Deshacer</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Rehacer</translation>
+    </message>
+    <message>
+        <source>&amp;Fit drawing to workspace</source>
+        <translation>&amp;Ajustar el dibujo al espacio de trabajo</translation>
+    </message>
+    <message>
+        <source>Ctrl+F</source>
+        <translation>Ctrl+F</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ver</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;in</source>
+        <translation>&amp;Acercar</translation>
+    </message>
+    <message>
+        <source>Ctrl+=</source>
+        <translation>Ctrl+=</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;out</source>
+        <translation>A&amp;lejar</translation>
+    </message>
+    <message>
+        <source>Zoom to &amp;fit</source>
+        <translation>&amp;Ajustar a la vista</translation>
+    </message>
+    <message>
+        <source>Ctrl+0</source>
+        <translation>Ctrl+0</translation>
+    </message>
+    <message>
+        <source>&amp;Simulation</source>
+        <translation>Si&amp;mulación</translation>
+    </message>
+    <message>
+        <source>&amp;Play / pause</source>
+        <translation>&amp;Reproducir / pausa</translation>
+    </message>
+    <message>
+        <source>F5</source>
+        <translation>F5</translation>
+    </message>
+    <message>
+        <source>Step &amp;forward</source>
+        <translation>Paso a&amp;delante</translation>
+    </message>
+    <message>
+        <source>F6</source>
+        <translation>F6</translation>
+    </message>
+    <message>
+        <source>Step &amp;back</source>
+        <translation>Paso a&amp;trás</translation>
+    </message>
+    <message>
+        <source>Shift+F6</source>
+        <translation>Shift+F6</translation>
+    </message>
+    <message>
+        <source>&amp;Machine</source>
+        <translation>&amp;Máquina</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>A&amp;yuda</translation>
+    </message>
+    <message>
+        <source>&amp;About FiveBar Studio</source>
+        <translation>&amp;Acerca de FiveBar Studio</translation>
+    </message>
+    <message>
+        <source>About FiveBar Studio</source>
+        <translation>Acerca de FiveBar Studio</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;FiveBar Studio %1&lt;/b&gt;&lt;p&gt;Plans and simulates drawings for five-bar linkage robots: workspace and singularity analysis, safe job planning, GRBL output.&lt;/p&gt;</source>
+        <translation>&lt;b&gt;FiveBar Studio %1&lt;/b&gt;&lt;p&gt;Planifica y simula dibujos para robots de cinco barras: análisis del espacio de trabajo y de las singularidades, planificación segura de trabajos, salida GRBL.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Main</source>
+        <translation>Principal</translation>
+    </message>
+    <message>
+        <source>&amp;Open drawing or project...</source>
+        <translation>&amp;Abrir dibujo o proyecto…</translation>
+    </message>
+    <message>
+        <source>&amp;Save project</source>
+        <translation>&amp;Guardar proyecto</translation>
+    </message>
+    <message>
+        <source>Save project &amp;as...</source>
+        <translation>Guardar proyecto &amp;como…</translation>
+    </message>
+    <message>
+        <source>&amp;Export G-code...</source>
+        <translation>&amp;Exportar código G…</translation>
+    </message>
+    <message>
+        <source>Ctrl+E</source>
+        <translation>Ctrl+E</translation>
+    </message>
+    <message>
+        <source>&amp;Actual size (100 %)</source>
+        <translation>&amp;Tamaño real (100 %)</translation>
+    </message>
+    <message>
+        <source>Ctrl+1</source>
+        <translation>Ctrl+1</translation>
+    </message>
+    <message>
+        <source>%1[*] - FiveBar Studio</source>
+        <translation>%1[*] - FiveBar Studio</translation>
+    </message>
+    <message>
+        <source>Fills</source>
+        <translation>Rellenos</translation>
+    </message>
+    <message>
+        <source>Import warnings</source>
+        <translation>Avisos de importación</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::ConsolePanel</name>
+    <message>
+        <source>Lines sent to and received from the machine appear here.</source>
+        <translation>Aquí aparecen las líneas enviadas a la máquina y recibidas de ella.</translation>
+    </message>
+    <message>
+        <source>G-code or $ command, e.g. $$ or G0 X10 Y20</source>
+        <translation>Código G u orden $, p. ej. $$ o G0 X10 Y20</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Enviar</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::DesignDialog</name>
+    <message>
+        <source>Design a machine</source>
+        <translation>Diseñar una máquina</translation>
+    </message>
+    <message>
+        <source>&amp;Design...</source>
+        <translation>&amp;Diseño…</translation>
+    </message>
+    <message>
+        <source>Choose link lengths for a paper size</source>
+        <translation>Elegir las longitudes de los brazos para un tamaño de papel</translation>
+    </message>
+    <message>
+        <source>Brief</source>
+        <translation>Requisitos</translation>
+    </message>
+    <message>
+        <source>Custom</source>
+        <translation>Personalizado</translation>
+    </message>
+    <message>
+        <source>Landscape</source>
+        <translation>Horizontal</translation>
+    </message>
+    <message>
+        <source>Portrait</source>
+        <translation>Vertical</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source> deg</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>Symmetric arms</source>
+        <translation>Brazos simétricos</translation>
+    </message>
+    <message>
+        <source>Any</source>
+        <translation>Cualquiera</translation>
+    </message>
+    <message>
+        <source>Worst condition number</source>
+        <translation>Peor número de condición</translation>
+    </message>
+    <message>
+        <source>Worst resolution</source>
+        <translation>Peor resolución</translation>
+    </message>
+    <message>
+        <source>Footprint</source>
+        <translation>Superficie ocupada</translation>
+    </message>
+    <message>
+        <source>Weighted mix</source>
+        <translation>Mezcla ponderada</translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation>Condición</translation>
+    </message>
+    <message>
+        <source>Resolution</source>
+        <translation>Resolución</translation>
+    </message>
+    <message>
+        <source>Weight of this normalised term in the weighted mix</source>
+        <translation>Peso de este término normalizado en la mezcla ponderada</translation>
+    </message>
+    <message>
+        <source>Mix weights</source>
+        <translation>Pesos de la mezcla</translation>
+    </message>
+    <message>
+        <source>Paper</source>
+        <translation>Papel</translation>
+    </message>
+    <message>
+        <source>Orientation</source>
+        <translation>Orientación</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Ancho</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Alto</translation>
+    </message>
+    <message>
+        <source>Margin</source>
+        <translation>Margen</translation>
+    </message>
+    <message>
+        <source>Shortest link</source>
+        <translation>Brazo más corto</translation>
+    </message>
+    <message>
+        <source>Longest link</source>
+        <translation>Brazo más largo</translation>
+    </message>
+    <message>
+        <source>Smallest motor spacing</source>
+        <translation>Menor distancia entre motores</translation>
+    </message>
+    <message>
+        <source>Largest motor spacing</source>
+        <translation>Mayor distancia entre motores</translation>
+    </message>
+    <message>
+        <source>Arm clearance</source>
+        <translation>Holgura de los brazos</translation>
+    </message>
+    <message>
+        <source>Type II margin</source>
+        <translation>Margen tipo II</translation>
+    </message>
+    <message>
+        <source>Working mode</source>
+        <translation>Modo de trabajo</translation>
+    </message>
+    <message>
+        <source>Objective</source>
+        <translation>Objetivo</translation>
+    </message>
+    <message>
+        <source>Search</source>
+        <translation>Buscar</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Set the brief and press Search.</source>
+        <translation>Fija los requisitos y pulsa Buscar.</translation>
+    </message>
+    <message>
+        <source>Worst condition</source>
+        <translation>Peor condición</translation>
+    </message>
+    <message>
+        <source>Footprint (cm²)</source>
+        <translation>Superficie ocupada (cm²)</translation>
+    </message>
+    <message>
+        <source>µm/step</source>
+        <translation>µm/paso</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Modo</translation>
+    </message>
+    <message>
+        <source>Workspace</source>
+        <translation>Espacio de trabajo</translation>
+    </message>
+    <message>
+        <source>Conditioning</source>
+        <translation>Condicionamiento</translation>
+    </message>
+    <message>
+        <source>Transmission angle</source>
+        <translation>Ángulo de transmisión</translation>
+    </message>
+    <message>
+        <source>Map on the canvas</source>
+        <translation>Mapa en el lienzo</translation>
+    </message>
+    <message>
+        <source>Use as profile</source>
+        <translation>Usar como perfil</translation>
+    </message>
+    <message>
+        <source>Export...</source>
+        <translation>Exportar…</translation>
+    </message>
+    <message>
+        <source>Searching...</source>
+        <translation>Buscando…</translation>
+    </message>
+    <message>
+        <source>Search cancelled.</source>
+        <translation>Búsqueda cancelada.</translation>
+    </message>
+    <message>
+        <source>No design meets the brief: %1</source>
+        <translation>Ningún diseño cumple los requisitos: %1</translation>
+    </message>
+    <message>
+        <source>Best worst-case condition number %1; %2 designs on the trade-off, %3 evaluations in %4 s.</source>
+        <translation>Mejor número de condición en el peor caso %1; %2 diseños en el compromiso, %3 evaluaciones en %4 s.</translation>
+    </message>
+    <message>
+        <source>The document now uses this design (Edit &gt; Undo restores the previous profile).</source>
+        <translation>El documento usa ahora este diseño (Editar &gt; Deshacer restaura el perfil anterior).</translation>
+    </message>
+    <message>
+        <source>No design is selected.</source>
+        <translation>No hay ningún diseño seleccionado.</translation>
+    </message>
+    <message>
+        <source>Export profile</source>
+        <translation>Exportar perfil</translation>
+    </message>
+    <message>
+        <source>Machine profiles (*.json)</source>
+        <translation>Perfiles de máquina (*.json)</translation>
+    </message>
+    <message>
+        <source>Profile written to %1.</source>
+        <translation>Perfil escrito en %1.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::FillOptionsBox</name>
+    <message>
+        <source>Filled shapes</source>
+        <translation>Formas rellenas</translation>
+    </message>
+    <message>
+        <source>Outline</source>
+        <translation>Contorno</translation>
+    </message>
+    <message>
+        <source>Hatch</source>
+        <translation>Rayado</translation>
+    </message>
+    <message>
+        <source>Not drawn</source>
+        <translation>Sin dibujar</translation>
+    </message>
+    <message>
+        <source>Outline: the shape&apos;s edge (as AxiDraw and vpype draw fills). Hatch: parallel lines inside the shape. Not drawn: fill-only shapes are left out.</source>
+        <translation>Contorno: el borde de la forma (como dibujan los rellenos AxiDraw y vpype). Rayado: líneas paralelas dentro de la forma. Sin dibujar: se omiten las formas que solo tienen relleno.</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source> deg</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>Crosshatch</source>
+        <translation>Rayado cruzado</translation>
+    </message>
+    <message>
+        <source>Keep the outline</source>
+        <translation>Mantener el contorno</translation>
+    </message>
+    <message>
+        <source>Import again with these settings</source>
+        <translation>Volver a importar con estos ajustes</translation>
+    </message>
+    <message>
+        <source>Fill:</source>
+        <translation>Relleno:</translation>
+    </message>
+    <message>
+        <source>Line spacing:</source>
+        <translation>Separación:</translation>
+    </message>
+    <message>
+        <source>Angle:</source>
+        <translation>Ángulo:</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::GoToTool</name>
+    <message>
+        <source>Connect the machine first: its position is not known.</source>
+        <translation>Conecta primero la máquina: su posición es desconocida.</translation>
+    </message>
+    <message>
+        <source>Go to %1, %2 mm? The dashed path is the pen&apos;s travel (%3 checked moves).</source>
+        <translation>¿Ir a %1, %2 mm? El trazo discontinuo es el recorrido de la pluma (%3 movimientos comprobados).</translation>
+    </message>
+    <message>
+        <source>Cannot go there: %1</source>
+        <translation>No se puede ir allí: %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::ImportController</name>
+    <message>
+        <source>%1: another import is still running.</source>
+        <translation>%1: aún hay otra importación en curso.</translation>
+    </message>
+    <message>
+        <source>Importing %1...</source>
+        <translation>Importando %1…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Importación</translation>
+    </message>
+    <message>
+        <source>Import of %1 cancelled.</source>
+        <translation>Importación de %1 cancelada.</translation>
+    </message>
+    <message>
+        <source>%1 could not be imported.</source>
+        <translation>No se pudo importar %1.</translation>
+    </message>
+    <message>
+        <source>Import failed</source>
+        <translation>Error de importación</translation>
+    </message>
+    <message>
+        <source>%1 contains nothing to draw.</source>
+        <translation>%1 no contiene nada que dibujar.</translation>
+    </message>
+    <message>
+        <source>Open drawing or project</source>
+        <translation>Abrir dibujo o proyecto</translation>
+    </message>
+    <message>
+        <source>Drawings and projects (*.svg *.fivebar);;SVG drawings (*.svg);;FiveBar projects (*.fivebar);;All files (*)</source>
+        <translation>Dibujos y proyectos (*.svg *.fivebar);;Dibujos SVG (*.svg);;Proyectos FiveBar (*.fivebar);;Todos los archivos (*)</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::ImportWarningsPanel</name>
+    <message>
+        <source>No drawing imported yet.</source>
+        <translation>Aún no se ha importado ningún dibujo.</translation>
+    </message>
+    <message>
+        <source>What the importer dropped, approximated or could not draw. docs/svg-import.md lists what is supported.</source>
+        <translation>Lo que la importación omitió, aproximó o no pudo dibujar. docs/svg-import.md enumera lo que se admite.</translation>
+    </message>
+    <message>
+        <source>%1 imported without warnings.</source>
+        <translation>%1 importado sin avisos.</translation>
+    </message>
+    <message>
+        <source>1 warning while importing %1: part of the drawing may differ from what a browser shows.</source>
+        <translation>1 aviso al importar %1: parte del dibujo puede diferir de lo que muestra un navegador.</translation>
+    </message>
+    <message>
+        <source>%1 warnings while importing %2: parts of the drawing may differ from what a browser shows.</source>
+        <translation>%1 avisos al importar %2: partes del dibujo pueden diferir de lo que muestra un navegador.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::JobLayer</name>
+    <message>
+        <source>Planning...</source>
+        <translation>Planificando…</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::JogController</name>
+    <message>
+        <source>Jog refused: the machine is not connected, not idle, or a job is running.</source>
+        <translation>Movimiento rechazado: la máquina no está conectada, no está en reposo o hay un trabajo en curso.</translation>
+    </message>
+    <message>
+        <source>Jog stopped at the last safe point: %1</source>
+        <translation>Movimiento detenido en el último punto seguro: %1</translation>
+    </message>
+    <message>
+        <source>Jog refused: %1</source>
+        <translation>Movimiento rechazado: %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::JogPanel</name>
+    <message>
+        <source>Jog the pen %1 mm in X, %2 mm in Y per step; hold for a continuous jog</source>
+        <translation>Mover la pluma %1 mm en X y %2 mm en Y por paso; mantén pulsado para un movimiento continuo</translation>
+    </message>
+    <message>
+        <source>Go to…</source>
+        <translation>Ir a…</translation>
+    </message>
+    <message>
+        <source>Click the canvas to choose where the pen goes; the path is shown before you confirm.</source>
+        <translation>Haz clic en el lienzo para elegir adónde va la pluma; el recorrido se muestra antes de confirmar.</translation>
+    </message>
+    <message>
+        <source>Turn motor %1 clockwise by one step</source>
+        <translation>Girar el motor %1 un paso en sentido horario</translation>
+    </message>
+    <message>
+        <source>Turn motor %1 counter-clockwise by one step</source>
+        <translation>Girar el motor %1 un paso en sentido antihorario</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Paso</translation>
+    </message>
+    <message>
+        <source>mm / °</source>
+        <translation>mm / °</translation>
+    </message>
+    <message>
+        <source> mm/s</source>
+        <translation> mm/s</translation>
+    </message>
+    <message>
+        <source>Pen up</source>
+        <translation>Subir pluma</translation>
+    </message>
+    <message>
+        <source>Lift the pen (Page Up on the canvas)</source>
+        <translation>Subir la pluma (Re Pág en el lienzo)</translation>
+    </message>
+    <message>
+        <source>Pen down</source>
+        <translation>Bajar pluma</translation>
+    </message>
+    <message>
+        <source>Lower the pen (Page Down on the canvas)</source>
+        <translation>Bajar la pluma (Av Pág en el lienzo)</translation>
+    </message>
+    <message>
+        <source>Go</source>
+        <translation>Ir</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Click the canvas where the pen should go.</source>
+        <translation>Haz clic en el lienzo donde debe ir la pluma.</translation>
+    </message>
+    <message>
+        <source>Home ($H)</source>
+        <translation>Origen ($H)</translation>
+    </message>
+    <message>
+        <source>Set reference pose</source>
+        <translation>Fijar pose de referencia</translation>
+    </message>
+    <message>
+        <source>Run the homing cycle</source>
+        <translation>Ejecutar la búsqueda de origen</translation>
+    </message>
+    <message>
+        <source>Declare that the machine now stands at the profile&apos;s home pose</source>
+        <translation>Declarar que la máquina está ahora en la pose de origen del perfil</translation>
+    </message>
+    <message>
+        <source>Speed of XY jogs</source>
+        <translation>Velocidad de los movimientos XY</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::LayersPanel</name>
+    <message>
+        <source>Plot this layer earlier</source>
+        <translation>Trazar esta capa antes</translation>
+    </message>
+    <message>
+        <source>Plot this layer later</source>
+        <translation>Trazar esta capa después</translation>
+    </message>
+    <message>
+        <source>Tool settings of the selected layer</source>
+        <translation>Ajustes de herramienta de la capa seleccionada</translation>
+    </message>
+    <message>
+        <source> mm/s</source>
+        <translation> mm/s</translation>
+    </message>
+    <message>
+        <source>Profile default</source>
+        <translation>Valor del perfil</translation>
+    </message>
+    <message>
+        <source>Pause before this layer (pen change)</source>
+        <translation>Pausa antes de esta capa (cambio de pluma)</translation>
+    </message>
+    <message>
+        <source>Draw speed:</source>
+        <translation>Velocidad de dibujo:</translation>
+    </message>
+    <message>
+        <source>Power / pen S:</source>
+        <translation>Potencia / S de pluma:</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n path(s)</source>
+        <translation>
+            <numerusform>%n trazo</numerusform>
+            <numerusform>%n trazos</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n point(s)</source>
+        <translation>
+            <numerusform>%n punto</numerusform>
+            <numerusform>%n puntos</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachineBanner</name>
+    <message>
+        <source>Reset</source>
+        <translation>Reiniciar</translation>
+    </message>
+    <message>
+        <source>Soft reset (Ctrl-X): stops everything; the machine keeps its position unless it was moving.</source>
+        <translation>Reinicio suave (Ctrl-X): detiene todo; la máquina conserva su posición salvo que se estuviera moviendo.</translation>
+    </message>
+    <message>
+        <source>Unlock ($X)</source>
+        <translation>Desbloquear ($X)</translation>
+    </message>
+    <message>
+        <source>Leave the alarm state without homing. Only when you know the machine stands where the studio shows it.</source>
+        <translation>Salir del estado de alarma sin buscar el origen. Solo si sabes que la máquina está donde la muestra el estudio.</translation>
+    </message>
+    <message>
+        <source>Dismiss</source>
+        <translation>Cerrar</translation>
+    </message>
+    <message>
+        <source>Alarm %1: the machine stopped</source>
+        <translation>Alarma %1: la máquina se ha detenido</translation>
+    </message>
+    <message>
+        <source>Alarm: the machine is locked</source>
+        <translation>Alarma: la máquina está bloqueada</translation>
+    </message>
+    <message>
+        <source>Error %1: a command was rejected</source>
+        <translation>Error %1: se rechazó una orden</translation>
+    </message>
+    <message>
+        <source>The board waits for a reset first: press Reset, then Unlock.</source>
+        <translation>La placa espera primero un reinicio: pulsa Reiniciar y luego Desbloquear.</translation>
+    </message>
+    <message>
+        <source>Home ($H)</source>
+        <translation>Origen ($H)</translation>
+    </message>
+    <message>
+        <source>Set reference pose</source>
+        <translation>Fijar pose de referencia</translation>
+    </message>
+    <message>
+        <source>Run the homing cycle; the machine moves to its switches.</source>
+        <translation>Ejecutar la búsqueda de origen; la máquina se mueve hasta sus finales de carrera.</translation>
+    </message>
+    <message>
+        <source>Declare that the machine now stands at the profile&apos;s home pose (G10 L20).</source>
+        <translation>Declarar que la máquina está ahora en la pose de origen del perfil (G10 L20).</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachinePanel</name>
+    <message>
+        <source>Idle</source>
+        <translation>En reposo</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>En marcha</translation>
+    </message>
+    <message>
+        <source>On hold</source>
+        <translation>En pausa</translation>
+    </message>
+    <message>
+        <source>Jogging</source>
+        <translation>Moviendo</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Alarma</translation>
+    </message>
+    <message>
+        <source>Door open</source>
+        <translation>Puerta abierta</translation>
+    </message>
+    <message>
+        <source>Check mode</source>
+        <translation>Modo de prueba</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>Buscando origen</translation>
+    </message>
+    <message>
+        <source>Sleeping</source>
+        <translation>En suspensión</translation>
+    </message>
+    <message>
+        <source>Unknown</source>
+        <translation>Desconocido</translation>
+    </message>
+    <message>
+        <source>Refresh</source>
+        <translation>Actualizar</translation>
+    </message>
+    <message>
+        <source>List the serial ports again</source>
+        <translation>Volver a listar los puertos serie</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Conectar</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>Desconectar</translation>
+    </message>
+    <message>
+        <source>Baud</source>
+        <translation>Baudios</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>Conexión</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <source>Pen (X, Y)</source>
+        <translation>Pluma (X, Y)</translation>
+    </message>
+    <message>
+        <source>Motors (θ1, θ2)</source>
+        <translation>Motores (θ1, θ2)</translation>
+    </message>
+    <message>
+        <source>Buffers</source>
+        <translation>Búferes</translation>
+    </message>
+    <message>
+        <source>Simulated machine (built in)</source>
+        <translation>Máquina simulada (integrada)</translation>
+    </message>
+    <message>
+        <source>Cannot connect</source>
+        <translation>No se puede conectar</translation>
+    </message>
+    <message>
+        <source>Connected to %1</source>
+        <translation>Conectado a %1</translation>
+    </message>
+    <message>
+        <source>Not connected</source>
+        <translation>Sin conexión</translation>
+    </message>
+    <message>
+        <source>Offline</source>
+        <translation>Desconectado</translation>
+    </message>
+    <message>
+        <source>%1, %2 mm</source>
+        <translation>%1, %2 mm</translation>
+    </message>
+    <message>
+        <source>%1°, %2°</source>
+        <translation>%1°, %2°</translation>
+    </message>
+    <message>
+        <source>planner %1 of %2 blocks free, RX %3 of %4 bytes free</source>
+        <translation>planificador: %1 de %2 bloques libres, RX: %3 de %4 bytes libres</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachineSession</name>
+    <message>
+        <source>Cannot open %1.</source>
+        <translation>No se puede abrir %1.</translation>
+    </message>
+    <message>
+        <source>Connected to %1.</source>
+        <translation>Conectado a %1.</translation>
+    </message>
+    <message>
+        <source>Disconnected.</source>
+        <translation>Desconectado.</translation>
+    </message>
+    <message>
+        <source>Not connected: %1 was not sent.</source>
+        <translation>Sin conexión: %1 no se envió.</translation>
+    </message>
+    <message>
+        <source>Not sent (%1): %2</source>
+        <translation>No enviado (%1): %2</translation>
+    </message>
+    <message>
+        <source>A job is running: %1 was not sent.</source>
+        <translation>Hay un trabajo en curso: %1 no se envió.</translation>
+    </message>
+    <message>
+        <source>Jog refused: the machine is not idle, not connected or a job is running.</source>
+        <translation>Movimiento rechazado: la máquina no está en reposo, no está conectada o hay un trabajo en curso.</translation>
+    </message>
+    <message>
+        <source>%1 (jog in %2 checked moves)</source>
+        <translation>%1 (movimiento en %2 pasos comprobados)</translation>
+    </message>
+    <message>
+        <source>[soft reset]</source>
+        <translation>[reinicio suave]</translation>
+    </message>
+    <message>
+        <source>[feed hold]</source>
+        <translation>[pausa de avance]</translation>
+    </message>
+    <message>
+        <source>[cycle start]</source>
+        <translation>[inicio de ciclo]</translation>
+    </message>
+    <message>
+        <source>%1 was rejected: %2</source>
+        <translation>%1 fue rechazado: %2</translation>
+    </message>
+    <message>
+        <source>The machine is locked (alarm state). Unlock it with $X or home it with $H once you know where it stands.</source>
+        <translation>La máquina está bloqueada (estado de alarma). Desbloquéala con $X o busca su origen con $H cuando sepas dónde está.</translation>
+    </message>
+    <message>
+        <source>The board reset (Grbl %1).</source>
+        <translation>La placa se ha reiniciado (Grbl %1).</translation>
+    </message>
+    <message>
+        <source>Connection lost: %1</source>
+        <translation>Conexión perdida: %1</translation>
+    </message>
+    <message>
+        <source>the simulated machine</source>
+        <translation>la máquina simulada</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachineSettingsDialog</name>
+    <message>
+        <source>Machine settings</source>
+        <translation>Ajustes de la máquina</translation>
+    </message>
+    <message>
+        <source>The board&apos;s GRBL settings next to the values the machine profile needs. Writing saves a backup of the board&apos;s settings first.</source>
+        <translation>Los ajustes GRBL de la placa junto a los valores que necesita el perfil de máquina. Antes de escribir se guarda una copia de seguridad de los ajustes de la placa.</translation>
+    </message>
+    <message>
+        <source>Setting</source>
+        <translation>Ajuste</translation>
+    </message>
+    <message>
+        <source>Board</source>
+        <translation>Placa</translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation>Perfil</translation>
+    </message>
+    <message>
+        <source>Differs</source>
+        <translation>Difiere</translation>
+    </message>
+    <message>
+        <source>Read from board</source>
+        <translation>Leer de la placa</translation>
+    </message>
+    <message>
+        <source>Write differences...</source>
+        <translation>Escribir diferencias…</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Cerrar</translation>
+    </message>
+    <message>
+        <source>The machine was disconnected.</source>
+        <translation>La máquina se ha desconectado.</translation>
+    </message>
+    <message>
+        <source>Connect the machine first.</source>
+        <translation>Conecta primero la máquina.</translation>
+    </message>
+    <message>
+        <source>A job is running.</source>
+        <translation>Hay un trabajo en curso.</translation>
+    </message>
+    <message>
+        <source>Still talking to the board.</source>
+        <translation>Aún comunicando con la placa.</translation>
+    </message>
+    <message>
+        <source>The machine must be idle (or in alarm) to change settings.</source>
+        <translation>La máquina debe estar en reposo (o en alarma) para cambiar los ajustes.</translation>
+    </message>
+    <message>
+        <source>Reading the board&apos;s settings...</source>
+        <translation>Leyendo los ajustes de la placa…</translation>
+    </message>
+    <message>
+        <source>Nothing to write: read the board&apos;s settings first.</source>
+        <translation>Nada que escribir: lee primero los ajustes de la placa.</translation>
+    </message>
+    <message>
+        <source>Write settings</source>
+        <translation>Escribir ajustes</translation>
+    </message>
+    <message numerus="yes">
+        <source>Write %n setting(s) to the board? Its current settings are saved to a backup file first.</source>
+        <translation>
+            <numerusform>¿Escribir %n ajuste en la placa? Sus ajustes actuales se guardan antes en un archivo de copia de seguridad.</numerusform>
+            <numerusform>¿Escribir %n ajustes en la placa? Sus ajustes actuales se guardan antes en un archivo de copia de seguridad.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The board&apos;s settings match the profile.</source>
+        <translation>Los ajustes de la placa coinciden con el perfil.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n setting(s) differ from the profile.</source>
+        <translation>
+            <numerusform>%n ajuste difiere del perfil.</numerusform>
+            <numerusform>%n ajustes difieren del perfil.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n setting(s) written. Backup of the previous settings: %1</source>
+        <translation>
+            <numerusform>%n ajuste escrito. Copia de seguridad de los ajustes anteriores: %1</numerusform>
+            <numerusform>%n ajustes escritos. Copia de seguridad de los ajustes anteriores: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Writing settings one at a time... Backup: %1</source>
+        <translation>Escribiendo los ajustes de uno en uno… Copia de seguridad: %1</translation>
+    </message>
+    <message>
+        <source>Failed: %1</source>
+        <translation>Error: %1</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>sí</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachineUi</name>
+    <message>
+        <source>Machine</source>
+        <translation>Máquina</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Ejecución</translation>
+    </message>
+    <message>
+        <source>Jog</source>
+        <translation>Mover</translation>
+    </message>
+    <message>
+        <source>Console</source>
+        <translation>Consola</translation>
+    </message>
+    <message>
+        <source>Machine profile</source>
+        <translation>Perfil de máquina</translation>
+    </message>
+    <message>
+        <source>Machine &amp;settings...</source>
+        <translation>&amp;Ajustes de la máquina…</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::ModePanel</name>
+    <message>
+        <source>Working mode</source>
+        <translation>Modo de trabajo</translation>
+    </message>
+    <message>
+        <source>Auto</source>
+        <translation>Auto</translation>
+    </message>
+    <message>
+        <source>Let the planner pick the feasible mode with the largest margin</source>
+        <translation>Dejar que el planificador elija el modo factible con mayor margen</translation>
+    </message>
+    <message>
+        <source>Elbows %1 (arm 1 %2, arm 2 %3)</source>
+        <translation>Codos %1 (brazo 1 %2, brazo 2 %3)</translation>
+    </message>
+    <message>
+        <source>out</source>
+        <translation>fuera</translation>
+    </message>
+    <message>
+        <source>in</source>
+        <translation>dentro</translation>
+    </message>
+    <message>
+        <source>Overlays</source>
+        <translation>Capas superpuestas</translation>
+    </message>
+    <message>
+        <source>Reachable and singularity-free regions</source>
+        <translation>Zonas alcanzables y sin singularidades</translation>
+    </message>
+    <message>
+        <source>Type II singularity curves</source>
+        <translation>Curvas de singularidad de tipo II</translation>
+    </message>
+    <message>
+        <source>Largest singularity-free rectangle</source>
+        <translation>Mayor rectángulo sin singularidades</translation>
+    </message>
+    <message>
+        <source>Workspace legend</source>
+        <translation>Leyenda del espacio de trabajo</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Ninguno</translation>
+    </message>
+    <message>
+        <source>Transmission angle</source>
+        <translation>Ángulo de transmisión</translation>
+    </message>
+    <message>
+        <source>Conditioning</source>
+        <translation>Condicionamiento</translation>
+    </message>
+    <message>
+        <source>Resolution (mm per step)</source>
+        <translation>Resolución (mm por paso)</translation>
+    </message>
+    <message>
+        <source>Map:</source>
+        <translation>Mapa:</translation>
+    </message>
+    <message>
+        <source>Auto picked %1.</source>
+        <translation>Auto eligió %1.</translation>
+    </message>
+    <message>
+        <source>Auto: no mode draws the whole job; showing %1.</source>
+        <translation>Auto: ningún modo dibuja todo el trabajo; se muestra %1.</translation>
+    </message>
+    <message>
+        <source>Showing the workspace of %1.</source>
+        <translation>Se muestra el espacio de trabajo de %1.</translation>
+    </message>
+    <message>
+        <source>Smallest singularity margin: %1 deg.</source>
+        <translation>Menor margen de singularidad: %1°.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::ParetoPlot</name>
+    <message>
+        <source>Footprint (cm²)</source>
+        <translation>Superficie ocupada (cm²)</translation>
+    </message>
+    <message>
+        <source>Worst condition number</source>
+        <translation>Peor número de condición</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::PlacementPanel</name>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source> deg</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <source>Centre X:</source>
+        <translation>Centro X:</translation>
+    </message>
+    <message>
+        <source>Centre Y:</source>
+        <translation>Centro Y:</translation>
+    </message>
+    <message>
+        <source>Rotation:</source>
+        <translation>Rotación:</translation>
+    </message>
+    <message>
+        <source>Scale:</source>
+        <translation>Escala:</translation>
+    </message>
+    <message>
+        <source>Fit to workspace</source>
+        <translation>Ajustar al espacio</translation>
+    </message>
+    <message>
+        <source>Keep aspect ratio</source>
+        <translation>Mantener proporción</translation>
+    </message>
+    <message>
+        <source>Width:</source>
+        <translation>Ancho:</translation>
+    </message>
+    <message>
+        <source>Height:</source>
+        <translation>Alto:</translation>
+    </message>
+    <message>
+        <source>Actual size</source>
+        <translation>Tamaño real</translation>
+    </message>
+    <message>
+        <source>Draw the drawing at its true size (100 %)</source>
+        <translation>Dibujar el dibujo a su tamaño real (100 %)</translation>
+    </message>
+    <message>
+        <source>Scale the drawing to fill the largest singularity-free rectangle</source>
+        <translation>Escalar el dibujo para llenar el mayor rectángulo sin singularidades</translation>
+    </message>
+    <message>
+        <source>No singularity-free area to fit the drawing into.</source>
+        <translation>No hay ninguna zona sin singularidades donde ajustar el dibujo.</translation>
+    </message>
+    <message>
+        <source>Fitted: %1 %</source>
+        <translation>Ajustado: %1 %</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::PreviewPanel</name>
+    <message>
+        <source>%1 % of what this machine can do</source>
+        <translation>%1 % de lo que puede hacer esta máquina</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation>%1 h %2 min</translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>Show</source>
+        <translation>Mostrar</translation>
+    </message>
+    <message>
+        <source>Colour pen-down moves by speed</source>
+        <translation>Colorear los trazos según la velocidad</translation>
+    </message>
+    <message>
+        <source>Pen-up moves (grey)</source>
+        <translation>Movimientos con pluma subida (gris)</translation>
+    </message>
+    <message>
+        <source>Drawing order</source>
+        <translation>Orden de dibujo</translation>
+    </message>
+    <message>
+        <source>Pre-flight problems (click to show):</source>
+        <translation>Problemas de la comprobación previa (clic para mostrar):</translation>
+    </message>
+    <message>
+        <source>Moves shown: %1 of %2</source>
+        <translation>Movimientos mostrados: %1 de %2</translation>
+    </message>
+    <message>
+        <source>Planning...</source>
+        <translation>Planificando…</translation>
+    </message>
+    <message>
+        <source>Planned.</source>
+        <translation>Planificado.</translation>
+    </message>
+    <message>
+        <source>Open a drawing to plan a job.</source>
+        <translation>Abre un dibujo para planificar un trabajo.</translation>
+    </message>
+    <message>
+        <source>Working mode: &lt;b&gt;%1&lt;/b&gt;</source>
+        <translation>Modo de trabajo: &lt;b&gt;%1&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>No problems: every move is reachable and safe.</source>
+        <translation>Sin problemas: todos los movimientos son alcanzables y seguros.</translation>
+    </message>
+    <message>
+        <source>What to do: %1</source>
+        <translation>Qué hacer: %1</translation>
+    </message>
+    <message>
+        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Working mode:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Estimated time:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%8&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen down:&lt;/td&gt;&lt;td&gt;%3 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen up:&lt;/td&gt;&lt;td&gt;%4 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Segments:&lt;/td&gt;&lt;td&gt;%5&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Max deviation:&lt;/td&gt;&lt;td&gt;%6 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Singularity margin:&lt;/td&gt;&lt;td&gt;%7 deg&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Modo de trabajo:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Tiempo estimado:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%8&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pluma bajada:&lt;/td&gt;&lt;td&gt;%3 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pluma subida:&lt;/td&gt;&lt;td&gt;%4 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Segmentos:&lt;/td&gt;&lt;td&gt;%5&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Desviación máx.:&lt;/td&gt;&lt;td&gt;%6 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Margen de singularidad:&lt;/td&gt;&lt;td&gt;%7°&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::ProfileEditor</name>
+    <message>
+        <source>Load preset</source>
+        <translation>Cargar preajuste</translation>
+    </message>
+    <message>
+        <source>Import…</source>
+        <translation>Importar…</translation>
+    </message>
+    <message>
+        <source>Load a machine profile from a JSON file</source>
+        <translation>Cargar un perfil de máquina desde un archivo JSON</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Exportar…</translation>
+    </message>
+    <message>
+        <source>Save this machine profile as a JSON file</source>
+        <translation>Guardar este perfil de máquina como archivo JSON</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Máquina</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <source>Geometry</source>
+        <translation>Geometría</translation>
+    </message>
+    <message>
+        <source>Joint limits</source>
+        <translation>Límites articulares</translation>
+    </message>
+    <message>
+        <source>Motors</source>
+        <translation>Motores</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Herramienta</translation>
+    </message>
+    <message>
+        <source>Motion and safety</source>
+        <translation>Movimiento y seguridad</translation>
+    </message>
+    <message>
+        <source>Connection and home pose</source>
+        <translation>Conexión y pose de origen</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Driving link a1</source>
+        <translation>Brazo motor a1</translation>
+    </message>
+    <message>
+        <source>Floating link b1</source>
+        <translation>Brazo libre b1</translation>
+    </message>
+    <message>
+        <source>Driving link a2</source>
+        <translation>Brazo motor a2</translation>
+    </message>
+    <message>
+        <source>Floating link b2</source>
+        <translation>Brazo libre b2</translation>
+    </message>
+    <message>
+        <source>Motor distance w</source>
+        <translation>Distancia entre motores w</translation>
+    </message>
+    <message>
+        <source>Limit the motor angles</source>
+        <translation>Limitar los ángulos de los motores</translation>
+    </message>
+    <message>
+        <source>θ1 minimum</source>
+        <translation>θ1 mínimo</translation>
+    </message>
+    <message>
+        <source>θ1 maximum</source>
+        <translation>θ1 máximo</translation>
+    </message>
+    <message>
+        <source>θ2 minimum</source>
+        <translation>θ2 mínimo</translation>
+    </message>
+    <message>
+        <source>θ2 maximum</source>
+        <translation>θ2 máximo</translation>
+    </message>
+    <message>
+        <source>Motor 1 steps per degree</source>
+        <translation>Motor 1: pasos por grado</translation>
+    </message>
+    <message>
+        <source>Motor 2 steps per degree</source>
+        <translation>Motor 2: pasos por grado</translation>
+    </message>
+    <message>
+        <source>Motor 1 maximum speed</source>
+        <translation>Motor 1: velocidad máxima</translation>
+    </message>
+    <message>
+        <source> °/min</source>
+        <translation> °/min</translation>
+    </message>
+    <message>
+        <source>Motor 2 maximum speed</source>
+        <translation>Motor 2: velocidad máxima</translation>
+    </message>
+    <message>
+        <source>Motor 1 acceleration</source>
+        <translation>Motor 1: aceleración</translation>
+    </message>
+    <message>
+        <source> °/s²</source>
+        <translation> °/s²</translation>
+    </message>
+    <message>
+        <source>Motor 2 acceleration</source>
+        <translation>Motor 2: aceleración</translation>
+    </message>
+    <message>
+        <source>Junction deviation</source>
+        <translation>Desviación de unión</translation>
+    </message>
+    <message>
+        <source>Pen servo (M3 S / M5)</source>
+        <translation>Servo de pluma (M3 S / M5)</translation>
+    </message>
+    <message>
+        <source>Z axis</source>
+        <translation>Eje Z</translation>
+    </message>
+    <message>
+        <source>Laser (M4 S / M5)</source>
+        <translation>Láser (M4 S / M5)</translation>
+    </message>
+    <message>
+        <source>Pen up S value</source>
+        <translation>Valor S pluma subida</translation>
+    </message>
+    <message>
+        <source>Pen down S value</source>
+        <translation>Valor S pluma bajada</translation>
+    </message>
+    <message>
+        <source>Pen up delay</source>
+        <translation>Espera pluma subida</translation>
+    </message>
+    <message>
+        <source>Pen down delay</source>
+        <translation>Espera pluma bajada</translation>
+    </message>
+    <message>
+        <source>Z up</source>
+        <translation>Z arriba</translation>
+    </message>
+    <message>
+        <source>Z down</source>
+        <translation>Z abajo</translation>
+    </message>
+    <message>
+        <source>Z feed</source>
+        <translation>Avance Z</translation>
+    </message>
+    <message>
+        <source> mm/min</source>
+        <translation> mm/min</translation>
+    </message>
+    <message>
+        <source>Laser power S value</source>
+        <translation>Valor S de potencia láser</translation>
+    </message>
+    <message>
+        <source>Working mode (built)</source>
+        <translation>Modo de trabajo (montaje)</translation>
+    </message>
+    <message>
+        <source>Assembly mode</source>
+        <translation>Modo de ensamblaje</translation>
+    </message>
+    <message>
+        <source>Drawing speed</source>
+        <translation>Velocidad de dibujo</translation>
+    </message>
+    <message>
+        <source> mm/s</source>
+        <translation> mm/s</translation>
+    </message>
+    <message>
+        <source>Travel speed</source>
+        <translation>Velocidad de desplazamiento</translation>
+    </message>
+    <message>
+        <source>Type II singularity margin</source>
+        <translation>Margen de singularidad de tipo II</translation>
+    </message>
+    <message>
+        <source>Type I singularity margin</source>
+        <translation>Margen de singularidad de tipo I</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>Velocidad en baudios</translation>
+    </message>
+    <message>
+        <source>The machine has homing switches ($H)</source>
+        <translation>La máquina tiene finales de carrera de origen ($H)</translation>
+    </message>
+    <message>
+        <source>Home θ1</source>
+        <translation>Origen θ1</translation>
+    </message>
+    <message>
+        <source>Home θ2</source>
+        <translation>Origen θ2</translation>
+    </message>
+    <message>
+        <source>The profile is not applied until these problems are fixed.</source>
+        <translation>El perfil no se aplica hasta que se corrijan estos problemas.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be used:
+%2</source>
+        <translation>No se puede usar %1:
+%2</translation>
+    </message>
+    <message>
+        <source>Fix the profile&apos;s problems before exporting it.</source>
+        <translation>Corrige los problemas del perfil antes de exportarlo.</translation>
+    </message>
+    <message>
+        <source>Import machine profile</source>
+        <translation>Importar perfil de máquina</translation>
+    </message>
+    <message>
+        <source>Machine profiles (*.json)</source>
+        <translation>Perfiles de máquina (*.json)</translation>
+    </message>
+    <message>
+        <source>Import failed</source>
+        <translation>Error de importación</translation>
+    </message>
+    <message>
+        <source>Export machine profile</source>
+        <translation>Exportar perfil de máquina</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Error de exportación</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::RunController</name>
+    <message>
+        <source>The connection was closed during the run. The progress is saved beside the job: reconnect and resume.</source>
+        <translation>La conexión se cerró durante la ejecución. El progreso se guarda junto al trabajo: vuelve a conectar y reanuda.</translation>
+    </message>
+    <message>
+        <source>Cannot start: connect the machine, wait until it is idle, and let the job plan first.</source>
+        <translation>No se puede iniciar: conecta la máquina, espera a que esté en reposo y deja que el trabajo se planifique primero.</translation>
+    </message>
+    <message>
+        <source>Cannot create the job folder %1.</source>
+        <translation>No se puede crear la carpeta del trabajo %1.</translation>
+    </message>
+    <message>
+        <source>Nothing to resume: there is no saved progress beside %1.</source>
+        <translation>Nada que reanudar: no hay progreso guardado junto a %1.</translation>
+    </message>
+    <message>
+        <source>Resuming %1…</source>
+        <translation>Reanudando %1…</translation>
+    </message>
+    <message>
+        <source>Running %1…</source>
+        <translation>Ejecutando %1…</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::RunPanel</name>
+    <message>
+        <source>Ready</source>
+        <translation>Listo</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>En marcha</translation>
+    </message>
+    <message>
+        <source>Holding…</source>
+        <translation>Pausando…</translation>
+    </message>
+    <message>
+        <source>On hold</source>
+        <translation>En pausa</translation>
+    </message>
+    <message>
+        <source>Paused by a problem</source>
+        <translation>En pausa por un problema</translation>
+    </message>
+    <message>
+        <source>Stopping…</source>
+        <translation>Deteniendo…</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Detenido</translation>
+    </message>
+    <message>
+        <source>Finished</source>
+        <translation>Terminado</translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation>%1 h %2 min</translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Iniciar</translation>
+    </message>
+    <message>
+        <source>Write the planned job as G-code and stream it to the machine</source>
+        <translation>Escribir el trabajo planificado como código G y enviarlo a la máquina</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>Pausa</translation>
+    </message>
+    <message>
+        <source>Feed hold: the machine decelerates and waits</source>
+        <translation>Pausa de avance: la máquina frena y espera</translation>
+    </message>
+    <message>
+        <source>Continue</source>
+        <translation>Continuar</translation>
+    </message>
+    <message>
+        <source>Continue after a hold</source>
+        <translation>Continuar tras una pausa</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Detener</translation>
+    </message>
+    <message>
+        <source>Stop the job: hold, reset and unlock; the progress is kept for a resume</source>
+        <translation>Detener el trabajo: pausa, reinicio y desbloqueo; el progreso se conserva para reanudarlo</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Reanudar</translation>
+    </message>
+    <message>
+        <source>Continue the interrupted job from its last completed pen-down point, with a safe pen-up approach</source>
+        <translation>Continuar el trabajo interrumpido desde su último punto dibujado, con una aproximación segura con la pluma subida</translation>
+    </message>
+    <message>
+        <source>An interrupted run was saved (line %1 of %2 done): %3</source>
+        <translation>Se guardó una ejecución interrumpida (línea %1 de %2 hecha): %3</translation>
+    </message>
+    <message>
+        <source>No job sent yet</source>
+        <translation>Aún no se ha enviado ningún trabajo</translation>
+    </message>
+    <message>
+        <source>%1 of %2 lines executed</source>
+        <translation>%1 de %2 líneas ejecutadas</translation>
+    </message>
+    <message>
+        <source>%1 left</source>
+        <translation>quedan %1</translation>
+    </message>
+    <message>
+        <source>Long job</source>
+        <translation>Trabajo largo</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::SimulationPanel</name>
+    <message>
+        <source>Step back one move</source>
+        <translation>Retroceder un movimiento</translation>
+    </message>
+    <message>
+        <source>Play / pause the simulation</source>
+        <translation>Reproducir / pausar la simulación</translation>
+    </message>
+    <message>
+        <source>Step forward one move</source>
+        <translation>Avanzar un movimiento</translation>
+    </message>
+    <message>
+        <source>Simulation speed</source>
+        <translation>Velocidad de simulación</translation>
+    </message>
+    <message>
+        <source>x%1</source>
+        <translation>x%1</translation>
+    </message>
+    <message>
+        <source>No planned job to simulate.</source>
+        <translation>No hay ningún trabajo planificado que simular.</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 de %2</translation>
+    </message>
+    <message>
+        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Motor angles:&lt;/td&gt;&lt;td&gt;%1 deg, %2 deg&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen:&lt;/td&gt;&lt;td&gt;x %3 mm, y %4 mm (%5)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Transmission angle:&lt;/td&gt;&lt;td&gt;%6 deg at the pen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%7 / %8 deg at the elbows&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Type II margin:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%9 deg&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Ángulos de motor:&lt;/td&gt;&lt;td&gt;%1°, %2°&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pluma:&lt;/td&gt;&lt;td&gt;x %3 mm, y %4 mm (%5)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Ángulo de transmisión:&lt;/td&gt;&lt;td&gt;%6° en la pluma&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%7° / %8° en los codos&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Margen tipo II:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%9°&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>bajada</translation>
+    </message>
+    <message>
+        <source>up</source>
+        <translation>subida</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::SpeedLegend</name>
+    <message>
+        <source>0 mm/s</source>
+        <translation>0 mm/s</translation>
+    </message>
+    <message>
+        <source>%1 mm/s</source>
+        <translation>%1 mm/s</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::StudioDocument</name>
+    <message>
+        <source>Show layer</source>
+        <translation>Mostrar capa</translation>
+    </message>
+    <message>
+        <source>Hide layer</source>
+        <translation>Ocultar capa</translation>
+    </message>
+    <message>
+        <source>Reorder layers</source>
+        <translation>Reordenar capas</translation>
+    </message>
+    <message>
+        <source>Change layer tool settings</source>
+        <translation>Cambiar los ajustes de herramienta de la capa</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Plan and simulate drawings for five-bar robots.</source>
+        <translation>Planifica y simula dibujos para robots de cinco barras.</translation>
+    </message>
+    <message>
+        <source>Open the demo drawing on the default maker plotter.</source>
+        <translation>Abrir el dibujo de demostración en el plóter maker predeterminado.</translation>
+    </message>
+    <message>
+        <source>Save a picture of the window once the job is planned, then quit.</source>
+        <translation>Guardar una imagen de la ventana una vez planificado el trabajo y salir.</translation>
+    </message>
+    <message>
+        <source>With --screenshot: show the workspace legend (legend) or a map (transmission, conditioning or resolution).</source>
+        <translation>Con --screenshot: mostrar la leyenda del espacio de trabajo (legend) o un mapa (transmission, conditioning o resolution).</translation>
+    </message>
+    <message>
+        <source>With --screenshot: simulation position as a fraction of the job (0 to 1).</source>
+        <translation>Con --screenshot: posición de la simulación como fracción del trabajo (0 a 1).</translation>
+    </message>
+    <message>
+        <source>Machine profile: a preset name or a profile JSON file (default: the last one used, else maker-plotter).</source>
+        <translation>Perfil de máquina: un nombre de preajuste o un archivo de perfil JSON (predeterminado: el último usado, si no, maker-plotter).</translation>
+    </message>
+    <message>
+        <source>Plan the drawing or project as the studio does, write the G-code and exit (no window).</source>
+        <translation>Planificar el dibujo o proyecto como lo hace el estudio, escribir el código G y salir (sin ventana).</translation>
+    </message>
+    <message>
+        <source>SVG drawing or project to open.</source>
+        <translation>Dibujo SVG o proyecto que abrir.</translation>
+    </message>
+    <message>
+        <source>Filled shapes: outline (default), hatch or none; with hatch: SPACING_MM and ANGLE_DEG after colons.</source>
+        <translation>Formas rellenas: outline (predeterminado), hatch o none; con hatch: SPACING_MM y ANGLE_DEG tras dos puntos.</translation>
+    </message>
+    <message>
+        <source>User interface language: de, en, es or fr (default: View &gt; Language, else the system&apos;s).</source>
+        <translation>Idioma de la interfaz: de, en, es o fr (predeterminado: Ver &gt; Idioma, si no, el del sistema).</translation>
+    </message>
+</context>
+</TS>
