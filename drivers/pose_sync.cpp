@@ -23,7 +23,8 @@ PoseSync::State PoseSync::step(double nowS) {
   const bool still = st == MachineState::Idle || st == MachineState::Alarm || st == MachineState::Sleep ||
                      st == MachineState::Door || st == MachineState::Check;
   if (fresh && still && !protocol_.parametersPending()) {
-    if (protocol_.workPositionDeg()) return State::Ready;
+    const bool storedKnown = !wantStored_ || (protocol_.parameter("G28") && protocol_.parameter("G30"));
+    if (protocol_.workPositionDeg() && storedKnown) return State::Ready;
     if (!askedParameters_ && protocol_.idleLink()) {
       askedParameters_ = true;
       if (protocol_.requestParameters() != 0) reportsAtStart_ = protocol_.statusReportsSeen();
@@ -34,7 +35,9 @@ PoseSync::State PoseSync::step(double nowS) {
                             ": is it a GRBL 1.1 board at this baud rate?"
                : !still ? "the machine did not come to rest within " + timeText() +
                               " (state " + std::string(toString(st)) + ")"
-                        : "the board did not report its work offset (WCO: or $#) within " + timeText();
+                        : "the board did not report its work offset (WCO: or $#)" +
+                              std::string(wantStored_ ? " or its stored G28/G30 positions" : "") +
+                              " within " + timeText();
     return State::Failed;
   }
   if (nowS - lastPollS_ >= kPollS) {

@@ -1,7 +1,8 @@
 // PoseSync: learns where the board really is before any position is used (F1 of the machine
 // link issue). Polls status until a report arrives; waits for the machine to stand still
 // (Idle or Alarm); when the reports carry MPos without a known work offset, asks "$#" (GRBL
-// sends WCO: only on some reports) and uses the active G5x + G92 offset it lists. Pure logic
+// sends WCO: only on some reports) and uses the active G5x + G92 offset it lists; asks "$#" also
+// when the stored G28/G30 positions are wanted. Pure logic
 // driven by step(nowS) on the protocol's clock.
 #pragma once
 
@@ -20,6 +21,9 @@ class PoseSync {
   PoseSync(GrblProtocol& protocol, double timeoutS) : protocol_(protocol), timeoutS_(timeoutS) {}
   // Forget what is known (after a $ command, a reset): the next step() reads the pose again.
   void restart() { started_ = false; }
+  // Also needs the stored G28/G30 positions (a G28/G30 line is to be checked): asks "$#" even
+  // when the work offset came with a status report.
+  void wantStoredPositions(bool on) { wantStored_ = on; }
   State step(double nowS);
   const std::string& problem() const { return problem_; }
 
@@ -28,6 +32,7 @@ class PoseSync {
   double timeoutS_;
   bool started_ = false;
   bool askedParameters_ = false;
+  bool wantStored_ = false;
   double deadlineS_ = 0.0;
   double lastPollS_ = -1e300;
   std::uint64_t reportsAtStart_ = 0;

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "drivers/gcode_words.hpp"
 #include "drivers/grbl_codes.hpp"
 #include "drivers/machine_link.hpp"
 #include "drivers/motion_check.hpp"
@@ -69,7 +70,11 @@ class Sender : public grbl::ProtocolListener {
     }
     if (nowS < quietUntilS_) return false;
     if (next_ == lines_.size()) return finish();
-    if (needsPose(lines_[next_]) && !pose_) {
+    const bool goesHome = goesToStoredPosition(lines_[next_]);
+    if (needsPose(lines_[next_]) && (!pose_ || (goesHome && !(pose_->g28Machine && pose_->g30Machine)))) {
+      if (pose_) poseSync_.restart();  // known, but without the stored positions: ask $#
+      pose_.reset();
+      poseSync_.wantStoredPositions(goesHome);
       const auto st = poseSync_.step(nowS);
       if (st == grbl::PoseSync::State::Failed) return fail("cannot read the machine's pose: " + poseSync_.problem());
       if (st == grbl::PoseSync::State::Waiting) return false;
@@ -110,6 +115,10 @@ class Sender : public grbl::ProtocolListener {
   void onDisconnected(const std::string& reason) override { fail("connection lost: " + reason); }
 
  private:
+  static bool goesToStoredPosition(const std::string& line) {  // G28 / G30 (not .1)
+    const gcode::Words w = gcode::parseWords(gcode::compact(line));
+    return w.ok() && (w.hasCode('G', 28) || w.hasCode('G', 30));
+  }
   bool needsPose(const std::string& line) const {
     if (!profile_ || unchecked_) return false;
     return motion::interpretLine(line, motion::BoardPose{}).verdict != motion::Verdict::Pass;
