@@ -27,7 +27,7 @@ cli_test::CliResult run(const std::string& args, const fs::path& dir) {
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
 }
 
-TEST(CalibrateCli, PatternThenScanGivesTheMeasuredMarks) {
+TEST(CalibratePatternScanCli, PatternThenScanGivesTheMeasuredMarks) {
   QTemporaryDir tmp;
   const fs::path dir = tmp.path().toStdString();
   const std::string marks = (dir / "MARKS.csv").string(), gcode = (dir / "P.gcode").string();
@@ -75,7 +75,7 @@ TEST(CalibrateCli, PatternThenScanGivesTheMeasuredMarks) {
   }
 }
 
-TEST(CalibrateCli, BadInputIsNamedAndNothingIsWritten) {
+TEST(CalibratePatternScanCli, BadInputIsNamedAndNothingIsWritten) {
   QTemporaryDir tmp;
   const fs::path dir = tmp.path().toStdString();
   const std::string marks = (dir / "MARKS.csv").string(), out = (dir / "MEASURED.csv").string();
