@@ -1300,7 +1300,7 @@
     </message>
     <message>
         <source>Machine profile</source>
-        <translation>Maschinenprofil</translation>
+        <translation>Profil</translation>
     </message>
     <message>
         <source>Machine &amp;settings...</source>
@@ -1472,7 +1472,7 @@
     <name>fivebar::widgets::PreviewPanel</name>
     <message>
         <source>%1 % of what this machine can do</source>
-        <translation>%1 % dessen, was diese Maschine kann</translation>
+        <translation>%1 % des Möglichen</translation>
     </message>
     <message>
         <source>%1 s</source>
@@ -1492,7 +1492,7 @@
     </message>
     <message>
         <source>Colour pen-down moves by speed</source>
-        <translation>Zeichenbewegungen nach Geschwindigkeit färben</translation>
+        <translation>Nach Geschwindigkeit färben</translation>
     </message>
     <message>
         <source>Pen-up moves (grey)</source>

@@ -1300,7 +1300,7 @@
     </message>
     <message>
         <source>Machine profile</source>
-        <translation>Perfil de máquina</translation>
+        <translation>Perfil</translation>
     </message>
     <message>
         <source>Machine &amp;settings...</source>
@@ -1472,7 +1472,7 @@
     <name>fivebar::widgets::PreviewPanel</name>
     <message>
         <source>%1 % of what this machine can do</source>
-        <translation>%1 % de lo que puede hacer esta máquina</translation>
+        <translation>%1 % del máximo posible</translation>
     </message>
     <message>
         <source>%1 s</source>
@@ -1504,7 +1504,7 @@
     </message>
     <message>
         <source>Pre-flight problems (click to show):</source>
-        <translation>Problemas de la comprobación previa (clic para mostrar):</translation>
+        <translation>Problemas previos (clic para ver):</translation>
     </message>
     <message>
         <source>Moves shown: %1 of %2</source>
@@ -1974,7 +1974,7 @@
     </message>
     <message>
         <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Motor angles:&lt;/td&gt;&lt;td&gt;%1 deg, %2 deg&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen:&lt;/td&gt;&lt;td&gt;x %3 mm, y %4 mm (%5)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Transmission angle:&lt;/td&gt;&lt;td&gt;%6 deg at the pen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%7 / %8 deg at the elbows&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Type II margin:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%9 deg&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
-        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Ángulos de motor:&lt;/td&gt;&lt;td&gt;%1°, %2°&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pluma:&lt;/td&gt;&lt;td&gt;x %3 mm, y %4 mm (%5)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Ángulo de transmisión:&lt;/td&gt;&lt;td&gt;%6° en la pluma&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%7° / %8° en los codos&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Margen tipo II:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%9°&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Ángulos de motor:&lt;/td&gt;&lt;td&gt;%1°, %2°&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pluma:&lt;/td&gt;&lt;td&gt;x %3 mm, y %4 mm (%5)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Áng. de transmisión:&lt;/td&gt;&lt;td&gt;%6° en la pluma&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%7° / %8° en los codos&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Margen tipo II:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%9°&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>
     <message>
         <source>down</source>

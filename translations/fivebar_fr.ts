@@ -400,7 +400,7 @@
     </message>
     <message>
         <source>Fills</source>
-        <translation>Remplissages</translation>
+        <translation>Remplissage</translation>
     </message>
     <message>
         <source>Import warnings</source>
@@ -1300,7 +1300,7 @@
     </message>
     <message>
         <source>Machine profile</source>
-        <translation>Profil de machine</translation>
+        <translation>Profil</translation>
     </message>
     <message>
         <source>Machine &amp;settings...</source>
@@ -1472,7 +1472,7 @@
     <name>fivebar::widgets::PreviewPanel</name>
     <message>
         <source>%1 % of what this machine can do</source>
-        <translation>%1 % de ce que cette machine peut faire</translation>
+        <translation>%1 % du maximum possible</translation>
     </message>
     <message>
         <source>%1 s</source>
@@ -1504,7 +1504,7 @@
     </message>
     <message>
         <source>Pre-flight problems (click to show):</source>
-        <translation>Problèmes de la vérification préalable (cliquer pour afficher) :</translation>
+        <translation>Problèmes avant tracé (cliquer pour voir) :</translation>
     </message>
     <message>
         <source>Moves shown: %1 of %2</source>
