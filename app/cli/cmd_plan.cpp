@@ -16,7 +16,7 @@
 #ifdef FIVEBAR_HAVE_IMPORT
 #include <QCoreApplication>
 
-#include "widgets/job_source.hpp"
+#include "widgets/document/job_source.hpp"
 #endif
 
 namespace fivebar::cli {
@@ -155,7 +155,7 @@ int plan(const Options& o) {
   const auto start = std::chrono::steady_clock::now();
   StageTimes times;
   StageClock clock(times);
-  // The same steps as the studio (widgets/job_source.hpp): import, place, plan (importing again
+  // The same steps as the studio (widgets/document/job_source.hpp): import, place, plan (importing again
   // more finely when the placement enlarges the drawing).
   std::string error;
   auto job = widgets::loadJob(QString::fromStdString(file), machine, opt, error, importSettings.fill,

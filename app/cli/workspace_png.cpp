@@ -7,10 +7,10 @@
 #include <optional>
 
 #include "core/kinematics/kinematics.hpp"
-#include "widgets/machine_painter.hpp"
-#include "widgets/studio_palette.hpp"
-#include "widgets/view_transform.hpp"
-#include "widgets/workspace_painter.hpp"
+#include "widgets/canvas/machine_painter.hpp"
+#include "widgets/canvas/studio_palette.hpp"
+#include "widgets/canvas/view_transform.hpp"
+#include "widgets/canvas/workspace_painter.hpp"
 
 namespace fivebar::cli {
 namespace {

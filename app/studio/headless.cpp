@@ -8,8 +8,8 @@
 
 #include "app/studio/startup.hpp"
 #include "core/output/gcode.hpp"
-#include "widgets/job_pipeline.hpp"
-#include "widgets/job_source.hpp"
+#include "widgets/document/job_pipeline.hpp"
+#include "widgets/document/job_source.hpp"
 
 namespace fivebar::studio {
 namespace {

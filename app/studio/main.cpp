@@ -17,9 +17,9 @@
 #include "app/studio/headless.hpp"
 #include "app/studio/main_window.hpp"
 #include "app/studio/startup.hpp"
-#include "widgets/fill_options_box.hpp"
-#include "widgets/import_controller.hpp"
-#include "widgets/machine_ui.hpp"
+#include "widgets/panels/fill_options_box.hpp"
+#include "widgets/document/import_controller.hpp"
+#include "widgets/machine/machine_ui.hpp"
 
 using fivebar::studio::MainWindow;
 

@@ -17,25 +17,25 @@
 
 #include "app/studio/file_actions.hpp"
 #include "core/kinematics/kinematics.hpp"
-#include "widgets/canvas_view.hpp"
+#include "widgets/canvas/canvas_view.hpp"
 #include "widgets/design/design_dialog.hpp"
-#include "widgets/import_controller.hpp"
-#include "widgets/fill_options_box.hpp"
-#include "widgets/import_warnings_panel.hpp"
-#include "widgets/job_layer.hpp"
-#include "widgets/layers_panel.hpp"
-#include "widgets/machine_layer.hpp"
-#include "widgets/machine_ui.hpp"
-#include "widgets/mode_panel.hpp"
-#include "widgets/placement_panel.hpp"
-#include "widgets/placement_tool.hpp"
-#include "widgets/preview_controller.hpp"
-#include "widgets/preview_panel.hpp"
-#include "widgets/simulation_controller.hpp"
-#include "widgets/simulation_panel.hpp"
-#include "widgets/studio_document.hpp"
-#include "widgets/workspace_cache.hpp"
-#include "widgets/workspace_layer.hpp"
+#include "widgets/document/import_controller.hpp"
+#include "widgets/panels/fill_options_box.hpp"
+#include "widgets/panels/import_warnings_panel.hpp"
+#include "widgets/canvas/job_layer.hpp"
+#include "widgets/panels/layers_panel.hpp"
+#include "widgets/canvas/machine_layer.hpp"
+#include "widgets/machine/machine_ui.hpp"
+#include "widgets/panels/mode_panel.hpp"
+#include "widgets/panels/placement_panel.hpp"
+#include "widgets/canvas/placement_tool.hpp"
+#include "widgets/document/preview_controller.hpp"
+#include "widgets/panels/preview_panel.hpp"
+#include "widgets/document/simulation_controller.hpp"
+#include "widgets/panels/simulation_panel.hpp"
+#include "widgets/document/studio_document.hpp"
+#include "widgets/canvas/workspace_cache.hpp"
+#include "widgets/canvas/workspace_layer.hpp"
 
 namespace fivebar::studio {
 
@@ -64,7 +64,7 @@ MainWindow::MainWindow(const MachineProfile& profile, QWidget* parent) : QMainWi
   createCanvas();
   createDocks();
   createMenus();
-  // The machine side (connection, jog, run, console, profile editor): widgets/machine_ui.hpp.
+  // The machine side (connection, jog, run, console, profile editor): widgets/machine/machine_ui.hpp.
   auto* machineUi = new MachineUi(*doc_, *preview_, *canvas_, *machineLayer_, this);
   machineUi->addPanels([this](QWidget* panel, const QString& title, const QString& name,
                               Qt::DockWidgetArea area) { return addMachinePanel(panel, title, name, area); });
@@ -171,8 +171,8 @@ void MainWindow::createDocks() {
   resizeDocks({mode, placement, preview, sim}, {330, 420, 430, 330}, Qt::Vertical);
   leftTabs_ = layers;
   rightTabs_ = sim;
-  // Fills of the next import (widgets/fill_options_box.hpp) next to the layers; the import
-  // warnings (widgets/import_warnings_panel.hpp) at the bottom, raised when an import brings some.
+  // Fills of the next import (widgets/panels/fill_options_box.hpp) next to the layers; the import
+  // warnings (widgets/panels/import_warnings_panel.hpp) at the bottom, raised when an import brings some.
   tabifyDockWidget(layers, addDock(new FillOptionsBox(*importer_, *doc_, this), tr("Fills"),
                                    QStringLiteral("dockFills"), Qt::LeftDockWidgetArea));
   auto* warnings = new ImportWarningsPanel(this);

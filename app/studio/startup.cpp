@@ -9,12 +9,12 @@
 
 #include "app/studio/file_actions.hpp"
 #include "app/studio/main_window.hpp"
-#include "widgets/import_controller.hpp"
-#include "widgets/preview_controller.hpp"
-#include "widgets/studio_document.hpp"
-#include "widgets/simulation_controller.hpp"
-#include "widgets/workspace_cache.hpp"
-#include "widgets/workspace_layer.hpp"
+#include "widgets/document/import_controller.hpp"
+#include "widgets/document/preview_controller.hpp"
+#include "widgets/document/studio_document.hpp"
+#include "widgets/document/simulation_controller.hpp"
+#include "widgets/canvas/workspace_cache.hpp"
+#include "widgets/canvas/workspace_layer.hpp"
 
 namespace fivebar::studio {
 namespace {

@@ -1,7 +1,7 @@
 // The one table of a machine profile's numeric fields: for each its JSON path, label, unit,
 // valid range and decimals, with accessors in the file's units (deg, deg/min, deg/s^2, mm, s).
 // Validation (profile.cpp), the JSON reader and writer (profile.cpp) and the studio's profile
-// editor (widgets/profile_editor.cpp) all read this table; conversions come from units.hpp.
+// editor (widgets/panels/profile_editor.cpp) all read this table; conversions come from units.hpp.
 // Non-numeric members (name, modes, tool kind, homing switches) are handled beside it.
 #pragma once
 

@@ -15,11 +15,11 @@
 #include <random>
 
 #include "core/kinematics/kinematics.hpp"
-#include "widgets/machine_painter.hpp"
-#include "widgets/path_scene.hpp"
-#include "widgets/scene_renderer.hpp"
-#include "widgets/studio_palette.hpp"
-#include "widgets/view_transform.hpp"
+#include "widgets/canvas/machine_painter.hpp"
+#include "widgets/canvas/path_scene.hpp"
+#include "widgets/canvas/scene_renderer.hpp"
+#include "widgets/canvas/studio_palette.hpp"
+#include "widgets/canvas/view_transform.hpp"
 
 namespace {
 

@@ -16,13 +16,13 @@
 #include "core/machine/profile.hpp"
 #include "core/planning/planner.hpp"
 #include "core/planning/time_optimal.hpp"
-#include "widgets/job_source.hpp"
+#include "widgets/document/job_source.hpp"
 
 namespace fivebar {
 namespace {
 
 // The plan `fivebar plan FILE --fit` makes: the same job source as the CLI and the studio
-// (widgets/job_source.hpp), the drawing fitted to the workspace.
+// (widgets/document/job_source.hpp), the drawing fitted to the workspace.
 std::optional<PlanResult> planFile(const QString& path, const MachineProfile& p, double toleranceMm) {
   PlanOptions o;
   o.toleranceMm = toleranceMm;

@@ -11,10 +11,10 @@
 #include <QTest>
 
 #include "core/machine/profile.hpp"
-#include "widgets/canvas_view.hpp"
+#include "widgets/canvas/canvas_view.hpp"
 #include "widgets/design/design_dialog.hpp"
 #include "widgets/design/pareto_plot.hpp"
-#include "widgets/studio_document.hpp"
+#include "widgets/document/studio_document.hpp"
 
 namespace fivebar::widgets {
 namespace {

@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "core/kinematics/units.hpp"
-#include "widgets/placement_tool.hpp"
-#include "widgets/studio_document.hpp"
+#include "widgets/canvas/placement_tool.hpp"
+#include "widgets/document/studio_document.hpp"
 
 namespace fivebar::widgets {
 namespace {

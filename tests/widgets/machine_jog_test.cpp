@@ -11,8 +11,8 @@
 #include "core/kinematics/units.hpp"
 #include "machine_test_support.hpp"
 #include "test_support.hpp"
-#include "widgets/jog_panel.hpp"
-#include "widgets/jog_planner.hpp"
+#include "widgets/machine/jog_panel.hpp"
+#include "widgets/machine/jog_planner.hpp"
 
 namespace fivebar {
 namespace {

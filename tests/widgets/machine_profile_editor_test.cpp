@@ -10,7 +10,7 @@
 
 #include "core/machine/profile.hpp"
 #include "machine_test_support.hpp"
-#include "widgets/profile_editor.hpp"
+#include "widgets/panels/profile_editor.hpp"
 
 namespace fivebar {
 namespace {

@@ -14,10 +14,10 @@
 #include "drivers/job_progress.hpp"
 #include "drivers/simulated_transport.hpp"
 #include "machine_test_support.hpp"
-#include "widgets/preview_controller.hpp"
-#include "widgets/run_controller.hpp"
-#include "widgets/run_layer.hpp"
-#include "widgets/run_panel.hpp"
+#include "widgets/document/preview_controller.hpp"
+#include "widgets/machine/run_controller.hpp"
+#include "widgets/machine/run_layer.hpp"
+#include "widgets/machine/run_panel.hpp"
 
 namespace fivebar {
 namespace {

@@ -18,11 +18,11 @@
 #include <functional>
 
 #include "app/studio/main_window.hpp"
-#include "widgets/import_controller.hpp"
-#include "widgets/jog_panel.hpp"
-#include "widgets/machine_ui.hpp"
-#include "widgets/preview_controller.hpp"
-#include "widgets/profile_editor.hpp"
+#include "widgets/document/import_controller.hpp"
+#include "widgets/machine/jog_panel.hpp"
+#include "widgets/machine/machine_ui.hpp"
+#include "widgets/document/preview_controller.hpp"
+#include "widgets/panels/profile_editor.hpp"
 
 namespace {
 

@@ -12,9 +12,9 @@
 #include "core/kinematics/units.hpp"
 #include "drivers/grbl_codes.hpp"
 #include "machine_test_support.hpp"
-#include "widgets/console_panel.hpp"
-#include "widgets/machine_banner.hpp"
-#include "widgets/machine_panel.hpp"
+#include "widgets/machine/console_panel.hpp"
+#include "widgets/machine/machine_banner.hpp"
+#include "widgets/machine/machine_panel.hpp"
 
 namespace fivebar {
 namespace {

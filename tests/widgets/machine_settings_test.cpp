@@ -12,7 +12,7 @@
 
 #include "drivers/machine_setup.hpp"
 #include "machine_test_support.hpp"
-#include "widgets/machine_settings_dialog.hpp"
+#include "widgets/machine/machine_settings_dialog.hpp"
 
 namespace fivebar {
 namespace {

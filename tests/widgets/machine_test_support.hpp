@@ -10,8 +10,8 @@
 #include <memory>
 
 #include "core/machine/profile.hpp"
-#include "widgets/machine_session.hpp"
-#include "widgets/studio_document.hpp"
+#include "widgets/machine/machine_session.hpp"
+#include "widgets/document/studio_document.hpp"
 
 namespace fivebar::test {
 

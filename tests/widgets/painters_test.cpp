@@ -9,11 +9,11 @@
 
 #include "core/planning/placement.hpp"
 #include "test_support.hpp"
-#include "widgets/job_layer.hpp"
-#include "widgets/machine_painter.hpp"
-#include "widgets/map_painter.hpp"
-#include "widgets/studio_palette.hpp"
-#include "widgets/view_transform.hpp"
+#include "widgets/canvas/job_layer.hpp"
+#include "widgets/canvas/machine_painter.hpp"
+#include "widgets/canvas/map_painter.hpp"
+#include "widgets/canvas/studio_palette.hpp"
+#include "widgets/canvas/view_transform.hpp"
 
 namespace fivebar::widgets {
 namespace {

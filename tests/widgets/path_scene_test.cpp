@@ -8,9 +8,9 @@
 #include <random>
 
 #include "test_support.hpp"
-#include "widgets/path_scene.hpp"
-#include "widgets/scene_renderer.hpp"
-#include "widgets/studio_palette.hpp"
+#include "widgets/canvas/path_scene.hpp"
+#include "widgets/canvas/scene_renderer.hpp"
+#include "widgets/canvas/studio_palette.hpp"
 
 namespace fivebar::widgets {
 namespace {

@@ -18,9 +18,9 @@
 #include "app/studio/main_window.hpp"
 #include "app/studio/startup.hpp"
 #include "core/project/project.hpp"
-#include "widgets/import_controller.hpp"
-#include "widgets/preview_controller.hpp"
-#include "widgets/studio_document.hpp"
+#include "widgets/document/import_controller.hpp"
+#include "widgets/document/preview_controller.hpp"
+#include "widgets/document/studio_document.hpp"
 
 namespace fivebar::widgets {
 namespace {

@@ -19,8 +19,8 @@
 #include <functional>
 
 #include "app/studio/main_window.hpp"
-#include "widgets/import_controller.hpp"
-#include "widgets/preview_controller.hpp"
+#include "widgets/document/import_controller.hpp"
+#include "widgets/document/preview_controller.hpp"
 
 namespace {
 

@@ -11,16 +11,16 @@
 #include <QTest>
 
 #include "app/studio/main_window.hpp"
-#include "widgets/canvas_view.hpp"
-#include "widgets/import_controller.hpp"
-#include "widgets/job_layer.hpp"
-#include "widgets/machine_layer.hpp"
-#include "widgets/preview_controller.hpp"
-#include "widgets/simulation_controller.hpp"
-#include "widgets/studio_document.hpp"
-#include "widgets/studio_palette.hpp"
+#include "widgets/canvas/canvas_view.hpp"
+#include "widgets/document/import_controller.hpp"
+#include "widgets/canvas/job_layer.hpp"
+#include "widgets/canvas/machine_layer.hpp"
+#include "widgets/document/preview_controller.hpp"
+#include "widgets/document/simulation_controller.hpp"
+#include "widgets/document/studio_document.hpp"
+#include "widgets/canvas/studio_palette.hpp"
 #include "core/planning/auto_placement.hpp"
-#include "widgets/workspace_cache.hpp"
+#include "widgets/canvas/workspace_cache.hpp"
 
 namespace fivebar::widgets {
 namespace {

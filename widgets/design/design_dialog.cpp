@@ -19,9 +19,9 @@
 #include <QtConcurrent/QtConcurrentRun>
 
 #include "core/design/design_json.hpp"
-#include "widgets/canvas_view.hpp"
+#include "widgets/canvas/canvas_view.hpp"
 #include "widgets/design/pareto_plot.hpp"
-#include "widgets/studio_document.hpp"
+#include "widgets/document/studio_document.hpp"
 
 namespace fivebar::widgets {
 namespace {

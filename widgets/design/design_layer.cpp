@@ -1,8 +1,8 @@
 #include "widgets/design/design_layer.hpp"
 
-#include "widgets/machine_painter.hpp"
-#include "widgets/studio_palette.hpp"
-#include "widgets/workspace_painter.hpp"
+#include "widgets/canvas/machine_painter.hpp"
+#include "widgets/canvas/studio_palette.hpp"
+#include "widgets/canvas/workspace_painter.hpp"
 
 namespace fivebar::widgets {
 

@@ -5,7 +5,7 @@
 
 #include <optional>
 
-#include "widgets/canvas_layer.hpp"
+#include "widgets/canvas/canvas_layer.hpp"
 #include "widgets/design/design_painter.hpp"
 
 namespace fivebar::widgets {

@@ -10,7 +10,7 @@
 
 #include "core/design/search.hpp"
 #include "core/workspace/workspace.hpp"
-#include "widgets/map_painter.hpp"
+#include "widgets/canvas/map_painter.hpp"
 
 namespace fivebar::widgets {
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "widgets/studio_palette.hpp"
+#include "widgets/canvas/studio_palette.hpp"
 
 namespace fivebar::widgets {
 

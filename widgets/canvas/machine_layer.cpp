@@ -1,0 +1,49 @@
+#include "widgets/canvas/machine_layer.hpp"
+
+#include "widgets/canvas/machine_painter.hpp"
+
+namespace fivebar::widgets {
+
+std::optional<Pose> poseOf(const MachineProfile& profile, const JointAngles& angles) {
+  const FkResult fk = forward(profile.geometry, angles, profile.assembly);
+  if (!fk.ok()) return std::nullopt;
+  return makePose(profile.geometry, angles, fk.p);
+}
+
+MachineLayer::MachineLayer(const StudioDocument& doc, const SimulationController& sim,
+                           QObject* parent)
+    : QObject(parent), doc_(doc), sim_(sim) {
+  connect(&sim_, &SimulationController::timeChanged, this, &MachineLayer::refresh);
+  connect(&sim_, &SimulationController::trajectoryChanged, this, &MachineLayer::refresh);
+  connect(&doc_, &StudioDocument::profileChanged, this, &MachineLayer::refresh);
+  refresh();
+}
+
+void MachineLayer::setExternalAngles(std::optional<JointAngles> angles) {
+  external_ = angles;
+  refresh();
+}
+
+void MachineLayer::refresh() {
+  const MachineProfile& profile = doc_.profile();
+  // A running (or scrubbed) simulation wins; otherwise the connected machine's pose.
+  const bool simulating =
+      sim_.trajectory() != nullptr && (sim_.playing() || sim_.timeS() > 0.0);
+  if (external_ && !simulating) {
+    pose_ = poseOf(profile, kinematicFromCommanded(profile.calibration, *external_));  // MPos is commanded
+  } else if (sim_.trajectory() != nullptr) {
+    const TrajectorySample s = sim_.sample();
+    pose_ = makePose(profile.geometry, s.q, s.p);
+  } else {
+    pose_ = poseOf(profile, kinematicFromCommanded(profile.calibration, profile.homeAngles));
+  }
+  emit changed();
+}
+
+void MachineLayer::paint(QPainter& painter, const ViewTransform& view) {
+  if (!pose_) return;
+  // Slightly see-through so the drawing under the arms stays readable.
+  paintMachine(painter, view.widgetFromMachine(), doc_.profile().geometry, *pose_, kOpacity);
+}
+
+}  // namespace fivebar::widgets

@@ -1,0 +1,49 @@
+// Canvas layer showing the machine to scale at its current pose: the simulation's pose while it
+// runs or is scrubbed, else the connected machine's reported pose (setExternalAngles), else the
+// simulation's start pose or the profile's home pose. The pose is recomputed when its
+// source changes (not in paint); paint only draws it.
+#pragma once
+
+#include <QObject>
+#include <optional>
+
+#include "core/kinematics/kinematics.hpp"
+#include "widgets/canvas/canvas_layer.hpp"
+#include "widgets/document/simulation_controller.hpp"
+#include "widgets/document/studio_document.hpp"
+
+namespace fivebar::widgets {
+
+class MachineLayer : public QObject, public CanvasLayer {
+  Q_OBJECT
+ public:
+  static constexpr double kOpacity = 0.85;
+
+  MachineLayer(const StudioDocument& doc, const SimulationController& sim,
+               QObject* parent = nullptr);
+
+  void paint(QPainter& painter, const ViewTransform& view) override;
+  // The pose drawn (nullopt when the home pose does not close).
+  const std::optional<Pose>& pose() const { return pose_; }
+
+ public slots:
+  // Shows an externally reported pose (the connected machine's position), overriding the
+  // simulation until cleared with nullopt.
+  void setExternalAngles(std::optional<JointAngles> angles);
+
+ signals:
+  void changed();
+
+ private:
+  void refresh();
+
+  const StudioDocument& doc_;
+  const SimulationController& sim_;
+  std::optional<JointAngles> external_;
+  std::optional<Pose> pose_;
+};
+
+// The pose of `angles` in the profile's assembly mode; nullopt when the loop cannot close.
+std::optional<Pose> poseOf(const MachineProfile& profile, const JointAngles& angles);
+
+}  // namespace fivebar::widgets

@@ -1,0 +1,23 @@
+// Painting functions for the canvas background and the machine, each taking a QPainter& so the
+// studio, tests and benchmarks paint the same pixels into widgets or QImages. They only draw
+// what core computed (a Pose); no kinematics here.
+#pragma once
+
+#include <QPainter>
+
+#include "core/kinematics/kinematics.hpp"
+#include "widgets/canvas/view_transform.hpp"
+
+namespace fivebar::widgets {
+
+// Background colour and the millimetre grid of the visible region, spacing adapted to the zoom
+// (minor lines at least ~8 px apart, a major line every 5 or 10 minor ones, labelled in mm).
+void paintGrid(QPainter& painter, const ViewTransform& view);
+
+// The machine to scale: base between the motors, motors, driving links a1/a2 to the elbows,
+// floating links b1/b2 to the pen, joints and the pen point. `opacity` in [0, 1] fades it (used
+// while the drawing is edited so the machine does not hide it).
+void paintMachine(QPainter& painter, const QTransform& widgetFromMachine, const Geometry& g,
+                  const Pose& pose, double opacity = 1.0);
+
+}  // namespace fivebar::widgets

@@ -1,0 +1,104 @@
+// A paint-ready, level-of-detail representation of many machine-frame paths (a planned job or a
+// placed drawing) that pans and zooms a million segments within a frame budget:
+//  - per level of detail, polylines are simplified (points within the level's tolerance of the
+//    chord that replaces them are dropped), and the level whose tolerance is below half a pixel
+//    is painted;
+//  - segments are bucketed on a grid so only visible buckets are painted;
+//  - within a level segments are grouped by colour class, each class painted with one
+//    cosmetic pen in drawLines batches (no antialiasing, no wide pens).
+// Built once (off the UI thread if large), immutable afterwards, painted many times.
+#pragma once
+
+#include <QColor>
+#include <QLineF>
+#include <QPainter>
+#include <QRectF>
+#include <QTransform>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "widgets/canvas/view_transform.hpp"
+
+namespace fivebar::widgets {
+
+enum class PathKind : std::uint8_t { Draw, Travel };
+
+struct ScenePath {
+  std::vector<QPointF> pointsMm;       // machine frame, mm
+  std::vector<float> speedsMmPerS;     // per segment (size points-1), or empty
+  PathKind kind = PathKind::Draw;
+  bool flagged = false;                // part of a pre-flight problem: painted red
+  int firstOrder = 0;                  // drawing-order index of the first segment; one per segment
+};
+
+struct ScenePaintOptions {
+  bool colourBySpeed = false;
+  bool showTravel = true;
+  int orderBegin = 0;         // paint only segments with orderBegin <= order
+  int orderLimit = -1;        //   and order < orderLimit (-1 = no upper limit)
+  QTransform machineFromScene;  // extra transform of the scene (identity: scene is machine mm)
+  double opacity = 1.0;
+  QColor drawColour;          // invalid = palette::drawing()
+  double penWidthPx = 1.0;    // cosmetic width
+  bool showFlags = true;      // flagged (offending) paths in the problem colour
+};
+
+class PathScene {
+ public:
+  static constexpr int kSpeedClasses = 8;
+  // Colour classes: travel, problem, then the speed ramp from slow to fast.
+  static constexpr int kTravelClass = 0;
+  static constexpr int kProblemClass = 1;
+  static constexpr int kClassCount = 2 + kSpeedClasses;
+
+  PathScene() = default;
+  explicit PathScene(const std::vector<ScenePath>& paths);
+
+  bool empty() const { return segmentCount_ == 0; }
+  std::size_t segmentCount() const { return segmentCount_; }  // level 0 segments
+  int orderCount() const { return orderCount_; }              // one past the largest order
+  QRectF boundsMm() const { return boundsMm_; }
+  float maxSpeedMmPerS() const { return maxSpeed_; }
+  int levelCount() const { return static_cast<int>(levels_.size()); }
+  // Level painted at this zoom: the coarsest whose tolerance is below half a pixel.
+  int levelFor(double pxPerMm) const;
+  std::size_t segmentCount(int level) const;
+
+  void paint(QPainter& painter, const ViewTransform& view, const ScenePaintOptions& options) const;
+
+  // Speed ramp colour for t in [0, 1] (slow to fast), shared with the legend.
+  static QColor speedColour(double t);
+
+  // A level's simplified paths: points, and per segment its order and colour class.
+  struct LevelPath {
+    std::vector<QPointF> points;
+    std::vector<int> orders;
+    std::vector<std::uint8_t> classes;
+  };
+
+ private:
+  struct Run {
+    int colourClass = 0;
+    int bucket = 0;
+    std::size_t begin = 0;
+    std::size_t end = 0;
+  };
+  struct Level {
+    double toleranceMm = 0.0;
+    std::vector<QLineF> lines;
+    std::vector<int> orders;       // parallel to lines, ascending within each run
+    std::vector<Run> runs;         // sorted by class, then bucket
+    std::vector<QRectF> bucketBounds;
+  };
+  std::vector<LevelPath> baseLevel(const std::vector<ScenePath>& paths) const;
+  void bucket(const std::vector<LevelPath>& paths, double toleranceMm, Level& level) const;
+
+  std::vector<Level> levels_;
+  std::size_t segmentCount_ = 0;
+  int orderCount_ = 0;
+  QRectF boundsMm_;
+  float maxSpeed_ = 0.0f;
+};
+
+}  // namespace fivebar::widgets

@@ -1,0 +1,172 @@
+#include "widgets/document/import_controller.hpp"
+
+#include "widgets/panels/import_warnings_panel.hpp"
+
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QSettings>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include "widgets/document/job_pipeline.hpp"
+
+namespace fivebar::widgets {
+namespace {
+const char* const kRecentKey = "import/recentFiles";
+const char* const kLastDirKey = "import/lastDirectory";
+
+// The options a fresh drawing is loaded with: the document's mode and tolerance, no placement
+// (autoPlacement at true size).
+PlanOptions importOptions(const StudioDocument& doc) {
+  PlanOptions o;
+  o.mode = doc.modeSelection();
+  o.toleranceMm = doc.toleranceMm();
+  return o;
+}
+}  // namespace
+
+ImportController::ImportController(StudioDocument& doc, QWidget* dialogParent, QObject* parent)
+    : QObject(parent), doc_(doc), dialogParent_(dialogParent) {
+  connect(&watcher_, &QFutureWatcher<ImportOutcome>::finished, this, &ImportController::onFinished);
+}
+
+QStringList ImportController::recentFiles() const {
+  return QSettings().value(kRecentKey).toStringList();
+}
+
+void ImportController::clearRecentFiles() {
+  QSettings().remove(kRecentKey);
+  emit recentFilesChanged();
+}
+
+void ImportController::addRecent(const QString& path) {
+  QStringList list = recentFiles();
+  const QString absolute = QFileInfo(path).absoluteFilePath();
+  list.removeAll(absolute);
+  list.prepend(absolute);
+  while (list.size() > kMaxRecentFiles) list.removeLast();
+  QSettings settings;
+  settings.setValue(kRecentKey, list);
+  settings.setValue(kLastDirKey, QFileInfo(absolute).absolutePath());
+  emit recentFilesChanged();
+}
+
+void ImportController::showOpenDialog() {
+  const QString dir = QSettings().value(kLastDirKey).toString();
+  const QString path = QFileDialog::getOpenFileName(
+      dialogParent_, tr("Open drawing or project"), dir,
+      tr("Drawings and projects (*.svg *.fivebar);;SVG drawings (*.svg);;FiveBar projects (*.fivebar);;All files (*)"));
+  if (!path.isEmpty()) openFile(path);
+}
+
+void ImportController::openFile(const QString& path) {
+  // A project brings its own machine; a drawing is placed for the document's.
+  const std::optional<MachineProfile> profile =
+      isProjectPath(path) ? std::nullopt : std::optional<MachineProfile>(doc_.profile());
+  const PlanOptions options = importOptions(doc_);
+  start([path, profile, options, fill = fill_, hatch = hatch_](const std::atomic<bool>* cancel) {
+          ImportOutcome out;
+          PlanOptions o = options;
+          o.cancel = cancel;
+          out.job = loadJob(path, profile, o, out.error, fill, hatch);
+          if (out.job) out.job->options.cancel = nullptr;
+          return out;
+        },
+        path, true);
+}
+
+void ImportController::openData(const QByteArray& svg, const QString& name) {
+  const MachineProfile profile = doc_.profile();
+  const PlanOptions options = importOptions(doc_);
+  start([svg, name, profile, options, fill = fill_, hatch = hatch_](const std::atomic<bool>* cancel) {
+          ImportOutcome out;
+          PlanOptions o = options;
+          o.cancel = cancel;
+          out.job = loadDrawing(DrawingSource{svg, name, fill, hatch}, profile, o, out.error);
+          if (out.job) out.job->options.cancel = nullptr;
+          return out;
+        },
+        name, false);
+}
+
+void ImportController::cancel() {
+  if (cancel_) cancel_->store(true);
+}
+
+void ImportController::start(std::function<ImportOutcome(const std::atomic<bool>*)> job,
+                             const QString& name, bool remember) {
+  if (busy()) {
+    emit finished(false, tr("%1: another import is still running.").arg(name));
+    return;
+  }
+  pendingName_ = name;
+  pendingRemember_ = remember;
+  cancel_ = std::make_shared<std::atomic<bool>>(false);
+  if (interactive_) {
+    dialog_ = new QProgressDialog(tr("Importing %1...").arg(QFileInfo(name).fileName()),
+                                  tr("Cancel"), 0, 0, dialogParent_);
+    dialog_->setWindowTitle(tr("Import"));
+    dialog_->setMinimumDuration(300);
+    dialog_->setWindowModality(Qt::WindowModal);
+    dialog_->setAutoClose(false);
+    dialog_->setAutoReset(false);
+    connect(dialog_, &QProgressDialog::canceled, this, &ImportController::cancel);
+  }
+  auto cancelFlag = cancel_;
+  watcher_.setFuture(QtConcurrent::run([job = std::move(job), cancelFlag] {
+    try {
+      ImportOutcome out = job(cancelFlag.get());
+      out.cancelled = cancelFlag->load();
+      return out;
+    } catch (const std::exception& e) {
+      ImportOutcome failed;
+      failed.error = e.what();
+      return failed;
+    }
+  }));
+}
+
+void ImportController::onFinished() {
+  if (dialog_) dialog_->deleteLater();
+  ImportOutcome result = watcher_.result();
+  const QString name = pendingName_;
+  if (result.cancelled || !result.job) {
+    QString message = QString::fromStdString(result.error);
+    if (result.cancelled) message = tr("Import of %1 cancelled.").arg(name);
+    if (message.isEmpty()) message = tr("%1 could not be imported.").arg(name);
+    if (interactive_ && !result.cancelled)
+      QMessageBox::warning(dialogParent_, tr("Import failed"), message);
+    emit finished(false, message);
+    return;
+  }
+  LoadedJob& job = *result.job;
+  if (job.drawing.layers.empty()) {
+    const QString message = tr("%1 contains nothing to draw.").arg(name);
+    if (interactive_) QMessageBox::warning(dialogParent_, tr("Import failed"), message);
+    emit finished(false, message);
+    return;
+  }
+  Placement placement;
+  if (job.options.atMm) {
+    placement = Placement{*job.options.atMm, job.options.rotationRad, job.options.scale,
+                          job.options.stretchY};
+  } else {  // no singularity-free area: in front of the motors, true size
+    placement.centerMm = Vec2(0.0, 0.5 * (doc_.profile().geometry.a1 + doc_.profile().geometry.b1));
+  }
+  if (QString refusal; !acceptPointBudget(dialogParent_, job.drawing, name, interactive_, refusal)) {
+    emit finished(false, refusal);
+    return;
+  }
+  note_ = QString::fromStdString(job.note);
+  if (job.isProject) {
+    doc_.loadProject(job.drawing, job.source, placement, job.options.mode, job.options.toleranceMm,
+                     job.profile, name);
+  } else {
+    doc_.replaceDrawing(job.drawing, name, placement, job.source);
+  }
+  if (pendingRemember_) addRecent(name);
+  emit warningsReported(name, toQStringList(job.warnings));
+  emit finished(true, note_);
+}
+
+}  // namespace fivebar::widgets

@@ -1,0 +1,157 @@
+// Job sources shared by the studio and `fivebar plan`. Contract: job_source.hpp.
+#include "widgets/document/job_source.hpp"
+
+#include <QFile>
+#include <QFileInfo>
+#include <QTemporaryFile>
+
+#include "core/import/svg_import.hpp"
+
+namespace fivebar::widgets {
+
+bool isProjectPath(const QString& path) {
+  return path.endsWith(QStringLiteral(".fivebar"), Qt::CaseInsensitive);
+}
+
+std::optional<Drawing> importSvgText(const DrawingSource& source, double toleranceMm,
+                                     std::string& error, const std::atomic<bool>* cancel,
+                                     std::vector<std::string>* warnings) {
+  // Through a file, so that the import runs in the isolated worker process.
+  QTemporaryFile file(QStringLiteral("fivebar-import-XXXXXX.svg"));
+  if (!file.open() || file.write(source.svg) != source.svg.size() || !file.flush()) {
+    error = source.name.toStdString() + ": cannot write a temporary copy to import";
+    return std::nullopt;
+  }
+  file.close();
+  svg::ImportOptions options;
+  options.toleranceMm = toleranceMm;
+  options.cancel = cancel;
+  svg::ImportResult r = svg::importSvgFile(file.fileName(), options);
+  if (!r.ok()) {
+    std::string message = r.message;
+    // Name the drawing, not the temporary copy.
+    const std::string temp = file.fileName().toStdString();
+    for (std::size_t at = message.find(temp); at != std::string::npos; at = message.find(temp))
+      message.replace(at, temp.size(), source.name.toStdString());
+    error = message.empty() ? source.name.toStdString() + ": cannot be imported" : message;
+    return std::nullopt;
+  }
+  if (warnings) warnings->insert(warnings->end(), r.warnings.begin(), r.warnings.end());
+  if (source.fill != FillMode::Outline)
+    for (Layer& layer : r.drawing.layers) layer.paths = applyFill(layer.paths, source.fill, source.hatch);
+  r.drawing.source = source.name.toStdString();
+  r.drawing.flatteningToleranceMm = toleranceMm;
+  return std::move(r.drawing);
+}
+
+PlanResult planRefining(Drawing& drawing, const DrawingSource& source, const MachineProfile& profile,
+                        const PlanOptions& options, std::string& error) {
+  PlanResult r = planJob(drawing, profile, options);
+  // One finer import is enough with a fixed placement; a second guards a moved bounding box.
+  for (int attempt = 0; attempt < 2 && r.status == PlanStatus::CoarseDrawing; ++attempt) {
+    std::vector<ProjectLayer> layers = layerStatesOf(drawing);
+    auto finer = importSvgText(source, r.requiredFlatteningToleranceMm, error, options.cancel);
+    if (!finer) return r;
+    applyLayerStates(*finer, layers);
+    drawing = std::move(*finer);
+    r = planJob(drawing, profile, options);
+  }
+  return r;
+}
+
+namespace {
+
+bool readFile(const QString& path, QByteArray& out, std::string& error) {
+  QFile f(path);
+  if (!f.open(QIODevice::ReadOnly)) {
+    error = path.toStdString() + ": cannot read (" + f.errorString().toStdString() + ")";
+    return false;
+  }
+  out = f.readAll();
+  return true;
+}
+
+std::optional<LoadedJob> loadProject(const QString& path, const std::optional<MachineProfile>& profile,
+                                     std::string& error) {
+  QByteArray text;
+  if (!readFile(path, text, error)) return std::nullopt;
+  ProjectLoad load = projectFromJson(text.toStdString(), path.toStdString());
+  if (!load.project) {
+    error.clear();
+    for (const ValidationIssue& issue : load.issues)
+      error += (error.empty() ? "" : "\n") + path.toStdString() + ": " + issue.message;
+    return std::nullopt;
+  }
+  LoadedJob job;
+  job.isProject = true;
+  Project& p = *load.project;
+  if (profile) p.profile = *profile;
+  job.source = {QByteArray::fromStdString(p.drawingSvg), QString::fromStdString(p.drawingName)};
+  if (job.source.name.isEmpty()) job.source.name = QFileInfo(path).fileName();
+  auto drawing = importSvgText(job.source, p.flatteningToleranceMm, error, nullptr, &job.warnings);
+  if (!drawing) return std::nullopt;
+  applyLayerStates(*drawing, p.layers);
+  job.drawing = std::move(*drawing);
+  job.options = planOptionsOf(p);
+  job.profile = p.profile;
+  job.project = std::move(p);
+  return job;
+}
+
+}  // namespace
+
+std::optional<LoadedJob> loadDrawing(const DrawingSource& source, const MachineProfile& profile,
+                                     PlanOptions options, std::string& error) {
+  LoadedJob job;
+  job.profile = profile;
+  job.source = source;
+  const bool fixed = options.atMm && !options.fit;
+  const double scale = fixed ? options.scale * std::max(1.0, options.stretchY) : 1.0;
+  auto drawing = importSvgText(job.source, importToleranceMm(options.toleranceMm, scale), error,
+                               options.cancel, &job.warnings);
+  if (!drawing) return std::nullopt;
+  job.drawing = std::move(*drawing);
+  if (!fixed) {
+    const auto placed = autoPlacement(job.drawing, job.profile, options.mode, options.rotationRad,
+                                      options.fit ? PlacementSizing::Fit : PlacementSizing::TrueSize);
+    if (placed) {
+      setFixedPlacement(options, placed->placement);
+      job.note = scaleNote(*placed);
+    }
+    // No placement: planJob reports why (empty drawing or no singularity-free area).
+  }
+  job.options = options;
+  return job;
+}
+
+std::optional<LoadedJob> loadJob(const QString& path, const std::optional<MachineProfile>& profile,
+                                 PlanOptions options, std::string& error, FillMode fill,
+                                 const HatchSettings& hatch) {
+  if (isProjectPath(path)) return loadProject(path, profile, error);
+  if (!profile) {
+    error = "no machine profile given";
+    return std::nullopt;
+  }
+  DrawingSource source;
+  source.name = QFileInfo(path).fileName();
+  source.fill = fill;
+  source.hatch = hatch;
+  if (!readFile(path, source.svg, error)) return std::nullopt;
+  return loadDrawing(source, *profile, std::move(options), error);
+}
+
+Project projectOf(const DrawingSource& source, const Drawing& drawing, const Placement& placement,
+                  std::optional<WorkingMode> mode, double toleranceMm, const MachineProfile& profile) {
+  Project p;
+  p.drawingName = source.name.toStdString();
+  p.drawingSvg = source.svg.toStdString();
+  p.flatteningToleranceMm = drawing.flatteningToleranceMm;
+  p.placement = placement;
+  p.layers = layerStatesOf(drawing);
+  p.mode = mode;
+  p.toleranceMm = toleranceMm;
+  p.profile = profile;
+  return p;
+}
+
+}  // namespace fivebar::widgets

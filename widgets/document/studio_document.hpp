@@ -1,0 +1,122 @@
+// The studio's document: the only door to mutation. It owns the drawing, its placement on the
+// machine, the machine profile, the chosen working mode and the layer settings, and the undo
+// stack; every edit is a small QUndoCommand (document_commands.hpp). Widgets show the state and
+// call the edit functions; they never keep a copy as truth.
+#pragma once
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+#include <optional>
+
+#include "core/planning/drawing.hpp"
+#include "core/kinematics/modes.hpp"
+#include "core/planning/placement.hpp"
+#include "core/machine/profile.hpp"
+#include "widgets/document/job_source.hpp"
+
+namespace fivebar::widgets {
+
+// The working-mode selector's value: a fixed mode, or Auto (nullopt) which lets the planner
+// choose the feasible mode with the largest singularity margin.
+using ModeSelection = std::optional<WorkingMode>;
+
+// The user-editable settings of one layer (the paths themselves never change in the studio).
+struct LayerSettings {
+  bool visible = true;
+  LayerToolSettings tool;
+};
+
+class StudioDocument : public QObject {
+  Q_OBJECT
+ public:
+  explicit StudioDocument(MachineProfile profile, QObject* parent = nullptr);
+
+  const Drawing& drawing() const { return drawing_; }
+  const Placement& placement() const { return placement_; }
+  const MachineProfile& profile() const { return profile_; }
+  // The SVG text the drawing was imported from (embedded in a saved project).
+  const DrawingSource& source() const { return source_; }
+  // Total tolerance of the drawn line (mm), shared by flattening, rounding and segmentation.
+  double toleranceMm() const { return toleranceMm_; }
+  ModeSelection modeSelection() const { return modeSelection_; }
+  // The mode the canvas shows: the chosen one, or for Auto the planner's last pick (the
+  // profile's default mode until a plan exists).
+  WorkingMode effectiveMode() const;
+  QString fileName() const { return fileName_; }
+  bool hasDrawing() const { return !drawing_.layers.empty(); }
+  QUndoStack* undoStack() { return &undo_; }
+
+  // --- edits, each one undoable ---
+  // Replaces the drawing (an import) and places it.
+  void replaceDrawing(const Drawing& drawing, const QString& fileName, const Placement& placement,
+                      const DrawingSource& source = {});
+  // Sets the placement. Calls with the same non-zero `gestureId` merge into one undo step (a
+  // drag); see beginGesture().
+  void setPlacement(const Placement& placement, int gestureId = 0);
+  void setModeSelection(ModeSelection choice);
+  void setLayerVisible(int layerIndex, bool visible);
+  void moveLayer(int from, int to);
+  void setLayerTool(int layerIndex, const LayerToolSettings& tool);
+  // The machine profile (the profile editor's door). Undoable like every edit.
+  void setProfile(const MachineProfile& profile);
+
+  // A fresh id for one mouse gesture, so all its placement updates form one undo step.
+  int beginGesture() { return ++lastGesture_; }
+
+  // Not an edit: the planner's Auto pick, shown by the canvas and the mode panel.
+  void setAutoResolvedMode(std::optional<WorkingMode> mode);
+  std::optional<WorkingMode> autoResolvedMode() const { return autoResolved_; }
+
+  // Not an edit: the document becomes a loaded project (drawing, placement, layers, mode,
+  // tolerance, machine); the undo history is cleared and the state counts as saved.
+  void loadProject(const Drawing& drawing, const DrawingSource& source, const Placement& placement,
+                   ModeSelection mode, double toleranceMm, const MachineProfile& profile,
+                   const QString& projectPath);
+  // Not an edit: the same drawing flattened more finely (the planner asked for it); keeps the
+  // layers' settings, the placement and the undo history.
+  void applyRefinedDrawing(const Drawing& drawing);
+  // The project file the document was last saved to or opened from ("" if none).
+  QString projectPath() const { return projectPath_; }
+  // Marks the current state as saved to `path`.
+  void markSaved(const QString& path);
+  // Something changed since the last save (or since the document was opened empty).
+  bool isModified() const { return !undo_.isClean(); }
+
+  // --- raw setters used only by the undo commands ---
+  void applyDrawing(const Drawing& drawing, const QString& fileName, const DrawingSource& source);
+  void applyPlacement(const Placement& placement);
+  void applyModeSelection(ModeSelection choice);
+  // Reorders the layers (`order[i]` = current index of the layer moving to i), then sets the
+  // settings by new position.
+  void applyLayers(const std::vector<int>& order, const std::vector<LayerSettings>& settings);
+  std::vector<LayerSettings> layerSettings() const;
+  void applyProfile(const MachineProfile& profile);
+
+ signals:
+  void drawingChanged();      // new drawing (import, undo of import)
+  void layersChanged();       // visibility, order or tool settings of layers
+  void placementChanged();
+  void modeSelectionChanged();
+  void profileChanged();
+  void effectiveModeChanged();
+  void modifiedChanged(bool modified);
+  void projectPathChanged();
+  // Anything that changes the planned job (all of the above except effectiveModeChanged).
+  void jobInputsChanged();
+
+ private:
+  Drawing drawing_;
+  Placement placement_;
+  MachineProfile profile_;
+  ModeSelection modeSelection_;
+  std::optional<WorkingMode> autoResolved_;
+  QString fileName_;
+  DrawingSource source_;
+  double toleranceMm_ = 0.1;
+  QString projectPath_;
+  QUndoStack undo_;
+  int lastGesture_ = 0;
+};
+
+}  // namespace fivebar::widgets

@@ -1,0 +1,103 @@
+#include "widgets/machine/console_panel.hpp"
+
+#include <QFontDatabase>
+#include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QLineEdit>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+#include "widgets/canvas/studio_palette.hpp"
+
+namespace fivebar::widgets {
+namespace {
+
+QColor colourOf(ConsoleKind kind) {
+  switch (kind) {
+    case ConsoleKind::Sent: return palette::drawing();
+    case ConsoleKind::Received: return QColor(0x1f, 0x29, 0x37);
+    case ConsoleKind::Info: return palette::gridLabel();
+    case ConsoleKind::Problem: return palette::problem();
+  }
+  return Qt::black;
+}
+
+}  // namespace
+
+ConsolePanel::ConsolePanel(MachineSession& session, QWidget* parent)
+    : QWidget(parent), session_(session) {
+  setObjectName(QStringLiteral("consolePanel"));
+  log_ = new QPlainTextEdit(this);
+  log_->setReadOnly(true);
+  log_->setMaximumBlockCount(kMaxLogLines);
+  log_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+  log_->setPlaceholderText(tr("Lines sent to and received from the machine appear here."));
+  input_ = new QLineEdit(this);
+  input_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+  input_->setPlaceholderText(tr("G-code or $ command, e.g. $$ or G0 X10 Y20"));
+  input_->installEventFilter(this);
+  send_ = new QPushButton(tr("Send"), this);
+
+  auto* row = new QHBoxLayout;
+  row->addWidget(input_, 1);
+  row->addWidget(send_);
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(4, 4, 4, 4);
+  layout->addWidget(log_, 1);
+  layout->addLayout(row);
+
+  connect(input_, &QLineEdit::returnPressed, this, &ConsolePanel::submit);
+  connect(send_, &QPushButton::clicked, this, &ConsolePanel::submit);
+  connect(&session_, &MachineSession::consoleLine, this, &ConsolePanel::appendLine);
+  connect(&session_, &MachineSession::connectionChanged, this, &ConsolePanel::updateEnabled);
+  connect(&session_, &MachineSession::jobActiveChanged, this, &ConsolePanel::updateEnabled);
+  updateEnabled();
+}
+
+void ConsolePanel::appendLine(const QString& text, ConsoleKind kind) {
+  const QString prefix = kind == ConsoleKind::Sent ? QStringLiteral("&gt; ") : QString();
+  log_->appendHtml(QStringLiteral("<span style=\"color:%1\">%2%3</span>")
+                       .arg(colourOf(kind).name(), prefix, text.toHtmlEscaped()));
+}
+
+void ConsolePanel::submit() {
+  const QString line = input_->text().trimmed();
+  if (line.isEmpty()) return;
+  if (history_.isEmpty() || history_.back() != line) history_.append(line);
+  while (history_.size() > kMaxHistory) history_.removeFirst();
+  historyPos_ = int(history_.size());
+  draft_.clear();
+  input_->clear();
+  session_.sendLine(line);
+}
+
+bool ConsolePanel::eventFilter(QObject* watched, QEvent* event) {
+  if (watched == input_ && event->type() == QEvent::KeyPress) {
+    const int key = static_cast<QKeyEvent*>(event)->key();
+    if (key == Qt::Key_Up) {
+      showHistory(-1);
+      return true;
+    }
+    if (key == Qt::Key_Down) {
+      showHistory(+1);
+      return true;
+    }
+  }
+  return QWidget::eventFilter(watched, event);
+}
+
+void ConsolePanel::showHistory(int step) {
+  if (history_.isEmpty()) return;
+  if (historyPos_ == int(history_.size())) draft_ = input_->text();
+  historyPos_ = std::clamp(historyPos_ + step, 0, int(history_.size()));
+  input_->setText(historyPos_ == int(history_.size()) ? draft_ : history_[historyPos_]);
+}
+
+void ConsolePanel::updateEnabled() {
+  const bool usable = session_.isConnected() && !session_.jobActive();
+  input_->setEnabled(usable);
+  send_->setEnabled(usable);
+}
+
+}  // namespace fivebar::widgets

@@ -1,0 +1,49 @@
+// The machine console: the lines sent to and received from the board (status reports left out,
+// and the job's thousands of "ok"s while a job streams), and an input line with a history
+// walked with the up and down arrow keys. Everything goes through MachineSession.
+#pragma once
+
+#include <QStringList>
+#include <QWidget>
+
+#include "widgets/machine/machine_session.hpp"
+
+class QLineEdit;
+class QPlainTextEdit;
+class QPushButton;
+
+namespace fivebar::widgets {
+
+class ConsolePanel : public QWidget {
+  Q_OBJECT
+ public:
+  static constexpr int kMaxLogLines = 2000;
+  static constexpr int kMaxHistory = 100;
+
+  explicit ConsolePanel(MachineSession& session, QWidget* parent = nullptr);
+
+  QLineEdit* input() const { return input_; }
+  QPlainTextEdit* log() const { return log_; }
+  const QStringList& history() const { return history_; }
+
+ public slots:
+  void appendLine(const QString& text, fivebar::widgets::ConsoleKind kind);
+  void submit();
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
+ private:
+  void showHistory(int step);
+  void updateEnabled();
+
+  MachineSession& session_;
+  QPlainTextEdit* log_ = nullptr;
+  QLineEdit* input_ = nullptr;
+  QPushButton* send_ = nullptr;
+  QStringList history_;
+  int historyPos_ = 0;  // == history_.size() when editing a new line
+  QString draft_;       // the new line being typed, kept while browsing the history
+};
+
+}  // namespace fivebar::widgets

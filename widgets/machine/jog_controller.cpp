@@ -1,0 +1,134 @@
+#include "widgets/machine/jog_controller.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/kinematics/units.hpp"
+
+namespace fivebar::widgets {
+
+JogController::JogController(MachineSession& session, QObject* parent)
+    : QObject(parent), session_(session) {
+  holdTimer_.setSingleShot(true);
+  holdTimer_.setInterval(kHoldThresholdMs);
+  connect(&holdTimer_, &QTimer::timeout, this, [this] {
+    if (!pressed_) return;
+    streaming_ = pressed_;
+    topUp();
+    if (streaming_) streamTimer_.start();
+  });
+  streamTimer_.setInterval(kStreamPeriodMs);
+  connect(&streamTimer_, &QTimer::timeout, this, &JogController::topUp);
+  connect(&session_, &MachineSession::connectionChanged, this, [this](bool connected) {
+    if (connected) return;
+    holdTimer_.stop();
+    streamTimer_.stop();
+    pressed_.reset();
+    streaming_.reset();
+  });
+}
+
+JogPlan JogController::plan(const JogDirection& direction, double amount) const {
+  const auto start = session_.jogStart();
+  if (!start) {
+    JogPlan refused;
+    refused.reason = "the machine position is not known yet";
+    return refused;
+  }
+  const MachineProfile& profile = session_.profile();
+  if (direction.kind == JogDirection::Kind::Cartesian) {
+    const double norm = direction.xy.norm();
+    if (norm <= 0.0) return {};
+    return planCartesianJog(profile, *start, direction.xy / norm * amount, speedMmPerS_);
+  }
+  const double maxRadPerS = direction.motor == 1 ? profile.motors.maxSpeedRadPerS1
+                                                 : profile.motors.maxSpeedRadPerS2;
+  const double speedRadPerS = std::min(radFromDeg(kMotorSpeedDegPerS), maxRadPerS);
+  return planMotorJog(profile, *start, direction.motor, direction.sign * radFromDeg(amount),
+                      speedRadPerS);
+}
+
+bool JogController::jogStep(const JogDirection& direction) {
+  if (!session_.canJog()) {
+    emit message(tr("Jog refused: the machine is not connected, not idle, or a job is running."));
+    return false;
+  }
+  const JogPlan p = plan(direction, step_);
+  report(p);
+  return p.ok() && session_.sendJog(p);
+}
+
+void JogController::press(const JogDirection& direction) {
+  if (pressed_) return;
+  pressed_ = direction;
+  pressClock_.start();
+  holdTimer_.start();
+}
+
+void JogController::release() {
+  if (!pressed_) return;
+  const JogDirection direction = *pressed_;
+  pressed_.reset();
+  if (holdTimer_.isActive()) {  // a tap: one step
+    holdTimer_.stop();
+    jogStep(direction);
+    return;
+  }
+  streamTimer_.stop();
+  if (streaming_) {
+    streaming_.reset();
+    session_.cancelJog();
+  }
+}
+
+void JogController::topUp() {
+  if (!streaming_ || !session_.link()) return;
+  if (!session_.canJog()) return;  // waiting for the machine; the stream resumes when it can
+  const grbl::GrblProtocol& protocol = session_.link()->protocol();
+  while (streaming_ && protocol.linesInFlight() + protocol.linesQueued() < kLinesAhead &&
+         leadS(*streaming_) < kLeadS) {
+    double amount = speedMmPerS_ * kChunkS;
+    if (streaming_->kind == JogDirection::Kind::Motor) amount = kMotorSpeedDegPerS * kChunkS;
+    const JogPlan p = plan(*streaming_, amount);
+    if (p.ok() && !session_.sendJog(p)) {
+      streaming_.reset();
+      break;
+    }
+    if (p.status != JogStatus::Full) {
+      // The edge of the safe region: the machine stops at the last safe point by itself.
+      report(p);
+      streaming_.reset();
+    }
+  }
+  if (!streaming_) streamTimer_.stop();
+}
+
+double JogController::leadS(const JogDirection& direction) const {
+  const auto reported = session_.motorAngles();
+  const auto planned = session_.jogStart();
+  if (!reported || !planned) return 0.0;
+  if (direction.kind == JogDirection::Kind::Motor) {
+    const double deltaDeg = degFromRad(std::hypot(planned->theta1 - reported->theta1,
+                                                  planned->theta2 - reported->theta2));
+    return deltaDeg / kMotorSpeedDegPerS;
+  }
+  const MachineProfile& profile = session_.profile();
+  const FkResult a = forward(profile.geometry, *reported, profile.assembly);
+  const FkResult b = forward(profile.geometry, *planned, profile.assembly);
+  if (!a.ok() || !b.ok()) return 0.0;
+  return (b.p - a.p).norm() / std::max(speedMmPerS_, 1e-6);
+}
+
+void JogController::report(const JogPlan& p) {
+  switch (p.status) {
+    case JogStatus::Full: emit message(QString()); break;
+    case JogStatus::Clipped:
+      emit message(tr("Jog stopped at the last safe point: %1").arg(QString::fromStdString(p.reason)));
+      break;
+    case JogStatus::Refused:
+      emit message(tr("Jog refused: %1").arg(QString::fromStdString(p.reason)));
+      break;
+  }
+}
+
+}  // namespace fivebar::widgets

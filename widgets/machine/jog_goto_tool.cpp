@@ -1,0 +1,95 @@
+#include "widgets/machine/jog_goto_tool.hpp"
+
+#include <QPainterPath>
+
+#include "widgets/canvas/studio_palette.hpp"
+
+namespace fivebar::widgets {
+
+GoToTool::GoToTool(MachineSession& session, QObject* parent) : QObject(parent), session_(session) {
+  connect(&session_, &MachineSession::connectionChanged, this, [this] { cancel(); });
+}
+
+void GoToTool::pick(QPointF machineMm) {
+  target_ = machineMm;
+  const auto start = session_.jogStart();
+  if (!start || !session_.isConnected()) {
+    pending_.reset();
+    emit picked(false, tr("Connect the machine first: its position is not known."));
+    emit repaintNeeded();
+    return;
+  }
+  pending_ = planGoTo(session_.profile(), *start, Vec2(machineMm.x(), machineMm.y()));
+  if (pending_->ok()) {
+    emit picked(true, tr("Go to %1, %2 mm? The dashed path is the pen's travel (%3 checked moves).")
+                          .arg(machineMm.x(), 0, 'f', 1)
+                          .arg(machineMm.y(), 0, 'f', 1)
+                          .arg(pending_->targets.size()));
+  } else {
+    emit picked(false, tr("Cannot go there: %1").arg(QString::fromStdString(pending_->reason)));
+  }
+  emit repaintNeeded();
+}
+
+bool GoToTool::confirm() {
+  if (!pending_ || !pending_->ok()) return false;
+  const bool sent = session_.sendJog(*pending_);
+  if (sent) cancel();
+  return sent;
+}
+
+void GoToTool::cancel() {
+  const bool had = target_.has_value();
+  target_.reset();
+  pending_.reset();
+  if (had) {
+    emit cleared();
+    emit repaintNeeded();
+  }
+}
+
+bool GoToTool::mousePress(QMouseEvent* event, const ViewTransform& view) {
+  if (event->button() != Qt::LeftButton) return false;
+  pick(view.machineFromWidget(event->position()));
+  return true;
+}
+
+bool GoToTool::mouseMove(QMouseEvent* event, const ViewTransform& view) {
+  hoverMm_ = view.machineFromWidget(event->position());
+  return !target_.has_value();  // the hover line follows the cursor until a target is picked
+}
+
+bool GoToTool::mouseRelease(QMouseEvent*, const ViewTransform&) { return false; }
+
+void GoToTool::paintOverlay(QPainter& painter, const ViewTransform& view) {
+  painter.save();
+  painter.setRenderHint(QPainter::Antialiasing);
+  const auto pen = session_.penMm();
+  if (!target_ && hoverMm_ && pen) {  // a light hint line from the pen to the cursor
+    painter.setPen(QPen(palette::travel(), 1.0, Qt::DotLine));
+    painter.drawLine(view.widgetFromMachine(QPointF(pen->x(), pen->y())),
+                     view.widgetFromMachine(*hoverMm_));
+  }
+  if (target_) {
+    const bool ok = pending_ && pending_->ok();
+    const QColor colour = ok ? palette::selection() : palette::problem();
+    if (pending_ && pending_->pathMm.size() > 1) {
+      QPainterPath path;
+      path.moveTo(view.widgetFromMachine(QPointF(pending_->pathMm[0].x(), pending_->pathMm[0].y())));
+      for (const Vec2& p : pending_->pathMm) path.lineTo(view.widgetFromMachine(QPointF(p.x(), p.y())));
+      painter.setPen(QPen(colour, 2.0, Qt::DashLine));
+      painter.drawPath(path);
+    }
+    const QPointF t = view.widgetFromMachine(*target_);
+    painter.setPen(QPen(colour, 2.0));
+    painter.setBrush(Qt::NoBrush);
+    painter.drawEllipse(t, 7.0, 7.0);
+    painter.drawLine(t - QPointF(11, 0), t + QPointF(11, 0));
+    painter.drawLine(t - QPointF(0, 11), t + QPointF(0, 11));
+  }
+  painter.restore();
+}
+
+QCursor GoToTool::cursorAt(QPointF, const ViewTransform&) const { return QCursor(Qt::CrossCursor); }
+
+}  // namespace fivebar::widgets

@@ -1,0 +1,50 @@
+// Canvas tool for "go to": a click on the canvas plans a checked move of the pen to that point
+// (jog_planner planGoTo: pen up and a safe travel at rapid rate, every leg checked) and draws the path the pen will take;
+// nothing moves until the move is confirmed (confirm(), Enter in the jog panel). A refused target
+// is drawn in red with the reason.
+#pragma once
+
+#include <QObject>
+#include <optional>
+
+#include "widgets/canvas/canvas_layer.hpp"
+#include "widgets/machine/jog_planner.hpp"
+#include "widgets/machine/machine_session.hpp"
+
+namespace fivebar::widgets {
+
+class GoToTool : public QObject, public CanvasTool {
+  Q_OBJECT
+ public:
+  explicit GoToTool(MachineSession& session, QObject* parent = nullptr);
+
+  // Plans a go-to to a machine-frame point (what a click does).
+  void pick(QPointF machineMm);
+  const std::optional<JogPlan>& pending() const { return pending_; }
+  std::optional<QPointF> target() const { return target_; }
+
+  bool mousePress(QMouseEvent* event, const ViewTransform& view) override;
+  bool mouseMove(QMouseEvent* event, const ViewTransform& view) override;
+  bool mouseRelease(QMouseEvent* event, const ViewTransform& view) override;
+  void paintOverlay(QPainter& painter, const ViewTransform& view) override;
+  QCursor cursorAt(QPointF widgetPx, const ViewTransform& view) const override;
+
+ public slots:
+  // Sends the pending move; false when there is none or the machine refuses it.
+  bool confirm();
+  void cancel();
+
+ signals:
+  // A target was picked: ok when the move can be confirmed; text says where / why not.
+  void picked(bool ok, const QString& text);
+  void cleared();
+  void repaintNeeded();
+
+ private:
+  MachineSession& session_;
+  std::optional<QPointF> target_;
+  std::optional<JogPlan> pending_;
+  std::optional<QPointF> hoverMm_;
+};
+
+}  // namespace fivebar::widgets

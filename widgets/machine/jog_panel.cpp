@@ -1,0 +1,227 @@
+#include "widgets/machine/jog_panel.hpp"
+
+#include <QButtonGroup>
+#include <QDoubleSpinBox>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QVBoxLayout>
+
+#include "widgets/canvas/canvas_view.hpp"
+
+namespace fivebar::widgets {
+namespace {
+
+constexpr double kSteps[] = {0.1, 1.0, 10.0};
+constexpr double kDefaultSpeedMmPerS = 20.0;
+
+std::optional<JogDirection> directionOfKey(int key) {
+  switch (key) {
+    case Qt::Key_Left: return JogDirection::cartesian(-1, 0);
+    case Qt::Key_Right: return JogDirection::cartesian(1, 0);
+    case Qt::Key_Up: return JogDirection::cartesian(0, 1);
+    case Qt::Key_Down: return JogDirection::cartesian(0, -1);
+    default: return std::nullopt;
+  }
+}
+
+}  // namespace
+
+JogPanel::JogPanel(MachineSession& session, QWidget* parent)
+    : QWidget(parent), session_(session), controller_(session), goTo_(session) {
+  setObjectName(QStringLiteral("jogPanel"));
+  // XY arrows: row 0 is +Y (the machine frame's y points toward the work area, up on screen).
+  const QString arrowText[3][3] = {{QStringLiteral("↖"), QStringLiteral("↑"), QStringLiteral("↗")},
+                                   {QStringLiteral("←"), QString(), QStringLiteral("→")},
+                                   {QStringLiteral("↙"), QStringLiteral("↓"), QStringLiteral("↘")}};
+  auto* grid = new QGridLayout;
+  for (int row = 0; row < 3; ++row) {
+    for (int col = 0; col < 3; ++col) {
+      if (row == 1 && col == 1) continue;
+      const int dx = col - 1, dy = 1 - row;
+      const QString tip = tr("Jog the pen %1 mm in X, %2 mm in Y per step; hold for a continuous jog")
+                              .arg(dx).arg(dy);
+      arrows_[row][col] = makeJogButton(arrowText[row][col], tip, JogDirection::cartesian(dx, dy));
+      grid->addWidget(arrows_[row][col], row, col);
+    }
+  }
+  goToButton_ = new QPushButton(tr("Go to…"), this);
+  goToButton_->setCheckable(true);
+  goToButton_->setToolTip(tr("Click the canvas to choose where the pen goes; the path is shown "
+                             "before you confirm."));
+  grid->addWidget(goToButton_, 1, 1);
+
+  auto* motorRow = new QHBoxLayout;
+  for (int motor = 1; motor <= 2; ++motor) {
+    for (int s = 0; s < 2; ++s) {
+      const int sign = s == 0 ? -1 : 1;
+      const QString text = QStringLiteral("θ%1 %2").arg(motor).arg(sign < 0 ? QStringLiteral("−") : QStringLiteral("+"));
+      const QString tip = sign < 0 ? tr("Turn motor %1 clockwise by one step").arg(motor)
+                                   : tr("Turn motor %1 counter-clockwise by one step").arg(motor);
+      motors_[motor - 1][s] = makeJogButton(text, tip, JogDirection::motorJog(motor, sign));
+      motorRow->addWidget(motors_[motor - 1][s]);
+    }
+  }
+
+  steps_ = new QButtonGroup(this);
+  auto* stepRow = new QHBoxLayout;
+  stepRow->addWidget(new QLabel(tr("Step"), this));
+  for (int i = 0; i < 3; ++i) {
+    auto* b = new QRadioButton(QLocale().toString(kSteps[i]), this);
+    steps_->addButton(b, i);
+    stepRow->addWidget(b);
+    moveWidgets_.push_back(b);
+  }
+  stepRow->addWidget(new QLabel(tr("mm / °"), this));
+  stepRow->addStretch(1);
+  steps_->button(1)->setChecked(true);
+  speed_ = new QDoubleSpinBox(this);
+  speed_->setRange(1.0, 200.0);
+  speed_->setDecimals(0);
+  speed_->setSuffix(tr(" mm/s"));
+  speed_->setValue(kDefaultSpeedMmPerS);
+  speed_->setToolTip(tr("Speed of XY jogs"));
+  stepRow->addWidget(speed_);
+
+  home_ = new QPushButton(this);
+  penUp_ = new QPushButton(tr("Pen up"), this);
+  penUp_->setToolTip(tr("Lift the pen (Page Up on the canvas)"));
+  penDown_ = new QPushButton(tr("Pen down"), this);
+  penDown_->setToolTip(tr("Lower the pen (Page Down on the canvas)"));
+  auto* toolRow = new QHBoxLayout;
+  toolRow->addWidget(home_);
+  toolRow->addWidget(penUp_);
+  toolRow->addWidget(penDown_);
+
+  confirmRow_ = new QWidget(this);
+  confirmText_ = new QLabel(confirmRow_);
+  confirmText_->setWordWrap(true);
+  confirm_ = new QPushButton(tr("Go"), confirmRow_);
+  cancel_ = new QPushButton(tr("Cancel"), confirmRow_);
+  auto* confirmLayout = new QGridLayout(confirmRow_);
+  confirmLayout->setContentsMargins(0, 0, 0, 0);
+  confirmLayout->addWidget(confirmText_, 0, 0, 1, 2);
+  confirmLayout->addWidget(confirm_, 1, 0);
+  confirmLayout->addWidget(cancel_, 1, 1);
+  confirmRow_->hide();
+
+  message_ = new QLabel(this);
+  message_->setWordWrap(true);
+  message_->setStyleSheet(QStringLiteral("color: #b45309"));
+
+  // The go-to question and the messages come first, where they are seen without scrolling.
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(8, 8, 8, 8);
+  layout->addLayout(stepRow);
+  layout->addWidget(confirmRow_);
+  layout->addWidget(message_);
+  layout->addLayout(grid);
+  layout->addLayout(motorRow);
+  layout->addLayout(toolRow);
+  layout->addStretch(1);
+
+  moveWidgets_.insert(moveWidgets_.end(), {goToButton_, home_, penUp_, penDown_, speed_});
+  connect(steps_, &QButtonGroup::idClicked, this, [this](int id) { controller_.setStep(kSteps[id]); });
+  controller_.setStep(kSteps[1]);
+  connect(speed_, &QDoubleSpinBox::valueChanged, this, [this](double v) { controller_.setSpeedMmPerS(v); });
+  controller_.setSpeedMmPerS(kDefaultSpeedMmPerS);
+  connect(home_, &QPushButton::clicked, &session_, &MachineSession::home);
+  connect(penUp_, &QPushButton::clicked, &session_, &MachineSession::penUp);
+  connect(penDown_, &QPushButton::clicked, &session_, &MachineSession::penDown);
+  connect(goToButton_, &QPushButton::toggled, this, &JogPanel::setGoToActive);
+  connect(confirm_, &QPushButton::clicked, &goTo_, &GoToTool::confirm);
+  connect(cancel_, &QPushButton::clicked, &goTo_, &GoToTool::cancel);
+  connect(&goTo_, &GoToTool::picked, this, &JogPanel::onPicked);
+  connect(&goTo_, &GoToTool::cleared, confirmRow_, &QWidget::hide);
+  connect(&goTo_, &GoToTool::repaintNeeded, this, [this] {
+    if (canvas_) canvas_->update();
+  });
+  connect(&controller_, &JogController::message, message_, &QLabel::setText);
+  connect(&session_, &MachineSession::connectionChanged, this, &JogPanel::refreshEnabled);
+  connect(&session_, &MachineSession::statusUpdated, this, &JogPanel::refreshEnabled);
+  connect(&session_, &MachineSession::jobActiveChanged, this, &JogPanel::refreshEnabled);
+  refreshEnabled();
+}
+
+QPushButton* JogPanel::makeJogButton(const QString& text, const QString& tip, const JogDirection& dir) {
+  auto* b = new QPushButton(text, this);
+  b->setToolTip(tip);
+  b->setMinimumSize(40, 32);
+  b->setAutoRepeat(false);
+  connect(b, &QPushButton::pressed, this, [this, dir] { controller_.press(dir); });
+  connect(b, &QPushButton::released, this, [this] { controller_.release(); });
+  moveWidgets_.push_back(b);
+  return b;
+}
+
+QPushButton* JogPanel::arrowButton(int dx, int dy) const { return arrows_[1 - dy][dx + 1]; }
+
+QPushButton* JogPanel::motorButton(int motor, int sign) const {
+  return motors_[motor - 1][sign < 0 ? 0 : 1];
+}
+
+void JogPanel::attachCanvas(CanvasView* canvas) {
+  canvas_ = canvas;
+  canvas_->installEventFilter(this);
+}
+
+bool JogPanel::eventFilter(QObject* watched, QEvent* event) {
+  if (watched != canvas_ || (event->type() != QEvent::KeyPress && event->type() != QEvent::KeyRelease))
+    return QWidget::eventFilter(watched, event);
+  auto* key = static_cast<QKeyEvent*>(event);
+  if (!session_.isConnected()) return false;
+  const bool press = event->type() == QEvent::KeyPress;
+  if (const auto dir = directionOfKey(key->key())) {
+    if (!key->isAutoRepeat()) press ? controller_.press(*dir) : controller_.release();
+    return true;
+  }
+  if (!press || key->isAutoRepeat()) return false;
+  switch (key->key()) {
+    case Qt::Key_PageUp: session_.penUp(); return true;
+    case Qt::Key_PageDown: session_.penDown(); return true;
+    case Qt::Key_Return:
+    case Qt::Key_Enter: return goTo_.confirm();
+    case Qt::Key_Escape:
+      if (!goTo_.target()) return false;
+      goTo_.cancel();
+      return true;
+    default: return false;
+  }
+}
+
+void JogPanel::setGoToActive(bool active) {
+  if (canvas_ == nullptr) return;
+  if (active) {
+    if (canvas_->tool() != &goTo_) previousTool_ = canvas_->tool();
+    canvas_->setTool(&goTo_);
+    canvas_->setFocus();
+    message_->setText(tr("Click the canvas where the pen should go."));
+  } else {
+    goTo_.cancel();
+    if (canvas_->tool() == &goTo_) canvas_->setTool(previousTool_);
+    message_->clear();
+  }
+}
+
+void JogPanel::onPicked(bool ok, const QString& text) {
+  message_->clear();
+  confirmText_->setText(text);
+  confirm_->setEnabled(ok);
+  confirmRow_->show();
+}
+
+void JogPanel::refreshEnabled() {
+  const bool usable = session_.isConnected() && !session_.jobActive() &&
+                      session_.state() != grbl::MachineState::Alarm;
+  for (QWidget* w : moveWidgets_) w->setEnabled(usable);
+  const bool homing = session_.profile().hasHomingSwitches;
+  home_->setText(homing ? tr("Home ($H)") : tr("Set reference pose"));
+  home_->setToolTip(homing ? tr("Run the homing cycle")
+                           : tr("Declare that the machine now stands at the profile's home pose"));
+  if (!usable && goToButton_->isChecked()) goToButton_->setChecked(false);
+}
+
+}  // namespace fivebar::widgets

@@ -1,0 +1,71 @@
+// The jog panel: XY arrows and diagonals, per-motor buttons (theta1 +/-, theta2 +/-), step sizes
+// (0.1, 1, 10 mm or degrees), a tap jogs one step and holding jogs continuously until release;
+// keyboard jogging on the canvas (arrow keys; Page Up / Page Down lift and lower the pen; Enter
+// confirms a go-to, Escape cancels it); go-to by clicking the canvas with the path previewed;
+// home ($H) or "set reference pose"; pen up and down. All moves are checked (jog_planner).
+#pragma once
+
+#include <QWidget>
+#include <vector>
+
+#include "widgets/machine/jog_controller.hpp"
+#include "widgets/machine/jog_goto_tool.hpp"
+
+class QAbstractButton;
+class QButtonGroup;
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+
+namespace fivebar::widgets {
+
+class CanvasView;
+
+class JogPanel : public QWidget {
+  Q_OBJECT
+ public:
+  explicit JogPanel(MachineSession& session, QWidget* parent = nullptr);
+
+  // Keyboard jogging on the canvas and the go-to tool. The canvas must outlive the panel's use.
+  void attachCanvas(CanvasView* canvas);
+
+  JogController& controller() { return controller_; }
+  GoToTool& goToTool() { return goTo_; }
+  // The button for a direction, e.g. arrowButton(1, 0) is "+X", arrowButton(-1, 1) "up-left".
+  QPushButton* arrowButton(int dx, int dy) const;
+  QPushButton* motorButton(int motor, int sign) const;
+  QPushButton* goToButton() const { return goToButton_; }
+  QPushButton* confirmButton() const { return confirm_; }
+  QLabel* messageLabel() const { return message_; }
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
+ private:
+  QPushButton* makeJogButton(const QString& text, const QString& tip, const JogDirection& dir);
+  void setGoToActive(bool active);
+  void refreshEnabled();
+  void onPicked(bool ok, const QString& text);
+
+  MachineSession& session_;
+  JogController controller_;
+  GoToTool goTo_;
+  CanvasView* canvas_ = nullptr;
+  CanvasTool* previousTool_ = nullptr;
+  QPushButton* arrows_[3][3] = {};
+  QPushButton* motors_[2][2] = {};
+  QButtonGroup* steps_ = nullptr;
+  QDoubleSpinBox* speed_ = nullptr;
+  QPushButton* home_ = nullptr;
+  QPushButton* penUp_ = nullptr;
+  QPushButton* penDown_ = nullptr;
+  QPushButton* goToButton_ = nullptr;
+  QWidget* confirmRow_ = nullptr;
+  QLabel* confirmText_ = nullptr;
+  QPushButton* confirm_ = nullptr;
+  QPushButton* cancel_ = nullptr;
+  QLabel* message_ = nullptr;
+  std::vector<QWidget*> moveWidgets_;
+};
+
+}  // namespace fivebar::widgets

@@ -1,0 +1,81 @@
+#include "widgets/machine/machine_banner.hpp"
+
+#include <QGridLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace fivebar::widgets {
+
+MachineBanner::MachineBanner(MachineSession& session, QWidget* parent)
+    : QFrame(parent), session_(session) {
+  setObjectName(QStringLiteral("machineBanner"));
+  setFrameShape(QFrame::StyledPanel);
+  title_ = new QLabel(this);
+  QFont bold = title_->font();
+  bold.setBold(true);
+  title_->setFont(bold);
+  message_ = new QLabel(this);
+  message_->setWordWrap(true);
+  message_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  reset_ = new QPushButton(tr("Reset"), this);
+  reset_->setToolTip(tr("Soft reset (Ctrl-X): stops everything; the machine keeps its position "
+                        "unless it was moving."));
+  unlock_ = new QPushButton(tr("Unlock ($X)"), this);
+  unlock_->setToolTip(tr("Leave the alarm state without homing. Only when you know the machine "
+                         "stands where the studio shows it."));
+  home_ = new QPushButton(this);
+  dismiss_ = new QPushButton(tr("Dismiss"), this);
+
+  // Two columns, so the banner fits a narrow dock.
+  auto* buttons = new QGridLayout;
+  buttons->addWidget(reset_, 0, 0);
+  buttons->addWidget(unlock_, 0, 1);
+  buttons->addWidget(home_, 1, 0, 1, 2);
+  buttons->addWidget(dismiss_, 2, 1);
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(8, 6, 8, 6);
+  layout->addWidget(title_);
+  layout->addWidget(message_);
+  layout->addLayout(buttons);
+
+  connect(reset_, &QPushButton::clicked, &session_, &MachineSession::softReset);
+  connect(unlock_, &QPushButton::clicked, &session_, &MachineSession::unlock);
+  connect(home_, &QPushButton::clicked, &session_, &MachineSession::home);
+  connect(dismiss_, &QPushButton::clicked, &session_, &MachineSession::dismissProblem);
+  connect(&session_, &MachineSession::problemChanged, this, &MachineBanner::refresh);
+  connect(&session_, &MachineSession::connectionChanged, this, &MachineBanner::refresh);
+  refresh();
+}
+
+void MachineBanner::refresh() {
+  const MachineProblem& p = session_.problem();
+  const bool alarm = p.kind == MachineProblem::Kind::Alarm;
+  setVisible(p.kind != MachineProblem::Kind::None);
+  setStyleSheet(alarm ? QStringLiteral("#machineBanner { background: #fee2e2; border: 1px solid #dc2626; "
+                                       "border-radius: 4px; }")
+                      : QStringLiteral("#machineBanner { background: #fef3c7; border: 1px solid #d97706; "
+                                       "border-radius: 4px; }"));
+  if (alarm) {
+    title_->setText(p.code > 0 ? tr("Alarm %1: the machine stopped").arg(p.code)
+                               : tr("Alarm: the machine is locked"));
+  } else {
+    title_->setText(tr("Error %1: a command was rejected").arg(p.code));
+  }
+  QString text = p.text;
+  if (alarm && p.needsReset) text += QLatin1Char('\n') + tr("The board waits for a reset first: press Reset, then Unlock.");
+  message_->setText(text);
+  const bool homing = session_.profile().hasHomingSwitches;
+  home_->setText(homing ? tr("Home ($H)") : tr("Set reference pose"));
+  home_->setToolTip(homing ? tr("Run the homing cycle; the machine moves to its switches.")
+                           : tr("Declare that the machine now stands at the profile's home pose "
+                                "(G10 L20)."));
+  reset_->setVisible(alarm);
+  unlock_->setVisible(alarm);
+  unlock_->setEnabled(!p.needsReset);
+  home_->setVisible(alarm);
+  home_->setEnabled(!p.needsReset);
+  dismiss_->setVisible(!alarm);
+}
+
+}  // namespace fivebar::widgets

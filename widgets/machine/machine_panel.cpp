@@ -1,0 +1,187 @@
+#include "widgets/machine/machine_panel.hpp"
+
+#include <QComboBox>
+#include <QCoreApplication>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+#include "core/kinematics/units.hpp"
+#include "drivers/serial_transport.hpp"
+#include "widgets/machine/machine_banner.hpp"
+
+namespace fivebar::widgets {
+namespace {
+
+const QString kSimulatedId = QStringLiteral("sim:");
+constexpr int kBaudRates[] = {9600, 19200, 38400, 57600, 115200, 230400, 250000};
+
+QString colourOfState(grbl::MachineState s) {
+  using grbl::MachineState;
+  switch (s) {
+    case MachineState::Idle: return QStringLiteral("#15803d");
+    case MachineState::Run:
+    case MachineState::Jog:
+    case MachineState::Home: return QStringLiteral("#1d4ed8");
+    case MachineState::Hold:
+    case MachineState::Door: return QStringLiteral("#b45309");
+    case MachineState::Alarm: return QStringLiteral("#dc2626");
+    default: return QStringLiteral("#6b7280");
+  }
+}
+
+}  // namespace
+
+QString stateName(grbl::MachineState state) {
+  using grbl::MachineState;
+  switch (state) {
+    case MachineState::Idle: return QCoreApplication::translate("fivebar::widgets::MachinePanel", "Idle");
+    case MachineState::Run: return QCoreApplication::translate("fivebar::widgets::MachinePanel", "Running");
+    case MachineState::Hold: return QCoreApplication::translate("fivebar::widgets::MachinePanel", "On hold");
+    case MachineState::Jog: return QCoreApplication::translate("fivebar::widgets::MachinePanel", "Jogging");
+    case MachineState::Alarm: return QCoreApplication::translate("fivebar::widgets::MachinePanel", "Alarm");
+    case MachineState::Door: return QCoreApplication::translate("fivebar::widgets::MachinePanel", "Door open");
+    case MachineState::Check: return QCoreApplication::translate("fivebar::widgets::MachinePanel", "Check mode");
+    case MachineState::Home: return QCoreApplication::translate("fivebar::widgets::MachinePanel", "Homing");
+    case MachineState::Sleep: return QCoreApplication::translate("fivebar::widgets::MachinePanel", "Sleeping");
+    case MachineState::Unknown: break;
+  }
+  return QCoreApplication::translate("fivebar::widgets::MachinePanel", "Unknown");
+}
+
+MachinePanel::MachinePanel(MachineSession& session, QWidget* parent)
+    : QWidget(parent), session_(session) {
+  setObjectName(QStringLiteral("machinePanel"));
+  ports_ = new QComboBox(this);
+  ports_->setObjectName(QStringLiteral("machinePorts"));
+  refresh_ = new QPushButton(tr("Refresh"), this);
+  refresh_->setToolTip(tr("List the serial ports again"));
+  baud_ = new QComboBox(this);
+  for (int rate : kBaudRates) baud_->addItem(QString::number(rate), rate);
+  baud_->setCurrentIndex(baud_->findData(session_.profile().baudRate));
+  connect_ = new QPushButton(tr("Connect"), this);
+  disconnect_ = new QPushButton(tr("Disconnect"), this);
+  link_ = new QLabel(this);
+  link_->setWordWrap(true);
+
+  ports_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  ports_->setMinimumContentsLength(12);
+  auto* portRow = new QHBoxLayout;
+  portRow->addWidget(ports_, 1);
+  portRow->addWidget(refresh_);
+  auto* baudRow = new QHBoxLayout;
+  baudRow->addWidget(new QLabel(tr("Baud"), this));
+  baudRow->addWidget(baud_, 1);
+  auto* buttonRow = new QHBoxLayout;
+  buttonRow->addWidget(connect_);
+  buttonRow->addWidget(disconnect_);
+  auto* connection = new QGroupBox(tr("Connection"), this);
+  auto* connectionLayout = new QVBoxLayout(connection);
+  connectionLayout->addLayout(portRow);
+  connectionLayout->addLayout(baudRow);
+  connectionLayout->addLayout(buttonRow);
+  connectionLayout->addWidget(link_);
+
+  banner_ = new MachineBanner(session_, this);
+
+  state_ = new QLabel(this);
+  state_->setObjectName(QStringLiteral("machineState"));
+  QFont big = state_->font();
+  big.setBold(true);
+  big.setPointSizeF(big.pointSizeF() * 1.3);
+  state_->setFont(big);
+  xy_ = new QLabel(this);
+  angles_ = new QLabel(this);
+  buffers_ = new QLabel(this);
+  for (QLabel* l : {xy_, angles_, buffers_}) l->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  buffers_->setWordWrap(true);
+  auto* status = new QGroupBox(tr("Status"), this);
+  auto* form = new QFormLayout(status);
+  form->addRow(tr("State"), state_);
+  form->addRow(tr("Pen (X, Y)"), xy_);
+  form->addRow(tr("Motors (θ1, θ2)"), angles_);
+  form->addRow(tr("Buffers"), buffers_);
+
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(4, 4, 4, 4);
+  layout->addWidget(banner_);  // first: a problem is the first thing to see
+  layout->addWidget(connection);
+  layout->addWidget(status);
+  layout->addStretch(1);
+
+  connect(refresh_, &QPushButton::clicked, this, &MachinePanel::refreshPorts);
+  connect(connect_, &QPushButton::clicked, this, &MachinePanel::connectSelected);
+  connect(disconnect_, &QPushButton::clicked, &session_, &MachineSession::disconnectMachine);
+  connect(ports_, &QComboBox::currentIndexChanged, this, &MachinePanel::refreshConnection);
+  connect(&session_, &MachineSession::connectionChanged, this, &MachinePanel::refreshConnection);
+  connect(&session_, &MachineSession::connectionChanged, this, &MachinePanel::refreshStatus);
+  connect(&session_, &MachineSession::statusUpdated, this, &MachinePanel::refreshStatus);
+  refreshPorts();
+  refreshStatus();
+}
+
+void MachinePanel::refreshPorts() {
+  const QString current = ports_->currentData().toString();
+  ports_->clear();
+  ports_->addItem(tr("Simulated machine (built in)"), kSimulatedId);
+  for (const SerialPortInfo& port : SerialTransport::availablePorts()) {
+    const QString label = port.description.isEmpty()
+                              ? port.systemPath
+                              : QStringLiteral("%1 (%2)").arg(port.systemPath, port.description);
+    ports_->addItem(label, port.systemPath);
+  }
+  const int index = ports_->findData(current);
+  ports_->setCurrentIndex(index >= 0 ? index : 0);
+  refreshConnection();
+}
+
+void MachinePanel::connectSelected() {
+  const QString id = ports_->currentData().toString();
+  QString error;
+  const bool ok = id == kSimulatedId
+                      ? session_.connectSimulated(simSpeedup_, sim::Fault{}, &error)
+                      : session_.connectSerial(id, baud_->currentData().toInt(), &error);
+  if (!ok) QMessageBox::warning(this, tr("Cannot connect"), error);
+}
+
+void MachinePanel::refreshConnection() {
+  const bool connected = session_.isConnected();
+  const bool simulated = ports_->currentData().toString() == kSimulatedId;
+  ports_->setEnabled(!connected);
+  refresh_->setEnabled(!connected);
+  baud_->setEnabled(!connected && !simulated);
+  connect_->setEnabled(!connected);
+  disconnect_->setEnabled(connected);
+  link_->setText(connected ? tr("Connected to %1").arg(session_.linkName()) : tr("Not connected"));
+}
+
+void MachinePanel::refreshStatus() {
+  const grbl::StatusReport* report = session_.lastStatus();
+  const grbl::MachineState s = session_.isConnected() ? session_.state() : grbl::MachineState::Unknown;
+  state_->setText(session_.isConnected() ? stateName(s) : tr("Offline"));
+  state_->setStyleSheet(QStringLiteral("color: %1").arg(colourOfState(s)));
+  const auto pen = session_.penMm();
+  xy_->setText(pen ? tr("%1, %2 mm").arg(pen->x(), 0, 'f', 2).arg(pen->y(), 0, 'f', 2)
+                   : QStringLiteral("–"));
+  const auto q = session_.motorAngles();
+  // Single poses are shown normalised to (-180, 180] (conventions.md).
+  angles_->setText(q ? tr("%1°, %2°")
+                           .arg(normalizeDeg(degFromRad(q->theta1)), 0, 'f', 2)
+                           .arg(normalizeDeg(degFromRad(q->theta2)), 0, 'f', 2)
+                     : QStringLiteral("–"));
+  if (report && report->plannerBlocksFree && report->rxBytesFree) {
+    buffers_->setText(tr("planner %1 of %2 blocks free, RX %3 of %4 bytes free")
+                          .arg(*report->plannerBlocksFree)
+                          .arg(grbl::kPlannerBlocks)
+                          .arg(*report->rxBytesFree)
+                          .arg(grbl::kRxBufferBytes));
+  } else {
+    buffers_->setText(QStringLiteral("–"));
+  }
+}
+
+}  // namespace fivebar::widgets

@@ -1,0 +1,59 @@
+// The machine panel: connection (the built-in simulated machine, or a serial port listed with
+// QSerialPortInfo, and its baud rate), the alarm / error banner, and the status the board
+// reports: state, pen XY (mm), motor angles (deg), planner blocks and RX buffer bytes free.
+// It shows MachineSession's state and never stores it.
+#pragma once
+
+#include <QWidget>
+
+#include "widgets/machine/machine_session.hpp"
+
+class QComboBox;
+class QLabel;
+class QPushButton;
+
+namespace fivebar::widgets {
+
+class MachineBanner;
+
+class MachinePanel : public QWidget {
+  Q_OBJECT
+ public:
+  explicit MachinePanel(MachineSession& session, QWidget* parent = nullptr);
+
+  // Speed-up of the simulated machine connected from this panel (1 = real time).
+  void setSimulationSpeedup(double speedup) { simSpeedup_ = speedup; }
+
+  QComboBox* portBox() const { return ports_; }
+  QPushButton* connectButton() const { return connect_; }
+  QPushButton* disconnectButton() const { return disconnect_; }
+  MachineBanner* banner() const { return banner_; }
+  QLabel* stateLabel() const { return state_; }
+
+ public slots:
+  void refreshPorts();
+  void connectSelected();
+  void refreshStatus();
+
+ private:
+  void refreshConnection();
+
+  MachineSession& session_;
+  double simSpeedup_ = 1.0;
+  QComboBox* ports_ = nullptr;
+  QComboBox* baud_ = nullptr;
+  QPushButton* refresh_ = nullptr;
+  QPushButton* connect_ = nullptr;
+  QPushButton* disconnect_ = nullptr;
+  QLabel* link_ = nullptr;
+  MachineBanner* banner_ = nullptr;
+  QLabel* state_ = nullptr;
+  QLabel* xy_ = nullptr;
+  QLabel* angles_ = nullptr;
+  QLabel* buffers_ = nullptr;
+};
+
+// A readable (translated) name of a GRBL state.
+QString stateName(grbl::MachineState state);
+
+}  // namespace fivebar::widgets

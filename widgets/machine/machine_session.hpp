@@ -1,0 +1,135 @@
+// MachineSession: the studio's only door to the machine. It owns the transport (the built-in
+// simulated machine or a serial port), the MachineLink (protocol + clock) and answers the
+// panels: connection, status, console, alarm/error banner, jog and tool commands. A job run is
+// streamed by RunController through link(). Widgets show what the session reports; they never
+// store machine state. No exception leaves a slot: failures come back as messages.
+#pragma once
+
+#include <QObject>
+#include <QString>
+#include <memory>
+#include <optional>
+#include <set>
+
+#include "core/kinematics/kinematics.hpp"
+#include "drivers/grbl_protocol.hpp"
+#include "drivers/machine_link.hpp"
+#include "drivers/sim_machine.hpp"
+#include "widgets/machine/jog_planner.hpp"
+#include "widgets/document/studio_document.hpp"
+
+namespace fivebar {
+class SimulatedTransport;
+}
+
+namespace fivebar::widgets {
+
+enum class ConsoleKind { Sent, Received, Info, Problem };
+
+// What the banner shows: an alarm (code from the drivers' table), or an error answer to a line
+// the user sent (console, jog, tool commands).
+struct MachineProblem {
+  enum class Kind { None, Alarm, Error };
+  Kind kind = Kind::None;
+  int code = 0;
+  QString text;           // the drivers' explanation (what happened, what to do)
+  bool needsReset = false;  // the board said "Reset to continue" ($X is ignored until then)
+};
+
+class MachineSession : public QObject, private grbl::ProtocolListener {
+  Q_OBJECT
+ public:
+  static constexpr double kPollIntervalS = 0.2;  // 5 Hz status polling (GRBL's maximum)
+  static constexpr int kTickMs = 10;             // protocol clock
+
+  explicit MachineSession(const StudioDocument& doc, QObject* parent = nullptr);
+  ~MachineSession() override;
+
+  // --- connection ---
+  // The in-process simulated machine built from the document's profile. speedup: machine time
+  // per wall-clock time. False with *error when the link cannot open.
+  bool connectSimulated(double speedup, const sim::Fault& fault, QString* error);
+  bool connectSerial(const QString& portPath, int baudRate, QString* error);
+  void disconnectMachine();
+  bool isConnected() const { return link_ != nullptr; }
+  QString linkName() const;
+  MachineLink* link() const { return link_.get(); }
+  SimulatedTransport* simulatedTransport() const { return simulated_; }
+
+  // --- state, as last reported by the board ---
+  grbl::MachineState state() const;
+  const grbl::StatusReport* lastStatus() const;  // nullptr before the first report
+  std::optional<JointAngles> motorAngles() const;  // continuous, rad
+  std::optional<Vec2> penMm() const;             // FK of motorAngles, machine frame
+  int bytesInFlight() const;
+  const MachineProblem& problem() const { return problem_; }
+  const MachineProfile& profile() const { return doc_.profile(); }
+  // Where a new jog starts: the end of the jog still in progress, else the reported angles.
+  std::optional<JointAngles> jogStart() const;
+  bool jobActive() const { return jobActive_; }
+  // True when no jog of ours may still be moving (its end confirmed by quiet status reports).
+  bool jogSettled() const { return !jogEnd_ && !settleBlocked_; }
+  // True when jogging and console commands may be sent now (connected, no job, not in alarm).
+  bool canJog() const;
+
+  // --- commands (each returns false and logs why when it cannot be sent) ---
+  bool sendLine(const QString& line);
+  bool sendJog(const JogPlan& plan);
+  void cancelJog();
+  void unlock();
+  // $H with homing switches; otherwise ($X when in alarm and) the reference pose.
+  void home();
+  void setReferencePose();  // G10 L20 P0: "the machine now stands at the profile's home pose"
+  void softReset();
+  void feedHold();
+  void cycleStart();
+  bool penUp();
+  bool penDown();
+  void dismissProblem();
+
+  // RunController marks the time a job streams (the console hides its "ok"s, jog is refused).
+  void setJobActive(bool active);
+
+ signals:
+  void connectionChanged(bool connected);
+  void aboutToDisconnect();  // the link is still valid: stop using it
+  void statusUpdated();      // a status report arrived
+  void problemChanged();
+  void consoleLine(const QString& text, fivebar::widgets::ConsoleKind kind);
+  void jobActiveChanged(bool active);
+
+ private:
+  bool openLink(std::unique_ptr<Transport> transport, QString* error);
+  bool enqueueUserLine(const std::string& line, bool log);
+  void setProblem(MachineProblem problem);
+  void teardown(const QString& reason);
+
+  void onAck(const grbl::Ack& ack) override;
+  void onStatus(const grbl::StatusReport& report) override;
+  void onAlarm(int code, const std::vector<std::uint64_t>& lostIds) override;
+  void onReset(const std::string& version, const std::vector<std::uint64_t>& lostIds,
+               const std::vector<std::uint64_t>& dropped) override;
+  void onLine(const grbl::ParsedLine& line) override;
+  void onDisconnected(const std::string& reason) override;
+
+  const StudioDocument& doc_;
+  std::unique_ptr<Transport> transport_;
+  std::unique_ptr<MachineLink> link_;
+  SimulatedTransport* simulated_ = nullptr;
+  std::set<std::uint64_t> userLines_;  // ids of lines sent by the user (errors go to the banner)
+  std::set<std::uint64_t> jogLines_;  // lines of jog / go-to plans not yet answered
+  // Jog lines already in the board's buffer at a cancel: once they are answered they have entered
+  // the planner, and a second cancel stops them (GRBL's 0x85 does not flush its serial buffer).
+  std::set<std::uint64_t> cancelAfter_;
+  std::optional<JointAngles> jogEnd_;  // end of the jog that may still be running
+  int settleReports_ = 0;     // quiet reports still needed before jogEnd_ is forgotten
+  bool settleBlocked_ = false;  // after a cancel / new reference: no jog until settled
+  // After G10 L20 the position is known again only from a report with the new WCO.
+  std::optional<std::uint64_t> referenceLine_;
+  bool awaitWco_ = false;
+  MachineProblem problem_;
+  bool jobActive_ = false;
+  bool tearingDown_ = false;
+};
+
+}  // namespace fivebar::widgets

@@ -1,0 +1,83 @@
+// RunController: runs the planned job on the connected machine. Start writes the job's G-code
+// beside the others in the job directory (atomically) and streams it with the drivers'
+// StreamSession (character counting, progress saved beside the job every second and whenever
+// the run ends early); hold, continue and stop go to its JobRunner. After an interruption (or a
+// restart of the studio) the progress file beside the job offers "resume": the drivers plan a
+// safe pen-up approach to the last completed pen-down point and continue from there.
+#pragma once
+
+#include <QObject>
+#include <QString>
+#include <QTimer>
+#include <memory>
+#include <optional>
+
+#include "drivers/job_progress.hpp"
+#include "drivers/job_runner.hpp"
+#include "drivers/stream_session.hpp"
+#include "widgets/machine/machine_session.hpp"
+#include "widgets/document/preview_controller.hpp"
+
+namespace fivebar::widgets {
+
+class RunController : public QObject {
+  Q_OBJECT
+ public:
+  static constexpr int kRefreshMs = 200;  // progress refresh while streaming
+
+  RunController(const StudioDocument& doc, const PreviewController& preview,
+                MachineSession& session, QObject* parent = nullptr);
+  ~RunController() override;
+
+  // Where job files (NAME.gcode and NAME.gcode.progress) live; created on demand.
+  void setJobDirectory(const QString& dir);
+  QString jobDirectory() const { return jobDir_; }
+  // The job file of the current document: <dir>/<document base name>.gcode.
+  QString jobPath() const;
+
+  bool running() const;         // streaming (not yet finished)
+  bool canStart() const;        // connected, idle machine, a planned job, nothing running
+  bool canResume() const;       // canStart and a saved progress beside the job file
+  // The planned job Start would stream (the preview's), nullptr when there is none.
+  const PlannedJob* plannedJob() const;
+  // The saved progress beside the job file, when there is one that can be read.
+  std::optional<job::JobProgress> savedProgress() const;
+
+  job::RunState state() const;
+  const job::RunSnapshot& snapshot() const { return snapshot_; }
+  // The job being (or last) run; nullptr before the first start.
+  const job::GcodeJob* job() const { return job_.get(); }
+  QString lastMessage() const { return lastMessage_; }
+
+ public slots:
+  bool start(QString* error = nullptr);
+  bool resume(QString* error = nullptr);
+  void hold();
+  void continueRun();
+  void stop();
+
+ signals:
+  void runChanged();        // state, availability of start / resume
+  void progressChanged();   // snapshot updated
+  void finished(bool ok, const QString& message);
+
+ private:
+  bool launch(bool resume, QString* error);
+  void refresh();
+  void onFinished(bool ok, const QString& message);
+  void dropStream();
+
+  const StudioDocument& doc_;
+  const PreviewController& preview_;
+  MachineSession& session_;
+  QString jobDir_;
+  std::unique_ptr<StreamSession> stream_;
+  std::shared_ptr<const job::GcodeJob> job_;
+  job::RunSnapshot snapshot_;
+  job::RunState lastState_ = job::RunState::Ready;
+  bool finished_ = true;
+  QString lastMessage_;
+  QTimer refresh_;
+};
+
+}  // namespace fivebar::widgets

@@ -1,0 +1,155 @@
+#include "widgets/machine/run_panel.hpp"
+
+#include <QMessageBox>
+
+#include "widgets/document/job_pipeline.hpp"
+
+#include <QCoreApplication>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+
+namespace fivebar::widgets {
+namespace {
+
+QString runStateName(job::RunState s) {
+  switch (s) {
+    case job::RunState::Ready: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Ready");
+    case job::RunState::Running: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Running");
+    case job::RunState::Holding: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Holding…");
+    case job::RunState::Held: return QCoreApplication::translate("fivebar::widgets::RunPanel", "On hold");
+    case job::RunState::Paused: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Paused by a problem");
+    case job::RunState::Stopping: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Stopping…");
+    case job::RunState::Stopped: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Stopped");
+    case job::RunState::Finished: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Finished");
+  }
+  return {};
+}
+
+}  // namespace
+
+QString formatTimeLeft(double seconds) {
+  if (!(seconds >= 0.0)) return QStringLiteral("–");
+  const long s = std::lround(seconds);
+  if (s >= 3600)
+    return QCoreApplication::translate("fivebar::widgets::RunPanel", "%1 h %2 min").arg(s / 3600).arg((s / 60) % 60, 2, 10, QLatin1Char('0'));
+  if (s >= 60)
+    return QCoreApplication::translate("fivebar::widgets::RunPanel", "%1 min %2 s").arg(s / 60).arg(s % 60, 2, 10, QLatin1Char('0'));
+  return QCoreApplication::translate("fivebar::widgets::RunPanel", "%1 s").arg(s);
+}
+
+RunPanel::RunPanel(RunController& run, MachineSession& session, QWidget* parent)
+    : QWidget(parent), run_(run), session_(session) {
+  setObjectName(QStringLiteral("runPanel"));
+  start_ = new QPushButton(tr("Start"), this);
+  start_->setToolTip(tr("Write the planned job as G-code and stream it to the machine"));
+  hold_ = new QPushButton(tr("Hold"), this);
+  hold_->setToolTip(tr("Feed hold: the machine decelerates and waits"));
+  continue_ = new QPushButton(tr("Continue"), this);
+  continue_->setToolTip(tr("Continue after a hold"));
+  stop_ = new QPushButton(tr("Stop"), this);
+  stop_->setToolTip(tr("Stop the job: hold, reset and unlock; the progress is kept for a resume"));
+  resume_ = new QPushButton(tr("Resume"), this);
+  resume_->setToolTip(tr("Continue the interrupted job from its last completed pen-down point, "
+                         "with a safe pen-up approach"));
+  resumeInfo_ = new QLabel(this);
+  resumeInfo_->setWordWrap(true);
+  progress_ = new QProgressBar(this);
+  progress_->setRange(0, 1000);
+  progress_->setTextVisible(true);
+  state_ = new QLabel(this);
+  QFont bold = state_->font();
+  bold.setBold(true);
+  state_->setFont(bold);
+  eta_ = new QLabel(this);
+  message_ = new QLabel(this);
+  message_->setWordWrap(true);
+  message_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+  auto* buttons = new QGridLayout;
+  buttons->addWidget(start_, 0, 0);
+  buttons->addWidget(hold_, 0, 1);
+  buttons->addWidget(continue_, 0, 2);
+  buttons->addWidget(stop_, 0, 3);
+  auto* stateRow = new QHBoxLayout;
+  stateRow->addWidget(state_);
+  stateRow->addStretch(1);
+  stateRow->addWidget(eta_);
+  auto* resumeRow = new QVBoxLayout;
+  resumeRow->addWidget(resumeInfo_);
+  resumeRow->addWidget(resume_, 0, Qt::AlignLeft);
+
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(8, 8, 8, 8);
+  layout->addLayout(buttons);
+  layout->addLayout(stateRow);
+  layout->addWidget(progress_);
+  layout->addWidget(message_);
+  layout->addLayout(resumeRow);
+  layout->addStretch(1);
+
+  connect(start_, &QPushButton::clicked, this, &RunPanel::startClicked);
+  connect(resume_, &QPushButton::clicked, this, &RunPanel::resumeClicked);
+  connect(hold_, &QPushButton::clicked, &run_, &RunController::hold);
+  connect(continue_, &QPushButton::clicked, &run_, &RunController::continueRun);
+  connect(stop_, &QPushButton::clicked, &run_, &RunController::stop);
+  connect(&run_, &RunController::runChanged, this, &RunPanel::refresh);
+  connect(&run_, &RunController::progressChanged, this, &RunPanel::refreshProgress);
+  refresh();
+}
+
+void RunPanel::startClicked() {
+  // A very long job is worth a second thought before the machine is busy for hours.
+  if (const PlannedJob* job = run_.plannedJob()) {
+    const QString question = longJobQuestion(*job);
+    if (!question.isEmpty() &&
+        QMessageBox::question(this, tr("Long job"), question, QMessageBox::Yes | QMessageBox::No,
+                              QMessageBox::No) != QMessageBox::Yes)
+      return;
+  }
+  run_.start();
+}
+
+void RunPanel::resumeClicked() { run_.resume(); }
+
+void RunPanel::refresh() {
+  const job::RunState s = run_.state();
+  const bool running = run_.running();
+  start_->setEnabled(run_.canStart());
+  hold_->setEnabled(running && s == job::RunState::Running);
+  continue_->setEnabled(running && (s == job::RunState::Held || s == job::RunState::Holding));
+  stop_->setEnabled(running && s != job::RunState::Stopping);
+  const auto saved = running ? std::nullopt : run_.savedProgress();
+  resume_->setVisible(saved.has_value());
+  resumeInfo_->setVisible(saved.has_value());
+  resume_->setEnabled(saved.has_value() && run_.canResume());
+  if (saved) {
+    resumeInfo_->setText(tr("An interrupted run was saved (line %1 of %2 done): %3")
+                             .arg(saved->lastCompletedLine)
+                             .arg(saved->totalLines)
+                             .arg(QString::fromStdString(saved->reason)));
+  }
+  state_->setText(run_.job() ? runStateName(s) : tr("No job sent yet"));
+  message_->setText(run_.lastMessage());
+  message_->setStyleSheet(s == job::RunState::Stopped || s == job::RunState::Paused
+                              ? QStringLiteral("color: #dc2626")
+                              : QString());
+  refreshProgress();
+}
+
+void RunPanel::refreshProgress() {
+  const job::RunSnapshot& snap = run_.snapshot();
+  const double fraction = snap.totalLines > 0 ? double(snap.linesCompleted) / double(snap.totalLines) : 0.0;
+  progress_->setValue(int(std::lround(std::clamp(fraction, 0.0, 1.0) * 1000.0)));
+  progress_->setFormat(tr("%1 of %2 lines executed").arg(snap.linesCompleted).arg(snap.totalLines));
+  eta_->setText(run_.running() ? tr("%1 left").arg(formatTimeLeft(snap.etaS)) : QString());
+  const job::RunState s = run_.state();
+  if (run_.job()) state_->setText(runStateName(s));
+}
+
+}  // namespace fivebar::widgets

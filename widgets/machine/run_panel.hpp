@@ -1,0 +1,54 @@
+// The run panel: start, hold, continue and stop the planned job on the machine, a progress bar
+// with the executed lines and the time left, what happened when a run ended, and the offer to
+// resume an interrupted run (also after a restart: the progress file beside the job).
+#pragma once
+
+#include <QWidget>
+
+#include "widgets/machine/run_controller.hpp"
+
+class QLabel;
+class QProgressBar;
+class QPushButton;
+
+namespace fivebar::widgets {
+
+class RunPanel : public QWidget {
+  Q_OBJECT
+ public:
+  RunPanel(RunController& run, MachineSession& session, QWidget* parent = nullptr);
+
+  QPushButton* startButton() const { return start_; }
+  QPushButton* holdButton() const { return hold_; }
+  QPushButton* continueButton() const { return continue_; }
+  QPushButton* stopButton() const { return stop_; }
+  QPushButton* resumeButton() const { return resume_; }
+  QProgressBar* progressBar() const { return progress_; }
+  QLabel* messageLabel() const { return message_; }
+
+ public slots:
+  void refresh();
+  void refreshProgress();
+
+ private:
+  void startClicked();
+  void resumeClicked();
+
+  RunController& run_;
+  MachineSession& session_;
+  QPushButton* start_ = nullptr;
+  QPushButton* hold_ = nullptr;
+  QPushButton* continue_ = nullptr;
+  QPushButton* stop_ = nullptr;
+  QPushButton* resume_ = nullptr;
+  QLabel* resumeInfo_ = nullptr;
+  QProgressBar* progress_ = nullptr;
+  QLabel* state_ = nullptr;
+  QLabel* eta_ = nullptr;
+  QLabel* message_ = nullptr;
+};
+
+// "1 h 02 min", "3 min 05 s", "42 s" (translated units); "–" when unknown (< 0).
+QString formatTimeLeft(double seconds);
+
+}  // namespace fivebar::widgets
