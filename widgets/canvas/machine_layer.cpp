@@ -30,12 +30,12 @@ void MachineLayer::refresh() {
   const bool simulating =
       sim_.trajectory() != nullptr && (sim_.playing() || sim_.timeS() > 0.0);
   if (external_ && !simulating) {
-    pose_ = poseOf(profile, *external_);
+    pose_ = poseOf(profile, kinematicFromCommanded(profile.calibration, *external_));  // MPos is commanded
   } else if (sim_.trajectory() != nullptr) {
     const TrajectorySample s = sim_.sample();
     pose_ = makePose(profile.geometry, s.q, s.p);
   } else {
-    pose_ = poseOf(profile, profile.homeAngles);
+    pose_ = poseOf(profile, kinematicFromCommanded(profile.calibration, profile.homeAngles));
   }
   emit changed();
 }

@@ -26,7 +26,9 @@ void RunLayer::rebuild() {
   std::optional<QPointF> previous;
   for (std::size_t i = 0; i < job->lines.size(); ++i) {
     const job::JobLine& line = job->lines[i];
-    const JointAngles q{radFromDeg(line.endDeg[0]), radFromDeg(line.endDeg[1])};
+    // G-code angles are commanded; the kinematics takes commanded + zero offset.
+    const JointAngles q =
+        kinematicFromCommanded(profile.calibration, {radFromDeg(line.endDeg[0]), radFromDeg(line.endDeg[1])});
     const FkResult fk = forward(profile.geometry, q, profile.assembly);
     const std::optional<QPointF> end =
         fk.ok() ? std::optional<QPointF>(QPointF(fk.p.x(), fk.p.y())) : std::nullopt;
