@@ -1,2082 +1,2355 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
-    <context>
-        <name>DocumentCommands</name>
-        <message>
-            <source>Import drawing</source>
-            <translation>Zeichnung importieren</translation>
-        </message>
-        <message>
-            <source>Move drawing</source>
-            <translation>Zeichnung verschieben</translation>
-        </message>
-        <message>
-            <source>Change working mode</source>
-            <translation>Arbeitsmodus ändern</translation>
-        </message>
-        <message>
-            <source>Change machine profile</source>
-            <translation>Maschinenprofil ändern</translation>
-        </message>
-    </context>
-    <context>
-        <name>ImportWarningsPanel</name>
-        <message>
-            <source>%1 has %2 points after flattening, more than the budget of %3 (a runaway file?).</source>
-            <translation>%1 hat nach dem Glätten %2 Punkte, mehr als das Budget von %3 (eine außer Kontrolle geratene Datei?).</translation>
-        </message>
-        <message>
-            <source>Very large drawing</source>
-            <translation>Sehr große Zeichnung</translation>
-        </message>
-        <message>
-            <source>Planning and plotting it may take very long. Import it anyway?</source>
-            <translation>Planen und Zeichnen können sehr lange dauern. Trotzdem importieren?</translation>
-        </message>
-    </context>
-    <context>
-        <name>JobPipeline</name>
-        <message>
-            <source>Nothing to plan: the drawing has no visible path.</source>
-            <translation>Nichts zu planen: Die Zeichnung hat keinen sichtbaren Pfad.</translation>
-        </message>
-        <message>
-            <source>Planning cancelled.</source>
-            <translation>Planung abgebrochen.</translation>
-        </message>
-        <message>
-            <source>Planned in working mode %1.</source>
-            <translation>Geplant im Arbeitsmodus %1.</translation>
-        </message>
-        <message>
-            <source>This job is long: about %1 hours and %2 pen-down moves. The machine will be busy all that time. Start it anyway?</source>
-            <translation>Dieser Auftrag ist lang: etwa %1 Stunden und %2 Zeichenbewegungen. Die Maschine ist die ganze Zeit beschäftigt. Trotzdem starten?</translation>
-        </message>
-        <message>
-            <source>The job is not feasible in this working mode.</source>
-            <translation>Der Auftrag ist in diesem Arbeitsmodus nicht ausführbar.</translation>
-        </message>
-        <message>
-            <source>No working mode can draw the whole job.</source>
-            <translation>Kein Arbeitsmodus kann den ganzen Auftrag zeichnen.</translation>
-        </message>
-    </context>
-    <context>
-        <name>MapPainter</name>
-        <message>
-            <source>Transmission angle at the pen (deg)</source>
-            <translation>Übertragungswinkel am Stift (Grad)</translation>
-        </message>
-        <message>
-            <source>Conditioning (1 = isotropic)</source>
-            <translation>Kondition (1 = isotrop)</translation>
-        </message>
-        <message>
-            <source>Resolution (um per motor step)</source>
-            <translation>Auflösung (µm je Motorschritt)</translation>
-        </message>
-    </context>
-    <context>
-        <name>QObject</name>
-        <message>
-            <source>Planning failed: %1</source>
-            <translation>Planung fehlgeschlagen: %1</translation>
-        </message>
-    </context>
-    <context>
-        <name>WorkspaceLegend</name>
-        <message>
-            <source>type II &gt;= %1 deg, type I &gt;= %2 deg</source>
-            <translation>Typ II &gt;= %1°, Typ I &gt;= %2°</translation>
-        </message>
-        <message>
-            <source>none</source>
-            <translation>keins</translation>
-        </message>
-        <message>
-            <source>singularity-free (%1)</source>
-            <translation>singularitätsfrei (%1)</translation>
-        </message>
-        <message>
-            <source>reachable, within a singularity margin</source>
-            <translation>erreichbar, innerhalb eines Singularitätsabstands</translation>
-        </message>
-        <message>
-            <source>reach boundary</source>
-            <translation>Reichweitengrenze</translation>
-        </message>
-        <message>
-            <source>singularity-free boundary</source>
-            <translation>Grenze des singularitätsfreien Bereichs</translation>
-        </message>
-        <message>
-            <source>type II singularity (%1 curves)</source>
-            <translation>Typ-II-Singularität (%1 Kurven)</translation>
-        </message>
-        <message>
-            <source>largest rectangle: %1</source>
-            <translation>größtes Rechteck: %1</translation>
-        </message>
-        <message>
-            <source>reachable area: %1 cm²</source>
-            <translation>erreichbare Fläche: %1 cm²</translation>
-        </message>
-        <message>
-            <source>singularity-free area: %1 cm²</source>
-            <translation>singularitätsfreie Fläche: %1 cm²</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::studio::FileActions</name>
-        <message>
-            <source>Unsaved changes</source>
-            <translation>Ungespeicherte Änderungen</translation>
-        </message>
-        <message>
-            <source>%1 has changes that are not saved. Save them first?</source>
-            <translation>%1 hat ungespeicherte Änderungen. Zuerst speichern?</translation>
-        </message>
-        <message>
-            <source>Cannot save %1: %2</source>
-            <translation>%1 kann nicht gespeichert werden: %2</translation>
-        </message>
-        <message>
-            <source>Nothing to save: open a drawing first.</source>
-            <translation>Nichts zu speichern: zuerst eine Zeichnung öffnen.</translation>
-        </message>
-        <message>
-            <source>Save failed</source>
-            <translation>Speichern fehlgeschlagen</translation>
-        </message>
-        <message>
-            <source>Saved %1</source>
-            <translation>%1 gespeichert</translation>
-        </message>
-        <message>
-            <source>Save project</source>
-            <translation>Projekt speichern</translation>
-        </message>
-        <message>
-            <source>FiveBar projects (*.fivebar)</source>
-            <translation>FiveBar-Projekte (*.fivebar)</translation>
-        </message>
-        <message>
-            <source>The job is still being planned; export it when planning is done.</source>
-            <translation>Der Auftrag wird noch geplant; exportieren Sie ihn, wenn die Planung fertig ist.</translation>
-        </message>
-        <message>
-            <source>There is no planned job to export (see the job preview).</source>
-            <translation>Es gibt keinen geplanten Auftrag zum Exportieren (siehe Auftragsvorschau).</translation>
-        </message>
-        <message>
-            <source>Cannot write %1: %2</source>
-            <translation>%1 kann nicht geschrieben werden: %2</translation>
-        </message>
-        <message>
-            <source>Export G-code</source>
-            <translation>G-Code exportieren</translation>
-        </message>
-        <message>
-            <source>G-code (*.gcode *.nc);;All files (*)</source>
-            <translation>G-Code (*.gcode *.nc);;Alle Dateien (*)</translation>
-        </message>
-        <message>
-            <source>Exported %1</source>
-            <translation>%1 exportiert</translation>
-        </message>
-        <message>
-            <source>Clear list</source>
-            <translation>Liste leeren</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::studio::MainWindow</name>
-        <message>
-            <source>FiveBar Studio</source>
-            <translation>FiveBar Studio</translation>
-        </message>
-        <message>
-            <source>x %1 mm, y %2 mm</source>
-            <translation>x %1 mm, y %2 mm</translation>
-        </message>
-        <message>
-            <source>Planning...</source>
-            <translation>Planung läuft …</translation>
-        </message>
-        <message>
-            <source>Workspace</source>
-            <translation>Arbeitsraum</translation>
-        </message>
-        <message>
-            <source>Placement</source>
-            <translation>Platzierung</translation>
-        </message>
-        <message>
-            <source>Layers</source>
-            <translation>Ebenen</translation>
-        </message>
-        <message>
-            <source>Job preview</source>
-            <translation>Auftragsvorschau</translation>
-        </message>
-        <message>
-            <source>Simulation</source>
-            <translation>Simulation</translation>
-        </message>
-        <message>
-            <source>&amp;File</source>
-            <translation>&amp;Datei</translation>
-        </message>
-        <message>
-            <source>Open &amp;recent</source>
-            <translation>&amp;Zuletzt geöffnet</translation>
-        </message>
-        <message>
-            <source>&amp;Quit</source>
-            <translation>&amp;Beenden</translation>
-        </message>
-        <message>
-            <source>&amp;Edit</source>
-            <translation>&amp;Bearbeiten</translation>
-        </message>
-        <message>
-            <source>&amp;Undo</source>
-            <translation>&amp;Rückgängig</translation>
-        </message>
-        <message>
-            <source>&amp;Redo</source>
-            <translation>&amp;Wiederherstellen</translation>
-        </message>
-        <message>
-            <source>&amp;Fit drawing to workspace</source>
-            <translation>Zeichnung in den Arbeitsraum &amp;einpassen</translation>
-        </message>
-        <message>
-            <source>Ctrl+F</source>
-            <translation>Ctrl+F</translation>
-        </message>
-        <message>
-            <source>&amp;View</source>
-            <translation>&amp;Ansicht</translation>
-        </message>
-        <message>
-            <source>Zoom &amp;in</source>
-            <translation>Ver&amp;größern</translation>
-        </message>
-        <message>
-            <source>Ctrl+=</source>
-            <translation>Ctrl+=</translation>
-        </message>
-        <message>
-            <source>Zoom &amp;out</source>
-            <translation>Ver&amp;kleinern</translation>
-        </message>
-        <message>
-            <source>Zoom to &amp;fit</source>
-            <translation>&amp;Alles zeigen</translation>
-        </message>
-        <message>
-            <source>Ctrl+0</source>
-            <translation>Ctrl+0</translation>
-        </message>
-        <message>
-            <source>&amp;Simulation</source>
-            <translation>&amp;Simulation</translation>
-        </message>
-        <message>
-            <source>&amp;Play / pause</source>
-            <translation>&amp;Abspielen / Pause</translation>
-        </message>
-        <message>
-            <source>F5</source>
-            <translation>F5</translation>
-        </message>
-        <message>
-            <source>Step &amp;forward</source>
-            <translation>Schritt &amp;vor</translation>
-        </message>
-        <message>
-            <source>F6</source>
-            <translation>F6</translation>
-        </message>
-        <message>
-            <source>Step &amp;back</source>
-            <translation>Schritt &amp;zurück</translation>
-        </message>
-        <message>
-            <source>Shift+F6</source>
-            <translation>Shift+F6</translation>
-        </message>
-        <message>
-            <source>&amp;Machine</source>
-            <translation>&amp;Maschine</translation>
-        </message>
-        <message>
-            <source>&amp;Help</source>
-            <translation>&amp;Hilfe</translation>
-        </message>
-        <message>
-            <source>&amp;About FiveBar Studio</source>
-            <translation>&amp;Über FiveBar Studio</translation>
-        </message>
-        <message>
-            <source>About FiveBar Studio</source>
-            <translation>Über FiveBar Studio</translation>
-        </message>
-        <message>
-            <source>&lt;b&gt;FiveBar Studio %1&lt;/b&gt;&lt;p&gt;Plans and simulates drawings for five-bar linkage robots: workspace and singularity analysis, safe job planning, GRBL output.&lt;/p&gt;</source>
-            <translation>&lt;b&gt;FiveBar Studio %1&lt;/b&gt;&lt;p&gt;Plant und simuliert Zeichnungen für Fünfgelenk-Roboter: Arbeitsraum- und Singularitätsanalyse, sichere Auftragsplanung, GRBL-Ausgabe.&lt;/p&gt;</translation>
-        </message>
-        <message>
-            <source>Main</source>
-            <translation>Haupt</translation>
-        </message>
-        <message>
-            <source>&amp;Open drawing or project...</source>
-            <translation>Zeichnung oder Projekt &amp;öffnen...</translation>
-        </message>
-        <message>
-            <source>&amp;Save project</source>
-            <translation>Projekt &amp;speichern</translation>
-        </message>
-        <message>
-            <source>Save project &amp;as...</source>
-            <translation>Projekt speichern &amp;unter...</translation>
-        </message>
-        <message>
-            <source>&amp;Export G-code...</source>
-            <translation>G-Code &amp;exportieren...</translation>
-        </message>
-        <message>
-            <source>Ctrl+E</source>
-            <translation>Ctrl+E</translation>
-        </message>
-        <message>
-            <source>&amp;Actual size (100 %)</source>
-            <translation>&amp;Originalgröße (100 %)</translation>
-        </message>
-        <message>
-            <source>Ctrl+1</source>
-            <translation>Ctrl+1</translation>
-        </message>
-        <message>
-            <source>%1[*] - FiveBar Studio</source>
-            <translation>%1[*] - FiveBar Studio</translation>
-        </message>
-        <message>
-            <source>Fills</source>
-            <translation>Füllungen</translation>
-        </message>
-        <message>
-            <source>Import warnings</source>
-            <translation>Importwarnungen</translation>
-        </message>
-        <message>
-            <source>&amp;Open drawing...</source>
-            <translation>Zeichnung ö&amp;ffnen …</translation>
-        </message>
-        <message>
-            <source>Clear list</source>
-            <translation>Liste leeren</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::ConsolePanel</name>
-        <message>
-            <source>Lines sent to and received from the machine appear here.</source>
-            <translation>Hier erscheinen die an die Maschine gesendeten und von ihr empfangenen Zeilen.</translation>
-        </message>
-        <message>
-            <source>G-code or $ command, e.g. $$ or G0 X10 Y20</source>
-            <translation>G-Code oder $-Befehl, z. B. $$ oder G0 X10 Y20</translation>
-        </message>
-        <message>
-            <source>Send</source>
-            <translation>Senden</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::FillOptionsBox</name>
-        <message>
-            <source>Filled shapes</source>
-            <translation>Gefüllte Formen</translation>
-        </message>
-        <message>
-            <source>Outline</source>
-            <translation>Umriss</translation>
-        </message>
-        <message>
-            <source>Hatch</source>
-            <translation>Schraffur</translation>
-        </message>
-        <message>
-            <source>Not drawn</source>
-            <translation>Nicht zeichnen</translation>
-        </message>
-        <message>
-            <source>Outline: the shape's edge (as AxiDraw and vpype draw fills). Hatch: parallel lines inside the shape. Not drawn: fill-only shapes are left out.</source>
-            <translation>Umriss: der Rand der Form (wie AxiDraw und vpype Füllungen zeichnen). Schraffur: parallele Linien in der Form. Nicht zeichnen: nur gefüllte Formen entfallen.</translation>
-        </message>
-        <message>
-            <source> mm</source>
-            <translation> mm</translation>
-        </message>
-        <message>
-            <source> deg</source>
-            <translation> Grad</translation>
-        </message>
-        <message>
-            <source>Crosshatch</source>
-            <translation>Kreuzschraffur</translation>
-        </message>
-        <message>
-            <source>Keep the outline</source>
-            <translation>Umriss behalten</translation>
-        </message>
-        <message>
-            <source>Import again with these settings</source>
-            <translation>Mit diesen Einstellungen neu importieren</translation>
-        </message>
-        <message>
-            <source>Fill:</source>
-            <translation>Füllung:</translation>
-        </message>
-        <message>
-            <source>Line spacing:</source>
-            <translation>Linienabstand:</translation>
-        </message>
-        <message>
-            <source>Angle:</source>
-            <translation>Winkel:</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::GoToTool</name>
-        <message>
-            <source>Connect the machine first: its position is not known.</source>
-            <translation>Verbinden Sie zuerst die Maschine: ihre Position ist nicht bekannt.</translation>
-        </message>
-        <message>
-            <source>Go to %1, %2 mm? The dashed path is the pen's travel (%3 checked moves).</source>
-            <translation>Nach %1, %2 mm fahren? Der gestrichelte Weg ist die Fahrt des Stifts (%3 geprüfte Bewegungen).</translation>
-        </message>
-        <message>
-            <source>Cannot go there: %1</source>
-            <translation>Dorthin kann nicht gefahren werden: %1</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::ImportController</name>
-        <message>
-            <source>%1: another import is still running.</source>
-            <translation>%1: Ein anderer Import läuft noch.</translation>
-        </message>
-        <message>
-            <source>Importing %1...</source>
-            <translation>%1 wird importiert …</translation>
-        </message>
-        <message>
-            <source>Cancel</source>
-            <translation>Abbrechen</translation>
-        </message>
-        <message>
-            <source>Import</source>
-            <translation>Import</translation>
-        </message>
-        <message>
-            <source>Import of %1 cancelled.</source>
-            <translation>Import von %1 abgebrochen.</translation>
-        </message>
-        <message>
-            <source>%1 could not be imported.</source>
-            <translation>%1 konnte nicht importiert werden.</translation>
-        </message>
-        <message>
-            <source>Import failed</source>
-            <translation>Import fehlgeschlagen</translation>
-        </message>
-        <message>
-            <source>%1 contains nothing to draw.</source>
-            <translation>%1 enthält nichts zu zeichnen.</translation>
-        </message>
-        <message>
-            <source>Open drawing or project</source>
-            <translation>Zeichnung oder Projekt öffnen</translation>
-        </message>
-        <message>
-            <source>Drawings and projects (*.svg *.fivebar);;SVG drawings (*.svg);;FiveBar projects (*.fivebar);;All files (*)</source>
-            <translation>Zeichnungen und Projekte (*.svg *.fivebar);;SVG-Zeichnungen (*.svg);;FiveBar-Projekte (*.fivebar);;Alle Dateien (*)</translation>
-        </message>
-        <message>
-            <source>Open drawing</source>
-            <translation>Zeichnung öffnen</translation>
-        </message>
-        <message>
-            <source>SVG drawings (*.svg);;All files (*)</source>
-            <translation>SVG-Zeichnungen (*.svg);;Alle Dateien (*)</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::JobLayer</name>
-        <message>
-            <source>Planning...</source>
-            <translation>Planung läuft...</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::ImportWarningsPanel</name>
-        <message>
-            <source>No drawing imported yet.</source>
-            <translation>Noch keine Zeichnung importiert.</translation>
-        </message>
-        <message>
-            <source>What the importer dropped, approximated or could not draw. docs/svg-import.md lists what is supported.</source>
-            <translation>Was der Import weggelassen, angenähert oder nicht zeichnen konnte. docs/svg-import.md listet, was unterstützt wird.</translation>
-        </message>
-        <message>
-            <source>%1 imported without warnings.</source>
-            <translation>%1 ohne Warnungen importiert.</translation>
-        </message>
-        <message>
-            <source>1 warning while importing %1: part of the drawing may differ from what a browser shows.</source>
-            <translation>1 Warnung beim Import von %1: ein Teil der Zeichnung kann von der Anzeige im Browser abweichen.</translation>
-        </message>
-        <message>
-            <source>%1 warnings while importing %2: parts of the drawing may differ from what a browser shows.</source>
-            <translation>%1 Warnungen beim Import von %2: Teile der Zeichnung können von der Anzeige im Browser abweichen.</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::JogController</name>
-        <message>
-            <source>Jog refused: the machine is not connected, not idle, or a job is running.</source>
-            <translation>Verfahren abgelehnt: Die Maschine ist nicht verbunden, nicht bereit, oder ein Auftrag läuft.</translation>
-        </message>
-        <message>
-            <source>Jog stopped at the last safe point: %1</source>
-            <translation>Verfahren am letzten sicheren Punkt angehalten: %1</translation>
-        </message>
-        <message>
-            <source>Jog refused: %1</source>
-            <translation>Verfahren abgelehnt: %1</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::JogPanel</name>
-        <message>
-            <source>Jog the pen %1 mm in X, %2 mm in Y per step; hold for a continuous jog</source>
-            <translation>Stift pro Schritt um %1 mm in X und %2 mm in Y verfahren; gedrückt halten für fortlaufendes Verfahren</translation>
-        </message>
-        <message>
-            <source>Go to…</source>
-            <translation>Anfahren…</translation>
-        </message>
-        <message>
-            <source>Click the canvas to choose where the pen goes; the path is shown before you confirm.</source>
-            <translation>Klicken Sie auf die Zeichenfläche, um das Ziel des Stifts zu wählen; der Weg wird vor der Bestätigung angezeigt.</translation>
-        </message>
-        <message>
-            <source>Turn motor %1 clockwise by one step</source>
-            <translation>Motor %1 um einen Schritt im Uhrzeigersinn drehen</translation>
-        </message>
-        <message>
-            <source>Turn motor %1 counter-clockwise by one step</source>
-            <translation>Motor %1 um einen Schritt gegen den Uhrzeigersinn drehen</translation>
-        </message>
-        <message>
-            <source>Step</source>
-            <translation>Schritt</translation>
-        </message>
-        <message>
-            <source>mm / °</source>
-            <translation>mm / °</translation>
-        </message>
-        <message>
-            <source> mm/s</source>
-            <translation> mm/s</translation>
-        </message>
-        <message>
-            <source>Pen up</source>
-            <translation>Stift hoch</translation>
-        </message>
-        <message>
-            <source>Lift the pen (Page Up on the canvas)</source>
-            <translation>Stift anheben (Bild auf auf der Zeichenfläche)</translation>
-        </message>
-        <message>
-            <source>Pen down</source>
-            <translation>Stift ab</translation>
-        </message>
-        <message>
-            <source>Lower the pen (Page Down on the canvas)</source>
-            <translation>Stift absenken (Bild ab auf der Zeichenfläche)</translation>
-        </message>
-        <message>
-            <source>Go</source>
-            <translation>Los</translation>
-        </message>
-        <message>
-            <source>Cancel</source>
-            <translation>Abbrechen</translation>
-        </message>
-        <message>
-            <source>Click the canvas where the pen should go.</source>
-            <translation>Klicken Sie auf die Stelle der Zeichenfläche, die der Stift anfahren soll.</translation>
-        </message>
-        <message>
-            <source>Home ($H)</source>
-            <translation>Referenzfahrt ($H)</translation>
-        </message>
-        <message>
-            <source>Set reference pose</source>
-            <translation>Referenzpose setzen</translation>
-        </message>
-        <message>
-            <source>Run the homing cycle</source>
-            <translation>Referenzfahrt ausführen</translation>
-        </message>
-        <message>
-            <source>Declare that the machine now stands at the profile's home pose</source>
-            <translation>Festlegen, dass die Maschine jetzt in der Ausgangspose des Profils steht</translation>
-        </message>
-        <message>
-            <source>Speed of XY jogs</source>
-            <translation>Geschwindigkeit beim XY-Verfahren</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::LayersPanel</name>
-        <message>
-            <source>Plot this layer earlier</source>
-            <translation>Diese Ebene früher zeichnen</translation>
-        </message>
-        <message>
-            <source>Plot this layer later</source>
-            <translation>Diese Ebene später zeichnen</translation>
-        </message>
-        <message>
-            <source>Tool settings of the selected layer</source>
-            <translation>Werkzeugeinstellungen der gewählten Ebene</translation>
-        </message>
-        <message>
-            <source> mm/s</source>
-            <translation> mm/s</translation>
-        </message>
-        <message>
-            <source>Profile default</source>
-            <translation>Profilvorgabe</translation>
-        </message>
-        <message>
-            <source>Pause before this layer (pen change)</source>
-            <translation>Vor dieser Ebene anhalten (Stiftwechsel)</translation>
-        </message>
-        <message>
-            <source>Draw speed:</source>
-            <translation>Zeichengeschwindigkeit:</translation>
-        </message>
-        <message>
-            <source>Power / pen S:</source>
-            <translation>Leistung / Stift-S:</translation>
-        </message>
-        <message numerus="yes">
-            <source>%n path(s)</source>
-            <translation>
-                <numerusform>%n Pfad</numerusform>
-                <numerusform>%n Pfade</numerusform>
-            </translation>
-        </message>
-        <message numerus="yes">
-            <source>%n point(s)</source>
-            <translation>
-                <numerusform>%n Punkt</numerusform>
-                <numerusform>%n Punkte</numerusform>
-            </translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::MachineBanner</name>
-        <message>
-            <source>Reset</source>
-            <translation>Zurücksetzen</translation>
-        </message>
-        <message>
-            <source>Soft reset (Ctrl-X): stops everything; the machine keeps its position unless it was moving.</source>
-            <translation>Soft-Reset (Strg-X): hält alles an; die Maschine behält ihre Position, sofern sie sich nicht bewegt hat.</translation>
-        </message>
-        <message>
-            <source>Unlock ($X)</source>
-            <translation>Entsperren ($X)</translation>
-        </message>
-        <message>
-            <source>Leave the alarm state without homing. Only when you know the machine stands where the studio shows it.</source>
-            <translation>Den Alarmzustand ohne Referenzfahrt verlassen. Nur wenn Sie wissen, dass die Maschine dort steht, wo das Studio sie zeigt.</translation>
-        </message>
-        <message>
-            <source>Dismiss</source>
-            <translation>Schließen</translation>
-        </message>
-        <message>
-            <source>Alarm %1: the machine stopped</source>
-            <translation>Alarm %1: Die Maschine hat angehalten</translation>
-        </message>
-        <message>
-            <source>Alarm: the machine is locked</source>
-            <translation>Alarm: Die Maschine ist gesperrt</translation>
-        </message>
-        <message>
-            <source>Error %1: a command was rejected</source>
-            <translation>Fehler %1: Ein Befehl wurde abgelehnt</translation>
-        </message>
-        <message>
-            <source>The board waits for a reset first: press Reset, then Unlock.</source>
-            <translation>Die Steuerung erwartet zuerst ein Zurücksetzen: Drücken Sie Zurücksetzen, dann Entsperren.</translation>
-        </message>
-        <message>
-            <source>Home ($H)</source>
-            <translation>Referenzfahrt ($H)</translation>
-        </message>
-        <message>
-            <source>Set reference pose</source>
-            <translation>Referenzpose setzen</translation>
-        </message>
-        <message>
-            <source>Run the homing cycle; the machine moves to its switches.</source>
-            <translation>Referenzfahrt ausführen; die Maschine fährt an ihre Endschalter.</translation>
-        </message>
-        <message>
-            <source>Declare that the machine now stands at the profile's home pose (G10 L20).</source>
-            <translation>Festlegen, dass die Maschine jetzt in der Ausgangspose des Profils steht (G10 L20).</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::MachinePanel</name>
-        <message>
-            <source>Idle</source>
-            <translation>Bereit</translation>
-        </message>
-        <message>
-            <source>Running</source>
-            <translation>Läuft</translation>
-        </message>
-        <message>
-            <source>On hold</source>
-            <translation>Angehalten</translation>
-        </message>
-        <message>
-            <source>Jogging</source>
-            <translation>Verfährt</translation>
-        </message>
-        <message>
-            <source>Alarm</source>
-            <translation>Alarm</translation>
-        </message>
-        <message>
-            <source>Door open</source>
-            <translation>Tür offen</translation>
-        </message>
-        <message>
-            <source>Check mode</source>
-            <translation>Prüfmodus</translation>
-        </message>
-        <message>
-            <source>Homing</source>
-            <translation>Referenzfahrt</translation>
-        </message>
-        <message>
-            <source>Sleeping</source>
-            <translation>Ruhezustand</translation>
-        </message>
-        <message>
-            <source>Unknown</source>
-            <translation>Unbekannt</translation>
-        </message>
-        <message>
-            <source>Refresh</source>
-            <translation>Aktualisieren</translation>
-        </message>
-        <message>
-            <source>List the serial ports again</source>
-            <translation>Serielle Schnittstellen neu auflisten</translation>
-        </message>
-        <message>
-            <source>Connect</source>
-            <translation>Verbinden</translation>
-        </message>
-        <message>
-            <source>Disconnect</source>
-            <translation>Trennen</translation>
-        </message>
-        <message>
-            <source>Baud</source>
-            <translation>Baud</translation>
-        </message>
-        <message>
-            <source>Connection</source>
-            <translation>Verbindung</translation>
-        </message>
-        <message>
-            <source>Status</source>
-            <translation>Status</translation>
-        </message>
-        <message>
-            <source>State</source>
-            <translation>Zustand</translation>
-        </message>
-        <message>
-            <source>Pen (X, Y)</source>
-            <translation>Stift (X, Y)</translation>
-        </message>
-        <message>
-            <source>Motors (θ1, θ2)</source>
-            <translation>Motoren (θ1, θ2)</translation>
-        </message>
-        <message>
-            <source>Buffers</source>
-            <translation>Puffer</translation>
-        </message>
-        <message>
-            <source>Simulated machine (built in)</source>
-            <translation>Simulierte Maschine (eingebaut)</translation>
-        </message>
-        <message>
-            <source>Cannot connect</source>
-            <translation>Verbindung nicht möglich</translation>
-        </message>
-        <message>
-            <source>Connected to %1</source>
-            <translation>Verbunden mit %1</translation>
-        </message>
-        <message>
-            <source>Not connected</source>
-            <translation>Nicht verbunden</translation>
-        </message>
-        <message>
-            <source>Offline</source>
-            <translation>Offline</translation>
-        </message>
-        <message>
-            <source>%1, %2 mm</source>
-            <translation>%1, %2 mm</translation>
-        </message>
-        <message>
-            <source>%1°, %2°</source>
-            <translation>%1°, %2°</translation>
-        </message>
-        <message>
-            <source>planner %1 of %2 blocks free, RX %3 of %4 bytes free</source>
-            <translation>Planer %1 von %2 Blöcken frei, RX %3 von %4 Bytes frei</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::MachineSession</name>
-        <message>
-            <source>Cannot open %1.</source>
-            <translation>%1 kann nicht geöffnet werden.</translation>
-        </message>
-        <message>
-            <source>Connected to %1.</source>
-            <translation>Verbunden mit %1.</translation>
-        </message>
-        <message>
-            <source>Disconnected.</source>
-            <translation>Getrennt.</translation>
-        </message>
-        <message>
-            <source>Not connected: %1 was not sent.</source>
-            <translation>Nicht verbunden: %1 wurde nicht gesendet.</translation>
-        </message>
-        <message>
-            <source>Not sent (%1): %2</source>
-            <translation>Nicht gesendet (%1): %2</translation>
-        </message>
-        <message>
-            <source>A job is running: %1 was not sent.</source>
-            <translation>Ein Auftrag läuft: %1 wurde nicht gesendet.</translation>
-        </message>
-        <message>
-            <source>Jog refused: the machine is not idle, not connected or a job is running.</source>
-            <translation>Verfahren abgelehnt: Die Maschine ist nicht bereit, nicht verbunden, oder ein Auftrag läuft.</translation>
-        </message>
-        <message>
-            <source>%1 (jog in %2 checked moves)</source>
-            <translation>%1 (Verfahren in %2 geprüften Bewegungen)</translation>
-        </message>
-        <message>
-            <source>[soft reset]</source>
-            <translation>[Soft-Reset]</translation>
-        </message>
-        <message>
-            <source>[feed hold]</source>
-            <translation>[Vorschub halten]</translation>
-        </message>
-        <message>
-            <source>[cycle start]</source>
-            <translation>[Zyklusstart]</translation>
-        </message>
-        <message>
-            <source>%1 was rejected: %2</source>
-            <translation>%1 wurde abgelehnt: %2</translation>
-        </message>
-        <message>
-            <source>The machine is locked (alarm state). Unlock it with $X or home it with $H once you know where it stands.</source>
-            <translation>Die Maschine ist gesperrt (Alarmzustand). Entsperren Sie sie mit $X oder führen Sie mit $H eine Referenzfahrt aus, sobald Sie wissen, wo sie steht.</translation>
-        </message>
-        <message>
-            <source>The board reset (Grbl %1).</source>
-            <translation>Die Steuerung wurde zurückgesetzt (Grbl %1).</translation>
-        </message>
-        <message>
-            <source>Connection lost: %1</source>
-            <translation>Verbindung verloren: %1</translation>
-        </message>
-        <message>
-            <source>the simulated machine</source>
-            <translation>der simulierten Maschine</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::MachineSettingsDialog</name>
-        <message>
-            <source>Machine settings</source>
-            <translation>Maschineneinstellungen</translation>
-        </message>
-        <message>
-            <source>The board's GRBL settings next to the values the machine profile needs. Writing saves a backup of the board's settings first.</source>
-            <translation>Die GRBL-Einstellungen der Steuerung neben den Werten, die das Maschinenprofil braucht. Vor dem Schreiben wird eine Sicherung der Einstellungen der Steuerung gespeichert.</translation>
-        </message>
-        <message>
-            <source>Setting</source>
-            <translation>Einstellung</translation>
-        </message>
-        <message>
-            <source>Board</source>
-            <translation>Steuerung</translation>
-        </message>
-        <message>
-            <source>Profile</source>
-            <translation>Profil</translation>
-        </message>
-        <message>
-            <source>Differs</source>
-            <translation>Abweichend</translation>
-        </message>
-        <message>
-            <source>Read from board</source>
-            <translation>Von der Steuerung lesen</translation>
-        </message>
-        <message>
-            <source>Write differences...</source>
-            <translation>Abweichungen schreiben...</translation>
-        </message>
-        <message>
-            <source>Close</source>
-            <translation>Schließen</translation>
-        </message>
-        <message>
-            <source>The machine was disconnected.</source>
-            <translation>Die Verbindung zur Maschine wurde getrennt.</translation>
-        </message>
-        <message>
-            <source>Connect the machine first.</source>
-            <translation>Zuerst die Maschine verbinden.</translation>
-        </message>
-        <message>
-            <source>A job is running.</source>
-            <translation>Ein Auftrag läuft.</translation>
-        </message>
-        <message>
-            <source>Still talking to the board.</source>
-            <translation>Die Kommunikation mit der Steuerung läuft noch.</translation>
-        </message>
-        <message>
-            <source>The machine must be idle (or in alarm) to change settings.</source>
-            <translation>Zum Ändern der Einstellungen muss die Maschine im Ruhezustand (oder im Alarm) sein.</translation>
-        </message>
-        <message>
-            <source>Reading the board's settings...</source>
-            <translation>Einstellungen der Steuerung werden gelesen...</translation>
-        </message>
-        <message>
-            <source>Nothing to write: read the board's settings first.</source>
-            <translation>Nichts zu schreiben: zuerst die Einstellungen der Steuerung lesen.</translation>
-        </message>
-        <message>
-            <source>Write settings</source>
-            <translation>Einstellungen schreiben</translation>
-        </message>
-        <message numerus="yes">
-            <source>Write %n setting(s) to the board? Its current settings are saved to a backup file first.</source>
-            <translation>
-                <numerusform>%n Einstellung auf die Steuerung schreiben? Ihre aktuellen Einstellungen werden zuvor in einer Sicherungsdatei gespeichert.</numerusform>
-                <numerusform>%n Einstellungen auf die Steuerung schreiben? Ihre aktuellen Einstellungen werden zuvor in einer Sicherungsdatei gespeichert.</numerusform>
-            </translation>
-        </message>
-        <message>
-            <source>The board's settings match the profile.</source>
-            <translation>Die Einstellungen der Steuerung stimmen mit dem Profil überein.</translation>
-        </message>
-        <message numerus="yes">
-            <source>%n setting(s) differ from the profile.</source>
-            <translation>
-                <numerusform>%n Einstellung weicht vom Profil ab.</numerusform>
-                <numerusform>%n Einstellungen weichen vom Profil ab.</numerusform>
-            </translation>
-        </message>
-        <message numerus="yes">
-            <source>%n setting(s) written. Backup of the previous settings: %1</source>
-            <translation>
-                <numerusform>%n Einstellung geschrieben. Sicherung der vorherigen Einstellungen: %1</numerusform>
-                <numerusform>%n Einstellungen geschrieben. Sicherung der vorherigen Einstellungen: %1</numerusform>
-            </translation>
-        </message>
-        <message>
-            <source>Writing settings one at a time... Backup: %1</source>
-            <translation>Einstellungen werden einzeln geschrieben... Sicherung: %1</translation>
-        </message>
-        <message>
-            <source>Failed: %1</source>
-            <translation>Fehlgeschlagen: %1</translation>
-        </message>
-        <message>
-            <source>yes</source>
-            <translation>ja</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::MachineUi</name>
-        <message>
-            <source>Machine</source>
-            <translation>Maschine</translation>
-        </message>
-        <message>
-            <source>Run</source>
-            <translation>Ausführen</translation>
-        </message>
-        <message>
-            <source>Jog</source>
-            <translation>Verfahren</translation>
-        </message>
-        <message>
-            <source>Console</source>
-            <translation>Konsole</translation>
-        </message>
-        <message>
-            <source>Machine profile</source>
-            <translation>Maschinenprofil</translation>
-        </message>
-        <message>
-            <source>Machine &amp;settings...</source>
-            <translation>Maschinen&amp;einstellungen...</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::ModePanel</name>
-        <message>
-            <source>Working mode</source>
-            <translation>Arbeitsmodus</translation>
-        </message>
-        <message>
-            <source>Auto</source>
-            <translation>Auto</translation>
-        </message>
-        <message>
-            <source>Let the planner pick the feasible mode with the largest margin</source>
-            <translation>Den Planer den ausführbaren Modus mit dem größten Abstand wählen lassen</translation>
-        </message>
-        <message>
-            <source>Elbows %1 (arm 1 %2, arm 2 %3)</source>
-            <translation>Ellbogen %1 (Arm 1 %2, Arm 2 %3)</translation>
-        </message>
-        <message>
-            <source>out</source>
-            <translation>außen</translation>
-        </message>
-        <message>
-            <source>in</source>
-            <translation>innen</translation>
-        </message>
-        <message>
-            <source>Overlays</source>
-            <translation>Überlagerungen</translation>
-        </message>
-        <message>
-            <source>Reachable and singularity-free regions</source>
-            <translation>Erreichbare und singularitätsfreie Bereiche</translation>
-        </message>
-        <message>
-            <source>Type II singularity curves</source>
-            <translation>Singularitätskurven Typ II</translation>
-        </message>
-        <message>
-            <source>Largest singularity-free rectangle</source>
-            <translation>Größtes singularitätsfreies Rechteck</translation>
-        </message>
-        <message>
-            <source>Workspace legend</source>
-            <translation>Arbeitsraum-Legende</translation>
-        </message>
-        <message>
-            <source>None</source>
-            <translation>Keine</translation>
-        </message>
-        <message>
-            <source>Transmission angle</source>
-            <translation>Übertragungswinkel</translation>
-        </message>
-        <message>
-            <source>Conditioning</source>
-            <translation>Kondition</translation>
-        </message>
-        <message>
-            <source>Resolution (mm per step)</source>
-            <translation>Auflösung (mm je Schritt)</translation>
-        </message>
-        <message>
-            <source>Map:</source>
-            <translation>Karte:</translation>
-        </message>
-        <message>
-            <source>Auto picked %1.</source>
-            <translation>Auto hat %1 gewählt.</translation>
-        </message>
-        <message>
-            <source>Auto: no mode draws the whole job; showing %1.</source>
-            <translation>Auto: Kein Modus zeichnet den ganzen Auftrag; %1 wird gezeigt.</translation>
-        </message>
-        <message>
-            <source>Showing the workspace of %1.</source>
-            <translation>Arbeitsraum von %1 wird gezeigt.</translation>
-        </message>
-        <message>
-            <source>Smallest singularity margin: %1 deg.</source>
-            <translation>Kleinster Singularitätsabstand: %1 Grad.</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::PlacementPanel</name>
-        <message>
-            <source> mm</source>
-            <translation> mm</translation>
-        </message>
-        <message>
-            <source> deg</source>
-            <translation> Grad</translation>
-        </message>
-        <message>
-            <source> %</source>
-            <translation> %</translation>
-        </message>
-        <message>
-            <source>Centre X:</source>
-            <translation>Mitte X:</translation>
-        </message>
-        <message>
-            <source>Centre Y:</source>
-            <translation>Mitte Y:</translation>
-        </message>
-        <message>
-            <source>Rotation:</source>
-            <translation>Drehung:</translation>
-        </message>
-        <message>
-            <source>Scale:</source>
-            <translation>Maßstab:</translation>
-        </message>
-        <message>
-            <source>Fit to workspace</source>
-            <translation>In Arbeitsraum einpassen</translation>
-        </message>
-        <message>
-            <source>Keep aspect ratio</source>
-            <translation>Seitenverhältnis beibehalten</translation>
-        </message>
-        <message>
-            <source>Width:</source>
-            <translation>Breite:</translation>
-        </message>
-        <message>
-            <source>Height:</source>
-            <translation>Höhe:</translation>
-        </message>
-        <message>
-            <source>Actual size</source>
-            <translation>Originalgröße</translation>
-        </message>
-        <message>
-            <source>Draw the drawing at its true size (100 %)</source>
-            <translation>Die Zeichnung in ihrer wahren Größe zeichnen (100 %)</translation>
-        </message>
-        <message>
-            <source>Scale the drawing to fill the largest singularity-free rectangle</source>
-            <translation>Die Zeichnung so skalieren, dass sie das größte singularitätsfreie Rechteck füllt</translation>
-        </message>
-        <message>
-            <source>No singularity-free area to fit the drawing into.</source>
-            <translation>Kein singularitätsfreier Bereich, in den die Zeichnung passt.</translation>
-        </message>
-        <message>
-            <source>Fitted: %1 %</source>
-            <translation>Eingepasst: %1 %</translation>
-        </message>
-        <message>
-            <source>Fit the drawing into the largest singularity-free rectangle</source>
-            <translation>Die Zeichnung in das größte singularitätsfreie Rechteck einpassen</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::PreviewPanel</name>
-        <message>
-            <source>%1 % of what this machine can do</source>
-            <translation>%1 % dessen, was diese Maschine kann</translation>
-        </message>
-        <message>
-            <source>%1 s</source>
-            <translation>%1 s</translation>
-        </message>
-        <message>
-            <source>%1 h %2 min</source>
-            <translation>%1 h %2 min</translation>
-        </message>
-        <message>
-            <source>%1 min %2 s</source>
-            <translation>%1 min %2 s</translation>
-        </message>
-        <message>
-            <source>Show</source>
-            <translation>Anzeigen</translation>
-        </message>
-        <message>
-            <source>Colour pen-down moves by speed</source>
-            <translation>Zeichenbewegungen nach Geschwindigkeit färben</translation>
-        </message>
-        <message>
-            <source>Pen-up moves (grey)</source>
-            <translation>Leerfahrten (grau)</translation>
-        </message>
-        <message>
-            <source>Drawing order</source>
-            <translation>Zeichenreihenfolge</translation>
-        </message>
-        <message>
-            <source>Pre-flight problems (click to show):</source>
-            <translation>Probleme der Vorabprüfung (zum Zeigen anklicken):</translation>
-        </message>
-        <message>
-            <source>Moves shown: %1 of %2</source>
-            <translation>Gezeigte Bewegungen: %1 von %2</translation>
-        </message>
-        <message>
-            <source>Planning...</source>
-            <translation>Planung läuft …</translation>
-        </message>
-        <message>
-            <source>Planned.</source>
-            <translation>Geplant.</translation>
-        </message>
-        <message>
-            <source>Open a drawing to plan a job.</source>
-            <translation>Öffnen Sie eine Zeichnung, um einen Auftrag zu planen.</translation>
-        </message>
-        <message>
-            <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Working mode:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Estimated time:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen down:&lt;/td&gt;&lt;td&gt;%3 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen up:&lt;/td&gt;&lt;td&gt;%4 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Segments:&lt;/td&gt;&lt;td&gt;%5&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Max deviation:&lt;/td&gt;&lt;td&gt;%6 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Singularity margin:&lt;/td&gt;&lt;td&gt;%7 deg&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
-            <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Arbeitsmodus:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Geschätzte Zeit:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Stift unten:&lt;/td&gt;&lt;td&gt;%3 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Stift oben:&lt;/td&gt;&lt;td&gt;%4 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Segmente:&lt;/td&gt;&lt;td&gt;%5&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Größte Abweichung:&lt;/td&gt;&lt;td&gt;%6 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Singularitätsabstand:&lt;/td&gt;&lt;td&gt;%7 Grad&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
-        </message>
-        <message>
-            <source>Working mode: &lt;b&gt;%1&lt;/b&gt;</source>
-            <translation>Arbeitsmodus: &lt;b&gt;%1&lt;/b&gt;</translation>
-        </message>
-        <message>
-            <source>No problems: every move is reachable and safe.</source>
-            <translation>Keine Probleme: Jede Bewegung ist erreichbar und sicher.</translation>
-        </message>
-        <message>
-            <source>What to do: %1</source>
-            <translation>Was zu tun ist: %1</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::ProfileEditor</name>
-        <message>
-            <source>Load preset</source>
-            <translation>Vorlage laden</translation>
-        </message>
-        <message>
-            <source>Import…</source>
-            <translation>Importieren…</translation>
-        </message>
-        <message>
-            <source>Load a machine profile from a JSON file</source>
-            <translation>Ein Maschinenprofil aus einer JSON-Datei laden</translation>
-        </message>
-        <message>
-            <source>Export…</source>
-            <translation>Exportieren…</translation>
-        </message>
-        <message>
-            <source>Save this machine profile as a JSON file</source>
-            <translation>Dieses Maschinenprofil als JSON-Datei speichern</translation>
-        </message>
-        <message>
-            <source>Machine</source>
-            <translation>Maschine</translation>
-        </message>
-        <message>
-            <source>Name</source>
-            <translation>Name</translation>
-        </message>
-        <message>
-            <source>Geometry</source>
-            <translation>Geometrie</translation>
-        </message>
-        <message>
-            <source>Joint limits</source>
-            <translation>Gelenkgrenzen</translation>
-        </message>
-        <message>
-            <source>Motors</source>
-            <translation>Motoren</translation>
-        </message>
-        <message>
-            <source>Tool</source>
-            <translation>Werkzeug</translation>
-        </message>
-        <message>
-            <source>Motion and safety</source>
-            <translation>Bewegung und Sicherheit</translation>
-        </message>
-        <message>
-            <source>Connection and home pose</source>
-            <translation>Verbindung und Ausgangspose</translation>
-        </message>
-        <message>
-            <source> mm</source>
-            <translation> mm</translation>
-        </message>
-        <message>
-            <source> °</source>
-            <translation> °</translation>
-        </message>
-        <message>
-            <source> s</source>
-            <translation> s</translation>
-        </message>
-        <message>
-            <source>Driving link a1</source>
-            <translation>Antriebsglied a1</translation>
-        </message>
-        <message>
-            <source>Floating link b1</source>
-            <translation>Koppelglied b1</translation>
-        </message>
-        <message>
-            <source>Driving link a2</source>
-            <translation>Antriebsglied a2</translation>
-        </message>
-        <message>
-            <source>Floating link b2</source>
-            <translation>Koppelglied b2</translation>
-        </message>
-        <message>
-            <source>Motor distance w</source>
-            <translation>Motorabstand w</translation>
-        </message>
-        <message>
-            <source>Limit the motor angles</source>
-            <translation>Motorwinkel begrenzen</translation>
-        </message>
-        <message>
-            <source>θ1 minimum</source>
-            <translation>θ1 Minimum</translation>
-        </message>
-        <message>
-            <source>θ1 maximum</source>
-            <translation>θ1 Maximum</translation>
-        </message>
-        <message>
-            <source>θ2 minimum</source>
-            <translation>θ2 Minimum</translation>
-        </message>
-        <message>
-            <source>θ2 maximum</source>
-            <translation>θ2 Maximum</translation>
-        </message>
-        <message>
-            <source>Motor 1 steps per degree</source>
-            <translation>Motor 1 Schritte pro Grad</translation>
-        </message>
-        <message>
-            <source>Motor 2 steps per degree</source>
-            <translation>Motor 2 Schritte pro Grad</translation>
-        </message>
-        <message>
-            <source>Motor 1 maximum speed</source>
-            <translation>Motor 1 Höchstgeschwindigkeit</translation>
-        </message>
-        <message>
-            <source> °/min</source>
-            <translation> °/min</translation>
-        </message>
-        <message>
-            <source>Motor 2 maximum speed</source>
-            <translation>Motor 2 Höchstgeschwindigkeit</translation>
-        </message>
-        <message>
-            <source>Motor 1 acceleration</source>
-            <translation>Motor 1 Beschleunigung</translation>
-        </message>
-        <message>
-            <source> °/s²</source>
-            <translation> °/s²</translation>
-        </message>
-        <message>
-            <source>Motor 2 acceleration</source>
-            <translation>Motor 2 Beschleunigung</translation>
-        </message>
-        <message>
-            <source>Junction deviation</source>
-            <translation>Eckenabweichung</translation>
-        </message>
-        <message>
-            <source>Pen servo (M3 S / M5)</source>
-            <translation>Stift-Servo (M3 S / M5)</translation>
-        </message>
-        <message>
-            <source>Z axis</source>
-            <translation>Z-Achse</translation>
-        </message>
-        <message>
-            <source>Laser (M4 S / M5)</source>
-            <translation>Laser (M4 S / M5)</translation>
-        </message>
-        <message>
-            <source>Pen up S value</source>
-            <translation>S-Wert Stift hoch</translation>
-        </message>
-        <message>
-            <source>Pen down S value</source>
-            <translation>S-Wert Stift ab</translation>
-        </message>
-        <message>
-            <source>Pen up delay</source>
-            <translation>Wartezeit Stift hoch</translation>
-        </message>
-        <message>
-            <source>Pen down delay</source>
-            <translation>Wartezeit Stift ab</translation>
-        </message>
-        <message>
-            <source>Z up</source>
-            <translation>Z oben</translation>
-        </message>
-        <message>
-            <source>Z down</source>
-            <translation>Z unten</translation>
-        </message>
-        <message>
-            <source>Z feed</source>
-            <translation>Z-Vorschub</translation>
-        </message>
-        <message>
-            <source> mm/min</source>
-            <translation> mm/min</translation>
-        </message>
-        <message>
-            <source>Laser power S value</source>
-            <translation>S-Wert Laserleistung</translation>
-        </message>
-        <message>
-            <source>Working mode (built)</source>
-            <translation>Arbeitsmodus (Aufbau)</translation>
-        </message>
-        <message>
-            <source>Assembly mode</source>
-            <translation>Montagemodus</translation>
-        </message>
-        <message>
-            <source>Drawing speed</source>
-            <translation>Zeichengeschwindigkeit</translation>
-        </message>
-        <message>
-            <source> mm/s</source>
-            <translation> mm/s</translation>
-        </message>
-        <message>
-            <source>Travel speed</source>
-            <translation>Verfahrgeschwindigkeit</translation>
-        </message>
-        <message>
-            <source>Type II singularity margin</source>
-            <translation>Abstand zur Typ-II-Singularität</translation>
-        </message>
-        <message>
-            <source>Type I singularity margin</source>
-            <translation>Abstand zur Typ-I-Singularität</translation>
-        </message>
-        <message>
-            <source>Baud rate</source>
-            <translation>Baudrate</translation>
-        </message>
-        <message>
-            <source>The machine has homing switches ($H)</source>
-            <translation>Die Maschine hat Referenzschalter ($H)</translation>
-        </message>
-        <message>
-            <source>Home θ1</source>
-            <translation>Ausgangspose θ1</translation>
-        </message>
-        <message>
-            <source>Home θ2</source>
-            <translation>Ausgangspose θ2</translation>
-        </message>
-        <message>
-            <source>The profile is not applied until these problems are fixed.</source>
-            <translation>Das Profil wird erst übernommen, wenn diese Probleme behoben sind.</translation>
-        </message>
-        <message>
-            <source>%1 cannot be used:
+<context>
+    <name>DesignPainter</name>
+    <message>
+        <source>Workspace, singularity-free region and type II curves</source>
+        <translation>Arbeitsraum, singularitätsfreier Bereich und Typ-II-Kurven</translation>
+    </message>
+    <message>
+        <source>a1 = %1, b1 = %2, a2 = %3, b2 = %4, w = %5 mm, working mode %6</source>
+        <translation>a1 = %1, b1 = %2, a2 = %3, b2 = %4, w = %5 mm, Arbeitsmodus %6</translation>
+    </message>
+    <message>
+        <source>Rectangle x %1 .. %2, y %3 .. %4 mm; worst condition number %5 (mean %6)</source>
+        <translation>Rechteck x %1 .. %2, y %3 .. %4 mm; schlechteste Konditionszahl %5 (Mittel %6)</translation>
+    </message>
+    <message>
+        <source>Type II margin %1 deg, type I margin %2 deg, footprint %3 cm²</source>
+        <translation>Abstand zu Typ II %1°, zu Typ I %2°, Platzbedarf %3 cm²</translation>
+    </message>
+    <message>
+        <source>Worst %1 um per step, worst motor speed %2 deg/s</source>
+        <translation>Schlechtestens %1 µm pro Schritt, höchste Motordrehzahl %2 °/s</translation>
+    </message>
+</context>
+<context>
+    <name>DocumentCommands</name>
+    <message>
+        <source>Import drawing</source>
+        <translation>Zeichnung importieren</translation>
+    </message>
+    <message>
+        <source>Move drawing</source>
+        <translation>Zeichnung verschieben</translation>
+    </message>
+    <message>
+        <source>Change working mode</source>
+        <translation>Arbeitsmodus ändern</translation>
+    </message>
+    <message>
+        <source>Change machine profile</source>
+        <translation>Maschinenprofil ändern</translation>
+    </message>
+</context>
+<context>
+    <name>ImportWarningsPanel</name>
+    <message>
+        <source>%1 has %2 points after flattening, more than the budget of %3 (a runaway file?).</source>
+        <translation>%1 hat nach dem Glätten %2 Punkte, mehr als das Budget von %3 (eine außer Kontrolle geratene Datei?).</translation>
+    </message>
+    <message>
+        <source>Very large drawing</source>
+        <translation>Sehr große Zeichnung</translation>
+    </message>
+    <message>
+        <source>Planning and plotting it may take very long. Import it anyway?</source>
+        <translation>Planen und Zeichnen können sehr lange dauern. Trotzdem importieren?</translation>
+    </message>
+</context>
+<context>
+    <name>JobPipeline</name>
+    <message>
+        <source>Nothing to plan: the drawing has no visible path.</source>
+        <translation>Nichts zu planen: Die Zeichnung hat keinen sichtbaren Pfad.</translation>
+    </message>
+    <message>
+        <source>Planning cancelled.</source>
+        <translation>Planung abgebrochen.</translation>
+    </message>
+    <message>
+        <source>Planned in working mode %1.</source>
+        <translation>Geplant im Arbeitsmodus %1.</translation>
+    </message>
+    <message>
+        <source>This job is long: about %1 hours and %2 pen-down moves. The machine will be busy all that time. Start it anyway?</source>
+        <translation>Dieser Auftrag ist lang: etwa %1 Stunden und %2 Zeichenbewegungen. Die Maschine ist die ganze Zeit beschäftigt. Trotzdem starten?</translation>
+    </message>
+</context>
+<context>
+    <name>MapPainter</name>
+    <message>
+        <source>Transmission angle at the pen (deg)</source>
+        <translation>Übertragungswinkel am Stift (Grad)</translation>
+    </message>
+    <message>
+        <source>Conditioning (1 = isotropic)</source>
+        <translation>Kondition (1 = isotrop)</translation>
+    </message>
+    <message>
+        <source>Resolution (um per motor step)</source>
+        <translation>Auflösung (µm je Motorschritt)</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>Planning failed: %1</source>
+        <translation>Planung fehlgeschlagen: %1</translation>
+    </message>
+</context>
+<context>
+    <name>WorkspaceLegend</name>
+    <message>
+        <source>type II &gt;= %1 deg, type I &gt;= %2 deg</source>
+        <translation>Typ II &gt;= %1°, Typ I &gt;= %2°</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keins</translation>
+    </message>
+    <message>
+        <source>singularity-free (%1)</source>
+        <translation>singularitätsfrei (%1)</translation>
+    </message>
+    <message>
+        <source>reachable, within a singularity margin</source>
+        <translation>erreichbar, innerhalb eines Singularitätsabstands</translation>
+    </message>
+    <message>
+        <source>reach boundary</source>
+        <translation>Reichweitengrenze</translation>
+    </message>
+    <message>
+        <source>singularity-free boundary</source>
+        <translation>Grenze des singularitätsfreien Bereichs</translation>
+    </message>
+    <message>
+        <source>type II singularity (%1 curves)</source>
+        <translation>Typ-II-Singularität (%1 Kurven)</translation>
+    </message>
+    <message>
+        <source>largest rectangle: %1</source>
+        <translation>größtes Rechteck: %1</translation>
+    </message>
+    <message>
+        <source>reachable area: %1 cm²</source>
+        <translation>erreichbare Fläche: %1 cm²</translation>
+    </message>
+    <message>
+        <source>singularity-free area: %1 cm²</source>
+        <translation>singularitätsfreie Fläche: %1 cm²</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::studio::FileActions</name>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>%1 has changes that are not saved. Save them first?</source>
+        <translation>%1 hat ungespeicherte Änderungen. Zuerst speichern?</translation>
+    </message>
+    <message>
+        <source>Cannot save %1: %2</source>
+        <translation>%1 kann nicht gespeichert werden: %2</translation>
+    </message>
+    <message>
+        <source>Nothing to save: open a drawing first.</source>
+        <translation>Nichts zu speichern: zuerst eine Zeichnung öffnen.</translation>
+    </message>
+    <message>
+        <source>Save failed</source>
+        <translation>Speichern fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Save project</source>
+        <translation>Projekt speichern</translation>
+    </message>
+    <message>
+        <source>FiveBar projects (*.fivebar)</source>
+        <translation>FiveBar-Projekte (*.fivebar)</translation>
+    </message>
+    <message>
+        <source>The job is still being planned; export it when planning is done.</source>
+        <translation>Der Auftrag wird noch geplant; exportieren Sie ihn, wenn die Planung fertig ist.</translation>
+    </message>
+    <message>
+        <source>There is no planned job to export (see the job preview).</source>
+        <translation>Es gibt keinen geplanten Auftrag zum Exportieren (siehe Auftragsvorschau).</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>Export G-code</source>
+        <translation>G-Code exportieren</translation>
+    </message>
+    <message>
+        <source>G-code (*.gcode *.nc);;All files (*)</source>
+        <translation>G-Code (*.gcode *.nc);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>%1 exportiert</translation>
+    </message>
+    <message>
+        <source>Clear list</source>
+        <translation>Liste leeren</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::studio::MainWindow</name>
+    <message>
+        <source>FiveBar Studio</source>
+        <translation>FiveBar Studio</translation>
+    </message>
+    <message>
+        <source>x %1 mm, y %2 mm</source>
+        <translation>x %1 mm, y %2 mm</translation>
+    </message>
+    <message>
+        <source>Planning...</source>
+        <translation>Planung läuft …</translation>
+    </message>
+    <message>
+        <source>Workspace</source>
+        <translation>Arbeitsraum</translation>
+    </message>
+    <message>
+        <source>Placement</source>
+        <translation>Platzierung</translation>
+    </message>
+    <message>
+        <source>Layers</source>
+        <translation>Ebenen</translation>
+    </message>
+    <message>
+        <source>Job preview</source>
+        <translation>Auftragsvorschau</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulation</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <source>Open &amp;recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <source>&amp;Fit drawing to workspace</source>
+        <translation>Zeichnung in den Arbeitsraum &amp;einpassen</translation>
+    </message>
+    <message>
+        <source>Ctrl+F</source>
+        <translation>Ctrl+F</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;in</source>
+        <translation>Ver&amp;größern</translation>
+    </message>
+    <message>
+        <source>Ctrl+=</source>
+        <translation>Ctrl+=</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;out</source>
+        <translation>Ver&amp;kleinern</translation>
+    </message>
+    <message>
+        <source>Zoom to &amp;fit</source>
+        <translation>&amp;Alles zeigen</translation>
+    </message>
+    <message>
+        <source>Ctrl+0</source>
+        <translation>Ctrl+0</translation>
+    </message>
+    <message>
+        <source>&amp;Simulation</source>
+        <translation>&amp;Simulation</translation>
+    </message>
+    <message>
+        <source>&amp;Play / pause</source>
+        <translation>&amp;Abspielen / Pause</translation>
+    </message>
+    <message>
+        <source>F5</source>
+        <translation>F5</translation>
+    </message>
+    <message>
+        <source>Step &amp;forward</source>
+        <translation>Schritt &amp;vor</translation>
+    </message>
+    <message>
+        <source>F6</source>
+        <translation>F6</translation>
+    </message>
+    <message>
+        <source>Step &amp;back</source>
+        <translation>Schritt &amp;zurück</translation>
+    </message>
+    <message>
+        <source>Shift+F6</source>
+        <translation>Shift+F6</translation>
+    </message>
+    <message>
+        <source>&amp;Machine</source>
+        <translation>&amp;Maschine</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <source>&amp;About FiveBar Studio</source>
+        <translation>&amp;Über FiveBar Studio</translation>
+    </message>
+    <message>
+        <source>About FiveBar Studio</source>
+        <translation>Über FiveBar Studio</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;FiveBar Studio %1&lt;/b&gt;&lt;p&gt;Plans and simulates drawings for five-bar linkage robots: workspace and singularity analysis, safe job planning, GRBL output.&lt;/p&gt;</source>
+        <translation>&lt;b&gt;FiveBar Studio %1&lt;/b&gt;&lt;p&gt;Plant und simuliert Zeichnungen für Fünfgelenk-Roboter: Arbeitsraum- und Singularitätsanalyse, sichere Auftragsplanung, GRBL-Ausgabe.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Main</source>
+        <translation>Haupt</translation>
+    </message>
+    <message>
+        <source>&amp;Open drawing or project...</source>
+        <translation>Zeichnung oder Projekt &amp;öffnen...</translation>
+    </message>
+    <message>
+        <source>&amp;Save project</source>
+        <translation>Projekt &amp;speichern</translation>
+    </message>
+    <message>
+        <source>Save project &amp;as...</source>
+        <translation>Projekt speichern &amp;unter...</translation>
+    </message>
+    <message>
+        <source>&amp;Export G-code...</source>
+        <translation>G-Code &amp;exportieren...</translation>
+    </message>
+    <message>
+        <source>Ctrl+E</source>
+        <translation>Ctrl+E</translation>
+    </message>
+    <message>
+        <source>&amp;Actual size (100 %)</source>
+        <translation>&amp;Originalgröße (100 %)</translation>
+    </message>
+    <message>
+        <source>Ctrl+1</source>
+        <translation>Ctrl+1</translation>
+    </message>
+    <message>
+        <source>%1[*] - FiveBar Studio</source>
+        <translation>%1[*] - FiveBar Studio</translation>
+    </message>
+    <message>
+        <source>Fills</source>
+        <translation>Füllungen</translation>
+    </message>
+    <message>
+        <source>Import warnings</source>
+        <translation>Importwarnungen</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::ConsolePanel</name>
+    <message>
+        <source>Lines sent to and received from the machine appear here.</source>
+        <translation>Hier erscheinen die an die Maschine gesendeten und von ihr empfangenen Zeilen.</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Senden</translation>
+    </message>
+    <message>
+        <source>G-code or $ command, e.g. $$ or $I; moves are checked first</source>
+        <translation>G-Code oder $-Befehl, z. B. $$ oder $I; Bewegungen werden zuerst geprüft</translation>
+    </message>
+    <message>
+        <source>Send unchecked (expert)</source>
+        <translation>Ungeprüft senden (Experten)</translation>
+    </message>
+    <message>
+        <source>Send lines without the motion check. X and Y are motor angles in degrees: a wrong number swings an arm across the base.</source>
+        <translation>Zeilen ohne Bewegungsprüfung senden. X und Y sind Motorwinkel in Grad: Eine falsche Zahl schwenkt einen Arm quer über die Basis.</translation>
+    </message>
+    <message>
+        <source>Unchecked console: lines go to the machine as typed, without the motion check. A wrong X or Y (motor angles in degrees) can drive the arms into each other or the base.</source>
+        <translation>Ungeprüfte Konsole: Zeilen gehen so an die Maschine, wie sie getippt wurden, ohne Bewegungsprüfung. Ein falsches X oder Y (Motorwinkel in Grad) kann die Arme ineinander oder in die Basis fahren.</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>Nicht gesendet: %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::DesignDialog</name>
+    <message>
+        <source>Design a machine</source>
+        <translation>Maschine entwerfen</translation>
+    </message>
+    <message>
+        <source>&amp;Design...</source>
+        <translation>&amp;Entwurf...</translation>
+    </message>
+    <message>
+        <source>Choose link lengths for a paper size</source>
+        <translation>Gliedlängen für ein Papierformat wählen</translation>
+    </message>
+    <message>
+        <source>Brief</source>
+        <translation>Vorgaben</translation>
+    </message>
+    <message>
+        <source>Custom</source>
+        <translation>Eigenes Format</translation>
+    </message>
+    <message>
+        <source>Landscape</source>
+        <translation>Querformat</translation>
+    </message>
+    <message>
+        <source>Portrait</source>
+        <translation>Hochformat</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source> deg</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>Symmetric arms</source>
+        <translation>Symmetrische Arme</translation>
+    </message>
+    <message>
+        <source>Any</source>
+        <translation>Beliebig</translation>
+    </message>
+    <message>
+        <source>Worst condition number</source>
+        <translation>Schlechteste Konditionszahl</translation>
+    </message>
+    <message>
+        <source>Worst resolution</source>
+        <translation>Schlechteste Auflösung</translation>
+    </message>
+    <message>
+        <source>Footprint</source>
+        <translation>Platzbedarf</translation>
+    </message>
+    <message>
+        <source>Weighted mix</source>
+        <translation>Gewichtete Mischung</translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation>Kondition</translation>
+    </message>
+    <message>
+        <source>Resolution</source>
+        <translation>Auflösung</translation>
+    </message>
+    <message>
+        <source>Weight of this normalised term in the weighted mix</source>
+        <translation>Gewicht dieses normierten Terms in der gewichteten Mischung</translation>
+    </message>
+    <message>
+        <source>Mix weights</source>
+        <translation>Gewichte der Mischung</translation>
+    </message>
+    <message>
+        <source>Paper</source>
+        <translation>Papier</translation>
+    </message>
+    <message>
+        <source>Orientation</source>
+        <translation>Ausrichtung</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Breite</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Höhe</translation>
+    </message>
+    <message>
+        <source>Margin</source>
+        <translation>Rand</translation>
+    </message>
+    <message>
+        <source>Shortest link</source>
+        <translation>Kürzestes Glied</translation>
+    </message>
+    <message>
+        <source>Longest link</source>
+        <translation>Längstes Glied</translation>
+    </message>
+    <message>
+        <source>Smallest motor spacing</source>
+        <translation>Kleinster Motorabstand</translation>
+    </message>
+    <message>
+        <source>Largest motor spacing</source>
+        <translation>Größter Motorabstand</translation>
+    </message>
+    <message>
+        <source>Arm clearance</source>
+        <translation>Armabstand</translation>
+    </message>
+    <message>
+        <source>Type II margin</source>
+        <translation>Abstand zu Typ-II-Singularitäten</translation>
+    </message>
+    <message>
+        <source>Working mode</source>
+        <translation>Arbeitsmodus</translation>
+    </message>
+    <message>
+        <source>Objective</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>Search</source>
+        <translation>Suchen</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Set the brief and press Search.</source>
+        <translation>Vorgaben einstellen und Suchen drücken.</translation>
+    </message>
+    <message>
+        <source>Worst condition</source>
+        <translation>Schlechteste Kondition</translation>
+    </message>
+    <message>
+        <source>Footprint (cm²)</source>
+        <translation>Platzbedarf (cm²)</translation>
+    </message>
+    <message>
+        <source>µm/step</source>
+        <translation>µm/Schritt</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Modus</translation>
+    </message>
+    <message>
+        <source>Workspace</source>
+        <translation>Arbeitsraum</translation>
+    </message>
+    <message>
+        <source>Conditioning</source>
+        <translation>Kondition</translation>
+    </message>
+    <message>
+        <source>Transmission angle</source>
+        <translation>Übertragungswinkel</translation>
+    </message>
+    <message>
+        <source>Map on the canvas</source>
+        <translation>Karte auf der Zeichenfläche</translation>
+    </message>
+    <message>
+        <source>Use as profile</source>
+        <translation>Als Profil verwenden</translation>
+    </message>
+    <message>
+        <source>Export...</source>
+        <translation>Exportieren...</translation>
+    </message>
+    <message>
+        <source>Searching...</source>
+        <translation>Suche läuft...</translation>
+    </message>
+    <message>
+        <source>Search cancelled.</source>
+        <translation>Suche abgebrochen.</translation>
+    </message>
+    <message>
+        <source>No design meets the brief: %1</source>
+        <translation>Kein Entwurf erfüllt die Vorgaben: %1</translation>
+    </message>
+    <message>
+        <source>Best worst-case condition number %1; %2 designs on the trade-off, %3 evaluations in %4 s.</source>
+        <translation>Beste Konditionszahl im schlechtesten Fall %1; %2 Entwürfe im Zielkonflikt, %3 Auswertungen in %4 s.</translation>
+    </message>
+    <message>
+        <source>The document now uses this design (Edit &gt; Undo restores the previous profile).</source>
+        <translation>Das Dokument verwendet jetzt diesen Entwurf (Bearbeiten &gt; Rückgängig stellt das vorige Profil wieder her).</translation>
+    </message>
+    <message>
+        <source>No design is selected.</source>
+        <translation>Kein Entwurf ausgewählt.</translation>
+    </message>
+    <message>
+        <source>Export profile</source>
+        <translation>Profil exportieren</translation>
+    </message>
+    <message>
+        <source>Machine profiles (*.json)</source>
+        <translation>Maschinenprofile (*.json)</translation>
+    </message>
+    <message>
+        <source>Profile written to %1.</source>
+        <translation>Profil nach %1 geschrieben.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::FillOptionsBox</name>
+    <message>
+        <source>Filled shapes</source>
+        <translation>Gefüllte Formen</translation>
+    </message>
+    <message>
+        <source>Outline</source>
+        <translation>Umriss</translation>
+    </message>
+    <message>
+        <source>Hatch</source>
+        <translation>Schraffur</translation>
+    </message>
+    <message>
+        <source>Not drawn</source>
+        <translation>Nicht zeichnen</translation>
+    </message>
+    <message>
+        <source>Outline: the shape&apos;s edge (as AxiDraw and vpype draw fills). Hatch: parallel lines inside the shape. Not drawn: fill-only shapes are left out.</source>
+        <translation>Umriss: der Rand der Form (wie AxiDraw und vpype Füllungen zeichnen). Schraffur: parallele Linien in der Form. Nicht zeichnen: nur gefüllte Formen entfallen.</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source> deg</source>
+        <translation> Grad</translation>
+    </message>
+    <message>
+        <source>Crosshatch</source>
+        <translation>Kreuzschraffur</translation>
+    </message>
+    <message>
+        <source>Keep the outline</source>
+        <translation>Umriss behalten</translation>
+    </message>
+    <message>
+        <source>Import again with these settings</source>
+        <translation>Mit diesen Einstellungen neu importieren</translation>
+    </message>
+    <message>
+        <source>Fill:</source>
+        <translation>Füllung:</translation>
+    </message>
+    <message>
+        <source>Line spacing:</source>
+        <translation>Linienabstand:</translation>
+    </message>
+    <message>
+        <source>Angle:</source>
+        <translation>Winkel:</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::GoToTool</name>
+    <message>
+        <source>Connect the machine first: its position is not known.</source>
+        <translation>Verbinden Sie zuerst die Maschine: ihre Position ist nicht bekannt.</translation>
+    </message>
+    <message>
+        <source>Go to %1, %2 mm? The dashed path is the pen&apos;s travel (%3 checked moves).</source>
+        <translation>Nach %1, %2 mm fahren? Der gestrichelte Weg ist die Fahrt des Stifts (%3 geprüfte Bewegungen).</translation>
+    </message>
+    <message>
+        <source>Cannot go there: %1</source>
+        <translation>Dorthin kann nicht gefahren werden: %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::ImportController</name>
+    <message>
+        <source>%1: another import is still running.</source>
+        <translation>%1: Ein anderer Import läuft noch.</translation>
+    </message>
+    <message>
+        <source>Importing %1...</source>
+        <translation>%1 wird importiert …</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Import</translation>
+    </message>
+    <message>
+        <source>Import of %1 cancelled.</source>
+        <translation>Import von %1 abgebrochen.</translation>
+    </message>
+    <message>
+        <source>%1 could not be imported.</source>
+        <translation>%1 konnte nicht importiert werden.</translation>
+    </message>
+    <message>
+        <source>Import failed</source>
+        <translation>Import fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>%1 contains nothing to draw.</source>
+        <translation>%1 enthält nichts zu zeichnen.</translation>
+    </message>
+    <message>
+        <source>Open drawing or project</source>
+        <translation>Zeichnung oder Projekt öffnen</translation>
+    </message>
+    <message>
+        <source>Drawings and projects (*.svg *.fivebar);;SVG drawings (*.svg);;FiveBar projects (*.fivebar);;All files (*)</source>
+        <translation>Zeichnungen und Projekte (*.svg *.fivebar);;SVG-Zeichnungen (*.svg);;FiveBar-Projekte (*.fivebar);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::ImportWarningsPanel</name>
+    <message>
+        <source>No drawing imported yet.</source>
+        <translation>Noch keine Zeichnung importiert.</translation>
+    </message>
+    <message>
+        <source>What the importer dropped, approximated or could not draw. docs/svg-import.md lists what is supported.</source>
+        <translation>Was der Import weggelassen, angenähert oder nicht zeichnen konnte. docs/svg-import.md listet, was unterstützt wird.</translation>
+    </message>
+    <message>
+        <source>%1 imported without warnings.</source>
+        <translation>%1 ohne Warnungen importiert.</translation>
+    </message>
+    <message>
+        <source>1 warning while importing %1: part of the drawing may differ from what a browser shows.</source>
+        <translation>1 Warnung beim Import von %1: ein Teil der Zeichnung kann von der Anzeige im Browser abweichen.</translation>
+    </message>
+    <message>
+        <source>%1 warnings while importing %2: parts of the drawing may differ from what a browser shows.</source>
+        <translation>%1 Warnungen beim Import von %2: Teile der Zeichnung können von der Anzeige im Browser abweichen.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::JobLayer</name>
+    <message>
+        <source>Planning...</source>
+        <translation>Planung läuft...</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::JogController</name>
+    <message>
+        <source>Jog refused: the machine is not connected, not idle, or a job is running.</source>
+        <translation>Verfahren abgelehnt: Die Maschine ist nicht verbunden, nicht bereit, oder ein Auftrag läuft.</translation>
+    </message>
+    <message>
+        <source>Jog stopped at the last safe point: %1</source>
+        <translation>Verfahren am letzten sicheren Punkt angehalten: %1</translation>
+    </message>
+    <message>
+        <source>Jog refused: %1</source>
+        <translation>Verfahren abgelehnt: %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::JogPanel</name>
+    <message>
+        <source>Jog the pen %1 mm in X, %2 mm in Y per step; hold for a continuous jog</source>
+        <translation>Stift pro Schritt um %1 mm in X und %2 mm in Y verfahren; gedrückt halten für fortlaufendes Verfahren</translation>
+    </message>
+    <message>
+        <source>Go to…</source>
+        <translation>Anfahren…</translation>
+    </message>
+    <message>
+        <source>Click the canvas to choose where the pen goes; the path is shown before you confirm.</source>
+        <translation>Klicken Sie auf die Zeichenfläche, um das Ziel des Stifts zu wählen; der Weg wird vor der Bestätigung angezeigt.</translation>
+    </message>
+    <message>
+        <source>Turn motor %1 clockwise by one step</source>
+        <translation>Motor %1 um einen Schritt im Uhrzeigersinn drehen</translation>
+    </message>
+    <message>
+        <source>Turn motor %1 counter-clockwise by one step</source>
+        <translation>Motor %1 um einen Schritt gegen den Uhrzeigersinn drehen</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <source>mm / °</source>
+        <translation>mm / °</translation>
+    </message>
+    <message>
+        <source> mm/s</source>
+        <translation> mm/s</translation>
+    </message>
+    <message>
+        <source>Pen up</source>
+        <translation>Stift hoch</translation>
+    </message>
+    <message>
+        <source>Lift the pen (Page Up on the canvas)</source>
+        <translation>Stift anheben (Bild auf auf der Zeichenfläche)</translation>
+    </message>
+    <message>
+        <source>Pen down</source>
+        <translation>Stift ab</translation>
+    </message>
+    <message>
+        <source>Lower the pen (Page Down on the canvas)</source>
+        <translation>Stift absenken (Bild ab auf der Zeichenfläche)</translation>
+    </message>
+    <message>
+        <source>Go</source>
+        <translation>Los</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Click the canvas where the pen should go.</source>
+        <translation>Klicken Sie auf die Stelle der Zeichenfläche, die der Stift anfahren soll.</translation>
+    </message>
+    <message>
+        <source>Home ($H)</source>
+        <translation>Referenzfahrt ($H)</translation>
+    </message>
+    <message>
+        <source>Set reference pose</source>
+        <translation>Referenzpose setzen</translation>
+    </message>
+    <message>
+        <source>Run the homing cycle</source>
+        <translation>Referenzfahrt ausführen</translation>
+    </message>
+    <message>
+        <source>Declare that the machine now stands at the profile&apos;s home pose</source>
+        <translation>Festlegen, dass die Maschine jetzt in der Ausgangspose des Profils steht</translation>
+    </message>
+    <message>
+        <source>Speed of XY jogs</source>
+        <translation>Geschwindigkeit beim XY-Verfahren</translation>
+    </message>
+    <message>
+        <source>Go to home pose</source>
+        <translation>Zur Grundstellung fahren</translation>
+    </message>
+    <message>
+        <source>Move the pen up to the profile&apos;s home pose by a checked move (the reference must be set)</source>
+        <translation>Mit angehobenem Stift in einer geprüften Bewegung zur Grundstellung des Profils fahren (die Referenz muss gesetzt sein)</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::LayersPanel</name>
+    <message>
+        <source>Plot this layer earlier</source>
+        <translation>Diese Ebene früher zeichnen</translation>
+    </message>
+    <message>
+        <source>Plot this layer later</source>
+        <translation>Diese Ebene später zeichnen</translation>
+    </message>
+    <message>
+        <source>Tool settings of the selected layer</source>
+        <translation>Werkzeugeinstellungen der gewählten Ebene</translation>
+    </message>
+    <message>
+        <source> mm/s</source>
+        <translation> mm/s</translation>
+    </message>
+    <message>
+        <source>Profile default</source>
+        <translation>Profilvorgabe</translation>
+    </message>
+    <message>
+        <source>Pause before this layer (pen change)</source>
+        <translation>Vor dieser Ebene anhalten (Stiftwechsel)</translation>
+    </message>
+    <message>
+        <source>Draw speed:</source>
+        <translation>Zeichengeschwindigkeit:</translation>
+    </message>
+    <message>
+        <source>Power / pen S:</source>
+        <translation>Leistung / Stift-S:</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n path(s)</source>
+        <translation>
+            <numerusform>%n Pfad</numerusform>
+            <numerusform>%n Pfade</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n point(s)</source>
+        <translation>
+            <numerusform>%n Punkt</numerusform>
+            <numerusform>%n Punkte</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachineBanner</name>
+    <message>
+        <source>Reset</source>
+        <translation>Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Soft reset (Ctrl-X): stops everything; the machine keeps its position unless it was moving.</source>
+        <translation>Soft-Reset (Strg-X): hält alles an; die Maschine behält ihre Position, sofern sie sich nicht bewegt hat.</translation>
+    </message>
+    <message>
+        <source>Unlock ($X)</source>
+        <translation>Entsperren ($X)</translation>
+    </message>
+    <message>
+        <source>Leave the alarm state without homing. Only when you know the machine stands where the studio shows it.</source>
+        <translation>Den Alarmzustand ohne Referenzfahrt verlassen. Nur wenn Sie wissen, dass die Maschine dort steht, wo das Studio sie zeigt.</translation>
+    </message>
+    <message>
+        <source>Dismiss</source>
+        <translation>Schließen</translation>
+    </message>
+    <message>
+        <source>Alarm %1: the machine stopped</source>
+        <translation>Alarm %1: Die Maschine hat angehalten</translation>
+    </message>
+    <message>
+        <source>Alarm: the machine is locked</source>
+        <translation>Alarm: Die Maschine ist gesperrt</translation>
+    </message>
+    <message>
+        <source>Error %1: a command was rejected</source>
+        <translation>Fehler %1: Ein Befehl wurde abgelehnt</translation>
+    </message>
+    <message>
+        <source>The board waits for a reset first: press Reset, then Unlock.</source>
+        <translation>Die Steuerung erwartet zuerst ein Zurücksetzen: Drücken Sie Zurücksetzen, dann Entsperren.</translation>
+    </message>
+    <message>
+        <source>Home ($H)</source>
+        <translation>Referenzfahrt ($H)</translation>
+    </message>
+    <message>
+        <source>Set reference pose</source>
+        <translation>Referenzpose setzen</translation>
+    </message>
+    <message>
+        <source>Run the homing cycle; the machine moves to its switches.</source>
+        <translation>Referenzfahrt ausführen; die Maschine fährt an ihre Endschalter.</translation>
+    </message>
+    <message>
+        <source>Declare that the machine now stands at the profile&apos;s home pose (G10 L20).</source>
+        <translation>Festlegen, dass die Maschine jetzt in der Ausgangspose des Profils steht (G10 L20).</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachineDialogs</name>
+    <message>
+        <source>Set the reference pose?
+
+The studio will take the machine&apos;s current position to be the home pose of &quot;%1&quot;: motor 1 at %2°, motor 2 at %3°. Every later move is computed from it.
+
+Confirm only if the arms stand exactly in that pose now. If they stand elsewhere, moves will land in the wrong place and can drive the arms into each other or into the base.</source>
+        <translation>Referenzstellung setzen?
+
+Das Studio nimmt die aktuelle Position der Maschine als Grundstellung von „%1“: Motor 1 bei %2°, Motor 2 bei %3°. Jede spätere Bewegung wird daraus berechnet.
+
+Bestätigen Sie nur, wenn die Arme jetzt genau in dieser Stellung stehen. Stehen sie anders, landen Bewegungen an der falschen Stelle und können die Arme ineinander oder in die Basis fahren.</translation>
+    </message>
+    <message>
+        <source>Set reference pose</source>
+        <translation>Referenzstellung setzen</translation>
+    </message>
+    <message>
+        <source>The arms stand in the home pose: set it</source>
+        <translation>Die Arme stehen in der Grundstellung: setzen</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachinePanel</name>
+    <message>
+        <source>Idle</source>
+        <translation>Bereit</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Läuft</translation>
+    </message>
+    <message>
+        <source>On hold</source>
+        <translation>Angehalten</translation>
+    </message>
+    <message>
+        <source>Jogging</source>
+        <translation>Verfährt</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <source>Door open</source>
+        <translation>Tür offen</translation>
+    </message>
+    <message>
+        <source>Check mode</source>
+        <translation>Prüfmodus</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>Referenzfahrt</translation>
+    </message>
+    <message>
+        <source>Sleeping</source>
+        <translation>Ruhezustand</translation>
+    </message>
+    <message>
+        <source>Unknown</source>
+        <translation>Unbekannt</translation>
+    </message>
+    <message>
+        <source>Refresh</source>
+        <translation>Aktualisieren</translation>
+    </message>
+    <message>
+        <source>List the serial ports again</source>
+        <translation>Serielle Schnittstellen neu auflisten</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Verbinden</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>Trennen</translation>
+    </message>
+    <message>
+        <source>Baud</source>
+        <translation>Baud</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>Verbindung</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Pen (X, Y)</source>
+        <translation>Stift (X, Y)</translation>
+    </message>
+    <message>
+        <source>Motors (θ1, θ2)</source>
+        <translation>Motoren (θ1, θ2)</translation>
+    </message>
+    <message>
+        <source>Buffers</source>
+        <translation>Puffer</translation>
+    </message>
+    <message>
+        <source>Simulated machine (built in)</source>
+        <translation>Simulierte Maschine (eingebaut)</translation>
+    </message>
+    <message>
+        <source>Cannot connect</source>
+        <translation>Verbindung nicht möglich</translation>
+    </message>
+    <message>
+        <source>Connected to %1</source>
+        <translation>Verbunden mit %1</translation>
+    </message>
+    <message>
+        <source>Not connected</source>
+        <translation>Nicht verbunden</translation>
+    </message>
+    <message>
+        <source>Offline</source>
+        <translation>Offline</translation>
+    </message>
+    <message>
+        <source>%1, %2 mm</source>
+        <translation>%1, %2 mm</translation>
+    </message>
+    <message>
+        <source>%1°, %2°</source>
+        <translation>%1°, %2°</translation>
+    </message>
+    <message>
+        <source>planner %1 of %2 blocks free, RX %3 of %4 bytes free</source>
+        <translation>Planer %1 von %2 Blöcken frei, RX %3 von %4 Bytes frei</translation>
+    </message>
+    <message>
+        <source>Pen</source>
+        <translation>Stift</translation>
+    </message>
+    <message>
+        <source>Review and write...</source>
+        <translation>Prüfen und schreiben...</translation>
+    </message>
+    <message>
+        <source>Compare the board&apos;s settings with the profile and write the differences (a backup is saved first)</source>
+        <translation>Die Einstellungen der Steuerung mit dem Profil vergleichen und die Unterschiede schreiben (vorher wird eine Sicherung gespeichert)</translation>
+    </message>
+    <message>
+        <source>No answer from the machine</source>
+        <translation>Keine Antwort von der Maschine</translation>
+    </message>
+    <message>
+        <source>Connecting to %1: waiting for the board to answer...</source>
+        <translation>Verbinde mit %1: warte auf die Antwort der Steuerung...</translation>
+    </message>
+    <message>
+        <source>up</source>
+        <translation>oben</translation>
+    </message>
+    <message>
+        <source>down (drawing)</source>
+        <translation>unten (zeichnet)</translation>
+    </message>
+    <message>
+        <source>not known yet</source>
+        <translation>noch unbekannt</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachineSession</name>
+    <message>
+        <source>Cannot open %1.</source>
+        <translation>%1 kann nicht geöffnet werden.</translation>
+    </message>
+    <message>
+        <source>Connected to %1.</source>
+        <translation>Verbunden mit %1.</translation>
+    </message>
+    <message>
+        <source>Disconnected.</source>
+        <translation>Getrennt.</translation>
+    </message>
+    <message>
+        <source>Not connected: %1 was not sent.</source>
+        <translation>Nicht verbunden: %1 wurde nicht gesendet.</translation>
+    </message>
+    <message>
+        <source>Not sent (%1): %2</source>
+        <translation>Nicht gesendet (%1): %2</translation>
+    </message>
+    <message>
+        <source>A job is running: %1 was not sent.</source>
+        <translation>Ein Auftrag läuft: %1 wurde nicht gesendet.</translation>
+    </message>
+    <message>
+        <source>Jog refused: the machine is not idle, not connected or a job is running.</source>
+        <translation>Verfahren abgelehnt: Die Maschine ist nicht bereit, nicht verbunden, oder ein Auftrag läuft.</translation>
+    </message>
+    <message>
+        <source>%1 (jog in %2 checked moves)</source>
+        <translation>%1 (Verfahren in %2 geprüften Bewegungen)</translation>
+    </message>
+    <message>
+        <source>[soft reset]</source>
+        <translation>[Soft-Reset]</translation>
+    </message>
+    <message>
+        <source>[feed hold]</source>
+        <translation>[Vorschub halten]</translation>
+    </message>
+    <message>
+        <source>[cycle start]</source>
+        <translation>[Zyklusstart]</translation>
+    </message>
+    <message>
+        <source>%1 was rejected: %2</source>
+        <translation>%1 wurde abgelehnt: %2</translation>
+    </message>
+    <message>
+        <source>The machine is locked (alarm state). Unlock it with $X or home it with $H once you know where it stands.</source>
+        <translation>Die Maschine ist gesperrt (Alarmzustand). Entsperren Sie sie mit $X oder führen Sie mit $H eine Referenzfahrt aus, sobald Sie wissen, wo sie steht.</translation>
+    </message>
+    <message>
+        <source>The board reset (Grbl %1).</source>
+        <translation>Die Steuerung wurde zurückgesetzt (Grbl %1).</translation>
+    </message>
+    <message>
+        <source>Connection lost: %1</source>
+        <translation>Verbindung verloren: %1</translation>
+    </message>
+    <message>
+        <source>the simulated machine</source>
+        <translation>der simulierten Maschine</translation>
+    </message>
+    <message>
+        <source>set the reference pose (Machine panel) or home the machine</source>
+        <translation>setzen Sie die Referenzstellung (Maschinen-Panel) oder referenzieren Sie die Maschine</translation>
+    </message>
+    <message>
+        <source>%1 at %2 baud</source>
+        <translation>%1 mit %2 Baud</translation>
+    </message>
+    <message>
+        <source>Opened %1; waiting for the board to answer...</source>
+        <translation>%1 geöffnet; warte auf die Antwort der Steuerung...</translation>
+    </message>
+    <message>
+        <source>No GRBL board answered on %1 within %2 s. Check that the port is the machine&apos;s, that the baud rate matches its firmware (GRBL 1.1: usually 115200) and that it is powered.</source>
+        <translation>Auf %1 hat innerhalb von %2 s keine GRBL-Steuerung geantwortet. Prüfen Sie, ob der Anschluss der der Maschine ist, ob die Baudrate zu ihrer Firmware passt (GRBL 1.1: meist 115200) und ob sie eingeschaltet ist.</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>Nicht gesendet: %1</translation>
+    </message>
+    <message>
+        <source>Unchecked: %1</source>
+        <translation>Ungeprüft: %1</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s position is not known yet (no status report with its work position): wait a moment, or set the reference pose.</source>
+        <translation>Die Position der Maschine ist noch unbekannt (kein Statusbericht mit ihrer Werkstückposition): Warten Sie einen Moment oder setzen Sie die Referenzstellung.</translation>
+    </message>
+    <message>
+        <source>The machine is still moving or busy: send a move when it stands still (Idle), so it can be checked from where the machine really is.</source>
+        <translation>Die Maschine bewegt sich noch oder ist beschäftigt: Senden Sie eine Bewegung, wenn sie stillsteht (Bereit), damit sie von der wirklichen Position aus geprüft werden kann.</translation>
+    </message>
+    <message>
+        <source>Console lines are sent UNCHECKED from now on.</source>
+        <translation>Konsolenzeilen werden ab jetzt UNGEPRÜFT gesendet.</translation>
+    </message>
+    <message>
+        <source>Console lines are checked again.</source>
+        <translation>Konsolenzeilen werden wieder geprüft.</translation>
+    </message>
+    <message>
+        <source>The machine must be connected, idle and its position known.</source>
+        <translation>Die Maschine muss verbunden und bereit sein, und ihre Position muss bekannt sein.</translation>
+    </message>
+    <message>
+        <source>The profile&apos;s home pose does not close the linkage.</source>
+        <translation>Die Grundstellung des Profils schließt das Gestänge nicht.</translation>
+    </message>
+    <message>
+        <source>No checked move to the home pose: %1</source>
+        <translation>Keine geprüfte Bewegung zur Grundstellung: %1</translation>
+    </message>
+    <message>
+        <source>The move was not sent (see the console).</source>
+        <translation>Die Bewegung wurde nicht gesendet (siehe Konsole).</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachineSettingsDialog</name>
+    <message>
+        <source>Machine settings</source>
+        <translation>Maschineneinstellungen</translation>
+    </message>
+    <message>
+        <source>The board&apos;s GRBL settings next to the values the machine profile needs. Writing saves a backup of the board&apos;s settings first.</source>
+        <translation>Die GRBL-Einstellungen der Steuerung neben den Werten, die das Maschinenprofil braucht. Vor dem Schreiben wird eine Sicherung der Einstellungen der Steuerung gespeichert.</translation>
+    </message>
+    <message>
+        <source>Setting</source>
+        <translation>Einstellung</translation>
+    </message>
+    <message>
+        <source>Board</source>
+        <translation>Steuerung</translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation>Profil</translation>
+    </message>
+    <message>
+        <source>Differs</source>
+        <translation>Abweichend</translation>
+    </message>
+    <message>
+        <source>Read from board</source>
+        <translation>Von der Steuerung lesen</translation>
+    </message>
+    <message>
+        <source>Write differences...</source>
+        <translation>Abweichungen schreiben...</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Schließen</translation>
+    </message>
+    <message>
+        <source>The machine was disconnected.</source>
+        <translation>Die Verbindung zur Maschine wurde getrennt.</translation>
+    </message>
+    <message>
+        <source>Connect the machine first.</source>
+        <translation>Zuerst die Maschine verbinden.</translation>
+    </message>
+    <message>
+        <source>A job is running.</source>
+        <translation>Ein Auftrag läuft.</translation>
+    </message>
+    <message>
+        <source>Still talking to the board.</source>
+        <translation>Die Kommunikation mit der Steuerung läuft noch.</translation>
+    </message>
+    <message>
+        <source>The machine must be idle (or in alarm) to change settings.</source>
+        <translation>Zum Ändern der Einstellungen muss die Maschine im Ruhezustand (oder im Alarm) sein.</translation>
+    </message>
+    <message>
+        <source>Reading the board&apos;s settings...</source>
+        <translation>Einstellungen der Steuerung werden gelesen...</translation>
+    </message>
+    <message>
+        <source>Nothing to write: read the board&apos;s settings first.</source>
+        <translation>Nichts zu schreiben: zuerst die Einstellungen der Steuerung lesen.</translation>
+    </message>
+    <message>
+        <source>Write settings</source>
+        <translation>Einstellungen schreiben</translation>
+    </message>
+    <message numerus="yes">
+        <source>Write %n setting(s) to the board? Its current settings are saved to a backup file first.</source>
+        <translation>
+            <numerusform>%n Einstellung auf die Steuerung schreiben? Ihre aktuellen Einstellungen werden zuvor in einer Sicherungsdatei gespeichert.</numerusform>
+            <numerusform>%n Einstellungen auf die Steuerung schreiben? Ihre aktuellen Einstellungen werden zuvor in einer Sicherungsdatei gespeichert.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The board&apos;s settings match the profile.</source>
+        <translation>Die Einstellungen der Steuerung stimmen mit dem Profil überein.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n setting(s) differ from the profile.</source>
+        <translation>
+            <numerusform>%n Einstellung weicht vom Profil ab.</numerusform>
+            <numerusform>%n Einstellungen weichen vom Profil ab.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n setting(s) written. Backup of the previous settings: %1</source>
+        <translation>
+            <numerusform>%n Einstellung geschrieben. Sicherung der vorherigen Einstellungen: %1</numerusform>
+            <numerusform>%n Einstellungen geschrieben. Sicherung der vorherigen Einstellungen: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Writing settings one at a time... Backup: %1</source>
+        <translation>Einstellungen werden einzeln geschrieben... Sicherung: %1</translation>
+    </message>
+    <message>
+        <source>Failed: %1</source>
+        <translation>Fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachineUi</name>
+    <message>
+        <source>Machine</source>
+        <translation>Maschine</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Ausführen</translation>
+    </message>
+    <message>
+        <source>Jog</source>
+        <translation>Verfahren</translation>
+    </message>
+    <message>
+        <source>Console</source>
+        <translation>Konsole</translation>
+    </message>
+    <message>
+        <source>Machine profile</source>
+        <translation>Maschinenprofil</translation>
+    </message>
+    <message>
+        <source>Machine &amp;settings...</source>
+        <translation>Maschinen&amp;einstellungen...</translation>
+    </message>
+    <message>
+        <source>A job is running</source>
+        <translation>Ein Auftrag läuft</translation>
+    </message>
+    <message>
+        <source>The machine is drawing &quot;%1&quot;. Quitting the studio would leave it without its stream of lines.
+
+Hold, stop and quit: the machine stops cleanly and the progress is saved, so you can resume later.</source>
+        <translation>Die Maschine zeichnet „%1“. Beim Beenden des Studios bekäme sie keine weiteren Zeilen.
+
+Anhalten, stoppen und beenden: Die Maschine hält sauber an und der Fortschritt wird gespeichert, sodass Sie später fortsetzen können.</translation>
+    </message>
+    <message>
+        <source>Hold, stop and quit</source>
+        <translation>Anhalten, stoppen und beenden</translation>
+    </message>
+    <message>
+        <source>Keep running</source>
+        <translation>Weiterlaufen lassen</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::ModePanel</name>
+    <message>
+        <source>Working mode</source>
+        <translation>Arbeitsmodus</translation>
+    </message>
+    <message>
+        <source>Auto</source>
+        <translation>Auto</translation>
+    </message>
+    <message>
+        <source>Let the planner pick the feasible mode with the largest margin</source>
+        <translation>Den Planer den ausführbaren Modus mit dem größten Abstand wählen lassen</translation>
+    </message>
+    <message>
+        <source>Elbows %1 (arm 1 %2, arm 2 %3)</source>
+        <translation>Ellbogen %1 (Arm 1 %2, Arm 2 %3)</translation>
+    </message>
+    <message>
+        <source>out</source>
+        <translation>außen</translation>
+    </message>
+    <message>
+        <source>in</source>
+        <translation>innen</translation>
+    </message>
+    <message>
+        <source>Overlays</source>
+        <translation>Überlagerungen</translation>
+    </message>
+    <message>
+        <source>Reachable and singularity-free regions</source>
+        <translation>Erreichbare und singularitätsfreie Bereiche</translation>
+    </message>
+    <message>
+        <source>Type II singularity curves</source>
+        <translation>Singularitätskurven Typ II</translation>
+    </message>
+    <message>
+        <source>Largest singularity-free rectangle</source>
+        <translation>Größtes singularitätsfreies Rechteck</translation>
+    </message>
+    <message>
+        <source>Workspace legend</source>
+        <translation>Arbeitsraum-Legende</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Keine</translation>
+    </message>
+    <message>
+        <source>Transmission angle</source>
+        <translation>Übertragungswinkel</translation>
+    </message>
+    <message>
+        <source>Conditioning</source>
+        <translation>Kondition</translation>
+    </message>
+    <message>
+        <source>Resolution (mm per step)</source>
+        <translation>Auflösung (mm je Schritt)</translation>
+    </message>
+    <message>
+        <source>Map:</source>
+        <translation>Karte:</translation>
+    </message>
+    <message>
+        <source>Auto picked %1.</source>
+        <translation>Auto hat %1 gewählt.</translation>
+    </message>
+    <message>
+        <source>Auto: no mode draws the whole job; showing %1.</source>
+        <translation>Auto: Kein Modus zeichnet den ganzen Auftrag; %1 wird gezeigt.</translation>
+    </message>
+    <message>
+        <source>Showing the workspace of %1.</source>
+        <translation>Arbeitsraum von %1 wird gezeigt.</translation>
+    </message>
+    <message>
+        <source>Smallest singularity margin: %1 deg.</source>
+        <translation>Kleinster Singularitätsabstand: %1 Grad.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::ParetoPlot</name>
+    <message>
+        <source>Footprint (cm²)</source>
+        <translation>Platzbedarf (cm²)</translation>
+    </message>
+    <message>
+        <source>Worst condition number</source>
+        <translation>Schlechteste Konditionszahl</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::PlacementPanel</name>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source> deg</source>
+        <translation> Grad</translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <source>Centre X:</source>
+        <translation>Mitte X:</translation>
+    </message>
+    <message>
+        <source>Centre Y:</source>
+        <translation>Mitte Y:</translation>
+    </message>
+    <message>
+        <source>Rotation:</source>
+        <translation>Drehung:</translation>
+    </message>
+    <message>
+        <source>Scale:</source>
+        <translation>Maßstab:</translation>
+    </message>
+    <message>
+        <source>Fit to workspace</source>
+        <translation>In Arbeitsraum einpassen</translation>
+    </message>
+    <message>
+        <source>Keep aspect ratio</source>
+        <translation>Seitenverhältnis beibehalten</translation>
+    </message>
+    <message>
+        <source>Width:</source>
+        <translation>Breite:</translation>
+    </message>
+    <message>
+        <source>Height:</source>
+        <translation>Höhe:</translation>
+    </message>
+    <message>
+        <source>Actual size</source>
+        <translation>Originalgröße</translation>
+    </message>
+    <message>
+        <source>Draw the drawing at its true size (100 %)</source>
+        <translation>Die Zeichnung in ihrer wahren Größe zeichnen (100 %)</translation>
+    </message>
+    <message>
+        <source>Scale the drawing to fill the largest singularity-free rectangle</source>
+        <translation>Die Zeichnung so skalieren, dass sie das größte singularitätsfreie Rechteck füllt</translation>
+    </message>
+    <message>
+        <source>No singularity-free area to fit the drawing into.</source>
+        <translation>Kein singularitätsfreier Bereich, in den die Zeichnung passt.</translation>
+    </message>
+    <message>
+        <source>Fitted: %1 %</source>
+        <translation>Eingepasst: %1 %</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::PreviewPanel</name>
+    <message>
+        <source>%1 % of what this machine can do</source>
+        <translation>%1 % dessen, was diese Maschine kann</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation>%1 h %2 min</translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>Show</source>
+        <translation>Anzeigen</translation>
+    </message>
+    <message>
+        <source>Colour pen-down moves by speed</source>
+        <translation>Zeichenbewegungen nach Geschwindigkeit färben</translation>
+    </message>
+    <message>
+        <source>Pen-up moves (grey)</source>
+        <translation>Leerfahrten (grau)</translation>
+    </message>
+    <message>
+        <source>Drawing order</source>
+        <translation>Zeichenreihenfolge</translation>
+    </message>
+    <message>
+        <source>Pre-flight problems (click to show):</source>
+        <translation>Probleme der Vorabprüfung (zum Zeigen anklicken):</translation>
+    </message>
+    <message>
+        <source>Moves shown: %1 of %2</source>
+        <translation>Gezeigte Bewegungen: %1 von %2</translation>
+    </message>
+    <message>
+        <source>Planning...</source>
+        <translation>Planung läuft …</translation>
+    </message>
+    <message>
+        <source>Planned.</source>
+        <translation>Geplant.</translation>
+    </message>
+    <message>
+        <source>Open a drawing to plan a job.</source>
+        <translation>Öffnen Sie eine Zeichnung, um einen Auftrag zu planen.</translation>
+    </message>
+    <message>
+        <source>Working mode: &lt;b&gt;%1&lt;/b&gt;</source>
+        <translation>Arbeitsmodus: &lt;b&gt;%1&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>No problems: every move is reachable and safe.</source>
+        <translation>Keine Probleme: Jede Bewegung ist erreichbar und sicher.</translation>
+    </message>
+    <message>
+        <source>What to do: %1</source>
+        <translation>Was zu tun ist: %1</translation>
+    </message>
+    <message>
+        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Working mode:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Estimated time:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%8&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen down:&lt;/td&gt;&lt;td&gt;%3 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen up:&lt;/td&gt;&lt;td&gt;%4 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Segments:&lt;/td&gt;&lt;td&gt;%5&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Max deviation:&lt;/td&gt;&lt;td&gt;%6 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Singularity margin:&lt;/td&gt;&lt;td&gt;%7 deg&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Arbeitsmodus:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Geschätzte Zeit:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%8&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Stift unten:&lt;/td&gt;&lt;td&gt;%3 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Stift oben:&lt;/td&gt;&lt;td&gt;%4 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Segmente:&lt;/td&gt;&lt;td&gt;%5&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Größte Abweichung:&lt;/td&gt;&lt;td&gt;%6 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Singularitätsabstand:&lt;/td&gt;&lt;td&gt;%7 Grad&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::ProfileEditor</name>
+    <message>
+        <source>Load preset</source>
+        <translation>Vorlage laden</translation>
+    </message>
+    <message>
+        <source>Import…</source>
+        <translation>Importieren…</translation>
+    </message>
+    <message>
+        <source>Load a machine profile from a JSON file</source>
+        <translation>Ein Maschinenprofil aus einer JSON-Datei laden</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Exportieren…</translation>
+    </message>
+    <message>
+        <source>Save this machine profile as a JSON file</source>
+        <translation>Dieses Maschinenprofil als JSON-Datei speichern</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Maschine</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Geometry</source>
+        <translation>Geometrie</translation>
+    </message>
+    <message>
+        <source>Joint limits</source>
+        <translation>Gelenkgrenzen</translation>
+    </message>
+    <message>
+        <source>Motors</source>
+        <translation>Motoren</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <source>Motion and safety</source>
+        <translation>Bewegung und Sicherheit</translation>
+    </message>
+    <message>
+        <source>Connection and home pose</source>
+        <translation>Verbindung und Ausgangspose</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Driving link a1</source>
+        <translation>Antriebsglied a1</translation>
+    </message>
+    <message>
+        <source>Floating link b1</source>
+        <translation>Koppelglied b1</translation>
+    </message>
+    <message>
+        <source>Driving link a2</source>
+        <translation>Antriebsglied a2</translation>
+    </message>
+    <message>
+        <source>Floating link b2</source>
+        <translation>Koppelglied b2</translation>
+    </message>
+    <message>
+        <source>Motor distance w</source>
+        <translation>Motorabstand w</translation>
+    </message>
+    <message>
+        <source>Limit the motor angles</source>
+        <translation>Motorwinkel begrenzen</translation>
+    </message>
+    <message>
+        <source>θ1 minimum</source>
+        <translation>θ1 Minimum</translation>
+    </message>
+    <message>
+        <source>θ1 maximum</source>
+        <translation>θ1 Maximum</translation>
+    </message>
+    <message>
+        <source>θ2 minimum</source>
+        <translation>θ2 Minimum</translation>
+    </message>
+    <message>
+        <source>θ2 maximum</source>
+        <translation>θ2 Maximum</translation>
+    </message>
+    <message>
+        <source>Motor 1 steps per degree</source>
+        <translation>Motor 1 Schritte pro Grad</translation>
+    </message>
+    <message>
+        <source>Motor 2 steps per degree</source>
+        <translation>Motor 2 Schritte pro Grad</translation>
+    </message>
+    <message>
+        <source>Motor 1 maximum speed</source>
+        <translation>Motor 1 Höchstgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source> °/min</source>
+        <translation> °/min</translation>
+    </message>
+    <message>
+        <source>Motor 2 maximum speed</source>
+        <translation>Motor 2 Höchstgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Motor 1 acceleration</source>
+        <translation>Motor 1 Beschleunigung</translation>
+    </message>
+    <message>
+        <source> °/s²</source>
+        <translation> °/s²</translation>
+    </message>
+    <message>
+        <source>Motor 2 acceleration</source>
+        <translation>Motor 2 Beschleunigung</translation>
+    </message>
+    <message>
+        <source>Junction deviation</source>
+        <translation>Eckenabweichung</translation>
+    </message>
+    <message>
+        <source>Pen servo (M3 S / M5)</source>
+        <translation>Stift-Servo (M3 S / M5)</translation>
+    </message>
+    <message>
+        <source>Z axis</source>
+        <translation>Z-Achse</translation>
+    </message>
+    <message>
+        <source>Laser (M4 S / M5)</source>
+        <translation>Laser (M4 S / M5)</translation>
+    </message>
+    <message>
+        <source>Pen up S value</source>
+        <translation>S-Wert Stift hoch</translation>
+    </message>
+    <message>
+        <source>Pen down S value</source>
+        <translation>S-Wert Stift ab</translation>
+    </message>
+    <message>
+        <source>Pen up delay</source>
+        <translation>Wartezeit Stift hoch</translation>
+    </message>
+    <message>
+        <source>Pen down delay</source>
+        <translation>Wartezeit Stift ab</translation>
+    </message>
+    <message>
+        <source>Z up</source>
+        <translation>Z oben</translation>
+    </message>
+    <message>
+        <source>Z down</source>
+        <translation>Z unten</translation>
+    </message>
+    <message>
+        <source>Z feed</source>
+        <translation>Z-Vorschub</translation>
+    </message>
+    <message>
+        <source> mm/min</source>
+        <translation> mm/min</translation>
+    </message>
+    <message>
+        <source>Laser power S value</source>
+        <translation>S-Wert Laserleistung</translation>
+    </message>
+    <message>
+        <source>Working mode (built)</source>
+        <translation>Arbeitsmodus (Aufbau)</translation>
+    </message>
+    <message>
+        <source>Assembly mode</source>
+        <translation>Montagemodus</translation>
+    </message>
+    <message>
+        <source>Drawing speed</source>
+        <translation>Zeichengeschwindigkeit</translation>
+    </message>
+    <message>
+        <source> mm/s</source>
+        <translation> mm/s</translation>
+    </message>
+    <message>
+        <source>Travel speed</source>
+        <translation>Verfahrgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Type II singularity margin</source>
+        <translation>Abstand zur Typ-II-Singularität</translation>
+    </message>
+    <message>
+        <source>Type I singularity margin</source>
+        <translation>Abstand zur Typ-I-Singularität</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>Baudrate</translation>
+    </message>
+    <message>
+        <source>The machine has homing switches ($H)</source>
+        <translation>Die Maschine hat Referenzschalter ($H)</translation>
+    </message>
+    <message>
+        <source>Home θ1</source>
+        <translation>Ausgangspose θ1</translation>
+    </message>
+    <message>
+        <source>Home θ2</source>
+        <translation>Ausgangspose θ2</translation>
+    </message>
+    <message>
+        <source>The profile is not applied until these problems are fixed.</source>
+        <translation>Das Profil wird erst übernommen, wenn diese Probleme behoben sind.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be used:
 %2</source>
-            <translation>%1 kann nicht verwendet werden:
+        <translation>%1 kann nicht verwendet werden:
 %2</translation>
-        </message>
-        <message>
-            <source>Fix the profile's problems before exporting it.</source>
-            <translation>Beheben Sie die Probleme des Profils, bevor Sie es exportieren.</translation>
-        </message>
-        <message>
-            <source>Import machine profile</source>
-            <translation>Maschinenprofil importieren</translation>
-        </message>
-        <message>
-            <source>Machine profiles (*.json)</source>
-            <translation>Maschinenprofile (*.json)</translation>
-        </message>
-        <message>
-            <source>Import failed</source>
-            <translation>Import fehlgeschlagen</translation>
-        </message>
-        <message>
-            <source>Export machine profile</source>
-            <translation>Maschinenprofil exportieren</translation>
-        </message>
-        <message>
-            <source>Export failed</source>
-            <translation>Export fehlgeschlagen</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::RunController</name>
-        <message>
-            <source>The connection was closed during the run. The progress is saved beside the job: reconnect and resume.</source>
-            <translation>Die Verbindung wurde während des Auftrags getrennt. Der Fortschritt ist neben dem Auftrag gespeichert: Verbinden Sie erneut und setzen Sie fort.</translation>
-        </message>
-        <message>
-            <source>Cannot start: connect the machine, wait until it is idle, and let the job plan first.</source>
-            <translation>Start nicht möglich: Verbinden Sie die Maschine, warten Sie, bis sie bereit ist, und lassen Sie den Auftrag zuerst planen.</translation>
-        </message>
-        <message>
-            <source>Cannot create the job folder %1.</source>
-            <translation>Der Auftragsordner %1 kann nicht angelegt werden.</translation>
-        </message>
-        <message>
-            <source>Nothing to resume: there is no saved progress beside %1.</source>
-            <translation>Nichts fortzusetzen: Neben %1 ist kein Fortschritt gespeichert.</translation>
-        </message>
-        <message>
-            <source>Resuming %1…</source>
-            <translation>%1 wird fortgesetzt…</translation>
-        </message>
-        <message>
-            <source>Running %1…</source>
-            <translation>%1 läuft…</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::RunPanel</name>
-        <message>
-            <source>Ready</source>
-            <translation>Bereit</translation>
-        </message>
-        <message>
-            <source>Running</source>
-            <translation>Läuft</translation>
-        </message>
-        <message>
-            <source>Holding…</source>
-            <translation>Hält an…</translation>
-        </message>
-        <message>
-            <source>On hold</source>
-            <translation>Angehalten</translation>
-        </message>
-        <message>
-            <source>Paused by a problem</source>
-            <translation>Wegen eines Problems pausiert</translation>
-        </message>
-        <message>
-            <source>Stopping…</source>
-            <translation>Wird gestoppt…</translation>
-        </message>
-        <message>
-            <source>Stopped</source>
-            <translation>Gestoppt</translation>
-        </message>
-        <message>
-            <source>Finished</source>
-            <translation>Fertig</translation>
-        </message>
-        <message>
-            <source>%1 h %2 min</source>
-            <translation>%1 h %2 min</translation>
-        </message>
-        <message>
-            <source>%1 min %2 s</source>
-            <translation>%1 min %2 s</translation>
-        </message>
-        <message>
-            <source>%1 s</source>
-            <translation>%1 s</translation>
-        </message>
-        <message>
-            <source>Start</source>
-            <translation>Starten</translation>
-        </message>
-        <message>
-            <source>Write the planned job as G-code and stream it to the machine</source>
-            <translation>Den geplanten Auftrag als G-Code schreiben und an die Maschine senden</translation>
-        </message>
-        <message>
-            <source>Hold</source>
-            <translation>Anhalten</translation>
-        </message>
-        <message>
-            <source>Feed hold: the machine decelerates and waits</source>
-            <translation>Vorschub halten: Die Maschine bremst ab und wartet</translation>
-        </message>
-        <message>
-            <source>Continue</source>
-            <translation>Weiter</translation>
-        </message>
-        <message>
-            <source>Continue after a hold</source>
-            <translation>Nach dem Anhalten weitermachen</translation>
-        </message>
-        <message>
-            <source>Stop</source>
-            <translation>Stoppen</translation>
-        </message>
-        <message>
-            <source>Stop the job: hold, reset and unlock; the progress is kept for a resume</source>
-            <translation>Auftrag stoppen: anhalten, zurücksetzen und entsperren; der Fortschritt bleibt zum Fortsetzen erhalten</translation>
-        </message>
-        <message>
-            <source>Resume</source>
-            <translation>Fortsetzen</translation>
-        </message>
-        <message>
-            <source>Continue the interrupted job from its last completed pen-down point, with a safe pen-up approach</source>
-            <translation>Den unterbrochenen Auftrag ab seinem letzten fertigen Zeichenpunkt fortsetzen, mit sicherer Anfahrt bei angehobenem Stift</translation>
-        </message>
-        <message>
-            <source>An interrupted run was saved (line %1 of %2 done): %3</source>
-            <translation>Ein unterbrochener Lauf wurde gespeichert (Zeile %1 von %2 erledigt): %3</translation>
-        </message>
-        <message>
-            <source>No job sent yet</source>
-            <translation>Noch kein Auftrag gesendet</translation>
-        </message>
-        <message>
-            <source>%1 of %2 lines executed</source>
-            <translation>%1 von %2 Zeilen ausgeführt</translation>
-        </message>
-        <message>
-            <source>%1 left</source>
-            <translation>noch %1</translation>
-        </message>
-        <message>
-            <source>Long job</source>
-            <translation>Langer Auftrag</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::SimulationPanel</name>
-        <message>
-            <source>Step back one move</source>
-            <translation>Eine Bewegung zurück</translation>
-        </message>
-        <message>
-            <source>Play / pause the simulation</source>
-            <translation>Simulation abspielen / anhalten</translation>
-        </message>
-        <message>
-            <source>Step forward one move</source>
-            <translation>Eine Bewegung vor</translation>
-        </message>
-        <message>
-            <source>Simulation speed</source>
-            <translation>Simulationsgeschwindigkeit</translation>
-        </message>
-        <message>
-            <source>x%1</source>
-            <translation>x%1</translation>
-        </message>
-        <message>
-            <source>No planned job to simulate.</source>
-            <translation>Kein geplanter Auftrag zum Simulieren.</translation>
-        </message>
-        <message>
-            <source>%1 of %2</source>
-            <translation>%1 von %2</translation>
-        </message>
-        <message>
-            <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Motor angles:&lt;/td&gt;&lt;td&gt;%1 deg, %2 deg&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen:&lt;/td&gt;&lt;td&gt;x %3 mm, y %4 mm (%5)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Transmission angle:&lt;/td&gt;&lt;td&gt;%6 deg at the pen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%7 / %8 deg at the elbows&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Type II margin:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%9 deg&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
-            <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Motorwinkel:&lt;/td&gt;&lt;td&gt;%1 Grad, %2 Grad&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Stift:&lt;/td&gt;&lt;td&gt;x %3 mm, y %4 mm (%5)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Übertragungswinkel:&lt;/td&gt;&lt;td&gt;%6 Grad am Stift&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%7 / %8 Grad an den Ellbogen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Abstand Typ II:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%9 Grad&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
-        </message>
-        <message>
-            <source>down</source>
-            <translation>unten</translation>
-        </message>
-        <message>
-            <source>up</source>
-            <translation>oben</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::SpeedLegend</name>
-        <message>
-            <source>0 mm/s</source>
-            <translation>0 mm/s</translation>
-        </message>
-        <message>
-            <source>%1 mm/s</source>
-            <translation>%1 mm/s</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::StudioDocument</name>
-        <message>
-            <source>Show layer</source>
-            <translation>Ebene zeigen</translation>
-        </message>
-        <message>
-            <source>Hide layer</source>
-            <translation>Ebene ausblenden</translation>
-        </message>
-        <message>
-            <source>Reorder layers</source>
-            <translation>Ebenen umordnen</translation>
-        </message>
-        <message>
-            <source>Change layer tool settings</source>
-            <translation>Werkzeugeinstellungen der Ebene ändern</translation>
-        </message>
-    </context>
-    <context>
-        <name>main</name>
-        <message>
-            <source>Plan and simulate drawings for five-bar robots.</source>
-            <translation>Zeichnungen für Fünfgelenk-Roboter planen und simulieren.</translation>
-        </message>
-        <message>
-            <source>Open the demo drawing on the default maker plotter.</source>
-            <translation>Die Demo-Zeichnung auf dem Standard-Maker-Plotter öffnen.</translation>
-        </message>
-        <message>
-            <source>User interface language (e.g. de, en); default: system.</source>
-            <translation>Sprache der Oberfläche (z. B. de, en); Vorgabe: System.</translation>
-        </message>
-        <message>
-            <source>Save a picture of the window once the job is planned, then quit.</source>
-            <translation>Ein Bild des Fensters speichern, sobald der Auftrag geplant ist, dann beenden.</translation>
-        </message>
-        <message>
-            <source>With --screenshot: show the workspace legend (legend) or a map (transmission, conditioning or resolution).</source>
-            <translation>Mit --screenshot: die Arbeitsraum-Legende (legend) oder eine Karte (transmission, conditioning oder resolution) zeigen.</translation>
-        </message>
-        <message>
-            <source>With --screenshot: simulation position as a fraction of the job (0 to 1).</source>
-            <translation>Mit --screenshot: Position der Simulation als Anteil des Auftrags (0 bis 1).</translation>
-        </message>
-        <message>
-            <source>Machine profile: a preset name or a profile JSON file (default: the last one used, else maker-plotter).</source>
-            <translation>Maschinenprofil: ein Vorgabename oder eine Profil-JSON-Datei (Standard: das zuletzt verwendete, sonst maker-plotter).</translation>
-        </message>
-        <message>
-            <source>Plan the drawing or project as the studio does, write the G-code and exit (no window).</source>
-            <translation>Die Zeichnung oder das Projekt wie im Studio planen, den G-Code schreiben und beenden (ohne Fenster).</translation>
-        </message>
-        <message>
-            <source>SVG drawing or project to open.</source>
-            <translation>SVG-Zeichnung oder Projekt zum Öffnen.</translation>
-        </message>
-        <message>
-            <source>Filled shapes: outline (default), hatch or none; with hatch: SPACING_MM and ANGLE_DEG after colons.</source>
-            <translation>Gefüllte Formen: outline (Standard), hatch oder none; bei hatch: SPACING_MM und ANGLE_DEG nach Doppelpunkten.</translation>
-        </message>
-        <message>
-            <source>Machine profile: a preset name or a profile JSON file.</source>
-            <translation>Maschinenprofil: ein Vorgabename oder eine Profil-JSON-Datei.</translation>
-        </message>
-        <message>
-            <source>SVG drawing to open.</source>
-            <translation>Zu öffnende SVG-Zeichnung.</translation>
-        </message>
-    </context>
-    <context>
-        <name>DesignPainter</name>
-        <message>
-            <source>Workspace, singularity-free region and type II curves</source>
-            <translation>Arbeitsraum, singularitätsfreier Bereich und Typ-II-Kurven</translation>
-        </message>
-        <message>
-            <source>a1 = %1, b1 = %2, a2 = %3, b2 = %4, w = %5 mm, working mode %6</source>
-            <translation>a1 = %1, b1 = %2, a2 = %3, b2 = %4, w = %5 mm, Arbeitsmodus %6</translation>
-        </message>
-        <message>
-            <source>Rectangle x %1 .. %2, y %3 .. %4 mm; worst condition number %5 (mean %6)</source>
-            <translation>Rechteck x %1 .. %2, y %3 .. %4 mm; schlechteste Konditionszahl %5 (Mittel %6)</translation>
-        </message>
-        <message>
-            <source>Type II margin %1 deg, type I margin %2 deg, footprint %3 cm²</source>
-            <translation>Abstand zu Typ II %1°, zu Typ I %2°, Platzbedarf %3 cm²</translation>
-        </message>
-        <message>
-            <source>Worst %1 um per step, worst motor speed %2 deg/s</source>
-            <translation>Schlechtestens %1 µm pro Schritt, höchste Motordrehzahl %2 °/s</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::DesignDialog</name>
-        <message>
-            <source>Design a machine</source>
-            <translation>Maschine entwerfen</translation>
-        </message>
-        <message>
-            <source>&amp;Design...</source>
-            <translation>&amp;Entwurf...</translation>
-        </message>
-        <message>
-            <source>Choose link lengths for a paper size</source>
-            <translation>Gliedlängen für ein Papierformat wählen</translation>
-        </message>
-        <message>
-            <source>Brief</source>
-            <translation>Vorgaben</translation>
-        </message>
-        <message>
-            <source>Custom</source>
-            <translation>Eigenes Format</translation>
-        </message>
-        <message>
-            <source>Landscape</source>
-            <translation>Querformat</translation>
-        </message>
-        <message>
-            <source>Portrait</source>
-            <translation>Hochformat</translation>
-        </message>
-        <message>
-            <source> mm</source>
-            <translation> mm</translation>
-        </message>
-        <message>
-            <source> deg</source>
-            <translation> °</translation>
-        </message>
-        <message>
-            <source>Symmetric arms</source>
-            <translation>Symmetrische Arme</translation>
-        </message>
-        <message>
-            <source>Any</source>
-            <translation>Beliebig</translation>
-        </message>
-        <message>
-            <source>Worst condition number</source>
-            <translation>Schlechteste Konditionszahl</translation>
-        </message>
-        <message>
-            <source>Worst resolution</source>
-            <translation>Schlechteste Auflösung</translation>
-        </message>
-        <message>
-            <source>Footprint</source>
-            <translation>Platzbedarf</translation>
-        </message>
-        <message>
-            <source>Weighted mix</source>
-            <translation>Gewichtete Mischung</translation>
-        </message>
-        <message>
-            <source>Condition</source>
-            <translation>Kondition</translation>
-        </message>
-        <message>
-            <source>Resolution</source>
-            <translation>Auflösung</translation>
-        </message>
-        <message>
-            <source>Weight of this normalised term in the weighted mix</source>
-            <translation>Gewicht dieses normierten Terms in der gewichteten Mischung</translation>
-        </message>
-        <message>
-            <source>Mix weights</source>
-            <translation>Gewichte der Mischung</translation>
-        </message>
-        <message>
-            <source>Paper</source>
-            <translation>Papier</translation>
-        </message>
-        <message>
-            <source>Orientation</source>
-            <translation>Ausrichtung</translation>
-        </message>
-        <message>
-            <source>Width</source>
-            <translation>Breite</translation>
-        </message>
-        <message>
-            <source>Height</source>
-            <translation>Höhe</translation>
-        </message>
-        <message>
-            <source>Margin</source>
-            <translation>Rand</translation>
-        </message>
-        <message>
-            <source>Shortest link</source>
-            <translation>Kürzestes Glied</translation>
-        </message>
-        <message>
-            <source>Longest link</source>
-            <translation>Längstes Glied</translation>
-        </message>
-        <message>
-            <source>Smallest motor spacing</source>
-            <translation>Kleinster Motorabstand</translation>
-        </message>
-        <message>
-            <source>Largest motor spacing</source>
-            <translation>Größter Motorabstand</translation>
-        </message>
-        <message>
-            <source>Arm clearance</source>
-            <translation>Armabstand</translation>
-        </message>
-        <message>
-            <source>Type II margin</source>
-            <translation>Abstand zu Typ-II-Singularitäten</translation>
-        </message>
-        <message>
-            <source>Working mode</source>
-            <translation>Arbeitsmodus</translation>
-        </message>
-        <message>
-            <source>Objective</source>
-            <translation>Ziel</translation>
-        </message>
-        <message>
-            <source>Search</source>
-            <translation>Suchen</translation>
-        </message>
-        <message>
-            <source>Cancel</source>
-            <translation>Abbrechen</translation>
-        </message>
-        <message>
-            <source>Set the brief and press Search.</source>
-            <translation>Vorgaben einstellen und Suchen drücken.</translation>
-        </message>
-        <message>
-            <source>Worst condition</source>
-            <translation>Schlechteste Kondition</translation>
-        </message>
-        <message>
-            <source>Footprint (cm²)</source>
-            <translation>Platzbedarf (cm²)</translation>
-        </message>
-        <message>
-            <source>µm/step</source>
-            <translation>µm/Schritt</translation>
-        </message>
-        <message>
-            <source>Mode</source>
-            <translation>Modus</translation>
-        </message>
-        <message>
-            <source>Workspace</source>
-            <translation>Arbeitsraum</translation>
-        </message>
-        <message>
-            <source>Conditioning</source>
-            <translation>Kondition</translation>
-        </message>
-        <message>
-            <source>Transmission angle</source>
-            <translation>Übertragungswinkel</translation>
-        </message>
-        <message>
-            <source>Resolution</source>
-            <translation>Auflösung</translation>
-        </message>
-        <message>
-            <source>Map on the canvas</source>
-            <translation>Karte auf der Zeichenfläche</translation>
-        </message>
-        <message>
-            <source>Use as profile</source>
-            <translation>Als Profil verwenden</translation>
-        </message>
-        <message>
-            <source>Export...</source>
-            <translation>Exportieren...</translation>
-        </message>
-        <message>
-            <source>Searching...</source>
-            <translation>Suche läuft...</translation>
-        </message>
-        <message>
-            <source>Search cancelled.</source>
-            <translation>Suche abgebrochen.</translation>
-        </message>
-        <message>
-            <source>No design meets the brief: %1</source>
-            <translation>Kein Entwurf erfüllt die Vorgaben: %1</translation>
-        </message>
-        <message>
-            <source>Best worst-case condition number %1; %2 designs on the trade-off, %3 evaluations in %4 s.</source>
-            <translation>Beste Konditionszahl im schlechtesten Fall %1; %2 Entwürfe im Zielkonflikt, %3 Auswertungen in %4 s.</translation>
-        </message>
-        <message>
-            <source>The document now uses this design (Edit &gt; Undo restores the previous profile).</source>
-            <translation>Das Dokument verwendet jetzt diesen Entwurf (Bearbeiten &gt; Rückgängig stellt das vorige Profil wieder her).</translation>
-        </message>
-        <message>
-            <source>No design is selected.</source>
-            <translation>Kein Entwurf ausgewählt.</translation>
-        </message>
-        <message>
-            <source>Export profile</source>
-            <translation>Profil exportieren</translation>
-        </message>
-        <message>
-            <source>Machine profiles (*.json)</source>
-            <translation>Maschinenprofile (*.json)</translation>
-        </message>
-        <message>
-            <source>Profile written to %1.</source>
-            <translation>Profil nach %1 geschrieben.</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::ParetoPlot</name>
-        <message>
-            <source>Footprint (cm²)</source>
-            <translation>Platzbedarf (cm²)</translation>
-        </message>
-        <message>
-            <source>Worst condition number</source>
-            <translation>Schlechteste Konditionszahl</translation>
-        </message>
-    </context>
+    </message>
+    <message>
+        <source>Fix the profile&apos;s problems before exporting it.</source>
+        <translation>Beheben Sie die Probleme des Profils, bevor Sie es exportieren.</translation>
+    </message>
+    <message>
+        <source>Import machine profile</source>
+        <translation>Maschinenprofil importieren</translation>
+    </message>
+    <message>
+        <source>Machine profiles (*.json)</source>
+        <translation>Maschinenprofile (*.json)</translation>
+    </message>
+    <message>
+        <source>Import failed</source>
+        <translation>Import fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Export machine profile</source>
+        <translation>Maschinenprofil exportieren</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Export fehlgeschlagen</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::RunController</name>
+    <message>
+        <source>The connection was closed during the run. The progress is saved beside the job: reconnect and resume.</source>
+        <translation>Die Verbindung wurde während des Auftrags getrennt. Der Fortschritt ist neben dem Auftrag gespeichert: Verbinden Sie erneut und setzen Sie fort.</translation>
+    </message>
+    <message>
+        <source>Cannot start: connect the machine, wait until it is idle, and let the job plan first.</source>
+        <translation>Start nicht möglich: Verbinden Sie die Maschine, warten Sie, bis sie bereit ist, und lassen Sie den Auftrag zuerst planen.</translation>
+    </message>
+    <message>
+        <source>Cannot create the job folder %1.</source>
+        <translation>Der Auftragsordner %1 kann nicht angelegt werden.</translation>
+    </message>
+    <message>
+        <source>Nothing to resume: there is no saved progress beside %1.</source>
+        <translation>Nichts fortzusetzen: Neben %1 ist kein Fortschritt gespeichert.</translation>
+    </message>
+    <message>
+        <source>line %1 of %2</source>
+        <translation>Zeile %1 von %2</translation>
+    </message>
+    <message>
+        <source>The run of &quot;%1&quot; was interrupted at %2: %3</source>
+        <translation>Der Lauf von „%1“ wurde bei %2 unterbrochen: %3</translation>
+    </message>
+    <message>
+        <source>press Resume</source>
+        <translation>drücken Sie Fortsetzen</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Fortsetzen</translation>
+    </message>
+    <message>
+        <source>The machine raised an alarm and the job stopped (the banner in the Machine panel says why). The progress is saved: clear the alarm (Reset, Unlock), check the pen stands where the studio shows it, then press Resume.</source>
+        <translation>Die Maschine hat einen Alarm ausgelöst und der Auftrag wurde angehalten (das Banner im Maschinen-Panel sagt, warum). Der Fortschritt ist gespeichert: Heben Sie den Alarm auf (Reset, Entsperren), prüfen Sie, dass der Stift dort steht, wo das Studio ihn zeigt, und drücken Sie dann Fortsetzen.</translation>
+    </message>
+    <message>
+        <source>Resuming &quot;%1&quot;…</source>
+        <translation>Setze „%1“ fort…</translation>
+    </message>
+    <message>
+        <source>Running &quot;%1&quot;…</source>
+        <translation>„%1“ läuft…</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is drawn.</source>
+        <translation>„%1“ ist gezeichnet.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::RunPanel</name>
+    <message>
+        <source>Ready</source>
+        <translation>Bereit</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Läuft</translation>
+    </message>
+    <message>
+        <source>Holding…</source>
+        <translation>Hält an…</translation>
+    </message>
+    <message>
+        <source>On hold</source>
+        <translation>Angehalten</translation>
+    </message>
+    <message>
+        <source>Paused by a problem</source>
+        <translation>Wegen eines Problems pausiert</translation>
+    </message>
+    <message>
+        <source>Stopping…</source>
+        <translation>Wird gestoppt…</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Gestoppt</translation>
+    </message>
+    <message>
+        <source>Finished</source>
+        <translation>Fertig</translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation>%1 h %2 min</translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Starten</translation>
+    </message>
+    <message>
+        <source>Write the planned job as G-code and stream it to the machine</source>
+        <translation>Den geplanten Auftrag als G-Code schreiben und an die Maschine senden</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>Anhalten</translation>
+    </message>
+    <message>
+        <source>Feed hold: the machine decelerates and waits</source>
+        <translation>Vorschub halten: Die Maschine bremst ab und wartet</translation>
+    </message>
+    <message>
+        <source>Continue</source>
+        <translation>Weiter</translation>
+    </message>
+    <message>
+        <source>Continue after a hold</source>
+        <translation>Nach dem Anhalten weitermachen</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stoppen</translation>
+    </message>
+    <message>
+        <source>Stop the job: hold, reset and unlock; the progress is kept for a resume</source>
+        <translation>Auftrag stoppen: anhalten, zurücksetzen und entsperren; der Fortschritt bleibt zum Fortsetzen erhalten</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Fortsetzen</translation>
+    </message>
+    <message>
+        <source>Continue the interrupted job from its last completed pen-down point, with a safe pen-up approach</source>
+        <translation>Den unterbrochenen Auftrag ab seinem letzten fertigen Zeichenpunkt fortsetzen, mit sicherer Anfahrt bei angehobenem Stift</translation>
+    </message>
+    <message>
+        <source>No job sent yet</source>
+        <translation>Noch kein Auftrag gesendet</translation>
+    </message>
+    <message>
+        <source>%1 left</source>
+        <translation>noch %1</translation>
+    </message>
+    <message>
+        <source>Long job</source>
+        <translation>Langer Auftrag</translation>
+    </message>
+    <message>
+        <source>Start from the beginning?</source>
+        <translation>Von vorn beginnen?</translation>
+    </message>
+    <message>
+        <source>%1
+
+Start draws &quot;%2&quot; from the beginning and discards this saved progress. Resume continues the interrupted run instead.</source>
+        <translation>%1
+
+Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. Fortsetzen setzt stattdessen den unterbrochenen Lauf fort.</translation>
+    </message>
+    <message>
+        <source>Discard and start over</source>
+        <translation>Verwerfen und neu beginnen</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Reading the board&apos;s settings to compare them with the profile: press Start again in a moment.</source>
+        <translation>Die Einstellungen der Steuerung werden zum Vergleich mit dem Profil gelesen: Drücken Sie gleich noch einmal Start.</translation>
+    </message>
+    <message>
+        <source>The board&apos;s settings differ</source>
+        <translation>Die Einstellungen der Steuerung weichen ab</translation>
+    </message>
+    <message>
+        <source>Write the profile&apos;s settings...</source>
+        <translation>Einstellungen des Profils schreiben...</translation>
+    </message>
+    <message>
+        <source>Start anyway</source>
+        <translation>Trotzdem starten</translation>
+    </message>
+    <message>
+        <source>%1 % (%2)</source>
+        <translation>%1 % (%2)</translation>
+    </message>
+    <message>
+        <source>%1 left (on hold)</source>
+        <translation>noch %1 (angehalten)</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::SettingsAdvice</name>
+    <message>
+        <source>soft limits are on, but this machine has no homing switches: the board measures its travel from where it was switched on, not from the reference pose, and stops the job with ALARM:2 when a move leaves that range.</source>
+        <translation>Software-Endlagen sind an, aber diese Maschine hat keine Referenzschalter: Die Steuerung misst ihren Verfahrweg ab der Einschaltstellung, nicht ab der Referenzstellung, und stoppt den Auftrag mit ALARM:2, sobald eine Bewegung diesen Bereich verlässt.</translation>
+    </message>
+    <message>
+        <source>soft limits are off although the profile expects them.</source>
+        <translation>Software-Endlagen sind aus, obwohl das Profil sie erwartet.</translation>
+    </message>
+    <message>
+        <source>hard limits are on: without limit switches wired, noise on the pins stops the machine with ALARM:1.</source>
+        <translation>Hardware-Endlagen sind an: Ohne angeschlossene Endschalter stoppen Störungen an den Pins die Maschine mit ALARM:1.</translation>
+    </message>
+    <message>
+        <source>hard limits are off although the profile expects them.</source>
+        <translation>Hardware-Endlagen sind aus, obwohl das Profil sie erwartet.</translation>
+    </message>
+    <message>
+        <source>the homing cycle is on: the board starts locked and wants $H, which needs homing switches.</source>
+        <translation>Der Referenzlauf ist an: Die Steuerung startet gesperrt und verlangt $H, wofür Referenzschalter nötig sind.</translation>
+    </message>
+    <message>
+        <source>the homing cycle is off although the profile has switches.</source>
+        <translation>Der Referenzlauf ist aus, obwohl das Profil Schalter hat.</translation>
+    </message>
+    <message>
+        <source>steps per degree differ: every motor angle would be wrong by the ratio, so the arms would leave the checked, safe poses.</source>
+        <translation>Die Schritte pro Grad weichen ab: Jeder Motorwinkel wäre um dieses Verhältnis falsch, die Arme verließen also die geprüften, sicheren Stellungen.</translation>
+    </message>
+    <message>
+        <source>the board&apos;s maximum rate is lower: the job runs slower than planned and the time estimate is off.</source>
+        <translation>Die Höchstgeschwindigkeit der Steuerung ist niedriger: Der Auftrag läuft langsamer als geplant und die Zeitschätzung stimmt nicht.</translation>
+    </message>
+    <message>
+        <source>the board&apos;s maximum rate is higher than the profile allows: the motors may lose steps.</source>
+        <translation>Die Höchstgeschwindigkeit der Steuerung ist höher, als das Profil erlaubt: Die Motoren können Schritte verlieren.</translation>
+    </message>
+    <message>
+        <source>the board accelerates more gently: the job takes longer than planned.</source>
+        <translation>Die Steuerung beschleunigt sanfter: Der Auftrag dauert länger als geplant.</translation>
+    </message>
+    <message>
+        <source>the board accelerates harder than the profile allows: the motors may lose steps.</source>
+        <translation>Die Steuerung beschleunigt stärker, als das Profil erlaubt: Die Motoren können Schritte verlieren.</translation>
+    </message>
+    <message>
+        <source>the motor&apos;s travel for soft limits differs: with soft limits on, a move beyond it stops the job with ALARM:2.</source>
+        <translation>Der Verfahrweg des Motors für die Software-Endlagen weicht ab: Mit Software-Endlagen stoppt eine Bewegung darüber hinaus den Auftrag mit ALARM:2.</translation>
+    </message>
+    <message>
+        <source>the spindle (pen servo / laser) range differs: the pen may not lift or lower as planned.</source>
+        <translation>Der Spindelbereich (Stiftservo / Laser) weicht ab: Der Stift hebt oder senkt sich womöglich nicht wie geplant.</translation>
+    </message>
+    <message>
+        <source>the junction deviation differs: corners run at other speeds than planned.</source>
+        <translation>Die Eckenabweichung weicht ab: Ecken werden mit anderen Geschwindigkeiten als geplant gefahren.</translation>
+    </message>
+    <message>
+        <source>differs from what the profile expects.</source>
+        <translation>weicht von dem ab, was das Profil erwartet.</translation>
+    </message>
+    <message>
+        <source>not reported</source>
+        <translation>nicht gemeldet</translation>
+    </message>
+    <message>
+        <source>$%1 is %2 on the board, the profile wants %3: %4</source>
+        <translation>$%1 ist auf der Steuerung %2, das Profil will %3: %4</translation>
+    </message>
+    <message numerus="yes">
+        <source>The board&apos;s settings differ from the profile in %n place(s): %1.</source>
+        <translation>
+                <numerusform>Die Einstellungen der Steuerung weichen an %n Stelle vom Profil ab: %1.</numerusform>
+                <numerusform>Die Einstellungen der Steuerung weichen an %n Stellen vom Profil ab: %1.</numerusform>
+            </translation>
+    </message>
+    <message>
+        <source>A job would stop or move wrongly with them.</source>
+        <translation>Ein Auftrag würde damit stoppen oder falsch fahren.</translation>
+    </message>
+    <message>
+        <source>The board&apos;s GRBL settings differ from the machine profile, and the job would not run as planned:</source>
+        <translation>Die GRBL-Einstellungen der Steuerung weichen vom Maschinenprofil ab, und der Auftrag liefe nicht wie geplant:</translation>
+    </message>
+    <message>
+        <source>The board&apos;s GRBL settings differ from the machine profile:</source>
+        <translation>Die GRBL-Einstellungen der Steuerung weichen vom Maschinenprofil ab:</translation>
+    </message>
+    <message>
+        <source>Write the profile&apos;s settings to the board (its current ones are saved to a backup file first), or start anyway.</source>
+        <translation>Schreiben Sie die Einstellungen des Profils auf die Steuerung (die aktuellen werden vorher in einer Sicherungsdatei gespeichert), oder starten Sie trotzdem.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::SimulationPanel</name>
+    <message>
+        <source>Step back one move</source>
+        <translation>Eine Bewegung zurück</translation>
+    </message>
+    <message>
+        <source>Play / pause the simulation</source>
+        <translation>Simulation abspielen / anhalten</translation>
+    </message>
+    <message>
+        <source>Step forward one move</source>
+        <translation>Eine Bewegung vor</translation>
+    </message>
+    <message>
+        <source>Simulation speed</source>
+        <translation>Simulationsgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>x%1</source>
+        <translation>x%1</translation>
+    </message>
+    <message>
+        <source>No planned job to simulate.</source>
+        <translation>Kein geplanter Auftrag zum Simulieren.</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 von %2</translation>
+    </message>
+    <message>
+        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Motor angles:&lt;/td&gt;&lt;td&gt;%1 deg, %2 deg&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen:&lt;/td&gt;&lt;td&gt;x %3 mm, y %4 mm (%5)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Transmission angle:&lt;/td&gt;&lt;td&gt;%6 deg at the pen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%7 / %8 deg at the elbows&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Type II margin:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%9 deg&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Motorwinkel:&lt;/td&gt;&lt;td&gt;%1 Grad, %2 Grad&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Stift:&lt;/td&gt;&lt;td&gt;x %3 mm, y %4 mm (%5)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Übertragungswinkel:&lt;/td&gt;&lt;td&gt;%6 Grad am Stift&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%7 / %8 Grad an den Ellbogen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Abstand Typ II:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%9 Grad&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>unten</translation>
+    </message>
+    <message>
+        <source>up</source>
+        <translation>oben</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::SpeedLegend</name>
+    <message>
+        <source>0 mm/s</source>
+        <translation>0 mm/s</translation>
+    </message>
+    <message>
+        <source>%1 mm/s</source>
+        <translation>%1 mm/s</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::StudioDocument</name>
+    <message>
+        <source>Show layer</source>
+        <translation>Ebene zeigen</translation>
+    </message>
+    <message>
+        <source>Hide layer</source>
+        <translation>Ebene ausblenden</translation>
+    </message>
+    <message>
+        <source>Reorder layers</source>
+        <translation>Ebenen umordnen</translation>
+    </message>
+    <message>
+        <source>Change layer tool settings</source>
+        <translation>Werkzeugeinstellungen der Ebene ändern</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Plan and simulate drawings for five-bar robots.</source>
+        <translation>Zeichnungen für Fünfgelenk-Roboter planen und simulieren.</translation>
+    </message>
+    <message>
+        <source>Open the demo drawing on the default maker plotter.</source>
+        <translation>Die Demo-Zeichnung auf dem Standard-Maker-Plotter öffnen.</translation>
+    </message>
+    <message>
+        <source>User interface language (e.g. de, en); default: system.</source>
+        <translation>Sprache der Oberfläche (z. B. de, en); Vorgabe: System.</translation>
+    </message>
+    <message>
+        <source>Save a picture of the window once the job is planned, then quit.</source>
+        <translation>Ein Bild des Fensters speichern, sobald der Auftrag geplant ist, dann beenden.</translation>
+    </message>
+    <message>
+        <source>With --screenshot: show the workspace legend (legend) or a map (transmission, conditioning or resolution).</source>
+        <translation>Mit --screenshot: die Arbeitsraum-Legende (legend) oder eine Karte (transmission, conditioning oder resolution) zeigen.</translation>
+    </message>
+    <message>
+        <source>With --screenshot: simulation position as a fraction of the job (0 to 1).</source>
+        <translation>Mit --screenshot: Position der Simulation als Anteil des Auftrags (0 bis 1).</translation>
+    </message>
+    <message>
+        <source>Machine profile: a preset name or a profile JSON file (default: the last one used, else maker-plotter).</source>
+        <translation>Maschinenprofil: ein Vorgabename oder eine Profil-JSON-Datei (Standard: das zuletzt verwendete, sonst maker-plotter).</translation>
+    </message>
+    <message>
+        <source>Plan the drawing or project as the studio does, write the G-code and exit (no window).</source>
+        <translation>Die Zeichnung oder das Projekt wie im Studio planen, den G-Code schreiben und beenden (ohne Fenster).</translation>
+    </message>
+    <message>
+        <source>SVG drawing or project to open.</source>
+        <translation>SVG-Zeichnung oder Projekt zum Öffnen.</translation>
+    </message>
+    <message>
+        <source>Filled shapes: outline (default), hatch or none; with hatch: SPACING_MM and ANGLE_DEG after colons.</source>
+        <translation>Gefüllte Formen: outline (Standard), hatch oder none; bei hatch: SPACING_MM und ANGLE_DEG nach Doppelpunkten.</translation>
+    </message>
+</context>
 </TS>

@@ -67,7 +67,8 @@ std::set<QString> runtimeContexts() {
         &ParetoPlot::staticMetaObject})
     names.insert(QString::fromLatin1(m->className()));
   for (const char* c : {"QObject", "main", "DocumentCommands", "JobPipeline", "MapPainter",
-                        "WorkspaceLegend", "ImportWarningsPanel", "DesignPainter"})
+                        "WorkspaceLegend", "ImportWarningsPanel", "DesignPainter",
+                        "fivebar::widgets::MachineDialogs", "fivebar::widgets::SettingsAdvice"})
     names.insert(QString::fromLatin1(c));
   return names;
 }
