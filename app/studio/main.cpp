@@ -162,7 +162,7 @@ int main(int argc, char** argv) {
       window.importer().openData(demoFile.readAll(), QStringLiteral("fivebar-demo.svg"));
     }
     // --demo also connects the built-in simulated machine.
-    if (auto* machineUi = window.findChild<fivebar::widgets::MachineUi*>()) machineUi->connectSimulated();
+    window.machine().connectSimulated();
   }
   if (parser.isSet(screenshot)) {
     window.importer().setInteractive(false);

@@ -67,7 +67,7 @@ MainWindow::MainWindow(const MachineProfile& profile, QWidget* parent) : QMainWi
   createDocks();
   createMenus();
   // The machine side (connection, jog, run, console, profile editor): widgets/machine/machine_ui.hpp.
-  auto* machineUi = new MachineUi(*doc_, *preview_, *canvas_, *machineLayer_, this);
+  auto* machineUi = machineUi_ = new MachineUi(*doc_, *preview_, *canvas_, *machineLayer_, this);
   machineUi->addPanels([this](QWidget* panel, const QString& title, const QString& name,
                               Qt::DockWidgetArea area) { return addMachinePanel(panel, title, name, area); });
   machineMenu_->addSeparator();
@@ -332,7 +332,8 @@ void MainWindow::restoreLayout() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-  if (!files_->maybeSave()) {
+  // A running job first: quitting would cut the machine's stream mid-drawing.
+  if (!machineUi_->confirmClose() || !files_->maybeSave()) {
     event->ignore();
     return;
   }

@@ -19,6 +19,7 @@ class CanvasView;
 class ImportController;
 class JobLayer;
 class MachineLayer;
+class MachineUi;
 class PlacementTool;
 class PreviewController;
 class SimulationController;
@@ -48,6 +49,8 @@ class MainWindow : public QMainWindow {
   widgets::JobLayer& jobLayer() { return *jobLayer_; }
   widgets::WorkspaceLayer& workspaceLayer() { return *workspaceLayer_; }
   FileActions& files() { return *files_; }
+  // The machine side (session, run, panels).
+  widgets::MachineUi& machine() { return *machineUi_; }
 
   // The machine side's place in the window: the panel goes into a dock (restored with the
   // others), its toggle into the Machine menu.
@@ -84,6 +87,7 @@ class MainWindow : public QMainWindow {
   widgets::MachineLayer* machineLayer_ = nullptr;
   widgets::PlacementTool* placementTool_ = nullptr;
   FileActions* files_ = nullptr;
+  widgets::MachineUi* machineUi_ = nullptr;
   std::unique_ptr<widgets::WorkspaceLegendLayer> legendLayer_;
   QDockWidget* leftTabs_ = nullptr;   // tab group machine panels join on each side
   QDockWidget* rightTabs_ = nullptr;

@@ -5,6 +5,7 @@
 
 #include <QFile>
 #include <QLabel>
+#include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QTemporaryDir>
@@ -75,6 +76,12 @@ TEST(RunPanel, RunsThePlannedJobToCompletionAndColoursWhatIsDone) {
   widgets::RunPanel panel(rig.run, rig.session);
   widgets::RunLayer layer(rig.run, rig.session);
   ASSERT_TRUE(panel.startButton()->isEnabled());
+  // Connected before Start: a fast run may end while the test waits for its first strokes.
+  bool finished = false, ok = false;
+  QObject::connect(&rig.run, &widgets::RunController::finished, [&](bool success, const QString&) {
+    finished = true;
+    ok = success;
+  });
   panel.startButton()->click();
   ASSERT_TRUE(rig.run.running()) << rig.run.lastMessage().toStdString();
   EXPECT_TRUE(rig.session.jobActive());
@@ -86,11 +93,6 @@ TEST(RunPanel, RunsThePlannedJobToCompletionAndColoursWhatIsDone) {
   ASSERT_GT(layer.totalSegments(), 0u);
   // Half-way the canvas shows part of the job as done, not all of it.
   ASSERT_TRUE(waitUntil([&] { return layer.doneSegments() > 0; }, 30000));
-  bool finished = false, ok = false;
-  QObject::connect(&rig.run, &widgets::RunController::finished, [&](bool success, const QString&) {
-    finished = true;
-    ok = success;
-  });
   ASSERT_TRUE(waitUntil([&] { return finished; }, 45000));
   EXPECT_TRUE(ok) << rig.run.lastMessage().toStdString();
   EXPECT_EQ(rig.run.state(), job::RunState::Finished);
@@ -144,6 +146,115 @@ TEST(RunPanel, ResumesAfterTheLinkDropsAlsoAfterARestart) {
   const JointAngles q = *rig.session.motorAngles();
   EXPECT_NEAR(degFromRad(q.theta1), last.endDeg[0], 1.0 / rig.doc.profile().motors.stepsPerDeg1);
   EXPECT_NEAR(degFromRad(q.theta2), last.endDeg[1], 1.0 / rig.doc.profile().motors.stepsPerDeg2);
+}
+
+
+TEST(RunPanel, StartExplainsTheBoardsSettingsMismatchFirst) {
+  RunRig rig;
+  ASSERT_TRUE(rig.planned()) << rig.preview.result().message.toStdString();
+  ASSERT_TRUE(rig.connect(25.0));
+  ASSERT_TRUE(rig.waitIdle());
+  ASSERT_TRUE(waitUntil([&] { return rig.session.boardSettingsKnown(); }, 5000));
+  EXPECT_TRUE(rig.session.settingDifferences().empty());
+  // Someone lowered motor 1's steps per degree on the board: the arms would turn wrongly.
+  ASSERT_TRUE(rig.session.sendLine(QStringLiteral("$100=10")));
+  ASSERT_TRUE(rig.waitIdle());
+  rig.session.readBoardSettings();
+  ASSERT_TRUE(waitUntil([&] { return !rig.session.settingDifferences().empty(); }, 5000));
+  widgets::RunPanel panel(rig.run, rig.session);
+  bool opened = false;
+  panel.setOpenSettings([&] { opened = true; });
+  QString text;
+  test::answerBox(QStringLiteral("settingsMismatch"), QString(), QMessageBox::Cancel, &text);
+  panel.startButton()->click();
+  EXPECT_TRUE(text.contains(QStringLiteral("$100"))) << text.toStdString();
+  EXPECT_TRUE(text.contains(QStringLiteral("steps per degree"))) << text.toStdString();
+  EXPECT_FALSE(rig.run.running());
+  // "Write the profile's settings..." opens the settings dialog instead of starting.
+  test::answerBox(QStringLiteral("settingsMismatch"), QStringLiteral("writeSettings"));
+  panel.startButton()->click();
+  EXPECT_TRUE(opened);
+  EXPECT_FALSE(rig.run.running());
+  // Put it back: Start runs without a question.
+  ASSERT_TRUE(rig.session.sendLine(QStringLiteral("$100=%1").arg(rig.doc.profile().motors.stepsPerDeg1, 0, 'f', 4)));
+  ASSERT_TRUE(rig.waitIdle());
+  rig.session.readBoardSettings();
+  ASSERT_TRUE(waitUntil([&] { return rig.session.boardSettingsKnown() && !rig.session.readingBoardSettings() &&
+                                     rig.session.settingDifferences().empty(); }, 5000));
+  panel.startButton()->click();
+  EXPECT_TRUE(rig.run.running()) << rig.run.lastMessage().toStdString();
+  rig.run.stop();
+  ASSERT_TRUE(waitUntil([&] { return !rig.run.running(); }, 20000));
+}
+
+TEST(RunPanel, EtaFollowsThePlanAndStandsStillOnHold) {
+  RunRig rig;
+  ASSERT_TRUE(rig.planned()) << rig.preview.result().message.toStdString();
+  ASSERT_TRUE(rig.connect(2.0));
+  ASSERT_TRUE(rig.waitIdle());
+  widgets::RunPanel panel(rig.run, rig.session);
+  ASSERT_TRUE(rig.run.start());
+  const double total = rig.run.etaS();
+  ASSERT_GT(total, 0.0);
+  // The job's planned time and the G-code time line agree within a few percent.
+  const double planned = rig.preview.result().job->summary.estimatedTimeS;
+  EXPECT_NEAR(total, planned, 0.1 * planned + 1.0);
+  ASSERT_TRUE(waitUntil([&] { return rig.run.snapshot().lastCompleted && *rig.run.snapshot().lastCompleted > 20; }, 30000));
+  rig.run.hold();
+  ASSERT_TRUE(waitUntil([&] { return rig.run.state() == job::RunState::Held; }, 10000));
+  waitUntil([] { return false; }, 2 * widgets::RunController::kRefreshMs);  // the held snapshot
+  const double held = rig.run.etaS();
+  EXPECT_LT(held, total);
+  EXPECT_TRUE(panel.etaLabel()->text().contains(QStringLiteral("hold"))) << panel.etaLabel()->text().toStdString();
+  const QString label = panel.etaLabel()->text();
+  waitUntil([] { return false; }, 1200);
+  EXPECT_EQ(rig.run.etaS(), held);
+  EXPECT_EQ(panel.etaLabel()->text(), label);
+  // One counter: the progress bar counts the executed job lines.
+  EXPECT_TRUE(panel.progressBar()->text().contains(rig.run.progressText())) << panel.progressBar()->text().toStdString();
+  rig.run.continueRun();
+  ASSERT_TRUE(waitUntil([&] { return rig.run.etaS() < held; }, 20000));
+  rig.run.stop();
+  ASSERT_TRUE(waitUntil([&] { return !rig.run.running(); }, 20000));
+}
+
+TEST(RunPanel, AlarmThenUnlockThenResumeFinishesAndNewJobsClearTheOldOverlay) {
+  RunRig rig;
+  ASSERT_TRUE(rig.planned()) << rig.preview.result().message.toStdString();
+  // ALARM:1 strikes mid-job (after 50 lines the board received).
+  ASSERT_TRUE(rig.connect(25.0, sim::Fault{sim::FaultKind::AlarmAfter, 50}));
+  ASSERT_TRUE(rig.setReference());
+  ASSERT_TRUE(rig.waitIdle());
+  widgets::RunPanel panel(rig.run, rig.session);
+  widgets::RunLayer layer(rig.run, rig.session);
+  ASSERT_TRUE(rig.run.start());
+  ASSERT_TRUE(waitUntil([&] { return !rig.run.running(); }, 45000));
+  EXPECT_NE(rig.run.state(), job::RunState::Finished);
+  // The alarm's explanation is in the banner; the run panel says what to do, in GUI words.
+  EXPECT_FALSE(rig.run.lastMessage().contains(QStringLiteral("--resume"))) << rig.run.lastMessage().toStdString();
+  EXPECT_TRUE(rig.run.lastMessage().contains(QStringLiteral("Resume"))) << rig.run.lastMessage().toStdString();
+  ASSERT_TRUE(rig.run.savedProgress().has_value());
+  EXPECT_TRUE(panel.resumeLabel()->text().contains(QStringLiteral("square"))) << panel.resumeLabel()->text().toStdString();
+  // Reset (the board demands it after ALARM:1), unlock, resume: the job finishes.
+  rig.session.softReset();
+  ASSERT_TRUE(waitUntil([&] { return !rig.session.problem().needsReset; }, 5000));
+  rig.session.unlock();
+  ASSERT_TRUE(waitUntil([&] { return rig.session.state() == grbl::MachineState::Idle; }, 5000));
+  ASSERT_TRUE(rig.setReference());  // the simulated board lost its position in the reset
+  ASSERT_TRUE(rig.waitIdle());
+  ASSERT_TRUE(waitUntil([&] { return panel.resumeButton()->isEnabled(); }, 5000));
+  panel.resumeButton()->click();
+  ASSERT_TRUE(rig.run.running()) << rig.run.lastMessage().toStdString();
+  ASSERT_TRUE(waitUntil([&] { return !rig.run.running(); }, 45000));
+  EXPECT_EQ(rig.run.state(), job::RunState::Finished) << rig.run.lastMessage().toStdString();
+  EXPECT_EQ(layer.doneSegments(), layer.totalSegments());
+  // A new placement: the finished run's overlay and status go.
+  Placement moved = rig.doc.placement();
+  moved.centerMm += Vec2(5.0, 0.0);
+  rig.doc.setPlacement(moved);
+  EXPECT_EQ(rig.run.job(), nullptr);
+  EXPECT_EQ(layer.doneSegments(), 0u);
+  EXPECT_TRUE(rig.run.lastMessage().isEmpty());
 }
 
 }  // namespace

@@ -4,7 +4,17 @@
 //   machine-run.png      the demo job running, the executed part coloured on the canvas
 //   machine-goto.png     a go-to previewed on the canvas, waiting for confirmation
 //   machine-alarm.png    an alarm banner with its way out, and the profile editor's inline message
+//   machine-reference-question.png  "Set reference pose" asks first
+//   machine-settings-warning.png    the board's $ settings differ from the profile (machine panel)
+//   machine-settings-mismatch.png   ... and Start explains it before the machine moves
+#include <QAbstractButton>
 #include <QApplication>
+#include <QMessageBox>
+#include <QTimer>
+#include "drivers/job_progress.hpp"
+#include "widgets/machine/machine_dialogs.hpp"
+#include "widgets/machine/run_panel.hpp"
+#include <QPushButton>
 #include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
@@ -44,6 +54,23 @@ bool grab(QWidget& window, const QString& path) {
   const bool ok = window.grab().save(path);
   std::printf("%s %s\n", ok ? "wrote" : "FAILED", qPrintable(path));
   return ok;
+}
+
+// Grabs the next modal message box with this object name into path, then cancels it.
+void grabNextBox(const QString& name, const QString& path, int tries = 300) {
+  QTimer::singleShot(20, [=] {
+    auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+    if (box == nullptr || box->objectName() != name) {
+      if (tries > 0) grabNextBox(name, path, tries - 1);
+      return;
+    }
+    QTimer::singleShot(300, [box, path] {
+      const bool ok = box->grab().save(path);
+      std::printf("%s %s\n", ok ? "wrote" : "FAILED", qPrintable(path));
+      if (QAbstractButton* cancel = box->button(QMessageBox::Cancel)) cancel->click();
+      else box->reject();
+    });
+  });
 }
 
 void raiseDock(QWidget& window, const char* name) {
@@ -102,6 +129,23 @@ int main(int argc, char** argv) {
   waitUntil([&] { return !machine->run().running(); }, 30000);
   waitUntil([&] { return session.state() == grbl::MachineState::Idle && session.jogSettled(); }, 10000);
 
+  // 2a. The reference pose is asked for; the board's settings differ from the profile.
+  grabNextBox(QStringLiteral("referencePoseQuestion"), outDir + QStringLiteral("/machine-reference-question.png"));
+  widgets::requestReferencePose(&window, session);
+  QFile::remove(QString::fromStdString(job::progressPathFor(machine->run().jobPath().toStdString())));
+  session.sendLine(QStringLiteral("$100=10"));
+  waitUntil([&] { return session.state() == grbl::MachineState::Idle; }, 5000);
+  settle(300);
+  session.readBoardSettings();
+  waitUntil([&] { return !session.settingDifferences().empty(); }, 5000);
+  raiseDock(window, "dockMachine");
+  if (!grab(window, outDir + QStringLiteral("/machine-settings-warning.png"))) status = 1;
+  raiseDock(window, "dockRun");
+  grabNextBox(QStringLiteral("settingsMismatch"), outDir + QStringLiteral("/machine-settings-mismatch.png"));
+  machine->runPanel()->startButton()->click();
+  session.sendLine(QStringLiteral("$100=%1").arg(session.profile().motors.stepsPerDeg1, 0, 'f', 4));
+  waitUntil([&] { return session.state() == grbl::MachineState::Idle; }, 5000);
+
   // 2. A go-to previewed on the canvas.
   raiseDock(window, "dockJog");
   widgets::JogPanel* jog = machine->jogPanel();
@@ -123,5 +167,7 @@ int main(int argc, char** argv) {
     if (auto* a1 = editor->numberField("geometry.a1")) a1->setValue(0.0);
   }
   if (!grab(window, outDir + QStringLiteral("/machine-alarm.png"))) status = 1;
+  // 4. Quitting while a job runs is asked about.
+  session.disconnectMachine();
   return status;
 }

@@ -32,7 +32,11 @@ TEST(MachinePanel, ConnectsTheSimulatedMachineAndShowsItsStatus) {
   widgets::MachinePanel panel(rig.session);
   EXPECT_EQ(panel.portBox()->currentIndex(), 0);  // the simulated machine comes first
   panel.connectButton()->click();
-  ASSERT_TRUE(rig.session.isConnected());
+  // "Connected" only once the board answered with a status report.
+  EXPECT_TRUE(rig.session.isConnecting());
+  EXPECT_TRUE(panel.linkLabel()->text().contains(QStringLiteral("waiting")));
+  ASSERT_TRUE(waitUntil([&] { return rig.session.isConnected(); }, 5000));
+  EXPECT_TRUE(panel.linkLabel()->text().startsWith(QStringLiteral("Connected")));
   EXPECT_FALSE(panel.connectButton()->isEnabled());
   EXPECT_TRUE(panel.disconnectButton()->isEnabled());
   ASSERT_TRUE(rig.waitIdle());
@@ -53,8 +57,10 @@ TEST(MachinePanel, ConnectsTheSimulatedMachineAndShowsItsStatus) {
 
 TEST(MachineBanner, AlarmShowsTheExplanationAndResetThenUnlockClearsIt) {
   MachineRig rig;
-  // A hard-limit alarm (ALARM:1) fires on the first line the board receives.
-  ASSERT_TRUE(rig.connect(4.0, sim::Fault{sim::FaultKind::AlarmAfter, 0}));
+  // The alarm (ALARM:1) fires on the board's third line: the first two are the $I and $$ the
+  // studio sends on connect to compare the settings with the profile.
+  ASSERT_TRUE(rig.connect(4.0, sim::Fault{sim::FaultKind::AlarmAfter, 2}));
+  ASSERT_TRUE(waitUntil([&] { return rig.session.boardSettingsKnown(); }, 5000));
   widgets::MachineBanner banner(rig.session);
   EXPECT_TRUE(banner.isHidden());
   ASSERT_TRUE(rig.session.sendLine(QStringLiteral("G4P0.01")));

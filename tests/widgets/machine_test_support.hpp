@@ -62,3 +62,32 @@ struct MachineRig {
 };
 
 }  // namespace fivebar::test
+
+#include <QAbstractButton>
+#include <QApplication>
+#include <QMessageBox>
+#include <QTimer>
+
+namespace fivebar::test {
+
+// Answers the next modal message box with this object name by clicking the button with
+// buttonName (object name), or the standard button `standard` when buttonName is empty.
+// *seenText receives the box's text.
+inline void answerBox(const QString& boxName, const QString& buttonName,
+                      QMessageBox::StandardButton standard = QMessageBox::Cancel,
+                      QString* seenText = nullptr, int tries = 400) {
+  QTimer::singleShot(10, [=] {
+    auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+    if (box == nullptr || box->objectName() != boxName) {
+      if (tries > 0) answerBox(boxName, buttonName, standard, seenText, tries - 1);
+      return;
+    }
+    if (seenText) *seenText = box->text();
+    QAbstractButton* button = buttonName.isEmpty() ? box->button(standard)
+                                                   : box->findChild<QAbstractButton*>(buttonName);
+    if (button == nullptr) button = box->buttons().front();
+    button->click();
+  });
+}
+
+}  // namespace fivebar::test

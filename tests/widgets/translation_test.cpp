@@ -69,7 +69,8 @@ std::set<QString> runtimeContexts() {
         &ParetoPlot::staticMetaObject, &fivebar::studio::LanguageMenu::staticMetaObject})
     names.insert(QString::fromLatin1(m->className()));
   for (const char* c : {"QObject", "main", "DocumentCommands", "JobPipeline", "MapPainter",
-                        "WorkspaceLegend", "ImportWarningsPanel", "DesignPainter", "ImportWarning"})
+                        "WorkspaceLegend", "ImportWarningsPanel", "DesignPainter",
+                        "ImportWarning", "fivebar::widgets::MachineDialogs", "fivebar::widgets::SettingsAdvice"})
     names.insert(QString::fromLatin1(c));
   return names;
 }

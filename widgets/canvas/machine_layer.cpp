@@ -26,11 +26,16 @@ void MachineLayer::setExternalAngles(std::optional<JointAngles> angles) {
 
 void MachineLayer::refresh() {
   const MachineProfile& profile = doc_.profile();
-  // A running (or scrubbed) simulation wins; otherwise the connected machine's pose.
+  // The connected machine wins: the simulation is then a ghost while it runs or is scrubbed.
   const bool simulating =
       sim_.trajectory() != nullptr && (sim_.playing() || sim_.timeS() > 0.0);
-  if (external_ && !simulating) {
+  ghost_.reset();
+  if (external_) {
     pose_ = poseOf(profile, kinematicFromCommanded(profile.calibration, *external_));  // MPos is commanded
+    if (simulating) {
+      const TrajectorySample s = sim_.sample();
+      ghost_ = makePose(profile.geometry, s.q, s.p);
+    }
   } else if (sim_.trajectory() != nullptr) {
     const TrajectorySample s = sim_.sample();
     pose_ = makePose(profile.geometry, s.q, s.p);
@@ -41,6 +46,7 @@ void MachineLayer::refresh() {
 }
 
 void MachineLayer::paint(QPainter& painter, const ViewTransform& view) {
+  if (ghost_) paintMachine(painter, view.widgetFromMachine(), doc_.profile().geometry, *ghost_, kGhostOpacity);
   if (!pose_) return;
   // Slightly see-through so the drawing under the arms stays readable.
   paintMachine(painter, view.widgetFromMachine(), doc_.profile().geometry, *pose_, kOpacity);

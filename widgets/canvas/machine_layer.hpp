@@ -1,6 +1,7 @@
-// Canvas layer showing the machine to scale at its current pose: the simulation's pose while it
-// runs or is scrubbed, else the connected machine's reported pose (setExternalAngles), else the
-// simulation's start pose or the profile's home pose. The pose is recomputed when its
+// Canvas layer showing the machine to scale at its current pose: the connected machine's
+// reported pose (setExternalAngles) whenever there is one, with the simulation's pose as a
+// faint ghost while the simulation runs or is scrubbed; without a machine the simulation's pose,
+// else the simulation's start pose or the profile's home pose. The pose is recomputed when its
 // source changes (not in paint); paint only draws it.
 #pragma once
 
@@ -18,6 +19,7 @@ class MachineLayer : public QObject, public CanvasLayer {
   Q_OBJECT
  public:
   static constexpr double kOpacity = 0.85;
+  static constexpr double kGhostOpacity = 0.25;
 
   MachineLayer(const StudioDocument& doc, const SimulationController& sim,
                QObject* parent = nullptr);
@@ -25,6 +27,8 @@ class MachineLayer : public QObject, public CanvasLayer {
   void paint(QPainter& painter, const ViewTransform& view) override;
   // The pose drawn (nullopt when the home pose does not close).
   const std::optional<Pose>& pose() const { return pose_; }
+  // The simulation's pose drawn faintly behind the machine's (nullopt when none).
+  const std::optional<Pose>& ghost() const { return ghost_; }
 
  public slots:
   // Shows an externally reported pose (the connected machine's position), overriding the
@@ -41,6 +45,7 @@ class MachineLayer : public QObject, public CanvasLayer {
   const SimulationController& sim_;
   std::optional<JointAngles> external_;
   std::optional<Pose> pose_;
+  std::optional<Pose> ghost_;
 };
 
 // The pose of `angles` in the profile's assembly mode; nullopt when the loop cannot close.

@@ -26,6 +26,16 @@ PlanOptions importOptions(const StudioDocument& doc) {
 }
 }  // namespace
 
+void ImportController::closeProgressDialog() {
+  if (!dialog_) return;
+  QProgressDialog* dialog = dialog_;
+  dialog_ = nullptr;
+  disconnect(dialog, nullptr, this, nullptr);
+  dialog->reset();  // stops its minimum-duration timer
+  dialog->hide();
+  dialog->deleteLater();
+}
+
 ImportController::ImportController(StudioDocument& doc, QWidget* dialogParent, QObject* parent)
     : QObject(parent), doc_(doc), dialogParent_(dialogParent) {
   connect(&watcher_, &QFutureWatcher<ImportOutcome>::finished, this, &ImportController::onFinished);
@@ -132,7 +142,9 @@ void ImportController::start(std::function<ImportOutcome(const std::atomic<bool>
 }
 
 void ImportController::onFinished() {
-  if (dialog_) dialog_->deleteLater();
+  // Gone before any message box: a deleteLater alone waits for the box's own event loop to end,
+  // and the dialog's minimum-duration timer could even show it over the error.
+  closeProgressDialog();
   ImportOutcome result = watcher_.result();
   const QString name = pendingName_;
   const bool waived = budgetWaived_;

@@ -79,6 +79,7 @@ class ImportController : public QObject {
   QFutureWatcher<ImportOutcome> watcher_;
   std::shared_ptr<std::atomic<bool>> cancel_;
   QPointer<QProgressDialog> dialog_;
+  void closeProgressDialog();
   QString pendingName_;
   QString note_;
   bool pendingRemember_ = false;

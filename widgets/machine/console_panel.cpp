@@ -1,6 +1,8 @@
 #include "widgets/machine/console_panel.hpp"
 
+#include <QCheckBox>
 #include <QFontDatabase>
+#include <QLabel>
 #include <QHBoxLayout>
 #include <QKeyEvent>
 #include <QLineEdit>
@@ -35,17 +37,46 @@ ConsolePanel::ConsolePanel(MachineSession& session, QWidget* parent)
   log_->setPlaceholderText(tr("Lines sent to and received from the machine appear here."));
   input_ = new QLineEdit(this);
   input_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
-  input_->setPlaceholderText(tr("G-code or $ command, e.g. $$ or G0 X10 Y20"));
+  // X and Y are motor angles: no example move, since what is safe depends on the machine.
+  input_->setPlaceholderText(tr("G-code or $ command, e.g. $$ or $I; moves are checked first"));
   input_->installEventFilter(this);
   send_ = new QPushButton(tr("Send"), this);
+
+  unchecked_ = new QCheckBox(tr("Send unchecked (expert)"), this);
+  unchecked_->setObjectName(QStringLiteral("consoleUnchecked"));
+  unchecked_->setToolTip(tr("Send lines without the motion check. X and Y are motor angles in "
+                            "degrees: a wrong number swings an arm across the base."));
+  uncheckedBanner_ = new QLabel(
+      tr("Unchecked console: lines go to the machine as typed, without the motion check. A wrong "
+         "X or Y (motor angles in degrees) can drive the arms into each other or the base."),
+      this);
+  uncheckedBanner_->setObjectName(QStringLiteral("consoleUncheckedBanner"));
+  uncheckedBanner_->setWordWrap(true);
+  uncheckedBanner_->setStyleSheet(QStringLiteral(
+      "background: #fee2e2; color: #991b1b; border: 1px solid #dc2626; border-radius: 4px; padding: 4px;"));
+  uncheckedBanner_->hide();
+  refusal_ = new QLabel(this);
+  refusal_->setObjectName(QStringLiteral("consoleRefusal"));
+  refusal_->setWordWrap(true);
+  refusal_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  refusal_->setStyleSheet(QStringLiteral("color: #b91c1c"));
+  refusal_->hide();
 
   auto* row = new QHBoxLayout;
   row->addWidget(input_, 1);
   row->addWidget(send_);
+  row->addWidget(unchecked_);
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(4, 4, 4, 4);
+  layout->addWidget(uncheckedBanner_);
   layout->addWidget(log_, 1);
+  layout->addWidget(refusal_);
   layout->addLayout(row);
+  connect(unchecked_, &QCheckBox::toggled, &session_, &MachineSession::setUncheckedConsole);
+  connect(&session_, &MachineSession::uncheckedConsoleChanged, this, [this](bool on) {
+    unchecked_->setChecked(on);
+    uncheckedBanner_->setVisible(on);
+  });
 
   connect(input_, &QLineEdit::returnPressed, this, &ConsolePanel::submit);
   connect(send_, &QPushButton::clicked, this, &ConsolePanel::submit);
@@ -68,8 +99,15 @@ void ConsolePanel::submit() {
   while (history_.size() > kMaxHistory) history_.removeFirst();
   historyPos_ = int(history_.size());
   draft_.clear();
-  input_->clear();
-  session_.sendLine(line);
+  QString refusal;
+  if (session_.sendLine(line, &refusal)) {
+    input_->clear();
+    refusal_->hide();
+  } else {
+    // Kept in the field, so it can be corrected.
+    refusal_->setText(tr("Not sent: %1").arg(refusal));
+    refusal_->setVisible(!refusal.isEmpty());
+  }
 }
 
 bool ConsolePanel::eventFilter(QObject* watched, QEvent* event) {

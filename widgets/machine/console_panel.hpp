@@ -1,6 +1,8 @@
 // The machine console: the lines sent to and received from the board (status reports left out,
 // and the job's thousands of "ok"s while a job streams), and an input line with a history
-// walked with the up and down arrow keys. Everything goes through MachineSession.
+// walked with the up and down arrow keys. Everything goes through MachineSession, which runs
+// every line through the motion check (a refused line is not sent; the panel shows why) unless
+// the expert switch "send unchecked" is on (a red banner says so while it is).
 #pragma once
 
 #include <QStringList>
@@ -8,6 +10,8 @@
 
 #include "widgets/machine/machine_session.hpp"
 
+class QCheckBox;
+class QLabel;
 class QLineEdit;
 class QPlainTextEdit;
 class QPushButton;
@@ -23,6 +27,11 @@ class ConsolePanel : public QWidget {
   explicit ConsolePanel(MachineSession& session, QWidget* parent = nullptr);
 
   QLineEdit* input() const { return input_; }
+  // "Send unchecked (expert)": off by default; a warning banner shows while it is on.
+  QCheckBox* uncheckedSwitch() const { return unchecked_; }
+  QLabel* uncheckedBanner() const { return uncheckedBanner_; }
+  // Why the last line was refused (hidden when the last line was sent).
+  QLabel* refusalLabel() const { return refusal_; }
   QPlainTextEdit* log() const { return log_; }
   const QStringList& history() const { return history_; }
 
@@ -41,6 +50,9 @@ class ConsolePanel : public QWidget {
   QPlainTextEdit* log_ = nullptr;
   QLineEdit* input_ = nullptr;
   QPushButton* send_ = nullptr;
+  QCheckBox* unchecked_ = nullptr;
+  QLabel* uncheckedBanner_ = nullptr;
+  QLabel* refusal_ = nullptr;
   QStringList history_;
   int historyPos_ = 0;  // == history_.size() when editing a new line
   QString draft_;       // the new line being typed, kept while browsing the history

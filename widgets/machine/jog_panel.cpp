@@ -1,5 +1,15 @@
 #include "widgets/machine/jog_panel.hpp"
 
+#include <QAbstractSlider>
+#include <QAbstractSpinBox>
+#include <QApplication>
+#include <QComboBox>
+#include <QLineEdit>
+#include <QPlainTextEdit>
+#include <QTextEdit>
+
+#include "widgets/machine/machine_dialogs.hpp"
+
 #include <QButtonGroup>
 #include <QDoubleSpinBox>
 #include <QGridLayout>
@@ -87,12 +97,17 @@ JogPanel::JogPanel(MachineSession& session, QWidget* parent)
   stepRow->addWidget(speed_);
 
   home_ = new QPushButton(this);
+  goHome_ = new QPushButton(tr("Go to home pose"), this);
+  goHome_->setObjectName(QStringLiteral("goHomeButton"));
+  goHome_->setToolTip(tr("Move the pen up to the profile's home pose by a checked move "
+                         "(the reference must be set)"));
   penUp_ = new QPushButton(tr("Pen up"), this);
   penUp_->setToolTip(tr("Lift the pen (Page Up on the canvas)"));
   penDown_ = new QPushButton(tr("Pen down"), this);
   penDown_->setToolTip(tr("Lower the pen (Page Down on the canvas)"));
   auto* toolRow = new QHBoxLayout;
   toolRow->addWidget(home_);
+  toolRow->addWidget(goHome_);
   toolRow->addWidget(penUp_);
   toolRow->addWidget(penDown_);
 
@@ -123,12 +138,16 @@ JogPanel::JogPanel(MachineSession& session, QWidget* parent)
   layout->addLayout(toolRow);
   layout->addStretch(1);
 
-  moveWidgets_.insert(moveWidgets_.end(), {goToButton_, home_, penUp_, penDown_, speed_});
+  moveWidgets_.insert(moveWidgets_.end(), {goToButton_, home_, goHome_, penUp_, penDown_, speed_});
   connect(steps_, &QButtonGroup::idClicked, this, [this](int id) { controller_.setStep(kSteps[id]); });
   controller_.setStep(kSteps[1]);
   connect(speed_, &QDoubleSpinBox::valueChanged, this, [this](double v) { controller_.setSpeedMmPerS(v); });
   controller_.setSpeedMmPerS(kDefaultSpeedMmPerS);
-  connect(home_, &QPushButton::clicked, &session_, &MachineSession::home);
+  connect(home_, &QPushButton::clicked, this, [this] { requestHome(this, session_); });
+  connect(goHome_, &QPushButton::clicked, this, [this] {
+    QString why;
+    if (!session_.goToHomePose(&why)) message_->setText(why);
+  });
   connect(penUp_, &QPushButton::clicked, &session_, &MachineSession::penUp);
   connect(penDown_, &QPushButton::clicked, &session_, &MachineSession::penDown);
   connect(goToButton_, &QPushButton::toggled, this, &JogPanel::setGoToActive);
@@ -166,11 +185,37 @@ QPushButton* JogPanel::motorButton(int motor, int sign) const {
 void JogPanel::attachCanvas(CanvasView* canvas) {
   canvas_ = canvas;
   canvas_->installEventFilter(this);
+  // The arrow keys jog wherever the focus is in the studio's window, unless a field that edits
+  // text or a value has it (those keep their arrows).
+  if (!keysEverywhere_) {
+    qApp->installEventFilter(this);
+    keysEverywhere_ = true;
+  }
+}
+
+JogPanel::~JogPanel() {
+  if (keysEverywhere_) qApp->removeEventFilter(this);
+}
+
+// True for widgets whose own arrow keys matter: text fields, spin boxes, combo boxes, sliders.
+static bool keepsItsArrows(const QObject* o) {
+  return qobject_cast<const QLineEdit*>(o) || qobject_cast<const QAbstractSpinBox*>(o) ||
+         qobject_cast<const QTextEdit*>(o) || qobject_cast<const QPlainTextEdit*>(o) ||
+         qobject_cast<const QComboBox*>(o) || qobject_cast<const QAbstractSlider*>(o);
 }
 
 bool JogPanel::eventFilter(QObject* watched, QEvent* event) {
-  if (watched != canvas_ || (event->type() != QEvent::KeyPress && event->type() != QEvent::KeyRelease))
+  if (event->type() != QEvent::KeyPress && event->type() != QEvent::KeyRelease)
     return QWidget::eventFilter(watched, event);
+  auto* widget = qobject_cast<QWidget*>(watched);
+  if (widget == nullptr) return false;
+  const bool onCanvas = watched == canvas_;
+  if (!onCanvas) {
+    // Keys reach the focus widget first (then its parents): act there, once, in this window.
+    QWidget* focus = QApplication::focusWidget();
+    const bool here = widget->window() == window() && (widget == focus || (focus == nullptr && widget->isWindow()));
+    if (!here || keepsItsArrows(widget)) return false;
+  }
   auto* key = static_cast<QKeyEvent*>(event);
   if (!session_.isConnected()) return false;
   const bool press = event->type() == QEvent::KeyPress;
@@ -179,6 +224,7 @@ bool JogPanel::eventFilter(QObject* watched, QEvent* event) {
     return true;
   }
   if (!press || key->isAutoRepeat()) return false;
+  if (!onCanvas) return false;  // Page Up/Down, Return and Escape stay the canvas's
   switch (key->key()) {
     case Qt::Key_PageUp: session_.penUp(); return true;
     case Qt::Key_PageDown: session_.penDown(); return true;

@@ -25,8 +25,11 @@ class JogPanel : public QWidget {
   Q_OBJECT
  public:
   explicit JogPanel(MachineSession& session, QWidget* parent = nullptr);
+  ~JogPanel() override;
 
-  // Keyboard jogging on the canvas and the go-to tool. The canvas must outlive the panel's use.
+  // The go-to tool on the canvas, and keyboard jogging: arrow keys anywhere in the panel's
+  // window (unless a text or value field has the focus), Page Up/Down, Return and Escape on the
+  // canvas. The canvas must outlive the panel's use.
   void attachCanvas(CanvasView* canvas);
 
   JogController& controller() { return controller_; }
@@ -35,6 +38,8 @@ class JogPanel : public QWidget {
   QPushButton* arrowButton(int dx, int dy) const;
   QPushButton* motorButton(int motor, int sign) const;
   QPushButton* goToButton() const { return goToButton_; }
+  QPushButton* homeButton() const { return home_; }
+  QPushButton* goHomeButton() const { return goHome_; }
   QPushButton* confirmButton() const { return confirm_; }
   QLabel* messageLabel() const { return message_; }
 
@@ -57,6 +62,8 @@ class JogPanel : public QWidget {
   QButtonGroup* steps_ = nullptr;
   QDoubleSpinBox* speed_ = nullptr;
   QPushButton* home_ = nullptr;
+  QPushButton* goHome_ = nullptr;
+  bool keysEverywhere_ = false;
   QPushButton* penUp_ = nullptr;
   QPushButton* penDown_ = nullptr;
   QPushButton* goToButton_ = nullptr;

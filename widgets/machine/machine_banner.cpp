@@ -1,5 +1,7 @@
 #include "widgets/machine/machine_banner.hpp"
 
+#include "widgets/machine/machine_dialogs.hpp"
+
 #include <QGridLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -41,7 +43,7 @@ MachineBanner::MachineBanner(MachineSession& session, QWidget* parent)
 
   connect(reset_, &QPushButton::clicked, &session_, &MachineSession::softReset);
   connect(unlock_, &QPushButton::clicked, &session_, &MachineSession::unlock);
-  connect(home_, &QPushButton::clicked, &session_, &MachineSession::home);
+  connect(home_, &QPushButton::clicked, this, [this] { requestHome(this, session_); });
   connect(dismiss_, &QPushButton::clicked, &session_, &MachineSession::dismissProblem);
   connect(&session_, &MachineSession::problemChanged, this, &MachineBanner::refresh);
   connect(&session_, &MachineSession::connectionChanged, this, &MachineBanner::refresh);

@@ -14,6 +14,7 @@
 #include "core/kinematics/units.hpp"
 #include "drivers/serial_transport.hpp"
 #include "widgets/machine/machine_banner.hpp"
+#include "widgets/machine/settings_advice.hpp"
 
 namespace fivebar::widgets {
 namespace {
@@ -100,16 +101,38 @@ MachinePanel::MachinePanel(MachineSession& session, QWidget* parent)
   buffers_ = new QLabel(this);
   for (QLabel* l : {xy_, angles_, buffers_}) l->setTextInteractionFlags(Qt::TextSelectableByMouse);
   buffers_->setWordWrap(true);
+  pen_ = new QLabel(this);
+  pen_->setObjectName(QStringLiteral("machinePen"));
   auto* status = new QGroupBox(tr("Status"), this);
   auto* form = new QFormLayout(status);
   form->addRow(tr("State"), state_);
+  form->addRow(tr("Pen"), pen_);
   form->addRow(tr("Pen (X, Y)"), xy_);
   form->addRow(tr("Motors (θ1, θ2)"), angles_);
   form->addRow(tr("Buffers"), buffers_);
 
+  settingsWarning_ = new QFrame(this);
+  settingsWarning_->setObjectName(QStringLiteral("settingsWarning"));
+  settingsWarning_->setStyleSheet(QStringLiteral(
+      "#settingsWarning { background: #fef3c7; border: 1px solid #d97706; border-radius: 4px; }"));
+  settingsText_ = new QLabel(settingsWarning_);
+  settingsText_->setWordWrap(true);
+  settingsButton_ = new QPushButton(tr("Review and write..."), settingsWarning_);
+  settingsButton_->setToolTip(tr("Compare the board's settings with the profile and write the "
+                                 "differences (a backup is saved first)"));
+  auto* warningLayout = new QVBoxLayout(settingsWarning_);
+  warningLayout->setContentsMargins(8, 6, 8, 6);
+  warningLayout->addWidget(settingsText_);
+  warningLayout->addWidget(settingsButton_, 0, Qt::AlignLeft);
+  settingsWarning_->hide();
+  connect(settingsButton_, &QPushButton::clicked, this, [this] {
+    if (openSettings_) openSettings_();
+  });
+
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(4, 4, 4, 4);
   layout->addWidget(banner_);  // first: a problem is the first thing to see
+  layout->addWidget(settingsWarning_);
   layout->addWidget(connection);
   layout->addWidget(status);
   layout->addStretch(1);
@@ -121,8 +144,29 @@ MachinePanel::MachinePanel(MachineSession& session, QWidget* parent)
   connect(&session_, &MachineSession::connectionChanged, this, &MachinePanel::refreshConnection);
   connect(&session_, &MachineSession::connectionChanged, this, &MachinePanel::refreshStatus);
   connect(&session_, &MachineSession::statusUpdated, this, &MachinePanel::refreshStatus);
+  connect(&session_, &MachineSession::penStateChanged, this, &MachinePanel::refreshStatus);
+  connect(&session_, &MachineSession::boardSettingsChanged, this, &MachinePanel::refreshSettings);
+  connect(&session_, &MachineSession::connectFailed, this, &MachinePanel::onConnectFailed);
   refreshPorts();
   refreshStatus();
+  refreshSettings();
+}
+
+void MachinePanel::onConnectFailed(const QString& message) {
+  failure_ = message;
+  refreshConnection();
+  auto* box = new QMessageBox(QMessageBox::Warning, tr("No answer from the machine"), message,
+                              QMessageBox::Ok, this);
+  box->setObjectName(QStringLiteral("connectFailedMessage"));
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  box->open();
+}
+
+void MachinePanel::refreshSettings() {
+  const auto diffs = session_.settingDifferences();
+  settingsWarning_->setVisible(session_.isConnected() && !diffs.empty());
+  if (diffs.empty()) return;
+  settingsText_->setText(widgets::settingsWarningText(diffs));
 }
 
 void MachinePanel::refreshPorts() {
@@ -143,6 +187,7 @@ void MachinePanel::refreshPorts() {
 void MachinePanel::connectSelected() {
   const QString id = ports_->currentData().toString();
   QString error;
+  failure_.clear();
   const bool ok = id == kSimulatedId
                       ? session_.connectSimulated(simSpeedup_, sim::Fault{}, &error)
                       : session_.connectSerial(id, baud_->currentData().toInt(), &error);
@@ -152,12 +197,17 @@ void MachinePanel::connectSelected() {
 void MachinePanel::refreshConnection() {
   const bool connected = session_.isConnected();
   const bool simulated = ports_->currentData().toString() == kSimulatedId;
-  ports_->setEnabled(!connected);
   refresh_->setEnabled(!connected);
   baud_->setEnabled(!connected && !simulated);
-  connect_->setEnabled(!connected);
-  disconnect_->setEnabled(connected);
-  link_->setText(connected ? tr("Connected to %1").arg(session_.linkName()) : tr("Not connected"));
+  const bool connecting = session_.isConnecting();
+  connect_->setEnabled(!connected && !connecting);
+  disconnect_->setEnabled(connected || connecting);
+  ports_->setEnabled(!connected && !connecting);
+  link_->setStyleSheet(!connected && !connecting && !failure_.isEmpty() ? QStringLiteral("color: #b91c1c")
+                                                                        : QString());
+  if (connected) link_->setText(tr("Connected to %1").arg(session_.linkName()));
+  else if (connecting) link_->setText(tr("Connecting to %1: waiting for the board to answer...").arg(session_.linkName()));
+  else link_->setText(failure_.isEmpty() ? tr("Not connected") : failure_);
 }
 
 void MachinePanel::refreshStatus() {
@@ -165,6 +215,11 @@ void MachinePanel::refreshStatus() {
   const grbl::MachineState s = session_.isConnected() ? session_.state() : grbl::MachineState::Unknown;
   state_->setText(session_.isConnected() ? stateName(s) : tr("Offline"));
   state_->setStyleSheet(QStringLiteral("color: %1").arg(colourOfState(s)));
+  switch (session_.isConnected() ? session_.penState() : PenState::Unknown) {
+    case PenState::Up: pen_->setText(tr("up")); break;
+    case PenState::Down: pen_->setText(tr("down (drawing)")); break;
+    case PenState::Unknown: pen_->setText(session_.isConnected() ? tr("not known yet") : QStringLiteral("–")); break;
+  }
   const auto pen = session_.penMm();
   xy_->setText(pen ? tr("%1, %2 mm").arg(QLocale().toString(pen->x(), 'f', 2)).arg(QLocale().toString(pen->y(), 'f', 2))
                    : QStringLiteral("–"));

@@ -8,7 +8,10 @@
 
 #include "widgets/machine/machine_session.hpp"
 
+#include <functional>
+
 class QComboBox;
+class QFrame;
 class QLabel;
 class QPushButton;
 
@@ -29,6 +32,13 @@ class MachinePanel : public QWidget {
   QPushButton* disconnectButton() const { return disconnect_; }
   MachineBanner* banner() const { return banner_; }
   QLabel* stateLabel() const { return state_; }
+  QLabel* linkLabel() const { return link_; }
+  QLabel* penLabel() const { return pen_; }
+  // The warning shown while the board's $ settings differ from the profile's.
+  QFrame* settingsWarning() const { return settingsWarning_; }
+  QLabel* settingsWarningText() const { return settingsText_; }
+  // What "Review and write..." opens (the machine settings dialog).
+  void setOpenSettings(std::function<void()> open) { openSettings_ = std::move(open); }
 
  public slots:
   void refreshPorts();
@@ -37,6 +47,8 @@ class MachinePanel : public QWidget {
 
  private:
   void refreshConnection();
+  void refreshSettings();
+  void onConnectFailed(const QString& message);
 
   MachineSession& session_;
   double simSpeedup_ = 1.0;
@@ -51,6 +63,12 @@ class MachinePanel : public QWidget {
   QLabel* xy_ = nullptr;
   QLabel* angles_ = nullptr;
   QLabel* buffers_ = nullptr;
+  QLabel* pen_ = nullptr;
+  QFrame* settingsWarning_ = nullptr;
+  QLabel* settingsText_ = nullptr;
+  QPushButton* settingsButton_ = nullptr;
+  std::function<void()> openSettings_;
+  QString failure_;  // why the last connection attempt failed (shown until the next one)
 };
 
 // A readable (translated) name of a GRBL state.

@@ -6,6 +6,7 @@
 #include "drivers/gcode_job.hpp"
 #include "drivers/grbl_codes.hpp"
 #include "drivers/jog.hpp"
+#include "drivers/motion_check.hpp"
 #include "drivers/serial_transport.hpp"
 #include "drivers/simulated_transport.hpp"
 
@@ -20,13 +21,30 @@ constexpr int kSimClockMs = 5;
 
 QString fromStd(const std::string& s) { return QString::fromStdString(s); }
 
+// The motion check's reasons name the CLI's commands; in the studio the same actions are buttons.
+QString inStudioWords(const std::string& reason) {
+  QString text = fromStd(reason);
+  text.replace(QStringLiteral("set the machine's reference with 'fivebar reference' (or home it with "
+                              "'fivebar home')"),
+               MachineSession::tr("set the reference pose (Machine panel) or home the machine"));
+  text.replace(QStringLiteral(" (fivebar workspace shows it)"), QString());
+  return text;
+}
+
 }  // namespace
 
 MachineSession::MachineSession(const StudioDocument& doc, QObject* parent)
-    : QObject(parent), doc_(doc) {}
+    : QObject(parent), doc_(doc) {
+  connectTimer_ = new QTimer(this);
+  connectTimer_->setSingleShot(true);
+  connect(connectTimer_, &QTimer::timeout, this, &MachineSession::onConnectTimeout);
+  // Another profile expects other settings: compare again.
+  connect(&doc_, &StudioDocument::profileChanged, this, &MachineSession::boardSettingsChanged);
+}
 
 MachineSession::~MachineSession() {
   tearingDown_ = true;
+  settingsSync_.reset();
   if (link_) link_->protocol().removeListener(this);
   link_.reset();
   transport_.reset();
@@ -46,7 +64,10 @@ bool MachineSession::connectSimulated(double speedup, const sim::Fault& fault, Q
 }
 
 bool MachineSession::connectSerial(const QString& portPath, int baudRate, QString* error) {
-  return openLink(std::make_unique<SerialTransport>(portPath, baudRate), error);
+  const QString target = tr("%1 at %2 baud").arg(portPath).arg(baudRate);
+  if (!openLink(std::make_unique<SerialTransport>(portPath, baudRate), error)) return false;
+  connectTarget_ = target;
+  return true;
 }
 
 bool MachineSession::openLink(std::unique_ptr<Transport> transport, QString* error) {
@@ -61,9 +82,26 @@ bool MachineSession::openLink(std::unique_ptr<Transport> transport, QString* err
   link_ = std::make_unique<MachineLink>(*transport_, kPollIntervalS, kTickMs);
   link_->protocol().addListener(this);
   link_->start();
-  emit consoleLine(tr("Connected to %1.").arg(linkName()), ConsoleKind::Info);
-  emit connectionChanged(true);
+  answered_ = false;
+  connectTarget_ = linkName();
+  consoleAbsolute_ = true;
+  pen_ = PenState::Unknown;
+  boardSettings_.reset();
+  emit consoleLine(tr("Opened %1; waiting for the board to answer...").arg(linkName()), ConsoleKind::Info);
+  connectTimer_->start(kConnectTimeoutMs);
+  emit connectionChanged(false);  // "connecting": panels show it
   return true;
+}
+
+void MachineSession::onConnectTimeout() {
+  if (!link_ || answered_) return;
+  const QString message =
+      tr("No GRBL board answered on %1 within %2 s. Check that the port is the machine's, that "
+         "the baud rate matches its firmware (GRBL 1.1: usually 115200) and that it is powered.")
+          .arg(connectTarget_)
+          .arg(kConnectTimeoutMs / 1000);
+  teardown(message);
+  emit connectFailed(message);
 }
 
 void MachineSession::disconnectMachine() { teardown(tr("Disconnected.")); }
@@ -72,6 +110,11 @@ void MachineSession::teardown(const QString& reason) {
   if (!link_ || tearingDown_) return;
   tearingDown_ = true;
   emit aboutToDisconnect();
+  connectTimer_->stop();
+  settingsSync_.reset();
+  boardSettings_.reset();
+  answered_ = false;
+  pen_ = PenState::Unknown;
   link_->protocol().removeListener(this);
   link_->stopClock();
   transport_->close();
@@ -90,6 +133,8 @@ void MachineSession::teardown(const QString& reason) {
   tearingDown_ = false;
   emit consoleLine(reason, ConsoleKind::Info);
   emit problemChanged();
+  emit penStateChanged();
+  emit boardSettingsChanged();
   emit connectionChanged(false);
 }
 
@@ -131,7 +176,7 @@ std::optional<JointAngles> MachineSession::jogStart() const {
 }
 
 bool MachineSession::canJog() const {
-  if (!link_ || jobActive_ || settleBlocked_) return false;
+  if (!isConnected() || jobActive_ || settleBlocked_) return false;
   const grbl::MachineState s = state();
   return (s == grbl::MachineState::Idle || s == grbl::MachineState::Jog) && motorAngles().has_value();
 }
@@ -152,14 +197,102 @@ bool MachineSession::enqueueUserLine(const std::string& line, bool log) {
   return true;
 }
 
-bool MachineSession::sendLine(const QString& line) {
+bool MachineSession::sendLine(const QString& line, QString* refusal) {
   const std::string text = line.trimmed().toStdString();
   if (text.empty()) return false;
   if (jobActive_) {
-    emit consoleLine(tr("A job is running: %1 was not sent.").arg(fromStd(text)), ConsoleKind::Problem);
+    const QString why = tr("A job is running: %1 was not sent.").arg(fromStd(text));
+    if (refusal) *refusal = why;
+    emit consoleLine(why, ConsoleKind::Problem);
     return false;
   }
+  if (!unchecked_) {
+    QString why;
+    if (!checkConsoleLine(text, &why)) {
+      if (refusal) *refusal = why;
+      emit consoleLine(tr("Not sent: %1").arg(fromStd(text)), ConsoleKind::Problem);
+      emit consoleLine(why, ConsoleKind::Problem);
+      emit lineRefused(why);
+      return false;
+    }
+  } else {
+    emit consoleLine(tr("Unchecked: %1").arg(fromStd(text)), ConsoleKind::Info);
+  }
   return enqueueUserLine(text, true);
+}
+
+// The one motion check (drivers/motion_check) from the board's reported pose. A motion line
+// needs a machine standing still with nothing of ours in flight, so the pose it starts from is
+// the pose the board reports.
+bool MachineSession::checkConsoleLine(const std::string& line, QString* refusal) {
+  const auto reported = link_ ? motion::boardPoseOf(link_->protocol()) : std::nullopt;
+  motion::BoardPose pose = reported.value_or(motion::BoardPose{});
+  pose.absolute = consoleAbsolute_;
+  const motion::LineCheck interpreted = motion::interpretLine(line, pose);
+  if (!interpreted.ok()) {
+    *refusal = inStudioWords(interpreted.reason);
+    return false;
+  }
+  if (interpreted.verdict == motion::Verdict::Motion) {
+    if (!reported) {
+      *refusal = tr("The machine's position is not known yet (no status report with its work "
+                    "position): wait a moment, or set the reference pose.");
+      return false;
+    }
+    if (!userLines_.empty() || state() != grbl::MachineState::Idle || !jogSettled()) {
+      *refusal = tr("The machine is still moving or busy: send a move when it stands still "
+                    "(Idle), so it can be checked from where the machine really is.");
+      return false;
+    }
+    const motion::LineCheck checked = motion::checkLine(doc_.profile(), line, pose);
+    if (!checked.ok()) {
+      *refusal = inStudioWords(checked.reason);
+      return false;
+    }
+  }
+  motion::BoardPose after = pose;
+  motion::applyLine(line, interpreted, after);
+  consoleAbsolute_ = after.absolute;
+  return true;
+}
+
+void MachineSession::setUncheckedConsole(bool on) {
+  if (unchecked_ == on) return;
+  unchecked_ = on;
+  emit consoleLine(on ? tr("Console lines are sent UNCHECKED from now on.")
+                      : tr("Console lines are checked again."),
+                   on ? ConsoleKind::Problem : ConsoleKind::Info);
+  emit uncheckedConsoleChanged(on);
+}
+
+void MachineSession::setPenState(PenState pen) {
+  if (pen_ == pen) return;
+  pen_ = pen;
+  emit penStateChanged();
+}
+
+void MachineSession::readBoardSettings() {
+  if (!link_ || jobActive_) return;
+  if (!settingsSync_) {
+    settingsSync_ = std::make_unique<setup::SettingsSync>(link_->protocol());
+    settingsSync_->changed = [this] {
+      const setup::SetupState s = settingsSync_->state();
+      if (s == setup::SetupState::Done) boardSettings_ = settingsSync_->board();
+      if (s == setup::SetupState::Done || s == setup::SetupState::Failed) emit boardSettingsChanged();
+    };
+  }
+  if (readingBoardSettings()) return;
+  settingsSync_->read();
+}
+
+bool MachineSession::readingBoardSettings() const {
+  return settingsSync_ && (settingsSync_->state() == setup::SetupState::Reading ||
+                           settingsSync_->state() == setup::SetupState::Writing);
+}
+
+std::vector<setup::SettingDiff> MachineSession::settingDifferences() const {
+  if (!boardSettings_) return {};
+  return setup::compare(*boardSettings_, setup::expectedSettings(doc_.profile()));
 }
 
 bool MachineSession::sendJog(const JogPlan& plan) {
@@ -210,6 +343,32 @@ void MachineSession::home() {
   }
 }
 
+bool MachineSession::goToHomePose(QString* why) {
+  const auto from = jogStart();
+  if (!canJog() || !from) {
+    if (why) *why = tr("The machine must be connected, idle and its position known.");
+    return false;
+  }
+  const MachineProfile& p = doc_.profile();
+  const FkResult home = forward(p.geometry, p.homeAngles, p.assembly);
+  if (!home.ok()) {
+    if (why) *why = tr("The profile's home pose does not close the linkage.");
+    return false;
+  }
+  const JogPlan plan = planGoTo(p, *from, home.p);
+  if (!plan.ok()) {
+    if (why) *why = tr("No checked move to the home pose: %1").arg(fromStd(plan.reason));
+    return false;
+  }
+  if (!sendJog(plan)) {
+    if (why) *why = tr("The move was not sent (see the console).");
+    return false;
+  }
+  pen_ = PenState::Up;
+  emit penStateChanged();
+  return true;
+}
+
 void MachineSession::setReferencePose() {
   if (enqueueUserLine(jog::referencePoseCommand(doc_.profile()), true)) {
     referenceLine_ = *userLines_.rbegin();
@@ -242,6 +401,7 @@ bool MachineSession::penUp() {
   if (!canJog()) return false;
   for (const std::string& line : job::penUpCommands(doc_.profile().tool))
     if (!enqueueUserLine(line, true)) return false;
+  setPenState(PenState::Up);
   return true;
 }
 
@@ -249,6 +409,7 @@ bool MachineSession::penDown() {
   if (!canJog()) return false;
   for (const std::string& line : job::penDownCommands(doc_.profile().tool))
     if (!enqueueUserLine(line, true)) return false;
+  setPenState(PenState::Down);
   return true;
 }
 
@@ -290,6 +451,15 @@ void MachineSession::onAck(const grbl::Ack& ack) {
 }
 
 void MachineSession::onStatus(const grbl::StatusReport& report) {
+  if (!answered_ && link_) {
+    answered_ = true;
+    connectTimer_->stop();
+    emit consoleLine(tr("Connected to %1.").arg(linkName()), ConsoleKind::Info);
+    emit connectionChanged(true);
+    // Compare the board's $ settings with the profile right away (the machine panel shows
+    // the differences; Start explains them).
+    readBoardSettings();
+  }
   if (awaitWco_ && !referenceLine_ && report.wco) awaitWco_ = false;
   const bool quiet = report.state == grbl::MachineState::Idle && jogLines_.empty() && !awaitWco_;
   if (quiet && settleReports_ > 0 && --settleReports_ == 0) {
@@ -342,6 +512,8 @@ void MachineSession::onReset(const std::string& version, const std::vector<std::
   settleReports_ = 0;
   referenceLine_.reset();
   awaitWco_ = false;
+  consoleAbsolute_ = true;
+  setPenState(PenState::Unknown);
   emit consoleLine(tr("The board reset (Grbl %1).").arg(fromStd(version)), ConsoleKind::Info);
   if (problem_.kind == MachineProblem::Kind::Error) {
     setProblem({});

@@ -14,6 +14,7 @@
 #include "core/kinematics/kinematics.hpp"
 #include "drivers/grbl_protocol.hpp"
 #include "drivers/machine_link.hpp"
+#include "drivers/machine_setup.hpp"
 #include "drivers/sim_machine.hpp"
 #include "widgets/machine/jog_planner.hpp"
 #include "widgets/document/studio_document.hpp"
@@ -21,10 +22,15 @@
 namespace fivebar {
 class SimulatedTransport;
 }
+class QTimer;
 
 namespace fivebar::widgets {
 
 enum class ConsoleKind { Sent, Received, Info, Problem };
+
+// The pen (tool) as far as the studio knows: set by the pen commands it sent and by the job's
+// executed lines; unknown after connecting and after a reset.
+enum class PenState { Unknown, Up, Down };
 
 // What the banner shows: an alarm (code from the drivers' table), or an error answer to a line
 // the user sent (console, jog, tool commands).
@@ -41,17 +47,22 @@ class MachineSession : public QObject, private grbl::ProtocolListener {
  public:
   static constexpr double kPollIntervalS = 0.2;  // 5 Hz status polling (GRBL's maximum)
   static constexpr int kTickMs = 10;             // protocol clock
+  // "Connected" only once the board answered like GRBL (a status report) within this time.
+  static constexpr int kConnectTimeoutMs = 4000;
 
   explicit MachineSession(const StudioDocument& doc, QObject* parent = nullptr);
   ~MachineSession() override;
 
   // --- connection ---
   // The in-process simulated machine built from the document's profile. speedup: machine time
-  // per wall-clock time. False with *error when the link cannot open.
+  // per wall-clock time. False with *error when the link cannot open. A link that opened is
+  // "connecting" until the board's first status report (then connectionChanged(true)); without
+  // one within kConnectTimeoutMs it is closed again and connectFailed says so.
   bool connectSimulated(double speedup, const sim::Fault& fault, QString* error);
   bool connectSerial(const QString& portPath, int baudRate, QString* error);
   void disconnectMachine();
-  bool isConnected() const { return link_ != nullptr; }
+  bool isConnected() const { return link_ != nullptr && answered_; }
+  bool isConnecting() const { return link_ != nullptr && !answered_; }
   QString linkName() const;
   MachineLink* link() const { return link_.get(); }
   SimulatedTransport* simulatedTransport() const { return simulated_; }
@@ -71,15 +82,35 @@ class MachineSession : public QObject, private grbl::ProtocolListener {
   bool jogSettled() const { return !jogEnd_ && !settleBlocked_; }
   // True when jogging and console commands may be sent now (connected, no job, not in alarm).
   bool canJog() const;
+  PenState penState() const { return pen_; }
+  void setPenState(PenState pen);
+
+  // --- the board's $ settings, read on connect (and again after a write) ---
+  void readBoardSettings();
+  bool boardSettingsKnown() const { return boardSettings_.has_value(); }
+  bool readingBoardSettings() const;
+  // The board's settings that differ from what the profile expects (empty while unknown).
+  std::vector<setup::SettingDiff> settingDifferences() const;
+
+  // --- the console's safety switch ---
+  // Off (default): every console line goes through the motion check (drivers/motion_check)
+  // from the board's reported pose; a refused line is not sent and lineRefused says why.
+  // On: lines are sent unchecked (an expert's choice; the console shows a warning while on).
+  void setUncheckedConsole(bool on);
+  bool uncheckedConsole() const { return unchecked_; }
 
   // --- commands (each returns false and logs why when it cannot be sent) ---
-  bool sendLine(const QString& line);
+  // A console line: checked (see setUncheckedConsole); false with *refusal when refused.
+  bool sendLine(const QString& line, QString* refusal = nullptr);
   bool sendJog(const JogPlan& plan);
   void cancelJog();
   void unlock();
   // $H with homing switches; otherwise ($X when in alarm and) the reference pose.
   void home();
   void setReferencePose();  // G10 L20 P0: "the machine now stands at the profile's home pose"
+  // A checked pen-up move to the profile's home pose (the reference must be set); false with
+  // *why when it cannot be planned or sent.
+  bool goToHomePose(QString* why = nullptr);
   void softReset();
   void feedHold();
   void cycleStart();
@@ -92,14 +123,21 @@ class MachineSession : public QObject, private grbl::ProtocolListener {
 
  signals:
   void connectionChanged(bool connected);
+  void connectFailed(const QString& message);  // the board did not answer like GRBL
   void aboutToDisconnect();  // the link is still valid: stop using it
   void statusUpdated();      // a status report arrived
   void problemChanged();
   void consoleLine(const QString& text, fivebar::widgets::ConsoleKind kind);
   void jobActiveChanged(bool active);
+  void lineRefused(const QString& reason);  // a console line the motion check refused
+  void uncheckedConsoleChanged(bool on);
+  void penStateChanged();
+  void boardSettingsChanged();  // read (or failed); see settingDifferences()
 
  private:
   bool openLink(std::unique_ptr<Transport> transport, QString* error);
+  void onConnectTimeout();
+  bool checkConsoleLine(const std::string& line, QString* refusal);
   bool enqueueUserLine(const std::string& line, bool log);
   void setProblem(MachineProblem problem);
   void teardown(const QString& reason);
@@ -128,6 +166,14 @@ class MachineSession : public QObject, private grbl::ProtocolListener {
   std::optional<std::uint64_t> referenceLine_;
   bool awaitWco_ = false;
   MachineProblem problem_;
+  bool answered_ = false;  // the board sent a status report since the link opened
+  QString connectTarget_;  // "PORT at BAUD baud" for the timeout message
+  QTimer* connectTimer_ = nullptr;
+  bool unchecked_ = false;
+  bool consoleAbsolute_ = true;  // G90/G91 as the console's lines left it
+  PenState pen_ = PenState::Unknown;
+  std::unique_ptr<setup::SettingsSync> settingsSync_;
+  std::optional<setup::Settings> boardSettings_;
   bool jobActive_ = false;
   bool tearingDown_ = false;
 };

@@ -2,7 +2,13 @@
 
 #include <QAction>
 #include <QDir>
+#include <QCoreApplication>
 #include <QDockWidget>
+#include <QElapsedTimer>
+#include <QEventLoop>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QThread>
 #include <QStandardPaths>
 
 #include "widgets/canvas/canvas_view.hpp"
@@ -50,6 +56,8 @@ void MachineUi::addPanels(const AddDock& addDock) {
   addDock(jog_, tr("Jog"), QStringLiteral("dockJog"), Qt::RightDockWidgetArea);
   addDock(console_, tr("Console"), QStringLiteral("dockConsole"), Qt::BottomDockWidgetArea);
   addDock(profile_, tr("Machine profile"), QStringLiteral("dockProfile"), Qt::LeftDockWidgetArea);
+  machinePanel_->setOpenSettings([this] { openSettingsDialog(); });
+  runPanel_->setOpenSettings([this] { openSettingsDialog(); });
   settingsAction_ = new QAction(tr("Machine &settings..."), this);
   settingsAction_->setObjectName(QStringLiteral("actionMachineSettings"));
   connect(settingsAction_, &QAction::triggered, this, [this] { openSettingsDialog(); });
@@ -67,6 +75,34 @@ MachineSettingsDialog* MachineUi::openSettingsDialog() {
   settingsDialog_->raise();
   if (session_.isConnected()) settingsDialog_->readBoard();
   return settingsDialog_;
+}
+
+bool MachineUi::confirmClose() {
+  if (!run_.running()) return true;
+  QMessageBox box(QMessageBox::Warning, tr("A job is running"),
+                  tr("The machine is drawing \"%1\". Quitting the studio would leave it without "
+                     "its stream of lines.\n\nHold, stop and quit: the machine stops cleanly and "
+                     "the progress is saved, so you can resume later.")
+                      .arg(run_.drawingName()),
+                  QMessageBox::NoButton, window_);
+  box.setObjectName(QStringLiteral("quitWhileRunning"));
+  QPushButton* stop = box.addButton(tr("Hold, stop and quit"), QMessageBox::DestructiveRole);
+  stop->setObjectName(QStringLiteral("stopAndQuit"));
+  QPushButton* keep = box.addButton(tr("Keep running"), QMessageBox::RejectRole);
+  keep->setObjectName(QStringLiteral("keepRunning"));
+  box.setDefaultButton(keep);
+  box.exec();
+  if (box.clickedButton() != stop) return false;
+  run_.hold();
+  run_.stop();
+  // The stop sequence (hold, reset, unlock) runs on the event loop; its end saves the progress.
+  QElapsedTimer clock;
+  clock.start();
+  while (run_.running() && clock.elapsed() < kStopWaitMs) {
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+    QThread::msleep(5);
+  }
+  return true;
 }
 
 bool MachineUi::connectSimulated(double speedup) {

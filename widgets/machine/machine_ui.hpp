@@ -49,6 +49,11 @@ class MachineUi : public QObject {
   QAction* settingsAction() const { return settingsAction_; }
   MachineSettingsDialog* openSettingsDialog();
 
+  // Asked before the window closes: while a job runs, "Hold, stop and quit" (the run is stopped
+  // cleanly and its progress saved, then true) or "Keep running" (false). True when no job runs.
+  bool confirmClose();
+  static constexpr int kStopWaitMs = 8000;  // longest wait for the stop sequence on quit
+
  private:
   StudioDocument& doc_;
   CanvasView& canvas_;

@@ -46,6 +46,63 @@ RunController::RunController(const StudioDocument& doc, const PreviewController&
   });
   connect(&preview_, &PreviewController::resultChanged, this, &RunController::runChanged);
   connect(&doc_, &StudioDocument::drawingChanged, this, &RunController::runChanged);
+  // A finished or stopped run belongs to the job it ran: when the job, its placement or the
+  // profile change, its overlay and status go (its saved progress stays, for Resume).
+  for (auto signal : {&StudioDocument::drawingChanged, &StudioDocument::placementChanged,
+                      &StudioDocument::profileChanged, &StudioDocument::jobInputsChanged})
+    connect(&doc_, signal, this, &RunController::clearPreviousRun);
+}
+
+void RunController::clearPreviousRun() {
+  if (running() || !job_) return;
+  job_.reset();
+  timeline_ = {};
+  snapshot_ = {};
+  lastState_ = job::RunState::Ready;
+  lastMessage_.clear();
+  emit progressChanged();
+  emit runChanged();
+}
+
+QString RunController::drawingName() const { return QFileInfo(jobPath()).completeBaseName(); }
+
+QString RunController::resumeOffer() const {
+  const auto saved = savedProgress();
+  if (!saved) return {};
+  // The saved line is a file line; count it in job lines, like the progress counter.
+  QString where;
+  QFile file(jobPath());
+  if (file.open(QIODevice::ReadOnly)) {
+    const QByteArray bytes = file.readAll();
+    const job::GcodeJob j =
+        job::parseJob(std::string_view(bytes.constData(), std::size_t(bytes.size())), job::rulesFor(doc_.profile()));
+    std::size_t done = 0;
+    for (const job::JobLine& line : j.lines)
+      if (line.fileLine <= saved->lastCompletedLine) ++done;
+    where = tr("line %1 of %2").arg(done).arg(j.lines.size());
+  }
+  return tr("The run of \"%1\" was interrupted at %2: %3")
+      .arg(drawingName(), where, guiMessage(QString::fromStdString(saved->reason)));
+}
+
+QString RunController::progressText() const {
+  const std::size_t done = snapshot_.lastCompleted ? *snapshot_.lastCompleted + 1 : 0;
+  return tr("line %1 of %2").arg(done).arg(snapshot_.totalLines);
+}
+
+// The drivers' messages are written for the command line: say it with the studio's buttons,
+// and leave the alarm's explanation to the banner (it is shown there once).
+QString RunController::guiMessage(const QString& message) const {
+  QString text = message;
+  text.replace(QStringLiteral("; continue with --resume."), QStringLiteral("."));
+  text.replace(QStringLiteral("stream it again with --resume"), tr("press Resume"));
+  text.replace(QStringLiteral("--resume"), tr("Resume"));
+  const MachineProblem& p = session_.problem();
+  if (p.kind == MachineProblem::Kind::Alarm || text.startsWith(QStringLiteral("ALARM")))
+    return tr("The machine raised an alarm and the job stopped (the banner in the Machine panel "
+              "says why). The progress is saved: clear the alarm (Reset, Unlock), check the pen "
+              "stands where the studio shows it, then press Resume.");
+  return text;
 }
 
 RunController::~RunController() { dropStream(); }
@@ -139,10 +196,12 @@ bool RunController::launch(bool resume, QString* error) {
     return false;
   }
   job_ = std::make_shared<const job::GcodeJob>(stream_->job());
+  timeline_ = job::timelineOf(*job_, doc_.profile());
   snapshot_ = {};
   snapshot_.totalLines = job_->lines.size();
+  snapshot_.etaS = timeline_.totalS();
   finished_ = false;
-  lastMessage_ = resume ? tr("Resuming %1…").arg(jobPath()) : tr("Running %1…").arg(jobPath());
+  lastMessage_ = resume ? tr("Resuming \"%1\"…").arg(drawingName()) : tr("Running \"%1\"…").arg(drawingName());
   session_.setJobActive(true);
   refresh_.start();
   emit runChanged();
@@ -169,6 +228,10 @@ void RunController::stop() {
 void RunController::refresh() {
   if (!stream_ || !stream_->runner()) return;
   snapshot_ = stream_->runner()->snapshot();
+  // The time left by the plan's time line of the last executed line (unchanged while held).
+  snapshot_.etaS = timeline_.lineEndS.empty() ? -1.0 : timeline_.remainingS(snapshot_.lastCompleted);
+  if (job_ && snapshot_.lastCompleted && *snapshot_.lastCompleted < job_->lines.size())
+    session_.setPenState(job_->lines[*snapshot_.lastCompleted].penDownAfter ? PenState::Down : PenState::Up);
   const job::RunState s = stream_->runner()->state();
   const bool changed = s != lastState_;
   lastState_ = s;
@@ -181,7 +244,7 @@ void RunController::onFinished(bool ok, const QString& message) {
   refresh();
   finished_ = true;
   refresh_.stop();
-  lastMessage_ = message;
+  lastMessage_ = ok ? tr("\"%1\" is drawn.").arg(drawingName()) : guiMessage(message);
   if (ok) {
     lastState_ = job::RunState::Finished;
     snapshot_.lastCompleted = job_ && !job_->lines.empty()
@@ -193,7 +256,7 @@ void RunController::onFinished(bool ok, const QString& message) {
   session_.setJobActive(false);
   emit progressChanged();
   emit runChanged();
-  emit finished(ok, message);
+  emit finished(ok, lastMessage_);
 }
 
 void RunController::dropStream() {

@@ -14,6 +14,7 @@
 
 #include "drivers/job_progress.hpp"
 #include "drivers/job_runner.hpp"
+#include "drivers/job_timeline.hpp"
 #include "drivers/stream_session.hpp"
 #include "widgets/machine/machine_session.hpp"
 #include "widgets/document/preview_controller.hpp"
@@ -45,9 +46,20 @@ class RunController : public QObject {
 
   job::RunState state() const;
   const job::RunSnapshot& snapshot() const { return snapshot_; }
-  // The job being (or last) run; nullptr before the first start.
+  // The job being (or last) run; nullptr before the first start and after the previous run
+  // was cleared (the job, placement or profile changed since it ended).
   const job::GcodeJob* job() const { return job_.get(); }
   QString lastMessage() const { return lastMessage_; }
+  // The drawing Start and Resume work on ("flower" for .../jobs/flower.gcode).
+  QString drawingName() const;
+  // The resume offer in words: which drawing, how far it got (job lines), and why it stopped;
+  // "" when there is nothing to resume.
+  QString resumeOffer() const;
+  // The executed share as one counter: "line N of M" from the executed job lines.
+  QString progressText() const;
+  // Seconds of machine time left by the planned time line (core's GRBL model) of the last
+  // executed line; < 0 while unknown. Does not change while the machine holds.
+  double etaS() const { return snapshot_.etaS; }
 
  public slots:
   bool start(QString* error = nullptr);
@@ -66,6 +78,8 @@ class RunController : public QObject {
   void refresh();
   void onFinished(bool ok, const QString& message);
   void dropStream();
+  void clearPreviousRun();
+  QString guiMessage(const QString& message) const;
 
   const StudioDocument& doc_;
   const PreviewController& preview_;
@@ -73,6 +87,7 @@ class RunController : public QObject {
   QString jobDir_;
   std::unique_ptr<StreamSession> stream_;
   std::shared_ptr<const job::GcodeJob> job_;
+  job::JobTimeline timeline_;
   job::RunSnapshot snapshot_;
   job::RunState lastState_ = job::RunState::Ready;
   bool finished_ = true;

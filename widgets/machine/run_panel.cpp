@@ -3,6 +3,7 @@
 #include <QMessageBox>
 
 #include "widgets/document/job_pipeline.hpp"
+#include "widgets/machine/settings_advice.hpp"
 
 #include <QCoreApplication>
 #include <QGridLayout>
@@ -112,10 +113,56 @@ void RunPanel::startClicked() {
                               QMessageBox::No) != QMessageBox::Yes)
       return;
   }
+  if (!confirmDiscardResume() || !confirmSettings()) return;
   run_.start();
 }
 
-void RunPanel::resumeClicked() { run_.resume(); }
+// A new Start writes the job again and drops the saved progress of the interrupted run.
+bool RunPanel::confirmDiscardResume() {
+  const QString offer = run_.resumeOffer();
+  if (offer.isEmpty()) return true;
+  QMessageBox box(QMessageBox::Question, tr("Start from the beginning?"),
+                  tr("%1\n\nStart draws \"%2\" from the beginning and discards this saved progress. "
+                     "Resume continues the interrupted run instead.")
+                      .arg(offer, run_.drawingName()),
+                  QMessageBox::NoButton, this);
+  box.setObjectName(QStringLiteral("discardResumeQuestion"));
+  QPushButton* start = box.addButton(tr("Discard and start over"), QMessageBox::DestructiveRole);
+  box.addButton(QMessageBox::Cancel)->setText(tr("Cancel"));
+  box.setDefaultButton(qobject_cast<QPushButton*>(box.button(QMessageBox::Cancel)));
+  box.exec();
+  return box.clickedButton() == start;
+}
+
+// The board's $ settings against the profile's: a difference is explained before the machine
+// moves (soft limits, steps/deg, rates), with the offer to write the profile's values.
+bool RunPanel::confirmSettings() {
+  if (!session_.boardSettingsKnown()) {
+    session_.readBoardSettings();
+    message_->setText(tr("Reading the board's settings to compare them with the profile: press "
+                         "Start again in a moment."));
+    return false;
+  }
+  const auto diffs = session_.settingDifferences();
+  if (diffs.empty()) return true;
+  QMessageBox box(QMessageBox::Warning, tr("The board's settings differ"), settingsMismatchText(diffs),
+                  QMessageBox::NoButton, this);
+  box.setObjectName(QStringLiteral("settingsMismatch"));
+  box.setTextFormat(Qt::RichText);
+  QPushButton* write = box.addButton(tr("Write the profile's settings..."), QMessageBox::ActionRole);
+  write->setObjectName(QStringLiteral("writeSettings"));
+  QPushButton* anyway = box.addButton(tr("Start anyway"), QMessageBox::DestructiveRole);
+  anyway->setObjectName(QStringLiteral("startAnyway"));
+  box.addButton(QMessageBox::Cancel)->setText(tr("Cancel"));
+  box.setDefaultButton(qobject_cast<QPushButton*>(box.button(QMessageBox::Cancel)));
+  box.exec();
+  if (box.clickedButton() == write && openSettings_) openSettings_();
+  return box.clickedButton() == anyway;
+}
+
+void RunPanel::resumeClicked() {
+  if (confirmSettings()) run_.resume();
+}
 
 void RunPanel::refresh() {
   const job::RunState s = run_.state();
@@ -128,12 +175,7 @@ void RunPanel::refresh() {
   resume_->setVisible(saved.has_value());
   resumeInfo_->setVisible(saved.has_value());
   resume_->setEnabled(saved.has_value() && run_.canResume());
-  if (saved) {
-    resumeInfo_->setText(tr("An interrupted run was saved (line %1 of %2 done): %3")
-                             .arg(saved->lastCompletedLine)
-                             .arg(saved->totalLines)
-                             .arg(QString::fromStdString(saved->reason)));
-  }
+  if (saved) resumeInfo_->setText(run_.resumeOffer());
   state_->setText(run_.job() ? runStateName(s) : tr("No job sent yet"));
   message_->setText(run_.lastMessage());
   message_->setStyleSheet(s == job::RunState::Stopped || s == job::RunState::Paused
@@ -144,10 +186,16 @@ void RunPanel::refresh() {
 
 void RunPanel::refreshProgress() {
   const job::RunSnapshot& snap = run_.snapshot();
-  const double fraction = snap.totalLines > 0 ? double(snap.linesCompleted) / double(snap.totalLines) : 0.0;
+  const std::size_t done = snap.lastCompleted ? *snap.lastCompleted + 1 : 0;
+  const double fraction = snap.totalLines > 0 ? double(done) / double(snap.totalLines) : 0.0;
   progress_->setValue(int(std::lround(std::clamp(fraction, 0.0, 1.0) * 1000.0)));
-  progress_->setFormat(tr("%1 of %2 lines executed").arg(snap.linesCompleted).arg(snap.totalLines));
-  eta_->setText(run_.running() ? tr("%1 left").arg(formatTimeLeft(snap.etaS)) : QString());
+  progress_->setFormat(run_.job() ? tr("%1 % (%2)").arg(int(std::floor(fraction * 100.0))).arg(run_.progressText())
+                                  : QString());
+  const job::RunState rs = run_.state();
+  const bool held = rs == job::RunState::Held || rs == job::RunState::Holding;
+  eta_->setText(!run_.running() ? QString()
+                : held         ? tr("%1 left (on hold)").arg(formatTimeLeft(run_.etaS()))
+                               : tr("%1 left").arg(formatTimeLeft(run_.etaS())));
   const job::RunState s = run_.state();
   if (run_.job()) state_->setText(runStateName(s));
 }

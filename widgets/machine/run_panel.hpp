@@ -7,6 +7,8 @@
 
 #include "widgets/machine/run_controller.hpp"
 
+#include <functional>
+
 class QLabel;
 class QProgressBar;
 class QPushButton;
@@ -25,6 +27,11 @@ class RunPanel : public QWidget {
   QPushButton* resumeButton() const { return resume_; }
   QProgressBar* progressBar() const { return progress_; }
   QLabel* messageLabel() const { return message_; }
+  QLabel* etaLabel() const { return eta_; }
+  QLabel* stateLabel() const { return state_; }
+  QLabel* resumeLabel() const { return resumeInfo_; }
+  // What "Write the profile's settings..." in the settings question opens.
+  void setOpenSettings(std::function<void()> open) { openSettings_ = std::move(open); }
 
  public slots:
   void refresh();
@@ -33,6 +40,9 @@ class RunPanel : public QWidget {
  private:
   void startClicked();
   void resumeClicked();
+  // The questions before Start; false when the user (or the board's state) says no.
+  bool confirmDiscardResume();
+  bool confirmSettings();
 
   RunController& run_;
   MachineSession& session_;
@@ -46,6 +56,7 @@ class RunPanel : public QWidget {
   QLabel* state_ = nullptr;
   QLabel* eta_ = nullptr;
   QLabel* message_ = nullptr;
+  std::function<void()> openSettings_;
 };
 
 // "1 h 02 min", "3 min 05 s", "42 s" (translated units); "–" when unknown (< 0).
