@@ -21,6 +21,9 @@ int runSend(const Args& args);           // cmd_send.cpp (Qt builds only)
 int runSetup(const Args& args);          // cmd_machine.cpp (Qt builds only)
 int runReference(const Args& args);      // cmd_reference.cpp (Qt builds only)
 int runHome(const Args& args);           // cmd_reference.cpp (Qt builds only)
+int runCalibrate(const Args& args);      // cmd_calibrate.cpp (Qt builds only: the scan reads images)
+int runCalibratePattern(const Args& args);  // cmd_calibrate_pattern.cpp
+int runCalibrateScan(const Args& args);     // cmd_calibrate_scan.cpp
 // Further commands are declared here as they land (plan, grbl-settings, stream, send).
 
 }  // namespace fivebar::cli

@@ -29,6 +29,9 @@ constexpr Command kCommands[] = {
     {"home", "home the machine ($H, or a checked move to the home pose)", fivebar::cli::runHome},
     {"setup", "compare a GRBL board's settings with a profile; --write applies them", fivebar::cli::runSetup},
 #endif
+#ifdef FIVEBAR_HAVE_QT
+    {"calibrate", "calibration: pattern (G-code, MARKS.csv), scan (MEASURED.csv)", fivebar::cli::runCalibrate},
+#endif
 };
 
 void usage(std::ostream& out) {

@@ -344,10 +344,12 @@ double approachFeedDuration(const MachineProfile& p, double dTheta1, double dThe
 }  // namespace
 
 PatternResult makeCalibrationPattern(const MachineProfile& profile, const PatternOptions& options) {
-  return Builder(profile, options).run();
+  MachineProfile raw = profile;  // the raw machine, as planCalibrationPattern draws it
+  raw.calibration.reset();
+  return Builder(raw, options).run();
 }
 
-PlanResult planCalibrationPattern(const CalibrationPattern& pattern, const MachineProfile& profile,
+PlanResult planCalibrationPattern(const CalibrationPattern& pattern, const MachineProfile& calibrated,
                                   double approachRad) {
   Layer layer;
   layer.id = layer.name = "calibration pattern";
@@ -355,6 +357,10 @@ PlanResult planCalibrationPattern(const CalibrationPattern& pattern, const Machi
   PlanOptions options;
   options.optimise = false;  // marks in id order; each dot after its ring and number
   options.mode = pattern.mode;
+  // The raw machine: no calibration applied (no backlash compensation, commanded = kinematic),
+  // so the G-code angles are the marks' angles and the rows really reverse.
+  MachineProfile profile = calibrated;
+  profile.calibration.reset();
   PlanResult r = planStrokes(pattern.strokes, layers, profile, pattern.mode, options);
   if (!r.ok()) return r;
   std::vector<int> markOfStroke(pattern.strokes.size(), -1);

@@ -62,15 +62,15 @@ struct PatternResult {
   std::string error;  // why there is none
 };
 
-// Marks for `profile` in its default working mode; every mark, its ring and number area and its
+// Marks for `profile` (its calibration left out) in its default working mode; every mark, its ring and number area and its
 // approach excursions pass checkPose / checkJointMove (workspace, joint limits, type I and II
 // margins). Fails when fewer than kMinPatternMarks grid marks fit.
 inline constexpr int kMinPatternMarks = 8;
 PatternResult makeCalibrationPattern(const MachineProfile& profile,
                                      const PatternOptions& options = {});
 
-// The pattern planned by the one planner (planStrokes, in order, no backlash compensation: the
-// pattern measures the raw machine), with each dot's approach inserted before it lowers the pen:
+// The pattern planned by the one planner (planStrokes, in order, with the profile's calibration
+// left out: no zero offsets, no backlash compensation; the pattern measures the raw machine), with each dot's approach inserted before it lowers the pen:
 // a pen-up move away by approachRad against each motor's approach direction and back, both
 // checked with checkJointMove. Times are estimated again afterwards.
 PlanResult planCalibrationPattern(const CalibrationPattern& pattern, const MachineProfile& profile,

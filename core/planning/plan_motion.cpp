@@ -9,6 +9,7 @@
 #include <limits>
 #include <optional>
 
+#include "core/planning/backlash_compensation.hpp"
 #include "core/planning/feeds.hpp"
 #include "core/support/memory_hint.hpp"
 #include "core/kinematics/move_samples.hpp"
@@ -499,6 +500,18 @@ PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Lay
   StageClock clock(out.timings);
   MotionPlanner(strokes, layers, profile, mode, options, out).run(budget);
   clock.lap("segmentation, feeds, travel");
+  // Backlash compensation (backlash_compensation.hpp): only when the profile's calibration has
+  // play, so a job without it is byte-identical to before.
+  if (profile.calibration && out.report.problems.empty()) {
+    const MotorPlay play{profile.calibration->backlashRad1, profile.calibration->backlashRad2};
+    if (!play.none()) {
+      const BacklashPass pass = compensateBacklash(out.job, profile, play);
+      if (!pass.ok)
+        out.report.problems.push_back({"backlash compensation", pass.problem.where, pass.message,
+                                       {"move the drawing away from the workspace edge (--at)"}});
+      clock.lap("backlash compensation");
+    }
+  }
   if (options.cancel != nullptr && options.cancel->load()) {
     out.status = PlanStatus::Cancelled;
     out.message = "planning cancelled";

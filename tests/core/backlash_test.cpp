@@ -157,6 +157,24 @@ TEST(BacklashCompensation, EndsAtTheStartPoseAndKeepsStrokesConsistent) {
   EXPECT_EQ(job.moves[static_cast<size_t>(s.firstMove + s.moveCount)].kind, JobMoveKind::PenUp);
 }
 
+// The planner applies the compensation of the profile's calibration to every job.
+TEST(BacklashCompensation, PlannerAppliesTheProfilesBacklash) {
+  MachineProfile p = *preset("maker-plotter");
+  const PlannedJob plain = planOne(circle(Vec2(0, 175), 30.0, 90), p);
+  p.calibration = MachineCalibration{};
+  EXPECT_EQ(writeGcode(planOne(circle(Vec2(0, 175), 30.0, 90), p), p), writeGcode(plain, p))
+      << "a calibration without backlash changes nothing";
+  p.calibration->backlashRad1 = kPlay.motor1Rad;
+  p.calibration->backlashRad2 = kPlay.motor2Rad;
+  const PlannedJob comp = planOne(circle(Vec2(0, 175), 30.0, 90), p);
+  EXPECT_GT(comp.moves.size(), plain.moves.size());
+  EXPECT_GT(comp.summary.estimatedTimeS, plain.summary.estimatedTimeS);  // times refilled
+  const DrawnErrors e = drawnErrors(comp, p, kPlay);
+  EXPECT_LT(e.worstVertexMm, 0.05);
+  EXPECT_LT(e.closureGapMm, 0.05);
+  EXPECT_GT(drawnErrors(plain, p, kPlay).closureGapMm, 0.3);
+}
+
 // Measured positions of the pattern's marks on a machine with play, in a turned and mirrored
 // paper frame with noise: the rows give each motor's play back.
 TEST(BacklashEstimate, FromThePatternsRows) {

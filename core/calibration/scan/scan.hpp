@@ -1,0 +1,35 @@
+// `fivebar calibrate scan`: the calibration pattern's marks found in a scanned sheet (PNG/JPEG at
+// a known dpi) and numbered by matching the pattern. The paper frame of the result: mm from the
+// image's lower left corner, x right, y up (the sheet may lie turned or mirrored in it).
+// Algorithm and the choice of Qt's QImage: docs/calibration-pattern.md "Scan".
+#pragma once
+
+#include <QImage>
+#include <string>
+#include <vector>
+
+#include "core/calibration/marks_csv.hpp"
+
+namespace fivebar {
+
+inline constexpr double kMmPerInch = 25.4;
+// Widest pen line the ring test allows for (mm).
+inline constexpr double kScanMaxPenMm = 1.5;
+
+struct ScanOutcome {
+  std::vector<MeasuredMark> measured;  // every matched mark, ordered by id
+  std::vector<int> missingIds;         // pattern marks not found
+  int foundMarks = 0;                  // rings with a dot found in the image
+  bool mirrored = false;               // the sheet lies mirrored in the image
+  double rotationDeg = 0.0;            // of the sheet in the image
+  double rmsMm = 0.0;                  // rigid-placement residual against the nominal marks
+  std::string error;                   // names the file and what is wrong; empty when ok
+  bool ok() const { return error.empty(); }
+};
+
+ScanOutcome scanImage(const QImage& image, double dpi, const std::vector<MarkRecord>& marks,
+                      const std::string& source);
+// Reads the image (any format Qt reads: PNG, JPEG, ...) then scanImage.
+ScanOutcome scanFile(const std::string& path, double dpi, const std::vector<MarkRecord>& marks);
+
+}  // namespace fivebar
