@@ -1,2082 +1,2611 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
-    <context>
-        <name>DocumentCommands</name>
-        <message>
-            <source>Import drawing</source>
-            <translation>Zeichnung importieren</translation>
-        </message>
-        <message>
-            <source>Move drawing</source>
-            <translation>Zeichnung verschieben</translation>
-        </message>
-        <message>
-            <source>Change working mode</source>
-            <translation>Arbeitsmodus ändern</translation>
-        </message>
-        <message>
-            <source>Change machine profile</source>
-            <translation>Maschinenprofil ändern</translation>
-        </message>
-    </context>
-    <context>
-        <name>ImportWarningsPanel</name>
-        <message>
-            <source>%1 has %2 points after flattening, more than the budget of %3 (a runaway file?).</source>
-            <translation>%1 hat nach dem Glätten %2 Punkte, mehr als das Budget von %3 (eine außer Kontrolle geratene Datei?).</translation>
-        </message>
-        <message>
-            <source>Very large drawing</source>
-            <translation>Sehr große Zeichnung</translation>
-        </message>
-        <message>
-            <source>Planning and plotting it may take very long. Import it anyway?</source>
-            <translation>Planen und Zeichnen können sehr lange dauern. Trotzdem importieren?</translation>
-        </message>
-    </context>
-    <context>
-        <name>JobPipeline</name>
-        <message>
-            <source>Nothing to plan: the drawing has no visible path.</source>
-            <translation>Nichts zu planen: Die Zeichnung hat keinen sichtbaren Pfad.</translation>
-        </message>
-        <message>
-            <source>Planning cancelled.</source>
-            <translation>Planung abgebrochen.</translation>
-        </message>
-        <message>
-            <source>Planned in working mode %1.</source>
-            <translation>Geplant im Arbeitsmodus %1.</translation>
-        </message>
-        <message>
-            <source>This job is long: about %1 hours and %2 pen-down moves. The machine will be busy all that time. Start it anyway?</source>
-            <translation>Dieser Auftrag ist lang: etwa %1 Stunden und %2 Zeichenbewegungen. Die Maschine ist die ganze Zeit beschäftigt. Trotzdem starten?</translation>
-        </message>
-        <message>
-            <source>The job is not feasible in this working mode.</source>
-            <translation>Der Auftrag ist in diesem Arbeitsmodus nicht ausführbar.</translation>
-        </message>
-        <message>
-            <source>No working mode can draw the whole job.</source>
-            <translation>Kein Arbeitsmodus kann den ganzen Auftrag zeichnen.</translation>
-        </message>
-    </context>
-    <context>
-        <name>MapPainter</name>
-        <message>
-            <source>Transmission angle at the pen (deg)</source>
-            <translation>Übertragungswinkel am Stift (Grad)</translation>
-        </message>
-        <message>
-            <source>Conditioning (1 = isotropic)</source>
-            <translation>Kondition (1 = isotrop)</translation>
-        </message>
-        <message>
-            <source>Resolution (um per motor step)</source>
-            <translation>Auflösung (µm je Motorschritt)</translation>
-        </message>
-    </context>
-    <context>
-        <name>QObject</name>
-        <message>
-            <source>Planning failed: %1</source>
-            <translation>Planung fehlgeschlagen: %1</translation>
-        </message>
-    </context>
-    <context>
-        <name>WorkspaceLegend</name>
-        <message>
-            <source>type II &gt;= %1 deg, type I &gt;= %2 deg</source>
-            <translation>Typ II &gt;= %1°, Typ I &gt;= %2°</translation>
-        </message>
-        <message>
-            <source>none</source>
-            <translation>keins</translation>
-        </message>
-        <message>
-            <source>singularity-free (%1)</source>
-            <translation>singularitätsfrei (%1)</translation>
-        </message>
-        <message>
-            <source>reachable, within a singularity margin</source>
-            <translation>erreichbar, innerhalb eines Singularitätsabstands</translation>
-        </message>
-        <message>
-            <source>reach boundary</source>
-            <translation>Reichweitengrenze</translation>
-        </message>
-        <message>
-            <source>singularity-free boundary</source>
-            <translation>Grenze des singularitätsfreien Bereichs</translation>
-        </message>
-        <message>
-            <source>type II singularity (%1 curves)</source>
-            <translation>Typ-II-Singularität (%1 Kurven)</translation>
-        </message>
-        <message>
-            <source>largest rectangle: %1</source>
-            <translation>größtes Rechteck: %1</translation>
-        </message>
-        <message>
-            <source>reachable area: %1 cm²</source>
-            <translation>erreichbare Fläche: %1 cm²</translation>
-        </message>
-        <message>
-            <source>singularity-free area: %1 cm²</source>
-            <translation>singularitätsfreie Fläche: %1 cm²</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::studio::FileActions</name>
-        <message>
-            <source>Unsaved changes</source>
-            <translation>Ungespeicherte Änderungen</translation>
-        </message>
-        <message>
-            <source>%1 has changes that are not saved. Save them first?</source>
-            <translation>%1 hat ungespeicherte Änderungen. Zuerst speichern?</translation>
-        </message>
-        <message>
-            <source>Cannot save %1: %2</source>
-            <translation>%1 kann nicht gespeichert werden: %2</translation>
-        </message>
-        <message>
-            <source>Nothing to save: open a drawing first.</source>
-            <translation>Nichts zu speichern: zuerst eine Zeichnung öffnen.</translation>
-        </message>
-        <message>
-            <source>Save failed</source>
-            <translation>Speichern fehlgeschlagen</translation>
-        </message>
-        <message>
-            <source>Saved %1</source>
-            <translation>%1 gespeichert</translation>
-        </message>
-        <message>
-            <source>Save project</source>
-            <translation>Projekt speichern</translation>
-        </message>
-        <message>
-            <source>FiveBar projects (*.fivebar)</source>
-            <translation>FiveBar-Projekte (*.fivebar)</translation>
-        </message>
-        <message>
-            <source>The job is still being planned; export it when planning is done.</source>
-            <translation>Der Auftrag wird noch geplant; exportieren Sie ihn, wenn die Planung fertig ist.</translation>
-        </message>
-        <message>
-            <source>There is no planned job to export (see the job preview).</source>
-            <translation>Es gibt keinen geplanten Auftrag zum Exportieren (siehe Auftragsvorschau).</translation>
-        </message>
-        <message>
-            <source>Cannot write %1: %2</source>
-            <translation>%1 kann nicht geschrieben werden: %2</translation>
-        </message>
-        <message>
-            <source>Export G-code</source>
-            <translation>G-Code exportieren</translation>
-        </message>
-        <message>
-            <source>G-code (*.gcode *.nc);;All files (*)</source>
-            <translation>G-Code (*.gcode *.nc);;Alle Dateien (*)</translation>
-        </message>
-        <message>
-            <source>Exported %1</source>
-            <translation>%1 exportiert</translation>
-        </message>
-        <message>
-            <source>Clear list</source>
-            <translation>Liste leeren</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::studio::MainWindow</name>
-        <message>
-            <source>FiveBar Studio</source>
-            <translation>FiveBar Studio</translation>
-        </message>
-        <message>
-            <source>x %1 mm, y %2 mm</source>
-            <translation>x %1 mm, y %2 mm</translation>
-        </message>
-        <message>
-            <source>Planning...</source>
-            <translation>Planung läuft …</translation>
-        </message>
-        <message>
-            <source>Workspace</source>
-            <translation>Arbeitsraum</translation>
-        </message>
-        <message>
-            <source>Placement</source>
-            <translation>Platzierung</translation>
-        </message>
-        <message>
-            <source>Layers</source>
-            <translation>Ebenen</translation>
-        </message>
-        <message>
-            <source>Job preview</source>
-            <translation>Auftragsvorschau</translation>
-        </message>
-        <message>
-            <source>Simulation</source>
-            <translation>Simulation</translation>
-        </message>
-        <message>
-            <source>&amp;File</source>
-            <translation>&amp;Datei</translation>
-        </message>
-        <message>
-            <source>Open &amp;recent</source>
-            <translation>&amp;Zuletzt geöffnet</translation>
-        </message>
-        <message>
-            <source>&amp;Quit</source>
-            <translation>&amp;Beenden</translation>
-        </message>
-        <message>
-            <source>&amp;Edit</source>
-            <translation>&amp;Bearbeiten</translation>
-        </message>
-        <message>
-            <source>&amp;Undo</source>
-            <translation>&amp;Rückgängig</translation>
-        </message>
-        <message>
-            <source>&amp;Redo</source>
-            <translation>&amp;Wiederherstellen</translation>
-        </message>
-        <message>
-            <source>&amp;Fit drawing to workspace</source>
-            <translation>Zeichnung in den Arbeitsraum &amp;einpassen</translation>
-        </message>
-        <message>
-            <source>Ctrl+F</source>
-            <translation>Ctrl+F</translation>
-        </message>
-        <message>
-            <source>&amp;View</source>
-            <translation>&amp;Ansicht</translation>
-        </message>
-        <message>
-            <source>Zoom &amp;in</source>
-            <translation>Ver&amp;größern</translation>
-        </message>
-        <message>
-            <source>Ctrl+=</source>
-            <translation>Ctrl+=</translation>
-        </message>
-        <message>
-            <source>Zoom &amp;out</source>
-            <translation>Ver&amp;kleinern</translation>
-        </message>
-        <message>
-            <source>Zoom to &amp;fit</source>
-            <translation>&amp;Alles zeigen</translation>
-        </message>
-        <message>
-            <source>Ctrl+0</source>
-            <translation>Ctrl+0</translation>
-        </message>
-        <message>
-            <source>&amp;Simulation</source>
-            <translation>&amp;Simulation</translation>
-        </message>
-        <message>
-            <source>&amp;Play / pause</source>
-            <translation>&amp;Abspielen / Pause</translation>
-        </message>
-        <message>
-            <source>F5</source>
-            <translation>F5</translation>
-        </message>
-        <message>
-            <source>Step &amp;forward</source>
-            <translation>Schritt &amp;vor</translation>
-        </message>
-        <message>
-            <source>F6</source>
-            <translation>F6</translation>
-        </message>
-        <message>
-            <source>Step &amp;back</source>
-            <translation>Schritt &amp;zurück</translation>
-        </message>
-        <message>
-            <source>Shift+F6</source>
-            <translation>Shift+F6</translation>
-        </message>
-        <message>
-            <source>&amp;Machine</source>
-            <translation>&amp;Maschine</translation>
-        </message>
-        <message>
-            <source>&amp;Help</source>
-            <translation>&amp;Hilfe</translation>
-        </message>
-        <message>
-            <source>&amp;About FiveBar Studio</source>
-            <translation>&amp;Über FiveBar Studio</translation>
-        </message>
-        <message>
-            <source>About FiveBar Studio</source>
-            <translation>Über FiveBar Studio</translation>
-        </message>
-        <message>
-            <source>&lt;b&gt;FiveBar Studio %1&lt;/b&gt;&lt;p&gt;Plans and simulates drawings for five-bar linkage robots: workspace and singularity analysis, safe job planning, GRBL output.&lt;/p&gt;</source>
-            <translation>&lt;b&gt;FiveBar Studio %1&lt;/b&gt;&lt;p&gt;Plant und simuliert Zeichnungen für Fünfgelenk-Roboter: Arbeitsraum- und Singularitätsanalyse, sichere Auftragsplanung, GRBL-Ausgabe.&lt;/p&gt;</translation>
-        </message>
-        <message>
-            <source>Main</source>
-            <translation>Haupt</translation>
-        </message>
-        <message>
-            <source>&amp;Open drawing or project...</source>
-            <translation>Zeichnung oder Projekt &amp;öffnen...</translation>
-        </message>
-        <message>
-            <source>&amp;Save project</source>
-            <translation>Projekt &amp;speichern</translation>
-        </message>
-        <message>
-            <source>Save project &amp;as...</source>
-            <translation>Projekt speichern &amp;unter...</translation>
-        </message>
-        <message>
-            <source>&amp;Export G-code...</source>
-            <translation>G-Code &amp;exportieren...</translation>
-        </message>
-        <message>
-            <source>Ctrl+E</source>
-            <translation>Ctrl+E</translation>
-        </message>
-        <message>
-            <source>&amp;Actual size (100 %)</source>
-            <translation>&amp;Originalgröße (100 %)</translation>
-        </message>
-        <message>
-            <source>Ctrl+1</source>
-            <translation>Ctrl+1</translation>
-        </message>
-        <message>
-            <source>%1[*] - FiveBar Studio</source>
-            <translation>%1[*] - FiveBar Studio</translation>
-        </message>
-        <message>
-            <source>Fills</source>
-            <translation>Füllungen</translation>
-        </message>
-        <message>
-            <source>Import warnings</source>
-            <translation>Importwarnungen</translation>
-        </message>
-        <message>
-            <source>&amp;Open drawing...</source>
-            <translation>Zeichnung ö&amp;ffnen …</translation>
-        </message>
-        <message>
-            <source>Clear list</source>
-            <translation>Liste leeren</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::ConsolePanel</name>
-        <message>
-            <source>Lines sent to and received from the machine appear here.</source>
-            <translation>Hier erscheinen die an die Maschine gesendeten und von ihr empfangenen Zeilen.</translation>
-        </message>
-        <message>
-            <source>G-code or $ command, e.g. $$ or G0 X10 Y20</source>
-            <translation>G-Code oder $-Befehl, z. B. $$ oder G0 X10 Y20</translation>
-        </message>
-        <message>
-            <source>Send</source>
-            <translation>Senden</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::FillOptionsBox</name>
-        <message>
-            <source>Filled shapes</source>
-            <translation>Gefüllte Formen</translation>
-        </message>
-        <message>
-            <source>Outline</source>
-            <translation>Umriss</translation>
-        </message>
-        <message>
-            <source>Hatch</source>
-            <translation>Schraffur</translation>
-        </message>
-        <message>
-            <source>Not drawn</source>
-            <translation>Nicht zeichnen</translation>
-        </message>
-        <message>
-            <source>Outline: the shape's edge (as AxiDraw and vpype draw fills). Hatch: parallel lines inside the shape. Not drawn: fill-only shapes are left out.</source>
-            <translation>Umriss: der Rand der Form (wie AxiDraw und vpype Füllungen zeichnen). Schraffur: parallele Linien in der Form. Nicht zeichnen: nur gefüllte Formen entfallen.</translation>
-        </message>
-        <message>
-            <source> mm</source>
-            <translation> mm</translation>
-        </message>
-        <message>
-            <source> deg</source>
-            <translation> Grad</translation>
-        </message>
-        <message>
-            <source>Crosshatch</source>
-            <translation>Kreuzschraffur</translation>
-        </message>
-        <message>
-            <source>Keep the outline</source>
-            <translation>Umriss behalten</translation>
-        </message>
-        <message>
-            <source>Import again with these settings</source>
-            <translation>Mit diesen Einstellungen neu importieren</translation>
-        </message>
-        <message>
-            <source>Fill:</source>
-            <translation>Füllung:</translation>
-        </message>
-        <message>
-            <source>Line spacing:</source>
-            <translation>Linienabstand:</translation>
-        </message>
-        <message>
-            <source>Angle:</source>
-            <translation>Winkel:</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::GoToTool</name>
-        <message>
-            <source>Connect the machine first: its position is not known.</source>
-            <translation>Verbinden Sie zuerst die Maschine: ihre Position ist nicht bekannt.</translation>
-        </message>
-        <message>
-            <source>Go to %1, %2 mm? The dashed path is the pen's travel (%3 checked moves).</source>
-            <translation>Nach %1, %2 mm fahren? Der gestrichelte Weg ist die Fahrt des Stifts (%3 geprüfte Bewegungen).</translation>
-        </message>
-        <message>
-            <source>Cannot go there: %1</source>
-            <translation>Dorthin kann nicht gefahren werden: %1</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::ImportController</name>
-        <message>
-            <source>%1: another import is still running.</source>
-            <translation>%1: Ein anderer Import läuft noch.</translation>
-        </message>
-        <message>
-            <source>Importing %1...</source>
-            <translation>%1 wird importiert …</translation>
-        </message>
-        <message>
-            <source>Cancel</source>
-            <translation>Abbrechen</translation>
-        </message>
-        <message>
-            <source>Import</source>
-            <translation>Import</translation>
-        </message>
-        <message>
-            <source>Import of %1 cancelled.</source>
-            <translation>Import von %1 abgebrochen.</translation>
-        </message>
-        <message>
-            <source>%1 could not be imported.</source>
-            <translation>%1 konnte nicht importiert werden.</translation>
-        </message>
-        <message>
-            <source>Import failed</source>
-            <translation>Import fehlgeschlagen</translation>
-        </message>
-        <message>
-            <source>%1 contains nothing to draw.</source>
-            <translation>%1 enthält nichts zu zeichnen.</translation>
-        </message>
-        <message>
-            <source>Open drawing or project</source>
-            <translation>Zeichnung oder Projekt öffnen</translation>
-        </message>
-        <message>
-            <source>Drawings and projects (*.svg *.fivebar);;SVG drawings (*.svg);;FiveBar projects (*.fivebar);;All files (*)</source>
-            <translation>Zeichnungen und Projekte (*.svg *.fivebar);;SVG-Zeichnungen (*.svg);;FiveBar-Projekte (*.fivebar);;Alle Dateien (*)</translation>
-        </message>
-        <message>
-            <source>Open drawing</source>
-            <translation>Zeichnung öffnen</translation>
-        </message>
-        <message>
-            <source>SVG drawings (*.svg);;All files (*)</source>
-            <translation>SVG-Zeichnungen (*.svg);;Alle Dateien (*)</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::JobLayer</name>
-        <message>
-            <source>Planning...</source>
-            <translation>Planung läuft...</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::ImportWarningsPanel</name>
-        <message>
-            <source>No drawing imported yet.</source>
-            <translation>Noch keine Zeichnung importiert.</translation>
-        </message>
-        <message>
-            <source>What the importer dropped, approximated or could not draw. docs/svg-import.md lists what is supported.</source>
-            <translation>Was der Import weggelassen, angenähert oder nicht zeichnen konnte. docs/svg-import.md listet, was unterstützt wird.</translation>
-        </message>
-        <message>
-            <source>%1 imported without warnings.</source>
-            <translation>%1 ohne Warnungen importiert.</translation>
-        </message>
-        <message>
-            <source>1 warning while importing %1: part of the drawing may differ from what a browser shows.</source>
-            <translation>1 Warnung beim Import von %1: ein Teil der Zeichnung kann von der Anzeige im Browser abweichen.</translation>
-        </message>
-        <message>
-            <source>%1 warnings while importing %2: parts of the drawing may differ from what a browser shows.</source>
-            <translation>%1 Warnungen beim Import von %2: Teile der Zeichnung können von der Anzeige im Browser abweichen.</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::JogController</name>
-        <message>
-            <source>Jog refused: the machine is not connected, not idle, or a job is running.</source>
-            <translation>Verfahren abgelehnt: Die Maschine ist nicht verbunden, nicht bereit, oder ein Auftrag läuft.</translation>
-        </message>
-        <message>
-            <source>Jog stopped at the last safe point: %1</source>
-            <translation>Verfahren am letzten sicheren Punkt angehalten: %1</translation>
-        </message>
-        <message>
-            <source>Jog refused: %1</source>
-            <translation>Verfahren abgelehnt: %1</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::JogPanel</name>
-        <message>
-            <source>Jog the pen %1 mm in X, %2 mm in Y per step; hold for a continuous jog</source>
-            <translation>Stift pro Schritt um %1 mm in X und %2 mm in Y verfahren; gedrückt halten für fortlaufendes Verfahren</translation>
-        </message>
-        <message>
-            <source>Go to…</source>
-            <translation>Anfahren…</translation>
-        </message>
-        <message>
-            <source>Click the canvas to choose where the pen goes; the path is shown before you confirm.</source>
-            <translation>Klicken Sie auf die Zeichenfläche, um das Ziel des Stifts zu wählen; der Weg wird vor der Bestätigung angezeigt.</translation>
-        </message>
-        <message>
-            <source>Turn motor %1 clockwise by one step</source>
-            <translation>Motor %1 um einen Schritt im Uhrzeigersinn drehen</translation>
-        </message>
-        <message>
-            <source>Turn motor %1 counter-clockwise by one step</source>
-            <translation>Motor %1 um einen Schritt gegen den Uhrzeigersinn drehen</translation>
-        </message>
-        <message>
-            <source>Step</source>
-            <translation>Schritt</translation>
-        </message>
-        <message>
-            <source>mm / °</source>
-            <translation>mm / °</translation>
-        </message>
-        <message>
-            <source> mm/s</source>
-            <translation> mm/s</translation>
-        </message>
-        <message>
-            <source>Pen up</source>
-            <translation>Stift hoch</translation>
-        </message>
-        <message>
-            <source>Lift the pen (Page Up on the canvas)</source>
-            <translation>Stift anheben (Bild auf auf der Zeichenfläche)</translation>
-        </message>
-        <message>
-            <source>Pen down</source>
-            <translation>Stift ab</translation>
-        </message>
-        <message>
-            <source>Lower the pen (Page Down on the canvas)</source>
-            <translation>Stift absenken (Bild ab auf der Zeichenfläche)</translation>
-        </message>
-        <message>
-            <source>Go</source>
-            <translation>Los</translation>
-        </message>
-        <message>
-            <source>Cancel</source>
-            <translation>Abbrechen</translation>
-        </message>
-        <message>
-            <source>Click the canvas where the pen should go.</source>
-            <translation>Klicken Sie auf die Stelle der Zeichenfläche, die der Stift anfahren soll.</translation>
-        </message>
-        <message>
-            <source>Home ($H)</source>
-            <translation>Referenzfahrt ($H)</translation>
-        </message>
-        <message>
-            <source>Set reference pose</source>
-            <translation>Referenzpose setzen</translation>
-        </message>
-        <message>
-            <source>Run the homing cycle</source>
-            <translation>Referenzfahrt ausführen</translation>
-        </message>
-        <message>
-            <source>Declare that the machine now stands at the profile's home pose</source>
-            <translation>Festlegen, dass die Maschine jetzt in der Ausgangspose des Profils steht</translation>
-        </message>
-        <message>
-            <source>Speed of XY jogs</source>
-            <translation>Geschwindigkeit beim XY-Verfahren</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::LayersPanel</name>
-        <message>
-            <source>Plot this layer earlier</source>
-            <translation>Diese Ebene früher zeichnen</translation>
-        </message>
-        <message>
-            <source>Plot this layer later</source>
-            <translation>Diese Ebene später zeichnen</translation>
-        </message>
-        <message>
-            <source>Tool settings of the selected layer</source>
-            <translation>Werkzeugeinstellungen der gewählten Ebene</translation>
-        </message>
-        <message>
-            <source> mm/s</source>
-            <translation> mm/s</translation>
-        </message>
-        <message>
-            <source>Profile default</source>
-            <translation>Profilvorgabe</translation>
-        </message>
-        <message>
-            <source>Pause before this layer (pen change)</source>
-            <translation>Vor dieser Ebene anhalten (Stiftwechsel)</translation>
-        </message>
-        <message>
-            <source>Draw speed:</source>
-            <translation>Zeichengeschwindigkeit:</translation>
-        </message>
-        <message>
-            <source>Power / pen S:</source>
-            <translation>Leistung / Stift-S:</translation>
-        </message>
-        <message numerus="yes">
-            <source>%n path(s)</source>
-            <translation>
-                <numerusform>%n Pfad</numerusform>
-                <numerusform>%n Pfade</numerusform>
-            </translation>
-        </message>
-        <message numerus="yes">
-            <source>%n point(s)</source>
-            <translation>
-                <numerusform>%n Punkt</numerusform>
-                <numerusform>%n Punkte</numerusform>
-            </translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::MachineBanner</name>
-        <message>
-            <source>Reset</source>
-            <translation>Zurücksetzen</translation>
-        </message>
-        <message>
-            <source>Soft reset (Ctrl-X): stops everything; the machine keeps its position unless it was moving.</source>
-            <translation>Soft-Reset (Strg-X): hält alles an; die Maschine behält ihre Position, sofern sie sich nicht bewegt hat.</translation>
-        </message>
-        <message>
-            <source>Unlock ($X)</source>
-            <translation>Entsperren ($X)</translation>
-        </message>
-        <message>
-            <source>Leave the alarm state without homing. Only when you know the machine stands where the studio shows it.</source>
-            <translation>Den Alarmzustand ohne Referenzfahrt verlassen. Nur wenn Sie wissen, dass die Maschine dort steht, wo das Studio sie zeigt.</translation>
-        </message>
-        <message>
-            <source>Dismiss</source>
-            <translation>Schließen</translation>
-        </message>
-        <message>
-            <source>Alarm %1: the machine stopped</source>
-            <translation>Alarm %1: Die Maschine hat angehalten</translation>
-        </message>
-        <message>
-            <source>Alarm: the machine is locked</source>
-            <translation>Alarm: Die Maschine ist gesperrt</translation>
-        </message>
-        <message>
-            <source>Error %1: a command was rejected</source>
-            <translation>Fehler %1: Ein Befehl wurde abgelehnt</translation>
-        </message>
-        <message>
-            <source>The board waits for a reset first: press Reset, then Unlock.</source>
-            <translation>Die Steuerung erwartet zuerst ein Zurücksetzen: Drücken Sie Zurücksetzen, dann Entsperren.</translation>
-        </message>
-        <message>
-            <source>Home ($H)</source>
-            <translation>Referenzfahrt ($H)</translation>
-        </message>
-        <message>
-            <source>Set reference pose</source>
-            <translation>Referenzpose setzen</translation>
-        </message>
-        <message>
-            <source>Run the homing cycle; the machine moves to its switches.</source>
-            <translation>Referenzfahrt ausführen; die Maschine fährt an ihre Endschalter.</translation>
-        </message>
-        <message>
-            <source>Declare that the machine now stands at the profile's home pose (G10 L20).</source>
-            <translation>Festlegen, dass die Maschine jetzt in der Ausgangspose des Profils steht (G10 L20).</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::MachinePanel</name>
-        <message>
-            <source>Idle</source>
-            <translation>Bereit</translation>
-        </message>
-        <message>
-            <source>Running</source>
-            <translation>Läuft</translation>
-        </message>
-        <message>
-            <source>On hold</source>
-            <translation>Angehalten</translation>
-        </message>
-        <message>
-            <source>Jogging</source>
-            <translation>Verfährt</translation>
-        </message>
-        <message>
-            <source>Alarm</source>
-            <translation>Alarm</translation>
-        </message>
-        <message>
-            <source>Door open</source>
-            <translation>Tür offen</translation>
-        </message>
-        <message>
-            <source>Check mode</source>
-            <translation>Prüfmodus</translation>
-        </message>
-        <message>
-            <source>Homing</source>
-            <translation>Referenzfahrt</translation>
-        </message>
-        <message>
-            <source>Sleeping</source>
-            <translation>Ruhezustand</translation>
-        </message>
-        <message>
-            <source>Unknown</source>
-            <translation>Unbekannt</translation>
-        </message>
-        <message>
-            <source>Refresh</source>
-            <translation>Aktualisieren</translation>
-        </message>
-        <message>
-            <source>List the serial ports again</source>
-            <translation>Serielle Schnittstellen neu auflisten</translation>
-        </message>
-        <message>
-            <source>Connect</source>
-            <translation>Verbinden</translation>
-        </message>
-        <message>
-            <source>Disconnect</source>
-            <translation>Trennen</translation>
-        </message>
-        <message>
-            <source>Baud</source>
-            <translation>Baud</translation>
-        </message>
-        <message>
-            <source>Connection</source>
-            <translation>Verbindung</translation>
-        </message>
-        <message>
-            <source>Status</source>
-            <translation>Status</translation>
-        </message>
-        <message>
-            <source>State</source>
-            <translation>Zustand</translation>
-        </message>
-        <message>
-            <source>Pen (X, Y)</source>
-            <translation>Stift (X, Y)</translation>
-        </message>
-        <message>
-            <source>Motors (θ1, θ2)</source>
-            <translation>Motoren (θ1, θ2)</translation>
-        </message>
-        <message>
-            <source>Buffers</source>
-            <translation>Puffer</translation>
-        </message>
-        <message>
-            <source>Simulated machine (built in)</source>
-            <translation>Simulierte Maschine (eingebaut)</translation>
-        </message>
-        <message>
-            <source>Cannot connect</source>
-            <translation>Verbindung nicht möglich</translation>
-        </message>
-        <message>
-            <source>Connected to %1</source>
-            <translation>Verbunden mit %1</translation>
-        </message>
-        <message>
-            <source>Not connected</source>
-            <translation>Nicht verbunden</translation>
-        </message>
-        <message>
-            <source>Offline</source>
-            <translation>Offline</translation>
-        </message>
-        <message>
-            <source>%1, %2 mm</source>
-            <translation>%1, %2 mm</translation>
-        </message>
-        <message>
-            <source>%1°, %2°</source>
-            <translation>%1°, %2°</translation>
-        </message>
-        <message>
-            <source>planner %1 of %2 blocks free, RX %3 of %4 bytes free</source>
-            <translation>Planer %1 von %2 Blöcken frei, RX %3 von %4 Bytes frei</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::MachineSession</name>
-        <message>
-            <source>Cannot open %1.</source>
-            <translation>%1 kann nicht geöffnet werden.</translation>
-        </message>
-        <message>
-            <source>Connected to %1.</source>
-            <translation>Verbunden mit %1.</translation>
-        </message>
-        <message>
-            <source>Disconnected.</source>
-            <translation>Getrennt.</translation>
-        </message>
-        <message>
-            <source>Not connected: %1 was not sent.</source>
-            <translation>Nicht verbunden: %1 wurde nicht gesendet.</translation>
-        </message>
-        <message>
-            <source>Not sent (%1): %2</source>
-            <translation>Nicht gesendet (%1): %2</translation>
-        </message>
-        <message>
-            <source>A job is running: %1 was not sent.</source>
-            <translation>Ein Auftrag läuft: %1 wurde nicht gesendet.</translation>
-        </message>
-        <message>
-            <source>Jog refused: the machine is not idle, not connected or a job is running.</source>
-            <translation>Verfahren abgelehnt: Die Maschine ist nicht bereit, nicht verbunden, oder ein Auftrag läuft.</translation>
-        </message>
-        <message>
-            <source>%1 (jog in %2 checked moves)</source>
-            <translation>%1 (Verfahren in %2 geprüften Bewegungen)</translation>
-        </message>
-        <message>
-            <source>[soft reset]</source>
-            <translation>[Soft-Reset]</translation>
-        </message>
-        <message>
-            <source>[feed hold]</source>
-            <translation>[Vorschub halten]</translation>
-        </message>
-        <message>
-            <source>[cycle start]</source>
-            <translation>[Zyklusstart]</translation>
-        </message>
-        <message>
-            <source>%1 was rejected: %2</source>
-            <translation>%1 wurde abgelehnt: %2</translation>
-        </message>
-        <message>
-            <source>The machine is locked (alarm state). Unlock it with $X or home it with $H once you know where it stands.</source>
-            <translation>Die Maschine ist gesperrt (Alarmzustand). Entsperren Sie sie mit $X oder führen Sie mit $H eine Referenzfahrt aus, sobald Sie wissen, wo sie steht.</translation>
-        </message>
-        <message>
-            <source>The board reset (Grbl %1).</source>
-            <translation>Die Steuerung wurde zurückgesetzt (Grbl %1).</translation>
-        </message>
-        <message>
-            <source>Connection lost: %1</source>
-            <translation>Verbindung verloren: %1</translation>
-        </message>
-        <message>
-            <source>the simulated machine</source>
-            <translation>der simulierten Maschine</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::MachineSettingsDialog</name>
-        <message>
-            <source>Machine settings</source>
-            <translation>Maschineneinstellungen</translation>
-        </message>
-        <message>
-            <source>The board's GRBL settings next to the values the machine profile needs. Writing saves a backup of the board's settings first.</source>
-            <translation>Die GRBL-Einstellungen der Steuerung neben den Werten, die das Maschinenprofil braucht. Vor dem Schreiben wird eine Sicherung der Einstellungen der Steuerung gespeichert.</translation>
-        </message>
-        <message>
-            <source>Setting</source>
-            <translation>Einstellung</translation>
-        </message>
-        <message>
-            <source>Board</source>
-            <translation>Steuerung</translation>
-        </message>
-        <message>
-            <source>Profile</source>
-            <translation>Profil</translation>
-        </message>
-        <message>
-            <source>Differs</source>
-            <translation>Abweichend</translation>
-        </message>
-        <message>
-            <source>Read from board</source>
-            <translation>Von der Steuerung lesen</translation>
-        </message>
-        <message>
-            <source>Write differences...</source>
-            <translation>Abweichungen schreiben...</translation>
-        </message>
-        <message>
-            <source>Close</source>
-            <translation>Schließen</translation>
-        </message>
-        <message>
-            <source>The machine was disconnected.</source>
-            <translation>Die Verbindung zur Maschine wurde getrennt.</translation>
-        </message>
-        <message>
-            <source>Connect the machine first.</source>
-            <translation>Zuerst die Maschine verbinden.</translation>
-        </message>
-        <message>
-            <source>A job is running.</source>
-            <translation>Ein Auftrag läuft.</translation>
-        </message>
-        <message>
-            <source>Still talking to the board.</source>
-            <translation>Die Kommunikation mit der Steuerung läuft noch.</translation>
-        </message>
-        <message>
-            <source>The machine must be idle (or in alarm) to change settings.</source>
-            <translation>Zum Ändern der Einstellungen muss die Maschine im Ruhezustand (oder im Alarm) sein.</translation>
-        </message>
-        <message>
-            <source>Reading the board's settings...</source>
-            <translation>Einstellungen der Steuerung werden gelesen...</translation>
-        </message>
-        <message>
-            <source>Nothing to write: read the board's settings first.</source>
-            <translation>Nichts zu schreiben: zuerst die Einstellungen der Steuerung lesen.</translation>
-        </message>
-        <message>
-            <source>Write settings</source>
-            <translation>Einstellungen schreiben</translation>
-        </message>
-        <message numerus="yes">
-            <source>Write %n setting(s) to the board? Its current settings are saved to a backup file first.</source>
-            <translation>
-                <numerusform>%n Einstellung auf die Steuerung schreiben? Ihre aktuellen Einstellungen werden zuvor in einer Sicherungsdatei gespeichert.</numerusform>
-                <numerusform>%n Einstellungen auf die Steuerung schreiben? Ihre aktuellen Einstellungen werden zuvor in einer Sicherungsdatei gespeichert.</numerusform>
-            </translation>
-        </message>
-        <message>
-            <source>The board's settings match the profile.</source>
-            <translation>Die Einstellungen der Steuerung stimmen mit dem Profil überein.</translation>
-        </message>
-        <message numerus="yes">
-            <source>%n setting(s) differ from the profile.</source>
-            <translation>
-                <numerusform>%n Einstellung weicht vom Profil ab.</numerusform>
-                <numerusform>%n Einstellungen weichen vom Profil ab.</numerusform>
-            </translation>
-        </message>
-        <message numerus="yes">
-            <source>%n setting(s) written. Backup of the previous settings: %1</source>
-            <translation>
-                <numerusform>%n Einstellung geschrieben. Sicherung der vorherigen Einstellungen: %1</numerusform>
-                <numerusform>%n Einstellungen geschrieben. Sicherung der vorherigen Einstellungen: %1</numerusform>
-            </translation>
-        </message>
-        <message>
-            <source>Writing settings one at a time... Backup: %1</source>
-            <translation>Einstellungen werden einzeln geschrieben... Sicherung: %1</translation>
-        </message>
-        <message>
-            <source>Failed: %1</source>
-            <translation>Fehlgeschlagen: %1</translation>
-        </message>
-        <message>
-            <source>yes</source>
-            <translation>ja</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::MachineUi</name>
-        <message>
-            <source>Machine</source>
-            <translation>Maschine</translation>
-        </message>
-        <message>
-            <source>Run</source>
-            <translation>Ausführen</translation>
-        </message>
-        <message>
-            <source>Jog</source>
-            <translation>Verfahren</translation>
-        </message>
-        <message>
-            <source>Console</source>
-            <translation>Konsole</translation>
-        </message>
-        <message>
-            <source>Machine profile</source>
-            <translation>Maschinenprofil</translation>
-        </message>
-        <message>
-            <source>Machine &amp;settings...</source>
-            <translation>Maschinen&amp;einstellungen...</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::ModePanel</name>
-        <message>
-            <source>Working mode</source>
-            <translation>Arbeitsmodus</translation>
-        </message>
-        <message>
-            <source>Auto</source>
-            <translation>Auto</translation>
-        </message>
-        <message>
-            <source>Let the planner pick the feasible mode with the largest margin</source>
-            <translation>Den Planer den ausführbaren Modus mit dem größten Abstand wählen lassen</translation>
-        </message>
-        <message>
-            <source>Elbows %1 (arm 1 %2, arm 2 %3)</source>
-            <translation>Ellbogen %1 (Arm 1 %2, Arm 2 %3)</translation>
-        </message>
-        <message>
-            <source>out</source>
-            <translation>außen</translation>
-        </message>
-        <message>
-            <source>in</source>
-            <translation>innen</translation>
-        </message>
-        <message>
-            <source>Overlays</source>
-            <translation>Überlagerungen</translation>
-        </message>
-        <message>
-            <source>Reachable and singularity-free regions</source>
-            <translation>Erreichbare und singularitätsfreie Bereiche</translation>
-        </message>
-        <message>
-            <source>Type II singularity curves</source>
-            <translation>Singularitätskurven Typ II</translation>
-        </message>
-        <message>
-            <source>Largest singularity-free rectangle</source>
-            <translation>Größtes singularitätsfreies Rechteck</translation>
-        </message>
-        <message>
-            <source>Workspace legend</source>
-            <translation>Arbeitsraum-Legende</translation>
-        </message>
-        <message>
-            <source>None</source>
-            <translation>Keine</translation>
-        </message>
-        <message>
-            <source>Transmission angle</source>
-            <translation>Übertragungswinkel</translation>
-        </message>
-        <message>
-            <source>Conditioning</source>
-            <translation>Kondition</translation>
-        </message>
-        <message>
-            <source>Resolution (mm per step)</source>
-            <translation>Auflösung (mm je Schritt)</translation>
-        </message>
-        <message>
-            <source>Map:</source>
-            <translation>Karte:</translation>
-        </message>
-        <message>
-            <source>Auto picked %1.</source>
-            <translation>Auto hat %1 gewählt.</translation>
-        </message>
-        <message>
-            <source>Auto: no mode draws the whole job; showing %1.</source>
-            <translation>Auto: Kein Modus zeichnet den ganzen Auftrag; %1 wird gezeigt.</translation>
-        </message>
-        <message>
-            <source>Showing the workspace of %1.</source>
-            <translation>Arbeitsraum von %1 wird gezeigt.</translation>
-        </message>
-        <message>
-            <source>Smallest singularity margin: %1 deg.</source>
-            <translation>Kleinster Singularitätsabstand: %1 Grad.</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::PlacementPanel</name>
-        <message>
-            <source> mm</source>
-            <translation> mm</translation>
-        </message>
-        <message>
-            <source> deg</source>
-            <translation> Grad</translation>
-        </message>
-        <message>
-            <source> %</source>
-            <translation> %</translation>
-        </message>
-        <message>
-            <source>Centre X:</source>
-            <translation>Mitte X:</translation>
-        </message>
-        <message>
-            <source>Centre Y:</source>
-            <translation>Mitte Y:</translation>
-        </message>
-        <message>
-            <source>Rotation:</source>
-            <translation>Drehung:</translation>
-        </message>
-        <message>
-            <source>Scale:</source>
-            <translation>Maßstab:</translation>
-        </message>
-        <message>
-            <source>Fit to workspace</source>
-            <translation>In Arbeitsraum einpassen</translation>
-        </message>
-        <message>
-            <source>Keep aspect ratio</source>
-            <translation>Seitenverhältnis beibehalten</translation>
-        </message>
-        <message>
-            <source>Width:</source>
-            <translation>Breite:</translation>
-        </message>
-        <message>
-            <source>Height:</source>
-            <translation>Höhe:</translation>
-        </message>
-        <message>
-            <source>Actual size</source>
-            <translation>Originalgröße</translation>
-        </message>
-        <message>
-            <source>Draw the drawing at its true size (100 %)</source>
-            <translation>Die Zeichnung in ihrer wahren Größe zeichnen (100 %)</translation>
-        </message>
-        <message>
-            <source>Scale the drawing to fill the largest singularity-free rectangle</source>
-            <translation>Die Zeichnung so skalieren, dass sie das größte singularitätsfreie Rechteck füllt</translation>
-        </message>
-        <message>
-            <source>No singularity-free area to fit the drawing into.</source>
-            <translation>Kein singularitätsfreier Bereich, in den die Zeichnung passt.</translation>
-        </message>
-        <message>
-            <source>Fitted: %1 %</source>
-            <translation>Eingepasst: %1 %</translation>
-        </message>
-        <message>
-            <source>Fit the drawing into the largest singularity-free rectangle</source>
-            <translation>Die Zeichnung in das größte singularitätsfreie Rechteck einpassen</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::PreviewPanel</name>
-        <message>
-            <source>%1 % of what this machine can do</source>
-            <translation>%1 % dessen, was diese Maschine kann</translation>
-        </message>
-        <message>
-            <source>%1 s</source>
-            <translation>%1 s</translation>
-        </message>
-        <message>
-            <source>%1 h %2 min</source>
-            <translation>%1 h %2 min</translation>
-        </message>
-        <message>
-            <source>%1 min %2 s</source>
-            <translation>%1 min %2 s</translation>
-        </message>
-        <message>
-            <source>Show</source>
-            <translation>Anzeigen</translation>
-        </message>
-        <message>
-            <source>Colour pen-down moves by speed</source>
-            <translation>Zeichenbewegungen nach Geschwindigkeit färben</translation>
-        </message>
-        <message>
-            <source>Pen-up moves (grey)</source>
-            <translation>Leerfahrten (grau)</translation>
-        </message>
-        <message>
-            <source>Drawing order</source>
-            <translation>Zeichenreihenfolge</translation>
-        </message>
-        <message>
-            <source>Pre-flight problems (click to show):</source>
-            <translation>Probleme der Vorabprüfung (zum Zeigen anklicken):</translation>
-        </message>
-        <message>
-            <source>Moves shown: %1 of %2</source>
-            <translation>Gezeigte Bewegungen: %1 von %2</translation>
-        </message>
-        <message>
-            <source>Planning...</source>
-            <translation>Planung läuft …</translation>
-        </message>
-        <message>
-            <source>Planned.</source>
-            <translation>Geplant.</translation>
-        </message>
-        <message>
-            <source>Open a drawing to plan a job.</source>
-            <translation>Öffnen Sie eine Zeichnung, um einen Auftrag zu planen.</translation>
-        </message>
-        <message>
-            <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Working mode:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Estimated time:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen down:&lt;/td&gt;&lt;td&gt;%3 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen up:&lt;/td&gt;&lt;td&gt;%4 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Segments:&lt;/td&gt;&lt;td&gt;%5&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Max deviation:&lt;/td&gt;&lt;td&gt;%6 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Singularity margin:&lt;/td&gt;&lt;td&gt;%7 deg&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
-            <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Arbeitsmodus:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Geschätzte Zeit:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Stift unten:&lt;/td&gt;&lt;td&gt;%3 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Stift oben:&lt;/td&gt;&lt;td&gt;%4 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Segmente:&lt;/td&gt;&lt;td&gt;%5&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Größte Abweichung:&lt;/td&gt;&lt;td&gt;%6 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Singularitätsabstand:&lt;/td&gt;&lt;td&gt;%7 Grad&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
-        </message>
-        <message>
-            <source>Working mode: &lt;b&gt;%1&lt;/b&gt;</source>
-            <translation>Arbeitsmodus: &lt;b&gt;%1&lt;/b&gt;</translation>
-        </message>
-        <message>
-            <source>No problems: every move is reachable and safe.</source>
-            <translation>Keine Probleme: Jede Bewegung ist erreichbar und sicher.</translation>
-        </message>
-        <message>
-            <source>What to do: %1</source>
-            <translation>Was zu tun ist: %1</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::ProfileEditor</name>
-        <message>
-            <source>Load preset</source>
-            <translation>Vorlage laden</translation>
-        </message>
-        <message>
-            <source>Import…</source>
-            <translation>Importieren…</translation>
-        </message>
-        <message>
-            <source>Load a machine profile from a JSON file</source>
-            <translation>Ein Maschinenprofil aus einer JSON-Datei laden</translation>
-        </message>
-        <message>
-            <source>Export…</source>
-            <translation>Exportieren…</translation>
-        </message>
-        <message>
-            <source>Save this machine profile as a JSON file</source>
-            <translation>Dieses Maschinenprofil als JSON-Datei speichern</translation>
-        </message>
-        <message>
-            <source>Machine</source>
-            <translation>Maschine</translation>
-        </message>
-        <message>
-            <source>Name</source>
-            <translation>Name</translation>
-        </message>
-        <message>
-            <source>Geometry</source>
-            <translation>Geometrie</translation>
-        </message>
-        <message>
-            <source>Joint limits</source>
-            <translation>Gelenkgrenzen</translation>
-        </message>
-        <message>
-            <source>Motors</source>
-            <translation>Motoren</translation>
-        </message>
-        <message>
-            <source>Tool</source>
-            <translation>Werkzeug</translation>
-        </message>
-        <message>
-            <source>Motion and safety</source>
-            <translation>Bewegung und Sicherheit</translation>
-        </message>
-        <message>
-            <source>Connection and home pose</source>
-            <translation>Verbindung und Ausgangspose</translation>
-        </message>
-        <message>
-            <source> mm</source>
-            <translation> mm</translation>
-        </message>
-        <message>
-            <source> °</source>
-            <translation> °</translation>
-        </message>
-        <message>
-            <source> s</source>
-            <translation> s</translation>
-        </message>
-        <message>
-            <source>Driving link a1</source>
-            <translation>Antriebsglied a1</translation>
-        </message>
-        <message>
-            <source>Floating link b1</source>
-            <translation>Koppelglied b1</translation>
-        </message>
-        <message>
-            <source>Driving link a2</source>
-            <translation>Antriebsglied a2</translation>
-        </message>
-        <message>
-            <source>Floating link b2</source>
-            <translation>Koppelglied b2</translation>
-        </message>
-        <message>
-            <source>Motor distance w</source>
-            <translation>Motorabstand w</translation>
-        </message>
-        <message>
-            <source>Limit the motor angles</source>
-            <translation>Motorwinkel begrenzen</translation>
-        </message>
-        <message>
-            <source>θ1 minimum</source>
-            <translation>θ1 Minimum</translation>
-        </message>
-        <message>
-            <source>θ1 maximum</source>
-            <translation>θ1 Maximum</translation>
-        </message>
-        <message>
-            <source>θ2 minimum</source>
-            <translation>θ2 Minimum</translation>
-        </message>
-        <message>
-            <source>θ2 maximum</source>
-            <translation>θ2 Maximum</translation>
-        </message>
-        <message>
-            <source>Motor 1 steps per degree</source>
-            <translation>Motor 1 Schritte pro Grad</translation>
-        </message>
-        <message>
-            <source>Motor 2 steps per degree</source>
-            <translation>Motor 2 Schritte pro Grad</translation>
-        </message>
-        <message>
-            <source>Motor 1 maximum speed</source>
-            <translation>Motor 1 Höchstgeschwindigkeit</translation>
-        </message>
-        <message>
-            <source> °/min</source>
-            <translation> °/min</translation>
-        </message>
-        <message>
-            <source>Motor 2 maximum speed</source>
-            <translation>Motor 2 Höchstgeschwindigkeit</translation>
-        </message>
-        <message>
-            <source>Motor 1 acceleration</source>
-            <translation>Motor 1 Beschleunigung</translation>
-        </message>
-        <message>
-            <source> °/s²</source>
-            <translation> °/s²</translation>
-        </message>
-        <message>
-            <source>Motor 2 acceleration</source>
-            <translation>Motor 2 Beschleunigung</translation>
-        </message>
-        <message>
-            <source>Junction deviation</source>
-            <translation>Eckenabweichung</translation>
-        </message>
-        <message>
-            <source>Pen servo (M3 S / M5)</source>
-            <translation>Stift-Servo (M3 S / M5)</translation>
-        </message>
-        <message>
-            <source>Z axis</source>
-            <translation>Z-Achse</translation>
-        </message>
-        <message>
-            <source>Laser (M4 S / M5)</source>
-            <translation>Laser (M4 S / M5)</translation>
-        </message>
-        <message>
-            <source>Pen up S value</source>
-            <translation>S-Wert Stift hoch</translation>
-        </message>
-        <message>
-            <source>Pen down S value</source>
-            <translation>S-Wert Stift ab</translation>
-        </message>
-        <message>
-            <source>Pen up delay</source>
-            <translation>Wartezeit Stift hoch</translation>
-        </message>
-        <message>
-            <source>Pen down delay</source>
-            <translation>Wartezeit Stift ab</translation>
-        </message>
-        <message>
-            <source>Z up</source>
-            <translation>Z oben</translation>
-        </message>
-        <message>
-            <source>Z down</source>
-            <translation>Z unten</translation>
-        </message>
-        <message>
-            <source>Z feed</source>
-            <translation>Z-Vorschub</translation>
-        </message>
-        <message>
-            <source> mm/min</source>
-            <translation> mm/min</translation>
-        </message>
-        <message>
-            <source>Laser power S value</source>
-            <translation>S-Wert Laserleistung</translation>
-        </message>
-        <message>
-            <source>Working mode (built)</source>
-            <translation>Arbeitsmodus (Aufbau)</translation>
-        </message>
-        <message>
-            <source>Assembly mode</source>
-            <translation>Montagemodus</translation>
-        </message>
-        <message>
-            <source>Drawing speed</source>
-            <translation>Zeichengeschwindigkeit</translation>
-        </message>
-        <message>
-            <source> mm/s</source>
-            <translation> mm/s</translation>
-        </message>
-        <message>
-            <source>Travel speed</source>
-            <translation>Verfahrgeschwindigkeit</translation>
-        </message>
-        <message>
-            <source>Type II singularity margin</source>
-            <translation>Abstand zur Typ-II-Singularität</translation>
-        </message>
-        <message>
-            <source>Type I singularity margin</source>
-            <translation>Abstand zur Typ-I-Singularität</translation>
-        </message>
-        <message>
-            <source>Baud rate</source>
-            <translation>Baudrate</translation>
-        </message>
-        <message>
-            <source>The machine has homing switches ($H)</source>
-            <translation>Die Maschine hat Referenzschalter ($H)</translation>
-        </message>
-        <message>
-            <source>Home θ1</source>
-            <translation>Ausgangspose θ1</translation>
-        </message>
-        <message>
-            <source>Home θ2</source>
-            <translation>Ausgangspose θ2</translation>
-        </message>
-        <message>
-            <source>The profile is not applied until these problems are fixed.</source>
-            <translation>Das Profil wird erst übernommen, wenn diese Probleme behoben sind.</translation>
-        </message>
-        <message>
-            <source>%1 cannot be used:
+<context>
+    <name>CalibrationWizard</name>
+    <message>
+        <source>Hoang&apos;s accuracy pattern (10 lines of 40 mm) does not fit in this machine&apos;s safe area.</source>
+        <translation>Hoangs Genauigkeitsmuster (10 Linien zu 40 mm) passt nicht in den sicheren Bereich dieser Maschine.</translation>
+    </message>
+</context>
+<context>
+    <name>DesignPainter</name>
+    <message>
+        <source>Workspace, singularity-free region and type II curves</source>
+        <translation>Arbeitsraum, singularitätsfreier Bereich und Typ-II-Kurven</translation>
+    </message>
+    <message>
+        <source>a1 = %1, b1 = %2, a2 = %3, b2 = %4, w = %5 mm, working mode %6</source>
+        <translation>a1 = %1, b1 = %2, a2 = %3, b2 = %4, w = %5 mm, Arbeitsmodus %6</translation>
+    </message>
+    <message>
+        <source>Rectangle x %1 .. %2, y %3 .. %4 mm; worst condition number %5 (mean %6)</source>
+        <translation>Rechteck x %1 .. %2, y %3 .. %4 mm; schlechteste Konditionszahl %5 (Mittel %6)</translation>
+    </message>
+    <message>
+        <source>Type II margin %1 deg, type I margin %2 deg, footprint %3 cm²</source>
+        <translation>Abstand zu Typ II %1°, zu Typ I %2°, Platzbedarf %3 cm²</translation>
+    </message>
+    <message>
+        <source>Worst %1 um per step, worst motor speed %2 deg/s</source>
+        <translation>Schlechtestens %1 µm pro Schritt, höchste Motordrehzahl %2 °/s</translation>
+    </message>
+</context>
+<context>
+    <name>DocumentCommands</name>
+    <message>
+        <source>Import drawing</source>
+        <translation>Zeichnung importieren</translation>
+    </message>
+    <message>
+        <source>Move drawing</source>
+        <translation>Zeichnung verschieben</translation>
+    </message>
+    <message>
+        <source>Change working mode</source>
+        <translation>Arbeitsmodus ändern</translation>
+    </message>
+    <message>
+        <source>Change machine profile</source>
+        <translation>Maschinenprofil ändern</translation>
+    </message>
+</context>
+<context>
+    <name>ImportWarningsPanel</name>
+    <message>
+        <source>%1 has %2 points after flattening, more than the budget of %3 (a runaway file?).</source>
+        <translation>%1 hat nach dem Glätten %2 Punkte, mehr als das Budget von %3 (eine außer Kontrolle geratene Datei?).</translation>
+    </message>
+    <message>
+        <source>Very large drawing</source>
+        <translation>Sehr große Zeichnung</translation>
+    </message>
+    <message>
+        <source>Planning and plotting it may take very long. Import it anyway?</source>
+        <translation>Planen und Zeichnen können sehr lange dauern. Trotzdem importieren?</translation>
+    </message>
+</context>
+<context>
+    <name>JobPipeline</name>
+    <message>
+        <source>Nothing to plan: the drawing has no visible path.</source>
+        <translation>Nichts zu planen: Die Zeichnung hat keinen sichtbaren Pfad.</translation>
+    </message>
+    <message>
+        <source>Planning cancelled.</source>
+        <translation>Planung abgebrochen.</translation>
+    </message>
+    <message>
+        <source>Planned in working mode %1.</source>
+        <translation>Geplant im Arbeitsmodus %1.</translation>
+    </message>
+    <message>
+        <source>This job is long: about %1 hours and %2 pen-down moves. The machine will be busy all that time. Start it anyway?</source>
+        <translation>Dieser Auftrag ist lang: etwa %1 Stunden und %2 Zeichenbewegungen. Die Maschine ist die ganze Zeit beschäftigt. Trotzdem starten?</translation>
+    </message>
+</context>
+<context>
+    <name>MapPainter</name>
+    <message>
+        <source>Transmission angle at the pen (deg)</source>
+        <translation>Übertragungswinkel am Stift (Grad)</translation>
+    </message>
+    <message>
+        <source>Conditioning (1 = isotropic)</source>
+        <translation>Kondition (1 = isotrop)</translation>
+    </message>
+    <message>
+        <source>Resolution (um per motor step)</source>
+        <translation>Auflösung (µm je Motorschritt)</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>Planning failed: %1</source>
+        <translation>Planung fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>WorkspaceLegend</name>
+    <message>
+        <source>type II &gt;= %1 deg, type I &gt;= %2 deg</source>
+        <translation>Typ II &gt;= %1°, Typ I &gt;= %2°</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keins</translation>
+    </message>
+    <message>
+        <source>singularity-free (%1)</source>
+        <translation>singularitätsfrei (%1)</translation>
+    </message>
+    <message>
+        <source>reachable, within a singularity margin</source>
+        <translation>erreichbar, innerhalb eines Singularitätsabstands</translation>
+    </message>
+    <message>
+        <source>reach boundary</source>
+        <translation>Reichweitengrenze</translation>
+    </message>
+    <message>
+        <source>singularity-free boundary</source>
+        <translation>Grenze des singularitätsfreien Bereichs</translation>
+    </message>
+    <message>
+        <source>type II singularity (%1 curves)</source>
+        <translation>Typ-II-Singularität (%1 Kurven)</translation>
+    </message>
+    <message>
+        <source>largest rectangle: %1</source>
+        <translation>größtes Rechteck: %1</translation>
+    </message>
+    <message>
+        <source>reachable area: %1 cm²</source>
+        <translation>erreichbare Fläche: %1 cm²</translation>
+    </message>
+    <message>
+        <source>singularity-free area: %1 cm²</source>
+        <translation>singularitätsfreie Fläche: %1 cm²</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::studio::FileActions</name>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>%1 has changes that are not saved. Save them first?</source>
+        <translation>%1 hat ungespeicherte Änderungen. Zuerst speichern?</translation>
+    </message>
+    <message>
+        <source>Cannot save %1: %2</source>
+        <translation>%1 kann nicht gespeichert werden: %2</translation>
+    </message>
+    <message>
+        <source>Nothing to save: open a drawing first.</source>
+        <translation>Nichts zu speichern: zuerst eine Zeichnung öffnen.</translation>
+    </message>
+    <message>
+        <source>Save failed</source>
+        <translation>Speichern fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Save project</source>
+        <translation>Projekt speichern</translation>
+    </message>
+    <message>
+        <source>FiveBar projects (*.fivebar)</source>
+        <translation>FiveBar-Projekte (*.fivebar)</translation>
+    </message>
+    <message>
+        <source>The job is still being planned; export it when planning is done.</source>
+        <translation>Der Auftrag wird noch geplant; exportieren Sie ihn, wenn die Planung fertig ist.</translation>
+    </message>
+    <message>
+        <source>There is no planned job to export (see the job preview).</source>
+        <translation>Es gibt keinen geplanten Auftrag zum Exportieren (siehe Auftragsvorschau).</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>Export G-code</source>
+        <translation>G-Code exportieren</translation>
+    </message>
+    <message>
+        <source>G-code (*.gcode *.nc);;All files (*)</source>
+        <translation>G-Code (*.gcode *.nc);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>%1 exportiert</translation>
+    </message>
+    <message>
+        <source>Clear list</source>
+        <translation>Liste leeren</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::studio::MainWindow</name>
+    <message>
+        <source>FiveBar Studio</source>
+        <translation>FiveBar Studio</translation>
+    </message>
+    <message>
+        <source>x %1 mm, y %2 mm</source>
+        <translation>x %1 mm, y %2 mm</translation>
+    </message>
+    <message>
+        <source>Planning...</source>
+        <translation>Planung läuft …</translation>
+    </message>
+    <message>
+        <source>Workspace</source>
+        <translation>Arbeitsraum</translation>
+    </message>
+    <message>
+        <source>Placement</source>
+        <translation>Platzierung</translation>
+    </message>
+    <message>
+        <source>Layers</source>
+        <translation>Ebenen</translation>
+    </message>
+    <message>
+        <source>Job preview</source>
+        <translation>Auftragsvorschau</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulation</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <source>Open &amp;recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <source>&amp;Fit drawing to workspace</source>
+        <translation>Zeichnung in den Arbeitsraum &amp;einpassen</translation>
+    </message>
+    <message>
+        <source>Ctrl+F</source>
+        <translation>Ctrl+F</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;in</source>
+        <translation>Ver&amp;größern</translation>
+    </message>
+    <message>
+        <source>Ctrl+=</source>
+        <translation>Ctrl+=</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;out</source>
+        <translation>Ver&amp;kleinern</translation>
+    </message>
+    <message>
+        <source>Zoom to &amp;fit</source>
+        <translation>&amp;Alles zeigen</translation>
+    </message>
+    <message>
+        <source>Ctrl+0</source>
+        <translation>Ctrl+0</translation>
+    </message>
+    <message>
+        <source>&amp;Simulation</source>
+        <translation>&amp;Simulation</translation>
+    </message>
+    <message>
+        <source>&amp;Play / pause</source>
+        <translation>&amp;Abspielen / Pause</translation>
+    </message>
+    <message>
+        <source>F5</source>
+        <translation>F5</translation>
+    </message>
+    <message>
+        <source>Step &amp;forward</source>
+        <translation>Schritt &amp;vor</translation>
+    </message>
+    <message>
+        <source>F6</source>
+        <translation>F6</translation>
+    </message>
+    <message>
+        <source>Step &amp;back</source>
+        <translation>Schritt &amp;zurück</translation>
+    </message>
+    <message>
+        <source>Shift+F6</source>
+        <translation>Shift+F6</translation>
+    </message>
+    <message>
+        <source>&amp;Machine</source>
+        <translation>&amp;Maschine</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <source>&amp;About FiveBar Studio</source>
+        <translation>&amp;Über FiveBar Studio</translation>
+    </message>
+    <message>
+        <source>About FiveBar Studio</source>
+        <translation>Über FiveBar Studio</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;FiveBar Studio %1&lt;/b&gt;&lt;p&gt;Plans and simulates drawings for five-bar linkage robots: workspace and singularity analysis, safe job planning, GRBL output.&lt;/p&gt;</source>
+        <translation>&lt;b&gt;FiveBar Studio %1&lt;/b&gt;&lt;p&gt;Plant und simuliert Zeichnungen für Fünfgelenk-Roboter: Arbeitsraum- und Singularitätsanalyse, sichere Auftragsplanung, GRBL-Ausgabe.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Main</source>
+        <translation>Haupt</translation>
+    </message>
+    <message>
+        <source>&amp;Open drawing or project...</source>
+        <translation>Zeichnung oder Projekt &amp;öffnen...</translation>
+    </message>
+    <message>
+        <source>&amp;Save project</source>
+        <translation>Projekt &amp;speichern</translation>
+    </message>
+    <message>
+        <source>Save project &amp;as...</source>
+        <translation>Projekt speichern &amp;unter...</translation>
+    </message>
+    <message>
+        <source>&amp;Export G-code...</source>
+        <translation>G-Code &amp;exportieren...</translation>
+    </message>
+    <message>
+        <source>Ctrl+E</source>
+        <translation>Ctrl+E</translation>
+    </message>
+    <message>
+        <source>&amp;Actual size (100 %)</source>
+        <translation>&amp;Originalgröße (100 %)</translation>
+    </message>
+    <message>
+        <source>Ctrl+1</source>
+        <translation>Ctrl+1</translation>
+    </message>
+    <message>
+        <source>%1[*] - FiveBar Studio</source>
+        <translation>%1[*] - FiveBar Studio</translation>
+    </message>
+    <message>
+        <source>Fills</source>
+        <translation>Füllungen</translation>
+    </message>
+    <message>
+        <source>Import warnings</source>
+        <translation>Importwarnungen</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::ConsolePanel</name>
+    <message>
+        <source>Lines sent to and received from the machine appear here.</source>
+        <translation>Hier erscheinen die an die Maschine gesendeten und von ihr empfangenen Zeilen.</translation>
+    </message>
+    <message>
+        <source>G-code or $ command, e.g. $$ or G0 X10 Y20</source>
+        <translation>G-Code oder $-Befehl, z. B. $$ oder G0 X10 Y20</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Senden</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::DesignDialog</name>
+    <message>
+        <source>Design a machine</source>
+        <translation>Maschine entwerfen</translation>
+    </message>
+    <message>
+        <source>&amp;Design...</source>
+        <translation>&amp;Entwurf...</translation>
+    </message>
+    <message>
+        <source>Choose link lengths for a paper size</source>
+        <translation>Gliedlängen für ein Papierformat wählen</translation>
+    </message>
+    <message>
+        <source>Brief</source>
+        <translation>Vorgaben</translation>
+    </message>
+    <message>
+        <source>Custom</source>
+        <translation>Eigenes Format</translation>
+    </message>
+    <message>
+        <source>Landscape</source>
+        <translation>Querformat</translation>
+    </message>
+    <message>
+        <source>Portrait</source>
+        <translation>Hochformat</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source> deg</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>Symmetric arms</source>
+        <translation>Symmetrische Arme</translation>
+    </message>
+    <message>
+        <source>Any</source>
+        <translation>Beliebig</translation>
+    </message>
+    <message>
+        <source>Worst condition number</source>
+        <translation>Schlechteste Konditionszahl</translation>
+    </message>
+    <message>
+        <source>Worst resolution</source>
+        <translation>Schlechteste Auflösung</translation>
+    </message>
+    <message>
+        <source>Footprint</source>
+        <translation>Platzbedarf</translation>
+    </message>
+    <message>
+        <source>Weighted mix</source>
+        <translation>Gewichtete Mischung</translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation>Kondition</translation>
+    </message>
+    <message>
+        <source>Resolution</source>
+        <translation>Auflösung</translation>
+    </message>
+    <message>
+        <source>Weight of this normalised term in the weighted mix</source>
+        <translation>Gewicht dieses normierten Terms in der gewichteten Mischung</translation>
+    </message>
+    <message>
+        <source>Mix weights</source>
+        <translation>Gewichte der Mischung</translation>
+    </message>
+    <message>
+        <source>Paper</source>
+        <translation>Papier</translation>
+    </message>
+    <message>
+        <source>Orientation</source>
+        <translation>Ausrichtung</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Breite</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Höhe</translation>
+    </message>
+    <message>
+        <source>Margin</source>
+        <translation>Rand</translation>
+    </message>
+    <message>
+        <source>Shortest link</source>
+        <translation>Kürzestes Glied</translation>
+    </message>
+    <message>
+        <source>Longest link</source>
+        <translation>Längstes Glied</translation>
+    </message>
+    <message>
+        <source>Smallest motor spacing</source>
+        <translation>Kleinster Motorabstand</translation>
+    </message>
+    <message>
+        <source>Largest motor spacing</source>
+        <translation>Größter Motorabstand</translation>
+    </message>
+    <message>
+        <source>Arm clearance</source>
+        <translation>Armabstand</translation>
+    </message>
+    <message>
+        <source>Type II margin</source>
+        <translation>Abstand zu Typ-II-Singularitäten</translation>
+    </message>
+    <message>
+        <source>Working mode</source>
+        <translation>Arbeitsmodus</translation>
+    </message>
+    <message>
+        <source>Objective</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>Search</source>
+        <translation>Suchen</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Set the brief and press Search.</source>
+        <translation>Vorgaben einstellen und Suchen drücken.</translation>
+    </message>
+    <message>
+        <source>Worst condition</source>
+        <translation>Schlechteste Kondition</translation>
+    </message>
+    <message>
+        <source>Footprint (cm²)</source>
+        <translation>Platzbedarf (cm²)</translation>
+    </message>
+    <message>
+        <source>µm/step</source>
+        <translation>µm/Schritt</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Modus</translation>
+    </message>
+    <message>
+        <source>Workspace</source>
+        <translation>Arbeitsraum</translation>
+    </message>
+    <message>
+        <source>Conditioning</source>
+        <translation>Kondition</translation>
+    </message>
+    <message>
+        <source>Transmission angle</source>
+        <translation>Übertragungswinkel</translation>
+    </message>
+    <message>
+        <source>Map on the canvas</source>
+        <translation>Karte auf der Zeichenfläche</translation>
+    </message>
+    <message>
+        <source>Use as profile</source>
+        <translation>Als Profil verwenden</translation>
+    </message>
+    <message>
+        <source>Export...</source>
+        <translation>Exportieren...</translation>
+    </message>
+    <message>
+        <source>Searching...</source>
+        <translation>Suche läuft...</translation>
+    </message>
+    <message>
+        <source>Search cancelled.</source>
+        <translation>Suche abgebrochen.</translation>
+    </message>
+    <message>
+        <source>No design meets the brief: %1</source>
+        <translation>Kein Entwurf erfüllt die Vorgaben: %1</translation>
+    </message>
+    <message>
+        <source>Best worst-case condition number %1; %2 designs on the trade-off, %3 evaluations in %4 s.</source>
+        <translation>Beste Konditionszahl im schlechtesten Fall %1; %2 Entwürfe im Zielkonflikt, %3 Auswertungen in %4 s.</translation>
+    </message>
+    <message>
+        <source>The document now uses this design (Edit &gt; Undo restores the previous profile).</source>
+        <translation>Das Dokument verwendet jetzt diesen Entwurf (Bearbeiten &gt; Rückgängig stellt das vorige Profil wieder her).</translation>
+    </message>
+    <message>
+        <source>No design is selected.</source>
+        <translation>Kein Entwurf ausgewählt.</translation>
+    </message>
+    <message>
+        <source>Export profile</source>
+        <translation>Profil exportieren</translation>
+    </message>
+    <message>
+        <source>Machine profiles (*.json)</source>
+        <translation>Maschinenprofile (*.json)</translation>
+    </message>
+    <message>
+        <source>Profile written to %1.</source>
+        <translation>Profil nach %1 geschrieben.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::FillOptionsBox</name>
+    <message>
+        <source>Filled shapes</source>
+        <translation>Gefüllte Formen</translation>
+    </message>
+    <message>
+        <source>Outline</source>
+        <translation>Umriss</translation>
+    </message>
+    <message>
+        <source>Hatch</source>
+        <translation>Schraffur</translation>
+    </message>
+    <message>
+        <source>Not drawn</source>
+        <translation>Nicht zeichnen</translation>
+    </message>
+    <message>
+        <source>Outline: the shape&apos;s edge (as AxiDraw and vpype draw fills). Hatch: parallel lines inside the shape. Not drawn: fill-only shapes are left out.</source>
+        <translation>Umriss: der Rand der Form (wie AxiDraw und vpype Füllungen zeichnen). Schraffur: parallele Linien in der Form. Nicht zeichnen: nur gefüllte Formen entfallen.</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source> deg</source>
+        <translation> Grad</translation>
+    </message>
+    <message>
+        <source>Crosshatch</source>
+        <translation>Kreuzschraffur</translation>
+    </message>
+    <message>
+        <source>Keep the outline</source>
+        <translation>Umriss behalten</translation>
+    </message>
+    <message>
+        <source>Import again with these settings</source>
+        <translation>Mit diesen Einstellungen neu importieren</translation>
+    </message>
+    <message>
+        <source>Fill:</source>
+        <translation>Füllung:</translation>
+    </message>
+    <message>
+        <source>Line spacing:</source>
+        <translation>Linienabstand:</translation>
+    </message>
+    <message>
+        <source>Angle:</source>
+        <translation>Winkel:</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::GoToTool</name>
+    <message>
+        <source>Connect the machine first: its position is not known.</source>
+        <translation>Verbinden Sie zuerst die Maschine: ihre Position ist nicht bekannt.</translation>
+    </message>
+    <message>
+        <source>Go to %1, %2 mm? The dashed path is the pen&apos;s travel (%3 checked moves).</source>
+        <translation>Nach %1, %2 mm fahren? Der gestrichelte Weg ist die Fahrt des Stifts (%3 geprüfte Bewegungen).</translation>
+    </message>
+    <message>
+        <source>Cannot go there: %1</source>
+        <translation>Dorthin kann nicht gefahren werden: %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::ImportController</name>
+    <message>
+        <source>%1: another import is still running.</source>
+        <translation>%1: Ein anderer Import läuft noch.</translation>
+    </message>
+    <message>
+        <source>Importing %1...</source>
+        <translation>%1 wird importiert …</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Import</translation>
+    </message>
+    <message>
+        <source>Import of %1 cancelled.</source>
+        <translation>Import von %1 abgebrochen.</translation>
+    </message>
+    <message>
+        <source>%1 could not be imported.</source>
+        <translation>%1 konnte nicht importiert werden.</translation>
+    </message>
+    <message>
+        <source>Import failed</source>
+        <translation>Import fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>%1 contains nothing to draw.</source>
+        <translation>%1 enthält nichts zu zeichnen.</translation>
+    </message>
+    <message>
+        <source>Open drawing or project</source>
+        <translation>Zeichnung oder Projekt öffnen</translation>
+    </message>
+    <message>
+        <source>Drawings and projects (*.svg *.fivebar);;SVG drawings (*.svg);;FiveBar projects (*.fivebar);;All files (*)</source>
+        <translation>Zeichnungen und Projekte (*.svg *.fivebar);;SVG-Zeichnungen (*.svg);;FiveBar-Projekte (*.fivebar);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::ImportWarningsPanel</name>
+    <message>
+        <source>No drawing imported yet.</source>
+        <translation>Noch keine Zeichnung importiert.</translation>
+    </message>
+    <message>
+        <source>What the importer dropped, approximated or could not draw. docs/svg-import.md lists what is supported.</source>
+        <translation>Was der Import weggelassen, angenähert oder nicht zeichnen konnte. docs/svg-import.md listet, was unterstützt wird.</translation>
+    </message>
+    <message>
+        <source>%1 imported without warnings.</source>
+        <translation>%1 ohne Warnungen importiert.</translation>
+    </message>
+    <message>
+        <source>1 warning while importing %1: part of the drawing may differ from what a browser shows.</source>
+        <translation>1 Warnung beim Import von %1: ein Teil der Zeichnung kann von der Anzeige im Browser abweichen.</translation>
+    </message>
+    <message>
+        <source>%1 warnings while importing %2: parts of the drawing may differ from what a browser shows.</source>
+        <translation>%1 Warnungen beim Import von %2: Teile der Zeichnung können von der Anzeige im Browser abweichen.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::JobLayer</name>
+    <message>
+        <source>Planning...</source>
+        <translation>Planung läuft...</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::JogController</name>
+    <message>
+        <source>Jog refused: the machine is not connected, not idle, or a job is running.</source>
+        <translation>Verfahren abgelehnt: Die Maschine ist nicht verbunden, nicht bereit, oder ein Auftrag läuft.</translation>
+    </message>
+    <message>
+        <source>Jog stopped at the last safe point: %1</source>
+        <translation>Verfahren am letzten sicheren Punkt angehalten: %1</translation>
+    </message>
+    <message>
+        <source>Jog refused: %1</source>
+        <translation>Verfahren abgelehnt: %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::JogPanel</name>
+    <message>
+        <source>Jog the pen %1 mm in X, %2 mm in Y per step; hold for a continuous jog</source>
+        <translation>Stift pro Schritt um %1 mm in X und %2 mm in Y verfahren; gedrückt halten für fortlaufendes Verfahren</translation>
+    </message>
+    <message>
+        <source>Go to…</source>
+        <translation>Anfahren…</translation>
+    </message>
+    <message>
+        <source>Click the canvas to choose where the pen goes; the path is shown before you confirm.</source>
+        <translation>Klicken Sie auf die Zeichenfläche, um das Ziel des Stifts zu wählen; der Weg wird vor der Bestätigung angezeigt.</translation>
+    </message>
+    <message>
+        <source>Turn motor %1 clockwise by one step</source>
+        <translation>Motor %1 um einen Schritt im Uhrzeigersinn drehen</translation>
+    </message>
+    <message>
+        <source>Turn motor %1 counter-clockwise by one step</source>
+        <translation>Motor %1 um einen Schritt gegen den Uhrzeigersinn drehen</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <source>mm / °</source>
+        <translation>mm / °</translation>
+    </message>
+    <message>
+        <source> mm/s</source>
+        <translation> mm/s</translation>
+    </message>
+    <message>
+        <source>Pen up</source>
+        <translation>Stift hoch</translation>
+    </message>
+    <message>
+        <source>Lift the pen (Page Up on the canvas)</source>
+        <translation>Stift anheben (Bild auf auf der Zeichenfläche)</translation>
+    </message>
+    <message>
+        <source>Pen down</source>
+        <translation>Stift ab</translation>
+    </message>
+    <message>
+        <source>Lower the pen (Page Down on the canvas)</source>
+        <translation>Stift absenken (Bild ab auf der Zeichenfläche)</translation>
+    </message>
+    <message>
+        <source>Go</source>
+        <translation>Los</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Click the canvas where the pen should go.</source>
+        <translation>Klicken Sie auf die Stelle der Zeichenfläche, die der Stift anfahren soll.</translation>
+    </message>
+    <message>
+        <source>Home ($H)</source>
+        <translation>Referenzfahrt ($H)</translation>
+    </message>
+    <message>
+        <source>Set reference pose</source>
+        <translation>Referenzpose setzen</translation>
+    </message>
+    <message>
+        <source>Run the homing cycle</source>
+        <translation>Referenzfahrt ausführen</translation>
+    </message>
+    <message>
+        <source>Declare that the machine now stands at the profile&apos;s home pose</source>
+        <translation>Festlegen, dass die Maschine jetzt in der Ausgangspose des Profils steht</translation>
+    </message>
+    <message>
+        <source>Speed of XY jogs</source>
+        <translation>Geschwindigkeit beim XY-Verfahren</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::LayersPanel</name>
+    <message>
+        <source>Plot this layer earlier</source>
+        <translation>Diese Ebene früher zeichnen</translation>
+    </message>
+    <message>
+        <source>Plot this layer later</source>
+        <translation>Diese Ebene später zeichnen</translation>
+    </message>
+    <message>
+        <source>Tool settings of the selected layer</source>
+        <translation>Werkzeugeinstellungen der gewählten Ebene</translation>
+    </message>
+    <message>
+        <source> mm/s</source>
+        <translation> mm/s</translation>
+    </message>
+    <message>
+        <source>Profile default</source>
+        <translation>Profilvorgabe</translation>
+    </message>
+    <message>
+        <source>Pause before this layer (pen change)</source>
+        <translation>Vor dieser Ebene anhalten (Stiftwechsel)</translation>
+    </message>
+    <message>
+        <source>Draw speed:</source>
+        <translation>Zeichengeschwindigkeit:</translation>
+    </message>
+    <message>
+        <source>Power / pen S:</source>
+        <translation>Leistung / Stift-S:</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n path(s)</source>
+        <translation>
+            <numerusform>%n Pfad</numerusform>
+            <numerusform>%n Pfade</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n point(s)</source>
+        <translation>
+            <numerusform>%n Punkt</numerusform>
+            <numerusform>%n Punkte</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachineBanner</name>
+    <message>
+        <source>Reset</source>
+        <translation>Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Soft reset (Ctrl-X): stops everything; the machine keeps its position unless it was moving.</source>
+        <translation>Soft-Reset (Strg-X): hält alles an; die Maschine behält ihre Position, sofern sie sich nicht bewegt hat.</translation>
+    </message>
+    <message>
+        <source>Unlock ($X)</source>
+        <translation>Entsperren ($X)</translation>
+    </message>
+    <message>
+        <source>Leave the alarm state without homing. Only when you know the machine stands where the studio shows it.</source>
+        <translation>Den Alarmzustand ohne Referenzfahrt verlassen. Nur wenn Sie wissen, dass die Maschine dort steht, wo das Studio sie zeigt.</translation>
+    </message>
+    <message>
+        <source>Dismiss</source>
+        <translation>Schließen</translation>
+    </message>
+    <message>
+        <source>Alarm %1: the machine stopped</source>
+        <translation>Alarm %1: Die Maschine hat angehalten</translation>
+    </message>
+    <message>
+        <source>Alarm: the machine is locked</source>
+        <translation>Alarm: Die Maschine ist gesperrt</translation>
+    </message>
+    <message>
+        <source>Error %1: a command was rejected</source>
+        <translation>Fehler %1: Ein Befehl wurde abgelehnt</translation>
+    </message>
+    <message>
+        <source>The board waits for a reset first: press Reset, then Unlock.</source>
+        <translation>Die Steuerung erwartet zuerst ein Zurücksetzen: Drücken Sie Zurücksetzen, dann Entsperren.</translation>
+    </message>
+    <message>
+        <source>Home ($H)</source>
+        <translation>Referenzfahrt ($H)</translation>
+    </message>
+    <message>
+        <source>Set reference pose</source>
+        <translation>Referenzpose setzen</translation>
+    </message>
+    <message>
+        <source>Run the homing cycle; the machine moves to its switches.</source>
+        <translation>Referenzfahrt ausführen; die Maschine fährt an ihre Endschalter.</translation>
+    </message>
+    <message>
+        <source>Declare that the machine now stands at the profile&apos;s home pose (G10 L20).</source>
+        <translation>Festlegen, dass die Maschine jetzt in der Ausgangspose des Profils steht (G10 L20).</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachinePanel</name>
+    <message>
+        <source>Idle</source>
+        <translation>Bereit</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Läuft</translation>
+    </message>
+    <message>
+        <source>On hold</source>
+        <translation>Angehalten</translation>
+    </message>
+    <message>
+        <source>Jogging</source>
+        <translation>Verfährt</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <source>Door open</source>
+        <translation>Tür offen</translation>
+    </message>
+    <message>
+        <source>Check mode</source>
+        <translation>Prüfmodus</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>Referenzfahrt</translation>
+    </message>
+    <message>
+        <source>Sleeping</source>
+        <translation>Ruhezustand</translation>
+    </message>
+    <message>
+        <source>Unknown</source>
+        <translation>Unbekannt</translation>
+    </message>
+    <message>
+        <source>Refresh</source>
+        <translation>Aktualisieren</translation>
+    </message>
+    <message>
+        <source>List the serial ports again</source>
+        <translation>Serielle Schnittstellen neu auflisten</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Verbinden</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>Trennen</translation>
+    </message>
+    <message>
+        <source>Baud</source>
+        <translation>Baud</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>Verbindung</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Pen (X, Y)</source>
+        <translation>Stift (X, Y)</translation>
+    </message>
+    <message>
+        <source>Motors (θ1, θ2)</source>
+        <translation>Motoren (θ1, θ2)</translation>
+    </message>
+    <message>
+        <source>Buffers</source>
+        <translation>Puffer</translation>
+    </message>
+    <message>
+        <source>Simulated machine (built in)</source>
+        <translation>Simulierte Maschine (eingebaut)</translation>
+    </message>
+    <message>
+        <source>Cannot connect</source>
+        <translation>Verbindung nicht möglich</translation>
+    </message>
+    <message>
+        <source>Connected to %1</source>
+        <translation>Verbunden mit %1</translation>
+    </message>
+    <message>
+        <source>Not connected</source>
+        <translation>Nicht verbunden</translation>
+    </message>
+    <message>
+        <source>Offline</source>
+        <translation>Offline</translation>
+    </message>
+    <message>
+        <source>%1, %2 mm</source>
+        <translation>%1, %2 mm</translation>
+    </message>
+    <message>
+        <source>%1°, %2°</source>
+        <translation>%1°, %2°</translation>
+    </message>
+    <message>
+        <source>planner %1 of %2 blocks free, RX %3 of %4 bytes free</source>
+        <translation>Planer %1 von %2 Blöcken frei, RX %3 von %4 Bytes frei</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachineSession</name>
+    <message>
+        <source>Cannot open %1.</source>
+        <translation>%1 kann nicht geöffnet werden.</translation>
+    </message>
+    <message>
+        <source>Connected to %1.</source>
+        <translation>Verbunden mit %1.</translation>
+    </message>
+    <message>
+        <source>Disconnected.</source>
+        <translation>Getrennt.</translation>
+    </message>
+    <message>
+        <source>Not connected: %1 was not sent.</source>
+        <translation>Nicht verbunden: %1 wurde nicht gesendet.</translation>
+    </message>
+    <message>
+        <source>Not sent (%1): %2</source>
+        <translation>Nicht gesendet (%1): %2</translation>
+    </message>
+    <message>
+        <source>A job is running: %1 was not sent.</source>
+        <translation>Ein Auftrag läuft: %1 wurde nicht gesendet.</translation>
+    </message>
+    <message>
+        <source>Jog refused: the machine is not idle, not connected or a job is running.</source>
+        <translation>Verfahren abgelehnt: Die Maschine ist nicht bereit, nicht verbunden, oder ein Auftrag läuft.</translation>
+    </message>
+    <message>
+        <source>%1 (jog in %2 checked moves)</source>
+        <translation>%1 (Verfahren in %2 geprüften Bewegungen)</translation>
+    </message>
+    <message>
+        <source>[soft reset]</source>
+        <translation>[Soft-Reset]</translation>
+    </message>
+    <message>
+        <source>[feed hold]</source>
+        <translation>[Vorschub halten]</translation>
+    </message>
+    <message>
+        <source>[cycle start]</source>
+        <translation>[Zyklusstart]</translation>
+    </message>
+    <message>
+        <source>%1 was rejected: %2</source>
+        <translation>%1 wurde abgelehnt: %2</translation>
+    </message>
+    <message>
+        <source>The machine is locked (alarm state). Unlock it with $X or home it with $H once you know where it stands.</source>
+        <translation>Die Maschine ist gesperrt (Alarmzustand). Entsperren Sie sie mit $X oder führen Sie mit $H eine Referenzfahrt aus, sobald Sie wissen, wo sie steht.</translation>
+    </message>
+    <message>
+        <source>The board reset (Grbl %1).</source>
+        <translation>Die Steuerung wurde zurückgesetzt (Grbl %1).</translation>
+    </message>
+    <message>
+        <source>Connection lost: %1</source>
+        <translation>Verbindung verloren: %1</translation>
+    </message>
+    <message>
+        <source>the simulated machine</source>
+        <translation>der simulierten Maschine</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachineSettingsDialog</name>
+    <message>
+        <source>Machine settings</source>
+        <translation>Maschineneinstellungen</translation>
+    </message>
+    <message>
+        <source>The board&apos;s GRBL settings next to the values the machine profile needs. Writing saves a backup of the board&apos;s settings first.</source>
+        <translation>Die GRBL-Einstellungen der Steuerung neben den Werten, die das Maschinenprofil braucht. Vor dem Schreiben wird eine Sicherung der Einstellungen der Steuerung gespeichert.</translation>
+    </message>
+    <message>
+        <source>Setting</source>
+        <translation>Einstellung</translation>
+    </message>
+    <message>
+        <source>Board</source>
+        <translation>Steuerung</translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation>Profil</translation>
+    </message>
+    <message>
+        <source>Differs</source>
+        <translation>Abweichend</translation>
+    </message>
+    <message>
+        <source>Read from board</source>
+        <translation>Von der Steuerung lesen</translation>
+    </message>
+    <message>
+        <source>Write differences...</source>
+        <translation>Abweichungen schreiben...</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Schließen</translation>
+    </message>
+    <message>
+        <source>The machine was disconnected.</source>
+        <translation>Die Verbindung zur Maschine wurde getrennt.</translation>
+    </message>
+    <message>
+        <source>Connect the machine first.</source>
+        <translation>Zuerst die Maschine verbinden.</translation>
+    </message>
+    <message>
+        <source>A job is running.</source>
+        <translation>Ein Auftrag läuft.</translation>
+    </message>
+    <message>
+        <source>Still talking to the board.</source>
+        <translation>Die Kommunikation mit der Steuerung läuft noch.</translation>
+    </message>
+    <message>
+        <source>The machine must be idle (or in alarm) to change settings.</source>
+        <translation>Zum Ändern der Einstellungen muss die Maschine im Ruhezustand (oder im Alarm) sein.</translation>
+    </message>
+    <message>
+        <source>Reading the board&apos;s settings...</source>
+        <translation>Einstellungen der Steuerung werden gelesen...</translation>
+    </message>
+    <message>
+        <source>Nothing to write: read the board&apos;s settings first.</source>
+        <translation>Nichts zu schreiben: zuerst die Einstellungen der Steuerung lesen.</translation>
+    </message>
+    <message>
+        <source>Write settings</source>
+        <translation>Einstellungen schreiben</translation>
+    </message>
+    <message numerus="yes">
+        <source>Write %n setting(s) to the board? Its current settings are saved to a backup file first.</source>
+        <translation>
+            <numerusform>%n Einstellung auf die Steuerung schreiben? Ihre aktuellen Einstellungen werden zuvor in einer Sicherungsdatei gespeichert.</numerusform>
+            <numerusform>%n Einstellungen auf die Steuerung schreiben? Ihre aktuellen Einstellungen werden zuvor in einer Sicherungsdatei gespeichert.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The board&apos;s settings match the profile.</source>
+        <translation>Die Einstellungen der Steuerung stimmen mit dem Profil überein.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n setting(s) differ from the profile.</source>
+        <translation>
+            <numerusform>%n Einstellung weicht vom Profil ab.</numerusform>
+            <numerusform>%n Einstellungen weichen vom Profil ab.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n setting(s) written. Backup of the previous settings: %1</source>
+        <translation>
+            <numerusform>%n Einstellung geschrieben. Sicherung der vorherigen Einstellungen: %1</numerusform>
+            <numerusform>%n Einstellungen geschrieben. Sicherung der vorherigen Einstellungen: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Writing settings one at a time... Backup: %1</source>
+        <translation>Einstellungen werden einzeln geschrieben... Sicherung: %1</translation>
+    </message>
+    <message>
+        <source>Failed: %1</source>
+        <translation>Fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachineUi</name>
+    <message>
+        <source>Machine</source>
+        <translation>Maschine</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Ausführen</translation>
+    </message>
+    <message>
+        <source>Jog</source>
+        <translation>Verfahren</translation>
+    </message>
+    <message>
+        <source>Console</source>
+        <translation>Konsole</translation>
+    </message>
+    <message>
+        <source>Machine profile</source>
+        <translation>Maschinenprofil</translation>
+    </message>
+    <message>
+        <source>Machine &amp;settings...</source>
+        <translation>Maschinen&amp;einstellungen...</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::ModePanel</name>
+    <message>
+        <source>Working mode</source>
+        <translation>Arbeitsmodus</translation>
+    </message>
+    <message>
+        <source>Auto</source>
+        <translation>Auto</translation>
+    </message>
+    <message>
+        <source>Let the planner pick the feasible mode with the largest margin</source>
+        <translation>Den Planer den ausführbaren Modus mit dem größten Abstand wählen lassen</translation>
+    </message>
+    <message>
+        <source>Elbows %1 (arm 1 %2, arm 2 %3)</source>
+        <translation>Ellbogen %1 (Arm 1 %2, Arm 2 %3)</translation>
+    </message>
+    <message>
+        <source>out</source>
+        <translation>außen</translation>
+    </message>
+    <message>
+        <source>in</source>
+        <translation>innen</translation>
+    </message>
+    <message>
+        <source>Overlays</source>
+        <translation>Überlagerungen</translation>
+    </message>
+    <message>
+        <source>Reachable and singularity-free regions</source>
+        <translation>Erreichbare und singularitätsfreie Bereiche</translation>
+    </message>
+    <message>
+        <source>Type II singularity curves</source>
+        <translation>Singularitätskurven Typ II</translation>
+    </message>
+    <message>
+        <source>Largest singularity-free rectangle</source>
+        <translation>Größtes singularitätsfreies Rechteck</translation>
+    </message>
+    <message>
+        <source>Workspace legend</source>
+        <translation>Arbeitsraum-Legende</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Keine</translation>
+    </message>
+    <message>
+        <source>Transmission angle</source>
+        <translation>Übertragungswinkel</translation>
+    </message>
+    <message>
+        <source>Conditioning</source>
+        <translation>Kondition</translation>
+    </message>
+    <message>
+        <source>Resolution (mm per step)</source>
+        <translation>Auflösung (mm je Schritt)</translation>
+    </message>
+    <message>
+        <source>Map:</source>
+        <translation>Karte:</translation>
+    </message>
+    <message>
+        <source>Auto picked %1.</source>
+        <translation>Auto hat %1 gewählt.</translation>
+    </message>
+    <message>
+        <source>Auto: no mode draws the whole job; showing %1.</source>
+        <translation>Auto: Kein Modus zeichnet den ganzen Auftrag; %1 wird gezeigt.</translation>
+    </message>
+    <message>
+        <source>Showing the workspace of %1.</source>
+        <translation>Arbeitsraum von %1 wird gezeigt.</translation>
+    </message>
+    <message>
+        <source>Smallest singularity margin: %1 deg.</source>
+        <translation>Kleinster Singularitätsabstand: %1 Grad.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::ParetoPlot</name>
+    <message>
+        <source>Footprint (cm²)</source>
+        <translation>Platzbedarf (cm²)</translation>
+    </message>
+    <message>
+        <source>Worst condition number</source>
+        <translation>Schlechteste Konditionszahl</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::PlacementPanel</name>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source> deg</source>
+        <translation> Grad</translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <source>Centre X:</source>
+        <translation>Mitte X:</translation>
+    </message>
+    <message>
+        <source>Centre Y:</source>
+        <translation>Mitte Y:</translation>
+    </message>
+    <message>
+        <source>Rotation:</source>
+        <translation>Drehung:</translation>
+    </message>
+    <message>
+        <source>Scale:</source>
+        <translation>Maßstab:</translation>
+    </message>
+    <message>
+        <source>Fit to workspace</source>
+        <translation>In Arbeitsraum einpassen</translation>
+    </message>
+    <message>
+        <source>Keep aspect ratio</source>
+        <translation>Seitenverhältnis beibehalten</translation>
+    </message>
+    <message>
+        <source>Width:</source>
+        <translation>Breite:</translation>
+    </message>
+    <message>
+        <source>Height:</source>
+        <translation>Höhe:</translation>
+    </message>
+    <message>
+        <source>Actual size</source>
+        <translation>Originalgröße</translation>
+    </message>
+    <message>
+        <source>Draw the drawing at its true size (100 %)</source>
+        <translation>Die Zeichnung in ihrer wahren Größe zeichnen (100 %)</translation>
+    </message>
+    <message>
+        <source>Scale the drawing to fill the largest singularity-free rectangle</source>
+        <translation>Die Zeichnung so skalieren, dass sie das größte singularitätsfreie Rechteck füllt</translation>
+    </message>
+    <message>
+        <source>No singularity-free area to fit the drawing into.</source>
+        <translation>Kein singularitätsfreier Bereich, in den die Zeichnung passt.</translation>
+    </message>
+    <message>
+        <source>Fitted: %1 %</source>
+        <translation>Eingepasst: %1 %</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::PreviewPanel</name>
+    <message>
+        <source>%1 % of what this machine can do</source>
+        <translation>%1 % dessen, was diese Maschine kann</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation>%1 h %2 min</translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>Show</source>
+        <translation>Anzeigen</translation>
+    </message>
+    <message>
+        <source>Colour pen-down moves by speed</source>
+        <translation>Zeichenbewegungen nach Geschwindigkeit färben</translation>
+    </message>
+    <message>
+        <source>Pen-up moves (grey)</source>
+        <translation>Leerfahrten (grau)</translation>
+    </message>
+    <message>
+        <source>Drawing order</source>
+        <translation>Zeichenreihenfolge</translation>
+    </message>
+    <message>
+        <source>Pre-flight problems (click to show):</source>
+        <translation>Probleme der Vorabprüfung (zum Zeigen anklicken):</translation>
+    </message>
+    <message>
+        <source>Moves shown: %1 of %2</source>
+        <translation>Gezeigte Bewegungen: %1 von %2</translation>
+    </message>
+    <message>
+        <source>Planning...</source>
+        <translation>Planung läuft …</translation>
+    </message>
+    <message>
+        <source>Planned.</source>
+        <translation>Geplant.</translation>
+    </message>
+    <message>
+        <source>Open a drawing to plan a job.</source>
+        <translation>Öffnen Sie eine Zeichnung, um einen Auftrag zu planen.</translation>
+    </message>
+    <message>
+        <source>Working mode: &lt;b&gt;%1&lt;/b&gt;</source>
+        <translation>Arbeitsmodus: &lt;b&gt;%1&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>No problems: every move is reachable and safe.</source>
+        <translation>Keine Probleme: Jede Bewegung ist erreichbar und sicher.</translation>
+    </message>
+    <message>
+        <source>What to do: %1</source>
+        <translation>Was zu tun ist: %1</translation>
+    </message>
+    <message>
+        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Working mode:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Estimated time:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%8&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen down:&lt;/td&gt;&lt;td&gt;%3 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen up:&lt;/td&gt;&lt;td&gt;%4 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Segments:&lt;/td&gt;&lt;td&gt;%5&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Max deviation:&lt;/td&gt;&lt;td&gt;%6 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Singularity margin:&lt;/td&gt;&lt;td&gt;%7 deg&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Arbeitsmodus:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Geschätzte Zeit:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%8&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Stift unten:&lt;/td&gt;&lt;td&gt;%3 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Stift oben:&lt;/td&gt;&lt;td&gt;%4 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Segmente:&lt;/td&gt;&lt;td&gt;%5&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Größte Abweichung:&lt;/td&gt;&lt;td&gt;%6 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Singularitätsabstand:&lt;/td&gt;&lt;td&gt;%7 Grad&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::ProfileEditor</name>
+    <message>
+        <source>Load preset</source>
+        <translation>Vorlage laden</translation>
+    </message>
+    <message>
+        <source>Import…</source>
+        <translation>Importieren…</translation>
+    </message>
+    <message>
+        <source>Load a machine profile from a JSON file</source>
+        <translation>Ein Maschinenprofil aus einer JSON-Datei laden</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Exportieren…</translation>
+    </message>
+    <message>
+        <source>Save this machine profile as a JSON file</source>
+        <translation>Dieses Maschinenprofil als JSON-Datei speichern</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Maschine</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Geometry</source>
+        <translation>Geometrie</translation>
+    </message>
+    <message>
+        <source>Joint limits</source>
+        <translation>Gelenkgrenzen</translation>
+    </message>
+    <message>
+        <source>Motors</source>
+        <translation>Motoren</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <source>Motion and safety</source>
+        <translation>Bewegung und Sicherheit</translation>
+    </message>
+    <message>
+        <source>Connection and home pose</source>
+        <translation>Verbindung und Ausgangspose</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Driving link a1</source>
+        <translation>Antriebsglied a1</translation>
+    </message>
+    <message>
+        <source>Floating link b1</source>
+        <translation>Koppelglied b1</translation>
+    </message>
+    <message>
+        <source>Driving link a2</source>
+        <translation>Antriebsglied a2</translation>
+    </message>
+    <message>
+        <source>Floating link b2</source>
+        <translation>Koppelglied b2</translation>
+    </message>
+    <message>
+        <source>Motor distance w</source>
+        <translation>Motorabstand w</translation>
+    </message>
+    <message>
+        <source>Limit the motor angles</source>
+        <translation>Motorwinkel begrenzen</translation>
+    </message>
+    <message>
+        <source>θ1 minimum</source>
+        <translation>θ1 Minimum</translation>
+    </message>
+    <message>
+        <source>θ1 maximum</source>
+        <translation>θ1 Maximum</translation>
+    </message>
+    <message>
+        <source>θ2 minimum</source>
+        <translation>θ2 Minimum</translation>
+    </message>
+    <message>
+        <source>θ2 maximum</source>
+        <translation>θ2 Maximum</translation>
+    </message>
+    <message>
+        <source>Motor 1 steps per degree</source>
+        <translation>Motor 1 Schritte pro Grad</translation>
+    </message>
+    <message>
+        <source>Motor 2 steps per degree</source>
+        <translation>Motor 2 Schritte pro Grad</translation>
+    </message>
+    <message>
+        <source>Motor 1 maximum speed</source>
+        <translation>Motor 1 Höchstgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source> °/min</source>
+        <translation> °/min</translation>
+    </message>
+    <message>
+        <source>Motor 2 maximum speed</source>
+        <translation>Motor 2 Höchstgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Motor 1 acceleration</source>
+        <translation>Motor 1 Beschleunigung</translation>
+    </message>
+    <message>
+        <source> °/s²</source>
+        <translation> °/s²</translation>
+    </message>
+    <message>
+        <source>Motor 2 acceleration</source>
+        <translation>Motor 2 Beschleunigung</translation>
+    </message>
+    <message>
+        <source>Junction deviation</source>
+        <translation>Eckenabweichung</translation>
+    </message>
+    <message>
+        <source>Pen servo (M3 S / M5)</source>
+        <translation>Stift-Servo (M3 S / M5)</translation>
+    </message>
+    <message>
+        <source>Z axis</source>
+        <translation>Z-Achse</translation>
+    </message>
+    <message>
+        <source>Laser (M4 S / M5)</source>
+        <translation>Laser (M4 S / M5)</translation>
+    </message>
+    <message>
+        <source>Pen up S value</source>
+        <translation>S-Wert Stift hoch</translation>
+    </message>
+    <message>
+        <source>Pen down S value</source>
+        <translation>S-Wert Stift ab</translation>
+    </message>
+    <message>
+        <source>Pen up delay</source>
+        <translation>Wartezeit Stift hoch</translation>
+    </message>
+    <message>
+        <source>Pen down delay</source>
+        <translation>Wartezeit Stift ab</translation>
+    </message>
+    <message>
+        <source>Z up</source>
+        <translation>Z oben</translation>
+    </message>
+    <message>
+        <source>Z down</source>
+        <translation>Z unten</translation>
+    </message>
+    <message>
+        <source>Z feed</source>
+        <translation>Z-Vorschub</translation>
+    </message>
+    <message>
+        <source> mm/min</source>
+        <translation> mm/min</translation>
+    </message>
+    <message>
+        <source>Laser power S value</source>
+        <translation>S-Wert Laserleistung</translation>
+    </message>
+    <message>
+        <source>Working mode (built)</source>
+        <translation>Arbeitsmodus (Aufbau)</translation>
+    </message>
+    <message>
+        <source>Assembly mode</source>
+        <translation>Montagemodus</translation>
+    </message>
+    <message>
+        <source>Drawing speed</source>
+        <translation>Zeichengeschwindigkeit</translation>
+    </message>
+    <message>
+        <source> mm/s</source>
+        <translation> mm/s</translation>
+    </message>
+    <message>
+        <source>Travel speed</source>
+        <translation>Verfahrgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Type II singularity margin</source>
+        <translation>Abstand zur Typ-II-Singularität</translation>
+    </message>
+    <message>
+        <source>Type I singularity margin</source>
+        <translation>Abstand zur Typ-I-Singularität</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>Baudrate</translation>
+    </message>
+    <message>
+        <source>The machine has homing switches ($H)</source>
+        <translation>Die Maschine hat Referenzschalter ($H)</translation>
+    </message>
+    <message>
+        <source>Home θ1</source>
+        <translation>Ausgangspose θ1</translation>
+    </message>
+    <message>
+        <source>Home θ2</source>
+        <translation>Ausgangspose θ2</translation>
+    </message>
+    <message>
+        <source>The profile is not applied until these problems are fixed.</source>
+        <translation>Das Profil wird erst übernommen, wenn diese Probleme behoben sind.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be used:
 %2</source>
-            <translation>%1 kann nicht verwendet werden:
+        <translation>%1 kann nicht verwendet werden:
 %2</translation>
-        </message>
-        <message>
-            <source>Fix the profile's problems before exporting it.</source>
-            <translation>Beheben Sie die Probleme des Profils, bevor Sie es exportieren.</translation>
-        </message>
-        <message>
-            <source>Import machine profile</source>
-            <translation>Maschinenprofil importieren</translation>
-        </message>
-        <message>
-            <source>Machine profiles (*.json)</source>
-            <translation>Maschinenprofile (*.json)</translation>
-        </message>
-        <message>
-            <source>Import failed</source>
-            <translation>Import fehlgeschlagen</translation>
-        </message>
-        <message>
-            <source>Export machine profile</source>
-            <translation>Maschinenprofil exportieren</translation>
-        </message>
-        <message>
-            <source>Export failed</source>
-            <translation>Export fehlgeschlagen</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::RunController</name>
-        <message>
-            <source>The connection was closed during the run. The progress is saved beside the job: reconnect and resume.</source>
-            <translation>Die Verbindung wurde während des Auftrags getrennt. Der Fortschritt ist neben dem Auftrag gespeichert: Verbinden Sie erneut und setzen Sie fort.</translation>
-        </message>
-        <message>
-            <source>Cannot start: connect the machine, wait until it is idle, and let the job plan first.</source>
-            <translation>Start nicht möglich: Verbinden Sie die Maschine, warten Sie, bis sie bereit ist, und lassen Sie den Auftrag zuerst planen.</translation>
-        </message>
-        <message>
-            <source>Cannot create the job folder %1.</source>
-            <translation>Der Auftragsordner %1 kann nicht angelegt werden.</translation>
-        </message>
-        <message>
-            <source>Nothing to resume: there is no saved progress beside %1.</source>
-            <translation>Nichts fortzusetzen: Neben %1 ist kein Fortschritt gespeichert.</translation>
-        </message>
-        <message>
-            <source>Resuming %1…</source>
-            <translation>%1 wird fortgesetzt…</translation>
-        </message>
-        <message>
-            <source>Running %1…</source>
-            <translation>%1 läuft…</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::RunPanel</name>
-        <message>
-            <source>Ready</source>
-            <translation>Bereit</translation>
-        </message>
-        <message>
-            <source>Running</source>
-            <translation>Läuft</translation>
-        </message>
-        <message>
-            <source>Holding…</source>
-            <translation>Hält an…</translation>
-        </message>
-        <message>
-            <source>On hold</source>
-            <translation>Angehalten</translation>
-        </message>
-        <message>
-            <source>Paused by a problem</source>
-            <translation>Wegen eines Problems pausiert</translation>
-        </message>
-        <message>
-            <source>Stopping…</source>
-            <translation>Wird gestoppt…</translation>
-        </message>
-        <message>
-            <source>Stopped</source>
-            <translation>Gestoppt</translation>
-        </message>
-        <message>
-            <source>Finished</source>
-            <translation>Fertig</translation>
-        </message>
-        <message>
-            <source>%1 h %2 min</source>
-            <translation>%1 h %2 min</translation>
-        </message>
-        <message>
-            <source>%1 min %2 s</source>
-            <translation>%1 min %2 s</translation>
-        </message>
-        <message>
-            <source>%1 s</source>
-            <translation>%1 s</translation>
-        </message>
-        <message>
-            <source>Start</source>
-            <translation>Starten</translation>
-        </message>
-        <message>
-            <source>Write the planned job as G-code and stream it to the machine</source>
-            <translation>Den geplanten Auftrag als G-Code schreiben und an die Maschine senden</translation>
-        </message>
-        <message>
-            <source>Hold</source>
-            <translation>Anhalten</translation>
-        </message>
-        <message>
-            <source>Feed hold: the machine decelerates and waits</source>
-            <translation>Vorschub halten: Die Maschine bremst ab und wartet</translation>
-        </message>
-        <message>
-            <source>Continue</source>
-            <translation>Weiter</translation>
-        </message>
-        <message>
-            <source>Continue after a hold</source>
-            <translation>Nach dem Anhalten weitermachen</translation>
-        </message>
-        <message>
-            <source>Stop</source>
-            <translation>Stoppen</translation>
-        </message>
-        <message>
-            <source>Stop the job: hold, reset and unlock; the progress is kept for a resume</source>
-            <translation>Auftrag stoppen: anhalten, zurücksetzen und entsperren; der Fortschritt bleibt zum Fortsetzen erhalten</translation>
-        </message>
-        <message>
-            <source>Resume</source>
-            <translation>Fortsetzen</translation>
-        </message>
-        <message>
-            <source>Continue the interrupted job from its last completed pen-down point, with a safe pen-up approach</source>
-            <translation>Den unterbrochenen Auftrag ab seinem letzten fertigen Zeichenpunkt fortsetzen, mit sicherer Anfahrt bei angehobenem Stift</translation>
-        </message>
-        <message>
-            <source>An interrupted run was saved (line %1 of %2 done): %3</source>
-            <translation>Ein unterbrochener Lauf wurde gespeichert (Zeile %1 von %2 erledigt): %3</translation>
-        </message>
-        <message>
-            <source>No job sent yet</source>
-            <translation>Noch kein Auftrag gesendet</translation>
-        </message>
-        <message>
-            <source>%1 of %2 lines executed</source>
-            <translation>%1 von %2 Zeilen ausgeführt</translation>
-        </message>
-        <message>
-            <source>%1 left</source>
-            <translation>noch %1</translation>
-        </message>
-        <message>
-            <source>Long job</source>
-            <translation>Langer Auftrag</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::SimulationPanel</name>
-        <message>
-            <source>Step back one move</source>
-            <translation>Eine Bewegung zurück</translation>
-        </message>
-        <message>
-            <source>Play / pause the simulation</source>
-            <translation>Simulation abspielen / anhalten</translation>
-        </message>
-        <message>
-            <source>Step forward one move</source>
-            <translation>Eine Bewegung vor</translation>
-        </message>
-        <message>
-            <source>Simulation speed</source>
-            <translation>Simulationsgeschwindigkeit</translation>
-        </message>
-        <message>
-            <source>x%1</source>
-            <translation>x%1</translation>
-        </message>
-        <message>
-            <source>No planned job to simulate.</source>
-            <translation>Kein geplanter Auftrag zum Simulieren.</translation>
-        </message>
-        <message>
-            <source>%1 of %2</source>
-            <translation>%1 von %2</translation>
-        </message>
-        <message>
-            <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Motor angles:&lt;/td&gt;&lt;td&gt;%1 deg, %2 deg&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen:&lt;/td&gt;&lt;td&gt;x %3 mm, y %4 mm (%5)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Transmission angle:&lt;/td&gt;&lt;td&gt;%6 deg at the pen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%7 / %8 deg at the elbows&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Type II margin:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%9 deg&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
-            <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Motorwinkel:&lt;/td&gt;&lt;td&gt;%1 Grad, %2 Grad&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Stift:&lt;/td&gt;&lt;td&gt;x %3 mm, y %4 mm (%5)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Übertragungswinkel:&lt;/td&gt;&lt;td&gt;%6 Grad am Stift&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%7 / %8 Grad an den Ellbogen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Abstand Typ II:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%9 Grad&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
-        </message>
-        <message>
-            <source>down</source>
-            <translation>unten</translation>
-        </message>
-        <message>
-            <source>up</source>
-            <translation>oben</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::SpeedLegend</name>
-        <message>
-            <source>0 mm/s</source>
-            <translation>0 mm/s</translation>
-        </message>
-        <message>
-            <source>%1 mm/s</source>
-            <translation>%1 mm/s</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::StudioDocument</name>
-        <message>
-            <source>Show layer</source>
-            <translation>Ebene zeigen</translation>
-        </message>
-        <message>
-            <source>Hide layer</source>
-            <translation>Ebene ausblenden</translation>
-        </message>
-        <message>
-            <source>Reorder layers</source>
-            <translation>Ebenen umordnen</translation>
-        </message>
-        <message>
-            <source>Change layer tool settings</source>
-            <translation>Werkzeugeinstellungen der Ebene ändern</translation>
-        </message>
-    </context>
-    <context>
-        <name>main</name>
-        <message>
-            <source>Plan and simulate drawings for five-bar robots.</source>
-            <translation>Zeichnungen für Fünfgelenk-Roboter planen und simulieren.</translation>
-        </message>
-        <message>
-            <source>Open the demo drawing on the default maker plotter.</source>
-            <translation>Die Demo-Zeichnung auf dem Standard-Maker-Plotter öffnen.</translation>
-        </message>
-        <message>
-            <source>User interface language (e.g. de, en); default: system.</source>
-            <translation>Sprache der Oberfläche (z. B. de, en); Vorgabe: System.</translation>
-        </message>
-        <message>
-            <source>Save a picture of the window once the job is planned, then quit.</source>
-            <translation>Ein Bild des Fensters speichern, sobald der Auftrag geplant ist, dann beenden.</translation>
-        </message>
-        <message>
-            <source>With --screenshot: show the workspace legend (legend) or a map (transmission, conditioning or resolution).</source>
-            <translation>Mit --screenshot: die Arbeitsraum-Legende (legend) oder eine Karte (transmission, conditioning oder resolution) zeigen.</translation>
-        </message>
-        <message>
-            <source>With --screenshot: simulation position as a fraction of the job (0 to 1).</source>
-            <translation>Mit --screenshot: Position der Simulation als Anteil des Auftrags (0 bis 1).</translation>
-        </message>
-        <message>
-            <source>Machine profile: a preset name or a profile JSON file (default: the last one used, else maker-plotter).</source>
-            <translation>Maschinenprofil: ein Vorgabename oder eine Profil-JSON-Datei (Standard: das zuletzt verwendete, sonst maker-plotter).</translation>
-        </message>
-        <message>
-            <source>Plan the drawing or project as the studio does, write the G-code and exit (no window).</source>
-            <translation>Die Zeichnung oder das Projekt wie im Studio planen, den G-Code schreiben und beenden (ohne Fenster).</translation>
-        </message>
-        <message>
-            <source>SVG drawing or project to open.</source>
-            <translation>SVG-Zeichnung oder Projekt zum Öffnen.</translation>
-        </message>
-        <message>
-            <source>Filled shapes: outline (default), hatch or none; with hatch: SPACING_MM and ANGLE_DEG after colons.</source>
-            <translation>Gefüllte Formen: outline (Standard), hatch oder none; bei hatch: SPACING_MM und ANGLE_DEG nach Doppelpunkten.</translation>
-        </message>
-        <message>
-            <source>Machine profile: a preset name or a profile JSON file.</source>
-            <translation>Maschinenprofil: ein Vorgabename oder eine Profil-JSON-Datei.</translation>
-        </message>
-        <message>
-            <source>SVG drawing to open.</source>
-            <translation>Zu öffnende SVG-Zeichnung.</translation>
-        </message>
-    </context>
-    <context>
-        <name>DesignPainter</name>
-        <message>
-            <source>Workspace, singularity-free region and type II curves</source>
-            <translation>Arbeitsraum, singularitätsfreier Bereich und Typ-II-Kurven</translation>
-        </message>
-        <message>
-            <source>a1 = %1, b1 = %2, a2 = %3, b2 = %4, w = %5 mm, working mode %6</source>
-            <translation>a1 = %1, b1 = %2, a2 = %3, b2 = %4, w = %5 mm, Arbeitsmodus %6</translation>
-        </message>
-        <message>
-            <source>Rectangle x %1 .. %2, y %3 .. %4 mm; worst condition number %5 (mean %6)</source>
-            <translation>Rechteck x %1 .. %2, y %3 .. %4 mm; schlechteste Konditionszahl %5 (Mittel %6)</translation>
-        </message>
-        <message>
-            <source>Type II margin %1 deg, type I margin %2 deg, footprint %3 cm²</source>
-            <translation>Abstand zu Typ II %1°, zu Typ I %2°, Platzbedarf %3 cm²</translation>
-        </message>
-        <message>
-            <source>Worst %1 um per step, worst motor speed %2 deg/s</source>
-            <translation>Schlechtestens %1 µm pro Schritt, höchste Motordrehzahl %2 °/s</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::DesignDialog</name>
-        <message>
-            <source>Design a machine</source>
-            <translation>Maschine entwerfen</translation>
-        </message>
-        <message>
-            <source>&amp;Design...</source>
-            <translation>&amp;Entwurf...</translation>
-        </message>
-        <message>
-            <source>Choose link lengths for a paper size</source>
-            <translation>Gliedlängen für ein Papierformat wählen</translation>
-        </message>
-        <message>
-            <source>Brief</source>
-            <translation>Vorgaben</translation>
-        </message>
-        <message>
-            <source>Custom</source>
-            <translation>Eigenes Format</translation>
-        </message>
-        <message>
-            <source>Landscape</source>
-            <translation>Querformat</translation>
-        </message>
-        <message>
-            <source>Portrait</source>
-            <translation>Hochformat</translation>
-        </message>
-        <message>
-            <source> mm</source>
-            <translation> mm</translation>
-        </message>
-        <message>
-            <source> deg</source>
-            <translation> °</translation>
-        </message>
-        <message>
-            <source>Symmetric arms</source>
-            <translation>Symmetrische Arme</translation>
-        </message>
-        <message>
-            <source>Any</source>
-            <translation>Beliebig</translation>
-        </message>
-        <message>
-            <source>Worst condition number</source>
-            <translation>Schlechteste Konditionszahl</translation>
-        </message>
-        <message>
-            <source>Worst resolution</source>
-            <translation>Schlechteste Auflösung</translation>
-        </message>
-        <message>
-            <source>Footprint</source>
-            <translation>Platzbedarf</translation>
-        </message>
-        <message>
-            <source>Weighted mix</source>
-            <translation>Gewichtete Mischung</translation>
-        </message>
-        <message>
-            <source>Condition</source>
-            <translation>Kondition</translation>
-        </message>
-        <message>
-            <source>Resolution</source>
-            <translation>Auflösung</translation>
-        </message>
-        <message>
-            <source>Weight of this normalised term in the weighted mix</source>
-            <translation>Gewicht dieses normierten Terms in der gewichteten Mischung</translation>
-        </message>
-        <message>
-            <source>Mix weights</source>
-            <translation>Gewichte der Mischung</translation>
-        </message>
-        <message>
-            <source>Paper</source>
-            <translation>Papier</translation>
-        </message>
-        <message>
-            <source>Orientation</source>
-            <translation>Ausrichtung</translation>
-        </message>
-        <message>
-            <source>Width</source>
-            <translation>Breite</translation>
-        </message>
-        <message>
-            <source>Height</source>
-            <translation>Höhe</translation>
-        </message>
-        <message>
-            <source>Margin</source>
-            <translation>Rand</translation>
-        </message>
-        <message>
-            <source>Shortest link</source>
-            <translation>Kürzestes Glied</translation>
-        </message>
-        <message>
-            <source>Longest link</source>
-            <translation>Längstes Glied</translation>
-        </message>
-        <message>
-            <source>Smallest motor spacing</source>
-            <translation>Kleinster Motorabstand</translation>
-        </message>
-        <message>
-            <source>Largest motor spacing</source>
-            <translation>Größter Motorabstand</translation>
-        </message>
-        <message>
-            <source>Arm clearance</source>
-            <translation>Armabstand</translation>
-        </message>
-        <message>
-            <source>Type II margin</source>
-            <translation>Abstand zu Typ-II-Singularitäten</translation>
-        </message>
-        <message>
-            <source>Working mode</source>
-            <translation>Arbeitsmodus</translation>
-        </message>
-        <message>
-            <source>Objective</source>
-            <translation>Ziel</translation>
-        </message>
-        <message>
-            <source>Search</source>
-            <translation>Suchen</translation>
-        </message>
-        <message>
-            <source>Cancel</source>
-            <translation>Abbrechen</translation>
-        </message>
-        <message>
-            <source>Set the brief and press Search.</source>
-            <translation>Vorgaben einstellen und Suchen drücken.</translation>
-        </message>
-        <message>
-            <source>Worst condition</source>
-            <translation>Schlechteste Kondition</translation>
-        </message>
-        <message>
-            <source>Footprint (cm²)</source>
-            <translation>Platzbedarf (cm²)</translation>
-        </message>
-        <message>
-            <source>µm/step</source>
-            <translation>µm/Schritt</translation>
-        </message>
-        <message>
-            <source>Mode</source>
-            <translation>Modus</translation>
-        </message>
-        <message>
-            <source>Workspace</source>
-            <translation>Arbeitsraum</translation>
-        </message>
-        <message>
-            <source>Conditioning</source>
-            <translation>Kondition</translation>
-        </message>
-        <message>
-            <source>Transmission angle</source>
-            <translation>Übertragungswinkel</translation>
-        </message>
-        <message>
-            <source>Resolution</source>
-            <translation>Auflösung</translation>
-        </message>
-        <message>
-            <source>Map on the canvas</source>
-            <translation>Karte auf der Zeichenfläche</translation>
-        </message>
-        <message>
-            <source>Use as profile</source>
-            <translation>Als Profil verwenden</translation>
-        </message>
-        <message>
-            <source>Export...</source>
-            <translation>Exportieren...</translation>
-        </message>
-        <message>
-            <source>Searching...</source>
-            <translation>Suche läuft...</translation>
-        </message>
-        <message>
-            <source>Search cancelled.</source>
-            <translation>Suche abgebrochen.</translation>
-        </message>
-        <message>
-            <source>No design meets the brief: %1</source>
-            <translation>Kein Entwurf erfüllt die Vorgaben: %1</translation>
-        </message>
-        <message>
-            <source>Best worst-case condition number %1; %2 designs on the trade-off, %3 evaluations in %4 s.</source>
-            <translation>Beste Konditionszahl im schlechtesten Fall %1; %2 Entwürfe im Zielkonflikt, %3 Auswertungen in %4 s.</translation>
-        </message>
-        <message>
-            <source>The document now uses this design (Edit &gt; Undo restores the previous profile).</source>
-            <translation>Das Dokument verwendet jetzt diesen Entwurf (Bearbeiten &gt; Rückgängig stellt das vorige Profil wieder her).</translation>
-        </message>
-        <message>
-            <source>No design is selected.</source>
-            <translation>Kein Entwurf ausgewählt.</translation>
-        </message>
-        <message>
-            <source>Export profile</source>
-            <translation>Profil exportieren</translation>
-        </message>
-        <message>
-            <source>Machine profiles (*.json)</source>
-            <translation>Maschinenprofile (*.json)</translation>
-        </message>
-        <message>
-            <source>Profile written to %1.</source>
-            <translation>Profil nach %1 geschrieben.</translation>
-        </message>
-    </context>
-    <context>
-        <name>fivebar::widgets::ParetoPlot</name>
-        <message>
-            <source>Footprint (cm²)</source>
-            <translation>Platzbedarf (cm²)</translation>
-        </message>
-        <message>
-            <source>Worst condition number</source>
-            <translation>Schlechteste Konditionszahl</translation>
-        </message>
-    </context>
+    </message>
+    <message>
+        <source>Fix the profile&apos;s problems before exporting it.</source>
+        <translation>Beheben Sie die Probleme des Profils, bevor Sie es exportieren.</translation>
+    </message>
+    <message>
+        <source>Import machine profile</source>
+        <translation>Maschinenprofil importieren</translation>
+    </message>
+    <message>
+        <source>Machine profiles (*.json)</source>
+        <translation>Maschinenprofile (*.json)</translation>
+    </message>
+    <message>
+        <source>Import failed</source>
+        <translation>Import fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Export machine profile</source>
+        <translation>Maschinenprofil exportieren</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Export fehlgeschlagen</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::RunController</name>
+    <message>
+        <source>The connection was closed during the run. The progress is saved beside the job: reconnect and resume.</source>
+        <translation>Die Verbindung wurde während des Auftrags getrennt. Der Fortschritt ist neben dem Auftrag gespeichert: Verbinden Sie erneut und setzen Sie fort.</translation>
+    </message>
+    <message>
+        <source>Cannot start: connect the machine, wait until it is idle, and let the job plan first.</source>
+        <translation>Start nicht möglich: Verbinden Sie die Maschine, warten Sie, bis sie bereit ist, und lassen Sie den Auftrag zuerst planen.</translation>
+    </message>
+    <message>
+        <source>Cannot create the job folder %1.</source>
+        <translation>Der Auftragsordner %1 kann nicht angelegt werden.</translation>
+    </message>
+    <message>
+        <source>Nothing to resume: there is no saved progress beside %1.</source>
+        <translation>Nichts fortzusetzen: Neben %1 ist kein Fortschritt gespeichert.</translation>
+    </message>
+    <message>
+        <source>Resuming %1…</source>
+        <translation>%1 wird fortgesetzt…</translation>
+    </message>
+    <message>
+        <source>Running %1…</source>
+        <translation>%1 läuft…</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::RunPanel</name>
+    <message>
+        <source>Ready</source>
+        <translation>Bereit</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Läuft</translation>
+    </message>
+    <message>
+        <source>Holding…</source>
+        <translation>Hält an…</translation>
+    </message>
+    <message>
+        <source>On hold</source>
+        <translation>Angehalten</translation>
+    </message>
+    <message>
+        <source>Paused by a problem</source>
+        <translation>Wegen eines Problems pausiert</translation>
+    </message>
+    <message>
+        <source>Stopping…</source>
+        <translation>Wird gestoppt…</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Gestoppt</translation>
+    </message>
+    <message>
+        <source>Finished</source>
+        <translation>Fertig</translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation>%1 h %2 min</translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Starten</translation>
+    </message>
+    <message>
+        <source>Write the planned job as G-code and stream it to the machine</source>
+        <translation>Den geplanten Auftrag als G-Code schreiben und an die Maschine senden</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>Anhalten</translation>
+    </message>
+    <message>
+        <source>Feed hold: the machine decelerates and waits</source>
+        <translation>Vorschub halten: Die Maschine bremst ab und wartet</translation>
+    </message>
+    <message>
+        <source>Continue</source>
+        <translation>Weiter</translation>
+    </message>
+    <message>
+        <source>Continue after a hold</source>
+        <translation>Nach dem Anhalten weitermachen</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stoppen</translation>
+    </message>
+    <message>
+        <source>Stop the job: hold, reset and unlock; the progress is kept for a resume</source>
+        <translation>Auftrag stoppen: anhalten, zurücksetzen und entsperren; der Fortschritt bleibt zum Fortsetzen erhalten</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Fortsetzen</translation>
+    </message>
+    <message>
+        <source>Continue the interrupted job from its last completed pen-down point, with a safe pen-up approach</source>
+        <translation>Den unterbrochenen Auftrag ab seinem letzten fertigen Zeichenpunkt fortsetzen, mit sicherer Anfahrt bei angehobenem Stift</translation>
+    </message>
+    <message>
+        <source>An interrupted run was saved (line %1 of %2 done): %3</source>
+        <translation>Ein unterbrochener Lauf wurde gespeichert (Zeile %1 von %2 erledigt): %3</translation>
+    </message>
+    <message>
+        <source>No job sent yet</source>
+        <translation>Noch kein Auftrag gesendet</translation>
+    </message>
+    <message>
+        <source>%1 of %2 lines executed</source>
+        <translation>%1 von %2 Zeilen ausgeführt</translation>
+    </message>
+    <message>
+        <source>%1 left</source>
+        <translation>noch %1</translation>
+    </message>
+    <message>
+        <source>Long job</source>
+        <translation>Langer Auftrag</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::SimulationPanel</name>
+    <message>
+        <source>Step back one move</source>
+        <translation>Eine Bewegung zurück</translation>
+    </message>
+    <message>
+        <source>Play / pause the simulation</source>
+        <translation>Simulation abspielen / anhalten</translation>
+    </message>
+    <message>
+        <source>Step forward one move</source>
+        <translation>Eine Bewegung vor</translation>
+    </message>
+    <message>
+        <source>Simulation speed</source>
+        <translation>Simulationsgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>x%1</source>
+        <translation>x%1</translation>
+    </message>
+    <message>
+        <source>No planned job to simulate.</source>
+        <translation>Kein geplanter Auftrag zum Simulieren.</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 von %2</translation>
+    </message>
+    <message>
+        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Motor angles:&lt;/td&gt;&lt;td&gt;%1 deg, %2 deg&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen:&lt;/td&gt;&lt;td&gt;x %3 mm, y %4 mm (%5)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Transmission angle:&lt;/td&gt;&lt;td&gt;%6 deg at the pen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%7 / %8 deg at the elbows&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Type II margin:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%9 deg&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Motorwinkel:&lt;/td&gt;&lt;td&gt;%1 Grad, %2 Grad&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Stift:&lt;/td&gt;&lt;td&gt;x %3 mm, y %4 mm (%5)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Übertragungswinkel:&lt;/td&gt;&lt;td&gt;%6 Grad am Stift&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%7 / %8 Grad an den Ellbogen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Abstand Typ II:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%9 Grad&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>unten</translation>
+    </message>
+    <message>
+        <source>up</source>
+        <translation>oben</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::SpeedLegend</name>
+    <message>
+        <source>0 mm/s</source>
+        <translation>0 mm/s</translation>
+    </message>
+    <message>
+        <source>%1 mm/s</source>
+        <translation>%1 mm/s</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::StudioDocument</name>
+    <message>
+        <source>Show layer</source>
+        <translation>Ebene zeigen</translation>
+    </message>
+    <message>
+        <source>Hide layer</source>
+        <translation>Ebene ausblenden</translation>
+    </message>
+    <message>
+        <source>Reorder layers</source>
+        <translation>Ebenen umordnen</translation>
+    </message>
+    <message>
+        <source>Change layer tool settings</source>
+        <translation>Werkzeugeinstellungen der Ebene ändern</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::ApplyPage</name>
+    <message>
+        <source>5. Apply the calibration to the profile</source>
+        <translation>5. Die Kalibrierung ins Profil übernehmen</translation>
+    </message>
+    <message>
+        <source>Applying writes the fitted link lengths into the profile and keeps the motor zeros and the backlash in its calibration section. From then on every plan, jog and check uses them. &lt;b&gt;Edit &amp;gt; Undo&lt;/b&gt; takes it back; the profile is saved with the project, and you can also save it as a profile file for other projects.</source>
+        <translation>Beim Übernehmen kommen die ermittelten Gliedlängen ins Profil, die Motornullpunkte und das Umkehrspiel in seinen Kalibrierabschnitt. Ab dann verwenden jede Planung, jedes Verfahren und jede Prüfung diese Werte. &lt;b&gt;Bearbeiten &amp;gt; Rückgängig&lt;/b&gt; nimmt es zurück; das Profil wird mit dem Projekt gespeichert, und Sie können es auch als Profildatei für andere Projekte speichern.</translation>
+    </message>
+    <message>
+        <source>Apply to the profile</source>
+        <translation>Ins Profil übernehmen</translation>
+    </message>
+    <message>
+        <source>Save profile as...</source>
+        <translation>Profil speichern unter...</translation>
+    </message>
+    <message>
+        <source>Save the calibrated profile</source>
+        <translation>Das kalibrierte Profil speichern</translation>
+    </message>
+    <message>
+        <source>Machine profile (*.json)</source>
+        <translation>Maschinenprofil (*.json)</translation>
+    </message>
+    <message>
+        <source>Saved %1.</source>
+        <translation>%1 gespeichert.</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>motor 1 zero</source>
+        <translation>Nullpunkt Motor 1</translation>
+    </message>
+    <message>
+        <source>motor 2 zero</source>
+        <translation>Nullpunkt Motor 2</translation>
+    </message>
+    <message>
+        <source>motor 1 backlash</source>
+        <translation>Umkehrspiel Motor 1</translation>
+    </message>
+    <message>
+        <source>motor 2 backlash</source>
+        <translation>Umkehrspiel Motor 2</translation>
+    </message>
+    <message>
+        <source>Applied. Edit &gt; Undo restores the profile as it was.</source>
+        <translation>Übernommen. Bearbeiten &gt; Rückgängig stellt das alte Profil wieder her.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::CalibrationPreview</name>
+    <message>
+        <source>No pattern yet</source>
+        <translation>Noch kein Muster</translation>
+    </message>
+    <message>
+        <source>pattern as planned</source>
+        <translation>Muster wie geplant</translation>
+    </message>
+    <message>
+        <source>drawn by the pen (simulation)</source>
+        <translation>vom Stift gezeichnet (Simulation)</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>gemessen</translation>
+    </message>
+    <message>
+        <source>error before</source>
+        <translation>Fehler vorher</translation>
+    </message>
+    <message>
+        <source>error after</source>
+        <translation>Fehler nachher</translation>
+    </message>
+    <message>
+        <source>arrows ×%1</source>
+        <translation>Pfeile ×%1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::CalibrationWizard</name>
+    <message>
+        <source>Calibrate the machine</source>
+        <translation>Die Maschine kalibrieren</translation>
+    </message>
+    <message>
+        <source>&amp;Calibrate...</source>
+        <translation>&amp;Kalibrieren...</translation>
+    </message>
+    <message>
+        <source>Measure a drawn pattern and correct the profile&apos;s link lengths and motor zeros</source>
+        <translation>Ein gezeichnetes Muster vermessen und die Gliedlängen und Motornullpunkte des Profils korrigieren</translation>
+    </message>
+    <message>
+        <source>Choose a pattern first.</source>
+        <translation>Wählen Sie zuerst ein Muster.</translation>
+    </message>
+    <message>
+        <source>The pattern cannot be planned: %1</source>
+        <translation>Das Muster lässt sich nicht planen: %1</translation>
+    </message>
+    <message>
+        <source>The pattern&apos;s G-code cannot be written: %1</source>
+        <translation>Der G-Code des Musters lässt sich nicht schreiben: %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::DrawPage</name>
+    <message>
+        <source>2. Draw the pattern</source>
+        <translation>2. Das Muster zeichnen</translation>
+    </message>
+    <message>
+        <source>Tape a sheet down so it cannot move, and draw the pattern with the pen you normally use. Draw it on the connected machine, or export its G-code and send it your way. Keep MARKS.csv: it says which motor angles drew each mark.</source>
+        <translation>Kleben Sie ein Blatt fest, damit es nicht verrutscht, und zeichnen Sie das Muster mit dem Stift, den Sie sonst auch benutzen. Zeichnen Sie es auf der verbundenen Maschine, oder exportieren Sie den G-Code und senden Sie ihn auf Ihre Weise. Heben Sie MARKS.csv auf: Dort steht, mit welchen Motorwinkeln jede Marke gezeichnet wurde.</translation>
+    </message>
+    <message>
+        <source>Draw on the connected machine</source>
+        <translation>Auf der verbundenen Maschine zeichnen</translation>
+    </message>
+    <message>
+        <source>Export G-code...</source>
+        <translation>G-Code exportieren...</translation>
+    </message>
+    <message>
+        <source>Export MARKS.csv...</source>
+        <translation>MARKS.csv exportieren...</translation>
+    </message>
+    <message>
+        <source>No hardware? Simulate an imperfect machine</source>
+        <translation>Keine Hardware? Eine unvollkommene Maschine simulieren</translation>
+    </message>
+    <message>
+        <source>Simulate an imperfect machine (the sheet below is what it draws)</source>
+        <translation>Eine unvollkommene Maschine simulieren (das Blatt unten zeigt, was sie zeichnet)</translation>
+    </message>
+    <message>
+        <source>The simulated machine differs by these amounts from the profile as it was when this wizard opened, as a real one would. The picture shows what its pen really draws (orange) beside the plan.</source>
+        <translation>Die simulierte Maschine weicht um diese Beträge vom Profil ab, wie es beim Öffnen dieses Assistenten war, so wie eine echte Maschine. Das Bild zeigt, was ihr Stift wirklich zeichnet (orange), neben dem Plan.</translation>
+    </message>
+    <message>
+        <source>a1 longer by</source>
+        <translation>a1 länger um</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>b1 longer by</source>
+        <translation>b1 länger um</translation>
+    </message>
+    <message>
+        <source>a2 longer by</source>
+        <translation>a2 länger um</translation>
+    </message>
+    <message>
+        <source>b2 longer by</source>
+        <translation>b2 länger um</translation>
+    </message>
+    <message>
+        <source>motors farther apart by</source>
+        <translation>Motorabstand größer um</translation>
+    </message>
+    <message>
+        <source>motor 1 zero off by</source>
+        <translation>Nullpunkt Motor 1 versetzt um</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>motor 2 zero off by</source>
+        <translation>Nullpunkt Motor 2 versetzt um</translation>
+    </message>
+    <message>
+        <source>motor 1 backlash</source>
+        <translation>Umkehrspiel Motor 1</translation>
+    </message>
+    <message>
+        <source>motor 2 backlash</source>
+        <translation>Umkehrspiel Motor 2</translation>
+    </message>
+    <message>
+        <source>The pattern is drawn. Take the sheet off and measure it.</source>
+        <translation>Das Muster ist gezeichnet. Nehmen Sie das Blatt ab und vermessen Sie es.</translation>
+    </message>
+    <message>
+        <source>Drawing the pattern (%1 lines of G-code)...</source>
+        <translation>Das Muster wird gezeichnet (%1 Zeilen G-Code)...</translation>
+    </message>
+    <message>
+        <source>Export the pattern&apos;s G-code</source>
+        <translation>Den G-Code des Musters exportieren</translation>
+    </message>
+    <message>
+        <source>G-code (*.gcode *.nc)</source>
+        <translation>G-Code (*.gcode *.nc)</translation>
+    </message>
+    <message>
+        <source>Wrote %1.</source>
+        <translation>%1 geschrieben.</translation>
+    </message>
+    <message>
+        <source>Export MARKS.csv</source>
+        <translation>MARKS.csv exportieren</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Streams the pattern with the same checks as the Run panel</source>
+        <translation>Sendet das Muster mit denselben Prüfungen wie die Ausführen-Leiste</translation>
+    </message>
+    <message>
+        <source>Connect a machine or the simulated machine in the Machine panel first</source>
+        <translation>Verbinden Sie zuerst eine Maschine oder die simulierte Maschine in der Maschinen-Leiste</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::FitPage</name>
+    <message>
+        <source>4. Fit the machine to the marks</source>
+        <translation>4. Die Maschine an die Marken anpassen</translation>
+    </message>
+    <message>
+        <source>The fit looks for the link lengths and motor zeros with which the machine would have put every mark where you measured it. Some marks are kept out of the fit and only used to check it afterwards (&quot;held out&quot;): their error is the honest one. The arrows show each mark&apos;s error, greatly enlarged: grey before, red after.</source>
+        <translation>Die Anpassung sucht die Gliedlängen und Motornullpunkte, mit denen die Maschine jede Marke dorthin gesetzt hätte, wo Sie sie gemessen haben. Einige Marken bleiben aus der Anpassung heraus und dienen nur der Kontrolle danach („zurückgehalten“): Ihr Fehler ist der ehrliche. Die Pfeile zeigen den Fehler jeder Marke, stark vergrößert: grau vorher, rot nachher.</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation>Profil</translation>
+    </message>
+    <message>
+        <source>Fitted ± std. dev.</source>
+        <translation>Angepasst ± Std.-Abw.</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#b00000&apos;&gt;&lt;b&gt;The fit failed:&lt;/b&gt; %1&lt;/span&gt;&lt;br&gt;Go back, check the table, or measure more marks.</source>
+        <translation>&lt;span style=&apos;color:#b00000&apos;&gt;&lt;b&gt;Die Anpassung ist fehlgeschlagen:&lt;/b&gt; %1&lt;/span&gt;&lt;br&gt;Gehen Sie zurück, prüfen Sie die Tabelle oder messen Sie mehr Marken.</translation>
+    </message>
+    <message>
+        <source>Backlash from %1 + %2 rows: motor 1 %3°, motor 2 %4°.</source>
+        <translation>Umkehrspiel aus %1 + %2 Reihen: Motor 1 %3°, Motor 2 %4°.</translation>
+    </message>
+    <message>
+        <source>Backlash not measured: %1</source>
+        <translation>Umkehrspiel nicht gemessen: %1</translation>
+    </message>
+    <message>
+        <source>No mark looks mis-measured.</source>
+        <translation>Keine Marke scheint falsch gemessen.</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#b00000&apos;&gt;Left out as mis-measured: mark %1. Check it on the sheet.&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#b00000&apos;&gt;Als falsch gemessen weggelassen: Marke %1. Prüfen Sie sie auf dem Blatt.&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Error before: %1 mm RMS&lt;/b&gt; (largest %2 mm) &amp;rarr; &lt;b&gt;after: %3 mm RMS&lt;/b&gt; (largest %4 mm) over %5 marks.&lt;br&gt;Held-out marks (%6): %7 mm before &amp;rarr; %8 mm after.&lt;br&gt;%9&lt;br&gt;%10&lt;br&gt;&lt;small&gt;Condition number %11 (below 10000 is fine).&lt;/small&gt;</source>
+        <translation>&lt;b&gt;Fehler vorher: %1 mm RMS&lt;/b&gt; (größter %2 mm) &amp;rarr; &lt;b&gt;nachher: %3 mm RMS&lt;/b&gt; (größter %4 mm) über %5 Marken.&lt;br&gt;Zurückgehaltene Marken (%6): %7 mm vorher &amp;rarr; %8 mm nachher.&lt;br&gt;%9&lt;br&gt;%10&lt;br&gt;&lt;small&gt;Konditionszahl %11 (unter 10000 ist gut).&lt;/small&gt;</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>%1 ± %2%3</source>
+        <translation>%1 ± %2%3</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::MeasurePage</name>
+    <message>
+        <source>3. Measure the marks</source>
+        <translation>3. Die Marken vermessen</translation>
+    </message>
+    <message>
+        <source>Measure the centre of each numbered dot with a ruler and type its x and y in millimetres. Any corner of the sheet can be the origin, and y may point up or down: the fit finds how the sheet lay. The mark you are typing is circled on the picture. Leave a row empty if a mark cannot be read; a mis-measured mark is found and named by the fit. With a scanner, import a scan instead: the marks are found and numbered for you.</source>
+        <translation>Messen Sie die Mitte jedes nummerierten Punkts mit einem Lineal und tippen Sie x und y in Millimetern ein. Jede Ecke des Blatts kann der Ursprung sein, und y darf nach oben oder unten zeigen: Die Anpassung findet heraus, wie das Blatt lag. Die Marke, die Sie gerade eintippen, ist im Bild eingekreist. Lassen Sie eine Zeile leer, wenn eine Marke nicht lesbar ist; eine falsch gemessene Marke findet und nennt die Anpassung. Mit einem Scanner importieren Sie stattdessen einen Scan: Die Marken werden für Sie gefunden und nummeriert.</translation>
+    </message>
+    <message>
+        <source>Mark</source>
+        <translation>Marke</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>㮁 (°)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>㮂 (°)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>x (mm)</source>
+        <translation>x (mm)</translation>
+    </message>
+    <message>
+        <source>y (mm)</source>
+        <translation>y (mm)</translation>
+    </message>
+    <message>
+        <source>Simulation: measure the simulated sheet</source>
+        <translation>Simulation: das simulierte Blatt vermessen</translation>
+    </message>
+    <message>
+        <source>Fills the table with where the simulated imperfect machine put each mark, plus ruler noise. For trying the wizard without hardware.</source>
+        <translation>Füllt die Tabelle mit den Stellen, an die die simulierte unvollkommene Maschine jede Marke gesetzt hat, plus Messrauschen. Zum Ausprobieren des Assistenten ohne Hardware.</translation>
+    </message>
+    <message>
+        <source>noise ±</source>
+        <translation>Rauschen ±</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Import a scan...</source>
+        <translation>Scan importieren...</translation>
+    </message>
+    <message>
+        <source>A scan or photo taken straight from above (PNG or JPEG): the marks are found and numbered by themselves.</source>
+        <translation>Ein Scan oder ein gerade von oben aufgenommenes Foto (PNG oder JPEG): Die Marken werden von selbst gefunden und nummeriert.</translation>
+    </message>
+    <message>
+        <source> dpi</source>
+        <translation> dpi</translation>
+    </message>
+    <message>
+        <source>The scanner&apos;s resolution: the scan&apos;s size in mm comes from it.</source>
+        <translation>Die Auflösung des Scanners: Aus ihr ergibt sich die Größe des Scans in mm.</translation>
+    </message>
+    <message>
+        <source>Load MEASURED.csv...</source>
+        <translation>MEASURED.csv laden...</translation>
+    </message>
+    <message>
+        <source>Save MEASURED.csv...</source>
+        <translation>MEASURED.csv speichern...</translation>
+    </message>
+    <message>
+        <source>Import a scan of the sheet</source>
+        <translation>Einen Scan des Blatts importieren</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.tif *.tiff *.bmp)</source>
+        <translation>Bilder (*.png *.jpg *.jpeg *.tif *.tiff *.bmp)</translation>
+    </message>
+    <message>
+        <source>Load MEASURED.csv</source>
+        <translation>MEASURED.csv laden</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Save MEASURED.csv</source>
+        <translation>MEASURED.csv speichern</translation>
+    </message>
+    <message>
+        <source>fit</source>
+        <translation>Anpassung</translation>
+    </message>
+    <message>
+        <source>backlash %1</source>
+        <translation>Umkehrspiel %1</translation>
+    </message>
+    <message>
+        <source>Filled from the simulated sheet (simulation, not a measurement).</source>
+        <translation>Aus dem simulierten Blatt gefüllt (Simulation, keine Messung).</translation>
+    </message>
+    <message>
+        <source>Mark %1: %2 is empty. Type both x and y, or leave both empty.</source>
+        <translation>Marke %1: %2 ist leer. Tippen Sie x und y ein, oder lassen Sie beide leer.</translation>
+    </message>
+    <message>
+        <source>Mark %1, %2: &apos;%3&apos; is not a number.</source>
+        <translation>Marke %1, %2: „%3“ ist keine Zahl.</translation>
+    </message>
+    <message>
+        <source>Only %1 marks for the fit are measured; measure at least %2 (the fit finds 5 lengths, 2 motor zeros and how the sheet lay).</source>
+        <translation>Nur %1 Marken für die Anpassung sind gemessen; messen Sie mindestens %2 (die Anpassung bestimmt 5 Längen, 2 Motornullpunkte und die Lage des Blatts).</translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2</source>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <source>Found %1 of %2 marks in the scan (sheet turned %3°%4).%5</source>
+        <translation>%1 von %2 Marken im Scan gefunden (Blatt um %3° gedreht%4).%5</translation>
+    </message>
+    <message>
+        <source>, mirrored</source>
+        <translation>, gespiegelt</translation>
+    </message>
+    <message>
+        <source> Not found: %1; type them in by hand.</source>
+        <translation> Nicht gefunden: %1; tippen Sie sie von Hand ein.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::PatternPage</name>
+    <message>
+        <source>1. Choose the pattern</source>
+        <translation>1. Das Muster wählen</translation>
+    </message>
+    <message>
+        <source>No machine is built exactly as drawn: a link cut half a millimetre long or a motor zero set by eye bends every drawing. The studio draws a &lt;b&gt;pattern&lt;/b&gt; of numbered marks, you measure where they really landed, and a fit finds the machine&apos;s true link lengths and motor zeros.&lt;br&gt;&lt;br&gt;&lt;b&gt;Calibration marks&lt;/b&gt;: numbered dots in rings spread over the whole working area, plus rows that show the slack (backlash) of each motor. Use these to calibrate.&lt;br&gt;&lt;b&gt;Accuracy pattern&lt;/b&gt; (Hoang): ten parallel lines, 40 mm long and 10 mm apart, to judge straightness and length before and after; nothing to measure.</source>
+        <translation>Keine Maschine ist genau so gebaut wie gezeichnet: Ein Glied einen halben Millimeter zu lang oder ein nach Augenmaß gesetzter Motornullpunkt verbiegt jede Zeichnung. Das Studio zeichnet ein &lt;b&gt;Muster&lt;/b&gt; aus nummerierten Marken, Sie messen, wo sie wirklich gelandet sind, und eine Anpassung findet die wahren Gliedlängen und Motornullpunkte der Maschine.&lt;br&gt;&lt;br&gt;&lt;b&gt;Kalibriermarken&lt;/b&gt;: nummerierte Punkte in Ringen über den ganzen Arbeitsbereich verteilt, dazu Reihen, die das Spiel (Umkehrspiel) jedes Motors zeigen. Damit wird kalibriert.&lt;br&gt;&lt;b&gt;Genauigkeitsmuster&lt;/b&gt; (Hoang): zehn parallele Linien, 40 mm lang und 10 mm voneinander, um Geradheit und Länge vorher und nachher zu beurteilen; nichts zu messen.</translation>
+    </message>
+    <message>
+        <source>Calibration marks</source>
+        <translation>Kalibriermarken</translation>
+    </message>
+    <message>
+        <source>Accuracy pattern only (10 lines)</source>
+        <translation>Nur Genauigkeitsmuster (10 Linien)</translation>
+    </message>
+    <message>
+        <source> marks</source>
+        <translation> Marken</translation>
+    </message>
+    <message>
+        <source>More marks: a more certain fit, more to measure. 25 is a good start.</source>
+        <translation>Mehr Marken: eine sicherere Anpassung, mehr zu messen. 25 sind ein guter Anfang.</translation>
+    </message>
+    <message>
+        <source>Marks for the fit:</source>
+        <translation>Marken für die Anpassung:</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#b00000&apos;&gt;%1&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#b00000&apos;&gt;%1&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>For &lt;b&gt;%1&lt;/b&gt;: %2 marks for the fit and %3 marks in backlash rows%4.</source>
+        <translation>Für &lt;b&gt;%1&lt;/b&gt;: %2 Marken für die Anpassung und %3 Marken in Umkehrspiel-Reihen%4.</translation>
+    </message>
+    <message>
+        <source>, with the accuracy lines in the middle</source>
+        <translation>, mit den Genauigkeitslinien in der Mitte</translation>
+    </message>
+    <message>
+        <source>For &lt;b&gt;%1&lt;/b&gt;: ten lines of 40 mm in the middle of the working area.</source>
+        <translation>Für &lt;b&gt;%1&lt;/b&gt;: zehn Linien zu 40 mm in der Mitte des Arbeitsbereichs.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::PatternSender</name>
+    <message>
+        <source>The machine was disconnected while drawing the pattern.</source>
+        <translation>Die Maschine wurde getrennt, während das Muster gezeichnet wurde.</translation>
+    </message>
+    <message>
+        <source>The pattern is already being drawn.</source>
+        <translation>Das Muster wird bereits gezeichnet.</translation>
+    </message>
+    <message>
+        <source>Connect a machine (or the simulated machine) in the Machine panel first, and let any running job finish.</source>
+        <translation>Verbinden Sie zuerst eine Maschine (oder die simulierte Maschine) in der Maschinen-Leiste, und lassen Sie einen laufenden Auftrag zu Ende laufen.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::SheetLayer</name>
+    <message>
+        <source>Calibration pattern (plan)</source>
+        <translation>Kalibriermuster (Plan)</translation>
+    </message>
+    <message>
+        <source>Drawn by the pen (simulated imperfect machine)</source>
+        <translation>Vom Stift gezeichnet (simulierte unvollkommene Maschine)</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::VerifyPage</name>
+    <message>
+        <source>6. Draw the verification pattern</source>
+        <translation>6. Das Prüfmuster zeichnen</translation>
+    </message>
+    <message>
+        <source>Draw the pattern once more, now planned with the calibrated profile, on a fresh sheet. Its marks should land where they were meant, and the accuracy lines should be straight and 40 mm long. Measure it again in this wizard if you want numbers.</source>
+        <translation>Zeichnen Sie das Muster noch einmal, jetzt mit dem kalibrierten Profil geplant, auf ein frisches Blatt. Seine Marken sollten dort landen, wo sie hingehören, und die Genauigkeitslinien sollten gerade und 40 mm lang sein. Vermessen Sie es erneut in diesem Assistenten, wenn Sie Zahlen wollen.</translation>
+    </message>
+    <message>
+        <source>Draw on the connected machine</source>
+        <translation>Auf der verbundenen Maschine zeichnen</translation>
+    </message>
+    <message>
+        <source>Export G-code...</source>
+        <translation>G-Code exportieren...</translation>
+    </message>
+    <message>
+        <source>The verification pattern is drawn.</source>
+        <translation>Das Prüfmuster ist gezeichnet.</translation>
+    </message>
+    <message>
+        <source>Drawing the verification pattern...</source>
+        <translation>Das Prüfmuster wird gezeichnet...</translation>
+    </message>
+    <message>
+        <source>Export the verification G-code</source>
+        <translation>Den G-Code des Prüfmusters exportieren</translation>
+    </message>
+    <message>
+        <source>G-code (*.gcode *.nc)</source>
+        <translation>G-Code (*.gcode *.nc)</translation>
+    </message>
+    <message>
+        <source>Wrote %1.</source>
+        <translation>%1 geschrieben.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1.</source>
+        <translation>%1 kann nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Simulation:&lt;/b&gt; the imperfect machine puts the marks %1 mm RMS (largest %2 mm) from where they are meant with the old profile, and &lt;b&gt;%3 mm RMS (largest %4 mm)&lt;/b&gt; with the profile now in use%5.</source>
+        <translation>&lt;b&gt;Simulation:&lt;/b&gt; Die unvollkommene Maschine setzt die Marken mit dem alten Profil %1 mm RMS (größter %2 mm) neben ihren Sollort, und &lt;b&gt;%3 mm RMS (größter %4 mm)&lt;/b&gt; mit dem jetzt verwendeten Profil%5.</translation>
+    </message>
+    <message>
+        <source> (the calibration is not applied)</source>
+        <translation> (die Kalibrierung ist nicht übernommen)</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Plan and simulate drawings for five-bar robots.</source>
+        <translation>Zeichnungen für Fünfgelenk-Roboter planen und simulieren.</translation>
+    </message>
+    <message>
+        <source>Open the demo drawing on the default maker plotter.</source>
+        <translation>Die Demo-Zeichnung auf dem Standard-Maker-Plotter öffnen.</translation>
+    </message>
+    <message>
+        <source>User interface language (e.g. de, en); default: system.</source>
+        <translation>Sprache der Oberfläche (z. B. de, en); Vorgabe: System.</translation>
+    </message>
+    <message>
+        <source>Save a picture of the window once the job is planned, then quit.</source>
+        <translation>Ein Bild des Fensters speichern, sobald der Auftrag geplant ist, dann beenden.</translation>
+    </message>
+    <message>
+        <source>With --screenshot: show the workspace legend (legend) or a map (transmission, conditioning or resolution).</source>
+        <translation>Mit --screenshot: die Arbeitsraum-Legende (legend) oder eine Karte (transmission, conditioning oder resolution) zeigen.</translation>
+    </message>
+    <message>
+        <source>With --screenshot: simulation position as a fraction of the job (0 to 1).</source>
+        <translation>Mit --screenshot: Position der Simulation als Anteil des Auftrags (0 bis 1).</translation>
+    </message>
+    <message>
+        <source>Machine profile: a preset name or a profile JSON file (default: the last one used, else maker-plotter).</source>
+        <translation>Maschinenprofil: ein Vorgabename oder eine Profil-JSON-Datei (Standard: das zuletzt verwendete, sonst maker-plotter).</translation>
+    </message>
+    <message>
+        <source>Plan the drawing or project as the studio does, write the G-code and exit (no window).</source>
+        <translation>Die Zeichnung oder das Projekt wie im Studio planen, den G-Code schreiben und beenden (ohne Fenster).</translation>
+    </message>
+    <message>
+        <source>SVG drawing or project to open.</source>
+        <translation>SVG-Zeichnung oder Projekt zum Öffnen.</translation>
+    </message>
+    <message>
+        <source>Filled shapes: outline (default), hatch or none; with hatch: SPACING_MM and ANGLE_DEG after colons.</source>
+        <translation>Gefüllte Formen: outline (Standard), hatch oder none; bei hatch: SPACING_MM und ANGLE_DEG nach Doppelpunkten.</translation>
+    </message>
+</context>
 </TS>

@@ -52,14 +52,19 @@ void CalibrationPreview::setArrows(std::vector<PreviewArrow> arrows) {
 }
 
 void CalibrationPreview::updateArrowScale() {
-  // The largest arrow is drawn about 12 mm long on the sheet; the scale is a round number.
+  // The largest arrow is drawn about 8 % of the sheet's size long; the scale is a round number.
   double largest = 0.0;
   for (const PreviewArrow& a : arrows_) largest = std::max(largest, a.errorMm.norm());
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (const Vec2& p : marks_) x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x()), y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y());
+  for (const PreviewArrow& a : arrows_)
+    x0 = std::min(x0, a.atMm.x()), x1 = std::max(x1, a.atMm.x()), y0 = std::min(y0, a.atMm.y()), y1 = std::max(y1, a.atMm.y());
+  const double span = x1 > x0 ? std::max(x1 - x0, y1 - y0) : 100.0;
   arrowScale_ = 1.0;
   if (largest <= 0.0) return;
-  for (double s : {1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0}) {
+  for (double s : {1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0, 1000.0}) {
+    if (largest * s > 0.08 * span) break;
     arrowScale_ = s;
-    if (largest * s >= 6.0) break;
   }
 }
 

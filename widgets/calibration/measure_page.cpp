@@ -52,7 +52,8 @@ MeasurePage::MeasurePage(CalibrationWizard& wizard) : w_(wizard) {
          "a mark cannot be read; a mis-measured mark is found and named by the fit. With a "
          "scanner, import a scan instead: the marks are found and numbered for you.")));
   table_ = new QTableWidget(0, kColumns);
-  table_->setHorizontalHeaderLabels({tr("Mark"), tr("Kind"), tr("\u03b81 (\u00b0)"), tr("\u03b82 (\u00b0)"),
+  table_->setHorizontalHeaderLabels({tr("Mark"), tr("Kind"), QStringLiteral("\u03b8\u2081 (\u00b0)"),
+                                     QStringLiteral("\u03b8\u2082 (\u00b0)"),
                                      tr("x (mm)"), tr("y (mm)")});
   table_->verticalHeader()->setVisible(false);
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
