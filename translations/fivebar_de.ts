@@ -2317,14 +2317,6 @@
         <translation>Art</translation>
     </message>
     <message>
-        <source>㮁 (°)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>㮂 (°)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>x (mm)</source>
         <translation>x (mm)</translation>
     </message>
