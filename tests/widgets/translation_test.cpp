@@ -15,6 +15,8 @@
 #include <QXmlStreamReader>
 #include <set>
 
+#include "widgets/calibration/sheet_layer.hpp"
+#include "widgets/calibration/wizard_pages.hpp"
 #include "app/studio/main_window.hpp"
 #include "core/machine/profile.hpp"
 #include "widgets/machine/console_panel.hpp"
@@ -64,10 +66,15 @@ std::set<QString> runtimeContexts() {
         &RunPanel::staticMetaObject, &SimulationPanel::staticMetaObject,
         &StudioDocument::staticMetaObject, &FillOptionsBox::staticMetaObject,
         &ImportWarningsPanel::staticMetaObject, &DesignDialog::staticMetaObject,
-        &ParetoPlot::staticMetaObject})
+        &ParetoPlot::staticMetaObject, &calibration::CalibrationWizard::staticMetaObject,
+        &calibration::PatternPage::staticMetaObject, &calibration::DrawPage::staticMetaObject,
+        &calibration::MeasurePage::staticMetaObject, &calibration::FitPage::staticMetaObject,
+        &calibration::ApplyPage::staticMetaObject, &calibration::VerifyPage::staticMetaObject,
+        &calibration::PatternSender::staticMetaObject, &calibration::CalibrationPreview::staticMetaObject,
+        &calibration::SheetLayer::staticMetaObject})
     names.insert(QString::fromLatin1(m->className()));
   for (const char* c : {"QObject", "main", "DocumentCommands", "JobPipeline", "MapPainter",
-                        "WorkspaceLegend", "ImportWarningsPanel", "DesignPainter"})
+                        "WorkspaceLegend", "ImportWarningsPanel", "DesignPainter", "CalibrationWizard"})
     names.insert(QString::fromLatin1(c));
   return names;
 }
@@ -100,6 +107,7 @@ TEST(Translations, RuntimeTrReturnsGerman) {
   EXPECT_EQ(ModePanel::tr("Working mode"), QStringLiteral("Arbeitsmodus"));
   EXPECT_EQ(fivebar::studio::MainWindow::tr("&File"), QStringLiteral("&Datei"));
   EXPECT_EQ(MachineUi::tr("Jog"), QStringLiteral("Verfahren"));
+  EXPECT_EQ(calibration::MeasurePage::tr("3. Measure the marks"), QStringLiteral("3. Die Marken vermessen"));
   EXPECT_EQ(LayersPanel::tr("%n path(s)", nullptr, 2), QStringLiteral("2 Pfade"));
   EXPECT_EQ(QCoreApplication::translate("WorkspaceLegend", "reach boundary"),
             QStringLiteral("Reichweitengrenze"));
