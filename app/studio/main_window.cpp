@@ -19,6 +19,7 @@
 #include "app/studio/file_actions.hpp"
 #include "app/studio/language_menu.hpp"
 #include "core/kinematics/kinematics.hpp"
+#include "widgets/calibration/calibration_wizard.hpp"
 #include "widgets/canvas/canvas_view.hpp"
 #include "widgets/design/design_dialog.hpp"
 #include "widgets/document/import_controller.hpp"
@@ -73,6 +74,7 @@ MainWindow::MainWindow(const MachineProfile& profile, QWidget* parent) : QMainWi
   machineMenu_->addSeparator();
   machineMenu_->addAction(machineUi->settingsAction());
   machineMenu_->addAction(DesignDialog::createAction(*doc_, *canvas_, this));
+  machineMenu_->addAction(widgets::calibration::CalibrationWizard::createAction(*doc_, &machineUi->session(), canvas_, this));
   cursorLabel_ = new QLabel(this);
   statusBar()->addPermanentWidget(cursorLabel_);
   connect(canvas_, &CanvasView::cursorMoved, this, [this](QPointF mm) {

@@ -17,6 +17,8 @@
 #include <set>
 
 #include "app/studio/language_menu.hpp"
+#include "widgets/calibration/sheet_layer.hpp"
+#include "widgets/calibration/wizard_pages.hpp"
 #include "app/studio/main_window.hpp"
 #include "core/machine/profile.hpp"
 #include "widgets/machine/console_panel.hpp"
@@ -66,11 +68,18 @@ std::set<QString> runtimeContexts() {
         &RunPanel::staticMetaObject, &SimulationPanel::staticMetaObject,
         &StudioDocument::staticMetaObject, &FillOptionsBox::staticMetaObject,
         &ImportWarningsPanel::staticMetaObject, &DesignDialog::staticMetaObject,
-        &ParetoPlot::staticMetaObject, &fivebar::studio::LanguageMenu::staticMetaObject})
+        &ParetoPlot::staticMetaObject, &fivebar::studio::LanguageMenu::staticMetaObject,
+        &calibration::CalibrationWizard::staticMetaObject,
+        &calibration::PatternPage::staticMetaObject, &calibration::DrawPage::staticMetaObject,
+        &calibration::MeasurePage::staticMetaObject, &calibration::FitPage::staticMetaObject,
+        &calibration::ApplyPage::staticMetaObject, &calibration::VerifyPage::staticMetaObject,
+        &calibration::PatternSender::staticMetaObject, &calibration::CalibrationPreview::staticMetaObject,
+        &calibration::SheetLayer::staticMetaObject})
     names.insert(QString::fromLatin1(m->className()));
   for (const char* c : {"QObject", "main", "DocumentCommands", "JobPipeline", "MapPainter",
-                        "WorkspaceLegend", "ImportWarningsPanel", "DesignPainter",
-                        "ImportWarning", "fivebar::widgets::MachineDialogs", "fivebar::widgets::SettingsAdvice"})
+                        "WorkspaceLegend", "ImportWarningsPanel", "DesignPainter", "ImportWarning",
+                        "fivebar::widgets::MachineDialogs", "fivebar::widgets::SettingsAdvice",
+                        "CalibrationWizard"})
     names.insert(QString::fromLatin1(c));
   return names;
 }
@@ -103,6 +112,7 @@ TEST(Translations, RuntimeTrReturnsGerman) {
   EXPECT_EQ(ModePanel::tr("Working mode"), QStringLiteral("Arbeitsmodus"));
   EXPECT_EQ(fivebar::studio::MainWindow::tr("&File"), QStringLiteral("&Datei"));
   EXPECT_EQ(MachineUi::tr("Jog"), QStringLiteral("Verfahren"));
+  EXPECT_EQ(calibration::MeasurePage::tr("3. Measure the marks"), QStringLiteral("3. Die Marken vermessen"));
   EXPECT_EQ(LayersPanel::tr("%n path(s)", nullptr, 2), QStringLiteral("2 Pfade"));
   EXPECT_EQ(QCoreApplication::translate("WorkspaceLegend", "reach boundary"),
             QStringLiteral("Reichweitengrenze"));

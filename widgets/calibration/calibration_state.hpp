@@ -1,0 +1,73 @@
+// What the calibration wizard (Machine > Calibrate...) carries from step to step, and the
+// simulated sheet: what a "true machine" (geometry, zero offsets and backlash that differ from the
+// profile) really draws when it runs the pattern, so the whole loop can be tried without hardware.
+// Machine frame, mm and rad inside; degrees only in the widgets.
+#pragma once
+
+#include <QString>
+#include <optional>
+#include <vector>
+
+#include "core/calibration/pattern.hpp"
+#include "core/machine/profile.hpp"
+#include "core/planning/backlash_compensation.hpp"
+#include "core/planning/job.hpp"
+
+namespace fivebar::widgets::calibration {
+
+// A machine as it really is: `builtFrom` (the profile's geometry when the wizard opened; it stays
+// the same when a calibration is applied, as the real machine does) changed by these amounts,
+// true motor angle = commanded + zero offset, and play in each drive.
+struct TrueMachine {
+  Geometry builtFrom;
+  double da1Mm = 0.0, db1Mm = 0.0, da2Mm = 0.0, db2Mm = 0.0, dwMm = 0.0;
+  double zeroOffsetRad1 = 0.0, zeroOffsetRad2 = 0.0;
+  MotorPlay play;
+  Geometry geometry() const;
+  bool perfect() const;
+};
+
+// The pattern kinds the wizard offers.
+enum class PatternKind { Marks, AccuracyOnly };
+
+// One measured mark as typed into the table (paper frame, any origin, mirrored or not).
+struct TableMark {
+  int id = 0;
+  JointAngles commanded;
+  std::optional<Vec2> paperMm;  // empty cell: not measured
+};
+
+// The pattern for `profile`: marks (with Hoang's lines where they fit), or the accuracy lines
+// alone. Empty pattern with *error when nothing fits.
+std::optional<CalibrationPattern> makePattern(const MachineProfile& profile, PatternKind kind,
+                                              int gridMarks, QString* error);
+
+// What the true machine draws when it runs `job` (planned with `profile`): one polyline per
+// pen-down run, machine frame (the canvas's "drawn by the pen" layer).
+std::vector<std::vector<Vec2>> trueTrace(const PlannedJob& job, const MachineProfile& profile,
+                                         const TrueMachine& truth);
+
+// Where the true machine puts each mark's dot (after its approach, so backlash shows), machine
+// frame; nullopt for a pose the true machine cannot reach.
+std::optional<Vec2> trueMarkCentre(const PatternMark& mark, const MachineProfile& profile,
+                                   const TrueMachine& truth);
+
+// The simulated sheet measured with a ruler from its lower-left corner: the true mark centres
+// shifted so the sheet corner is the origin, plus Gaussian noise (seeded: the same seed gives the
+// same table).
+std::vector<TableMark> measureSimulatedSheet(const CalibrationPattern& pattern,
+                                             const MachineProfile& profile,
+                                             const TrueMachine& truth, double noiseMm,
+                                             unsigned seed);
+
+// The shape error (RMS and max, mm) of the true machine drawing the pattern's grid marks, after
+// the best rigid placement onto what was meant: the number calibration should make small.
+struct ShapeFigures {
+  double rmsMm = 0.0;
+  double maxMm = 0.0;
+  int marks = 0;
+};
+ShapeFigures markShapeError(const CalibrationPattern& pattern, const MachineProfile& profile,
+                            const TrueMachine& truth);
+
+}  // namespace fivebar::widgets::calibration

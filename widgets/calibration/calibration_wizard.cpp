@@ -1,0 +1,158 @@
+#include "widgets/calibration/calibration_wizard.hpp"
+
+#include <QAction>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QLabel>
+#include <QSaveFile>
+
+#include "core/output/gcode.hpp"
+#include "drivers/stream_session.hpp"
+#include "widgets/calibration/sheet_layer.hpp"
+#include "widgets/calibration/wizard_pages.hpp"
+#include "widgets/canvas/canvas_view.hpp"
+#include "widgets/machine/machine_session.hpp"
+
+namespace fivebar::widgets::calibration {
+
+QLabel* explanation(const QString& text, QWidget* parent) {
+  auto* label = new QLabel(text, parent);
+  label->setWordWrap(true);
+  label->setTextFormat(Qt::RichText);
+  return label;
+}
+
+CalibrationWizard::CalibrationWizard(StudioDocument& doc, MachineSession* session, QWidget* parent)
+    : QWizard(parent), doc_(doc), session_(session) {
+  setObjectName(QStringLiteral("calibrationWizard"));
+  setWindowTitle(tr("Calibrate the machine"));
+  setWizardStyle(QWizard::ClassicStyle);
+  setOption(QWizard::NoBackButtonOnStartPage);
+  nominal = doc.profile();
+  builtFrom = nominal.geometry;
+  patternPage_ = new PatternPage(*this);
+  drawPage_ = new DrawPage(*this);
+  measurePage_ = new MeasurePage(*this);
+  fitPage_ = new FitPage(*this);
+  applyPage_ = new ApplyPage(*this);
+  verifyPage_ = new VerifyPage(*this);
+  setPage(kPatternPage, patternPage_);
+  setPage(kDrawPage, drawPage_);
+  setPage(kMeasurePage, measurePage_);
+  setPage(kFitPage, fitPage_);
+  setPage(kApplyPage, applyPage_);
+  setPage(kVerifyPage, verifyPage_);
+  resize(980, 720);
+}
+
+CalibrationWizard::~CalibrationWizard() = default;
+
+QAction* CalibrationWizard::createAction(StudioDocument& doc, MachineSession* session,
+                                         CanvasView* canvas, QWidget* parent) {
+  auto* action = new QAction(tr("&Calibrate..."), parent);
+  action->setObjectName(QStringLiteral("calibrateAction"));
+  action->setStatusTip(tr("Measure a drawn pattern and correct the profile's link lengths and motor zeros"));
+  QObject::connect(action, &QAction::triggered, parent, [&doc, session, canvas, parent] {
+    auto* wizard = parent->findChild<CalibrationWizard*>();
+    if (!wizard) {
+      wizard = new CalibrationWizard(doc, session, parent);
+      wizard->attachCanvas(canvas);
+    }
+    wizard->show();
+    wizard->raise();
+  });
+  return action;
+}
+
+void CalibrationWizard::attachCanvas(CanvasView* canvas) {
+  if (!canvas || sheetLayer_) return;
+  // The layer lives as long as the wizard, which lives as long as the window (created after the
+  // canvas, so deleted after it).
+  sheetLayer_ = new SheetLayer(this);
+  canvas->addLayer(sheetLayer_);
+  connect(sheetLayer_, &SheetLayer::changed, canvas, [canvas] { canvas->update(); });
+  connect(this, &QDialog::finished, sheetLayer_, &SheetLayer::clear);
+}
+
+void CalibrationWizard::showOnCanvas(std::vector<std::vector<Vec2>> plan,
+                                     std::vector<std::vector<Vec2>> trace) {
+  if (sheetLayer_) sheetLayer_->setSheet(std::move(plan), std::move(trace));
+}
+
+bool CalibrationWizard::planPattern(const MachineProfile& profile, QString* error) {
+  if (!pattern) {
+    if (error) *error = tr("Choose a pattern first.");
+    return false;
+  }
+  PlanResult plan = planCalibrationPattern(*pattern, profile);
+  if (!plan.ok()) {
+    if (error) *error = tr("The pattern cannot be planned: %1").arg(QString::fromStdString(plan.message));
+    return false;
+  }
+  job = std::move(plan.job);
+  try {
+    gcode = writeGcode(job, profile);
+  } catch (const std::exception& e) {
+    if (error) *error = tr("The pattern's G-code cannot be written: %1").arg(QString::fromUtf8(e.what()));
+    return false;
+  }
+  return true;
+}
+
+PatternSender::PatternSender(MachineSession& session, QObject* parent)
+    : QObject(parent), session_(session) {
+  // The stream holds the link: drop it before the link goes.
+  connect(&session_, &MachineSession::aboutToDisconnect, this, [this] {
+    const bool was = running_;
+    running_ = false;
+    stream_.reset();
+    if (was) emit finished(false, tr("The machine was disconnected while drawing the pattern."));
+  });
+}
+
+PatternSender::~PatternSender() {
+  if (running_) session_.setJobActive(false);
+}
+
+bool PatternSender::send(const std::string& gcode, const MachineProfile& profile,
+                         const QString& path, QString* error) {
+  if (running_) {
+    *error = tr("The pattern is already being drawn.");
+    return false;
+  }
+  if (!session_.link() || session_.jobActive()) {
+    *error = tr("Connect a machine (or the simulated machine) in the Machine panel first, and let "
+                "any running job finish.");
+    return false;
+  }
+  QDir().mkpath(QFileInfo(path).absolutePath());
+  QSaveFile file(path);
+  if (!file.open(QIODevice::WriteOnly) ||
+      file.write(gcode.data(), static_cast<qint64>(gcode.size())) != static_cast<qint64>(gcode.size()) ||
+      !file.commit()) {
+    *error = tr("Cannot write %1: %2").arg(path, file.errorString());
+    return false;
+  }
+  StreamOptions options;
+  options.jobPath = path.toStdString();
+  options.profile = profile;
+  options.machineName = profile.name;
+  stream_ = std::make_unique<StreamSession>(*session_.link(), options);
+  connect(stream_.get(), &StreamSession::finished, this, [this](bool ok, const QString& message) {
+    running_ = false;
+    session_.setJobActive(false);
+    emit finished(ok, message);
+  });
+  std::string why;
+  if (!stream_->begin(&why)) {
+    *error = QString::fromStdString(why);
+    stream_.reset();
+    return false;
+  }
+  running_ = true;
+  session_.setJobActive(true);
+  return true;
+}
+
+}  // namespace fivebar::widgets::calibration

@@ -1,0 +1,115 @@
+// Machine > Calibrate...: the calibration wizard (issue 13, docs/calibration-wizard.md). Steps:
+// choose the pattern -> draw it (connected or simulated machine, or export its G-code) -> measure
+// (type x, y per mark, or fill the table from the simulated sheet) -> fit (before/after errors,
+// residual arrows, parameters with their uncertainties, outliers named) -> apply to the profile
+// (undoable, saved with the project; or saved as a profile file) -> draw the verification pattern.
+// The fit is core's (core/calibration/fit.hpp); this only shows it and carries the data.
+#pragma once
+
+#include <QWizard>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/calibration/backlash.hpp"
+#include "core/calibration/fit.hpp"
+#include "widgets/calibration/calibration_state.hpp"
+#include "widgets/document/studio_document.hpp"
+
+class QAction;
+
+namespace fivebar {
+class StreamSession;
+}
+
+namespace fivebar::widgets {
+class CanvasView;
+class MachineSession;
+}
+
+namespace fivebar::widgets::calibration {
+
+class PatternPage;
+class SheetLayer;
+class DrawPage;
+class MeasurePage;
+class FitPage;
+class ApplyPage;
+class VerifyPage;
+
+class CalibrationWizard : public QWizard {
+  Q_OBJECT
+ public:
+  enum PageId { kPatternPage, kDrawPage, kMeasurePage, kFitPage, kApplyPage, kVerifyPage };
+
+  // `session` may be null (no machine side): drawing then means exporting the G-code.
+  CalibrationWizard(StudioDocument& doc, MachineSession* session, QWidget* parent = nullptr);
+  ~CalibrationWizard() override;
+  // Machine > Calibrate...; the sheet is shown on `canvas` (may be null) while the wizard is open.
+  static QAction* createAction(StudioDocument& doc, MachineSession* session, CanvasView* canvas,
+                               QWidget* parent);
+  // Shows the sheet (plan and the simulated machine's true trace) on the studio's canvas.
+  void attachCanvas(CanvasView* canvas);
+  void showOnCanvas(std::vector<std::vector<Vec2>> plan, std::vector<std::vector<Vec2>> trace);
+  SheetLayer* sheetLayer() const { return sheetLayer_; }
+
+  StudioDocument& document() { return doc_; }
+  MachineSession* session() { return session_; }
+
+  // --- what the steps share ---
+  MachineProfile nominal;                     // the profile the pattern was made for
+  std::optional<CalibrationPattern> pattern;  // the chosen pattern
+  PatternKind patternKind = PatternKind::Marks;
+  PlannedJob job;                             // the pattern as planned
+  std::string gcode;                          // and as G-code
+  bool simulated = true;                      // the simulated sheet stands in for the machine
+  Geometry builtFrom;                         // the profile's geometry when the wizard opened
+  TrueMachine truth;                          // what the simulated machine really is
+  std::vector<TableMark> measured;            // the measure step's table, checked
+  std::optional<fivebar::calibration::CalibrationFit> fit;
+  std::optional<BacklashEstimate> backlash;
+  std::optional<MachineProfile> calibrated;   // the nominal profile with the fit applied
+  bool applied = false;
+
+  // Plans `pattern` with `profile` into job and gcode; false with *error.
+  bool planPattern(const MachineProfile& profile, QString* error);
+
+  PatternPage* patternPage() const { return patternPage_; }
+  DrawPage* drawPage() const { return drawPage_; }
+  MeasurePage* measurePage() const { return measurePage_; }
+  FitPage* fitPage() const { return fitPage_; }
+  ApplyPage* applyPage() const { return applyPage_; }
+  VerifyPage* verifyPage() const { return verifyPage_; }
+
+ private:
+  StudioDocument& doc_;
+  MachineSession* session_;
+  PatternPage* patternPage_ = nullptr;
+  DrawPage* drawPage_ = nullptr;
+  MeasurePage* measurePage_ = nullptr;
+  FitPage* fitPage_ = nullptr;
+  ApplyPage* applyPage_ = nullptr;
+  VerifyPage* verifyPage_ = nullptr;
+  SheetLayer* sheetLayer_ = nullptr;
+};
+
+// Sends a planned pattern to the connected machine through the drivers' checked stream (the same
+// path as the run panel's Start): written to a G-code file, checked move by move, streamed.
+class PatternSender : public QObject {
+  Q_OBJECT
+ public:
+  PatternSender(MachineSession& session, QObject* parent = nullptr);
+  ~PatternSender() override;
+  bool send(const std::string& gcode, const MachineProfile& profile, const QString& path,
+            QString* error);
+  bool running() const { return running_; }
+ signals:
+  void finished(bool ok, const QString& message);
+
+ private:
+  MachineSession& session_;
+  std::unique_ptr<StreamSession> stream_;
+  bool running_ = false;
+};
+
+}  // namespace fivebar::widgets::calibration

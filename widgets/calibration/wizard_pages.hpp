@@ -1,0 +1,164 @@
+// The calibration wizard's pages (calibration_wizard.hpp). Each explains itself in plain words
+// at the top; the picture of the sheet is a CalibrationPreview.
+#pragma once
+
+#include <QWizardPage>
+
+#include "widgets/calibration/calibration_preview.hpp"
+#include "widgets/calibration/calibration_wizard.hpp"
+
+class QCheckBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+class QRadioButton;
+class QSpinBox;
+class QTableWidget;
+
+namespace fivebar::widgets::calibration {
+
+// A label with word wrap for the explanations.
+QLabel* explanation(const QString& text, QWidget* parent = nullptr);
+
+class PatternPage : public QWizardPage {
+  Q_OBJECT
+ public:
+  explicit PatternPage(CalibrationWizard& wizard);
+  void initializePage() override;
+  bool isComplete() const override;
+  QRadioButton* marksChoice() const { return marks_; }
+  QRadioButton* accuracyChoice() const { return accuracy_; }
+  QSpinBox* markCount() const { return count_; }
+  CalibrationPreview* preview() const { return preview_; }
+
+ private:
+  void rebuild();
+  CalibrationWizard& w_;
+  QRadioButton* marks_ = nullptr;
+  QRadioButton* accuracy_ = nullptr;
+  QSpinBox* count_ = nullptr;
+  QLabel* summary_ = nullptr;
+  CalibrationPreview* preview_ = nullptr;
+};
+
+class DrawPage : public QWizardPage {
+  Q_OBJECT
+ public:
+  explicit DrawPage(CalibrationWizard& wizard);
+  void initializePage() override;
+  int nextId() const override;
+  QCheckBox* simulateChoice() const { return simulate_; }
+  // The true machine's fields: da1, db1, da2, db2, dw (mm), zero offsets (deg), backlash (deg).
+  QDoubleSpinBox* trueField(int index) const { return fields_.at(index); }
+  QPushButton* sendButton() const { return send_; }
+  QLabel* status() const { return status_; }
+  CalibrationPreview* preview() const { return preview_; }
+  bool exportGcode(const QString& path, QString* error) const;
+
+ private:
+  void readTruth();
+  void refresh();
+  CalibrationWizard& w_;
+  QCheckBox* simulate_ = nullptr;
+  std::vector<QDoubleSpinBox*> fields_;
+  QWidget* truthBox_ = nullptr;
+  QPushButton* send_ = nullptr;
+  QLabel* status_ = nullptr;
+  CalibrationPreview* preview_ = nullptr;
+  PatternSender* sender_ = nullptr;
+};
+
+class MeasurePage : public QWizardPage {
+  Q_OBJECT
+ public:
+  explicit MeasurePage(CalibrationWizard& wizard);
+  void initializePage() override;
+  bool validatePage() override;
+  QTableWidget* table() const { return table_; }
+  QPushButton* simulatedSheetButton() const { return fromSheet_; }
+  QDoubleSpinBox* noise() const { return noise_; }
+  QLabel* problem() const { return problem_; }
+  CalibrationPreview* preview() const { return preview_; }
+  // Fills the table from the simulated sheet (the wizard's true machine, with noise).
+  void fillFromSimulatedSheet();
+  // The table read back; false with *error naming the mark and the column of the first bad cell.
+  bool readTable(std::vector<TableMark>* out, QString* error) const;
+  bool loadCsv(const QString& path, QString* error);
+  // Finds the marks in a scanned sheet (PNG/JPEG at `dpi`) and fills the table; false with
+  // *message naming the file and the problem, else *message says what was found.
+  bool importScan(const QString& path, double dpi, QString* message);
+  QDoubleSpinBox* dpi() const { return dpi_; }
+  bool saveCsv(const QString& path, QString* error) const;
+
+ private:
+  void onCurrentCell(int row);
+  void showMeasured();
+  CalibrationWizard& w_;
+  QTableWidget* table_ = nullptr;
+  QPushButton* fromSheet_ = nullptr;
+  QDoubleSpinBox* noise_ = nullptr;
+  QDoubleSpinBox* dpi_ = nullptr;
+  QLabel* problem_ = nullptr;
+  CalibrationPreview* preview_ = nullptr;
+  bool filling_ = false;
+  unsigned sheetSeed_ = 13;  // each fill a new, reproducible noise draw
+};
+
+class FitPage : public QWizardPage {
+  Q_OBJECT
+ public:
+  explicit FitPage(CalibrationWizard& wizard);
+  void initializePage() override;
+  bool isComplete() const override;
+  QLabel* summary() const { return summary_; }
+  QTableWidget* parameters() const { return parameters_; }
+  CalibrationPreview* preview() const { return preview_; }
+
+ private:
+  CalibrationWizard& w_;
+  QLabel* summary_ = nullptr;
+  QTableWidget* parameters_ = nullptr;
+  CalibrationPreview* preview_ = nullptr;
+};
+
+class ApplyPage : public QWizardPage {
+  Q_OBJECT
+ public:
+  explicit ApplyPage(CalibrationWizard& wizard);
+  void initializePage() override;
+  QPushButton* applyButton() const { return apply_; }
+  QLabel* status() const { return status_; }
+  void apply();
+
+ private:
+  CalibrationWizard& w_;
+  QLabel* changes_ = nullptr;
+  QPushButton* apply_ = nullptr;
+  QLabel* status_ = nullptr;
+};
+
+class VerifyPage : public QWizardPage {
+  Q_OBJECT
+ public:
+  explicit VerifyPage(CalibrationWizard& wizard);
+  void initializePage() override;
+  QLabel* figures() const { return figures_; }
+  CalibrationPreview* preview() const { return preview_; }
+  // Shape error of the simulated true machine with the document's profile (for tests).
+  ShapeFigures before() const { return before_; }
+  ShapeFigures now() const { return now_; }
+
+ private:
+  CalibrationWizard& w_;
+  QLabel* figures_ = nullptr;
+  QPushButton* send_ = nullptr;
+  QLabel* status_ = nullptr;
+  CalibrationPreview* preview_ = nullptr;
+  PatternSender* sender_ = nullptr;
+  std::optional<CalibrationPattern> pattern_;
+  PlannedJob job_;
+  std::string gcode_;
+  ShapeFigures before_, now_;
+};
+
+}  // namespace fivebar::widgets::calibration
