@@ -1,6 +1,13 @@
-<?xml version="1.0" encoding="utf-8"?>
+<?xml version='1.0' encoding='utf-8'?>
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
+<context>
+    <name>CalibrationWizard</name>
+    <message>
+        <source>Hoang's accuracy pattern (10 lines of 40 mm) does not fit in this machine's safe area.</source>
+        <translation>Hoangs Genauigkeitsmuster (10 Linien zu 40 mm) passt nicht in den sicheren Bereich dieser Maschine.</translation>
+    </message>
+</context>
 <context>
     <name>DesignPainter</name>
     <message>
@@ -41,6 +48,113 @@
     <message>
         <source>Change machine profile</source>
         <translation>Maschinenprofil ändern</translation>
+    </message>
+</context>
+<context>
+    <name>ImportWarning</name>
+    <message>
+        <source>attribute d: invalid path data at character %1 %2: drawn up to the error</source>
+        <translation>Attribut d: ungültige Pfaddaten bei Zeichen %1 %2: bis zum Fehler gezeichnet</translation>
+    </message>
+    <message>
+        <source>attribute d: invalid path data at character %1: drawn up to the error</source>
+        <translation>Attribut d: ungültige Pfaddaten bei Zeichen %1: bis zum Fehler gezeichnet</translation>
+    </message>
+    <message>
+        <source>transform-origin="%1" not understood: ignored</source>
+        <translation>transform-origin="%1" nicht verstanden: ignoriert</translation>
+    </message>
+    <message>
+        <source>marker #%1 not found: not drawn</source>
+        <translation>Marker #%1 nicht gefunden: nicht gezeichnet</translation>
+    </message>
+    <message>
+        <source>markers on %1 are not drawn (drawn on path, line, polyline and polygon)</source>
+        <translation>Marker an %1 werden nicht gezeichnet (nur an path, line, polyline und polygon)</translation>
+    </message>
+    <message>
+        <source>markers set in a style sheet for the selector '%1' are not drawn (only type, #id and .class selectors are applied)</source>
+        <translation>Marker aus einem Stylesheet für den Selektor '%1' werden nicht gezeichnet (nur Typ-, #id- und .class-Selektoren werden angewandt)</translation>
+    </message>
+    <message>
+        <source>external reference removed from %1</source>
+        <translation>Externer Verweis aus %1 entfernt</translation>
+    </message>
+    <message>
+        <source>%1 element removed</source>
+        <translation>Element %1 entfernt</translation>
+    </message>
+    <message>
+        <source>long &lt;path&gt; split into %1 parts to avoid Qt SVG's 32,767-element truncation</source>
+        <translation>Langer &lt;path&gt; in %1 Teile geteilt, um die Kürzung von Qt SVG auf 32.767 Elemente zu vermeiden</translation>
+    </message>
+    <message>
+        <source>further element warnings not listed</source>
+        <translation>weitere Warnungen zu Elementen nicht aufgeführt</translation>
+    </message>
+    <message>
+        <source>DOCTYPE with entity declarations removed (internal entities were expanded)</source>
+        <translation>DOCTYPE mit Entity-Deklarationen entfernt (interne Entities wurden aufgelöst)</translation>
+    </message>
+    <message>
+        <source>unresolved entity reference dropped</source>
+        <translation>nicht auflösbare Entity-Referenz verworfen</translation>
+    </message>
+    <message>
+        <source>external style sheet (xml-stylesheet) ignored</source>
+        <translation>externes Stylesheet (xml-stylesheet) ignoriert</translation>
+    </message>
+    <message>
+        <source>event attribute (on...) removed</source>
+        <translation>Ereignisattribut (on...) entfernt</translation>
+    </message>
+    <message>
+        <source>CSS @import removed</source>
+        <translation>CSS-@import entfernt</translation>
+    </message>
+    <message>
+        <source>transform-origin in a style is not applied</source>
+        <translation>transform-origin in einem style wird nicht angewandt</translation>
+    </message>
+    <message>
+        <source>clip-path not applied: clipped shapes are drawn whole</source>
+        <translation>clip-path nicht angewandt: beschnittene Formen werden ganz gezeichnet</translation>
+    </message>
+    <message>
+        <source>mask not applied: masked shapes are drawn whole</source>
+        <translation>mask nicht angewandt: maskierte Formen werden ganz gezeichnet</translation>
+    </message>
+    <message>
+        <source>per-glyph rotate on &lt;text&gt; is not applied: glyphs are drawn upright</source>
+        <translation>Drehung einzelner Zeichen (rotate) an &lt;text&gt; wird nicht angewandt: Zeichen werden aufrecht gezeichnet</translation>
+    </message>
+    <message>
+        <source>text on a path (&lt;textPath&gt;) is not drawn</source>
+        <translation>Text auf einem Pfad (&lt;textPath&gt;) wird nicht gezeichnet</translation>
+    </message>
+    <message>
+        <source>pattern fills are drawn as outlines, without the pattern</source>
+        <translation>Musterfüllungen werden als Umrisse gezeichnet, ohne das Muster</translation>
+    </message>
+    <message>
+        <source>more than 100000 marker instances: the rest are not drawn</source>
+        <translation>mehr als 100000 Marker: der Rest wird nicht gezeichnet</translation>
+    </message>
+    <message>
+        <source>marker overflow clipping not applied: marker content is drawn whole</source>
+        <translation>Marker-Beschnitt (overflow) nicht angewandt: der Inhalt wird ganz gezeichnet</translation>
+    </message>
+    <message>
+        <source>no usable width/height/viewBox: page size taken from the drawing's extent</source>
+        <translation>keine brauchbare width/height/viewBox: Seitengröße aus der Ausdehnung der Zeichnung</translation>
+    </message>
+    <message>
+        <source>line %1: %2 %3</source>
+        <translation>Zeile %1: %2 %3</translation>
+    </message>
+    <message>
+        <source>%1 (%2x, first at line %3)</source>
+        <translation>%1 (%2x, zuerst in Zeile %3)</translation>
     </message>
 </context>
 <context>
@@ -97,6 +211,10 @@
     <message>
         <source>Planning failed: %1</source>
         <translation>Planung fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
 </context>
 <context>
@@ -414,12 +532,28 @@
         <translation>Hier erscheinen die an die Maschine gesendeten und von ihr empfangenen Zeilen.</translation>
     </message>
     <message>
-        <source>G-code or $ command, e.g. $$ or G0 X10 Y20</source>
-        <translation>G-Code oder $-Befehl, z. B. $$ oder G0 X10 Y20</translation>
-    </message>
-    <message>
         <source>Send</source>
         <translation>Senden</translation>
+    </message>
+    <message>
+        <source>G-code or $ command, e.g. $$ or $I; moves are checked first</source>
+        <translation>G-Code oder $-Befehl, z. B. $$ oder $I; Bewegungen werden zuerst geprüft</translation>
+    </message>
+    <message>
+        <source>Send unchecked (expert)</source>
+        <translation>Ungeprüft senden (Experten)</translation>
+    </message>
+    <message>
+        <source>Send lines without the motion check. X and Y are motor angles in degrees: a wrong number swings an arm across the base.</source>
+        <translation>Zeilen ohne Bewegungsprüfung senden. X und Y sind Motorwinkel in Grad: Eine falsche Zahl schwenkt einen Arm quer über die Basis.</translation>
+    </message>
+    <message>
+        <source>Unchecked console: lines go to the machine as typed, without the motion check. A wrong X or Y (motor angles in degrees) can drive the arms into each other or the base.</source>
+        <translation>Ungeprüfte Konsole: Zeilen gehen so an die Maschine, wie sie getippt wurden, ohne Bewegungsprüfung. Ein falsches X oder Y (Motorwinkel in Grad) kann die Arme ineinander oder in die Basis fahren.</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>Nicht gesendet: %1</translation>
     </message>
 </context>
 <context>
@@ -660,7 +794,7 @@
         <translation>Nicht zeichnen</translation>
     </message>
     <message>
-        <source>Outline: the shape&apos;s edge (as AxiDraw and vpype draw fills). Hatch: parallel lines inside the shape. Not drawn: fill-only shapes are left out.</source>
+        <source>Outline: the shape's edge (as AxiDraw and vpype draw fills). Hatch: parallel lines inside the shape. Not drawn: fill-only shapes are left out.</source>
         <translation>Umriss: der Rand der Form (wie AxiDraw und vpype Füllungen zeichnen). Schraffur: parallele Linien in der Form. Nicht zeichnen: nur gefüllte Formen entfallen.</translation>
     </message>
     <message>
@@ -703,7 +837,7 @@
         <translation>Verbinden Sie zuerst die Maschine: ihre Position ist nicht bekannt.</translation>
     </message>
     <message>
-        <source>Go to %1, %2 mm? The dashed path is the pen&apos;s travel (%3 checked moves).</source>
+        <source>Go to %1, %2 mm? The dashed path is the pen's travel (%3 checked moves).</source>
         <translation>Nach %1, %2 mm fahren? Der gestrichelte Weg ist die Fahrt des Stifts (%3 geprüfte Bewegungen).</translation>
     </message>
     <message>
@@ -752,6 +886,18 @@
     <message>
         <source>Drawings and projects (*.svg *.fivebar);;SVG drawings (*.svg);;FiveBar projects (*.fivebar);;All files (*)</source>
         <translation>Zeichnungen und Projekte (*.svg *.fivebar);;SVG-Zeichnungen (*.svg);;FiveBar-Projekte (*.fivebar);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Very large drawing</source>
+        <translation>Sehr große Zeichnung</translation>
+    </message>
+    <message>
+        <source>%1 has more than %2 points after flattening (a runaway file?). Reading it was stopped there.
+
+Planning and plotting it may take very long. Import it whole anyway?</source>
+        <translation>%1 hat nach dem Glätten mehr als %2 Punkte (eine außer Kontrolle geratene Datei?). Das Einlesen wurde dort angehalten.
+
+Planen und Zeichnen können sehr lange dauern. Trotzdem ganz importieren?</translation>
     </message>
 </context>
 <context>
@@ -874,12 +1020,20 @@
         <translation>Referenzfahrt ausführen</translation>
     </message>
     <message>
-        <source>Declare that the machine now stands at the profile&apos;s home pose</source>
+        <source>Declare that the machine now stands at the profile's home pose</source>
         <translation>Festlegen, dass die Maschine jetzt in der Ausgangspose des Profils steht</translation>
     </message>
     <message>
         <source>Speed of XY jogs</source>
         <translation>Geschwindigkeit beim XY-Verfahren</translation>
+    </message>
+    <message>
+        <source>Go to home pose</source>
+        <translation>Zur Grundstellung fahren</translation>
+    </message>
+    <message>
+        <source>Move the pen up to the profile's home pose by a checked move (the reference must be set)</source>
+        <translation>Mit angehobenem Stift in einer geprüften Bewegung zur Grundstellung des Profils fahren (die Referenz muss gesetzt sein)</translation>
     </message>
 </context>
 <context>
@@ -929,6 +1083,50 @@
             <numerusform>%n Punkt</numerusform>
             <numerusform>%n Punkte</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Fill of the selected layer</source>
+        <translation>Füllung der gewählten Ebene</translation>
+    </message>
+    <message>
+        <source>Outline</source>
+        <translation>Umriss</translation>
+    </message>
+    <message>
+        <source>Hatch</source>
+        <translation>Schraffur</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Keine</translation>
+    </message>
+    <message>
+        <source>How the layer's filled shapes are drawn: their outline, parallel hatch lines inside them, or not at all (stroked shapes keep their stroke).</source>
+        <translation>Wie die gefüllten Formen der Ebene gezeichnet werden: ihr Umriss, parallele Schraffurlinien darin oder gar nicht (Formen mit Kontur behalten ihre Kontur).</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>Crosshatch</source>
+        <translation>Kreuzschraffur</translation>
+    </message>
+    <message>
+        <source>Fill:</source>
+        <translation>Füllung:</translation>
+    </message>
+    <message>
+        <source>Hatch spacing:</source>
+        <translation>Linienabstand:</translation>
+    </message>
+    <message>
+        <source>Hatch angle:</source>
+        <translation>Schraffurwinkel:</translation>
     </message>
 </context>
 <context>
@@ -982,8 +1180,35 @@
         <translation>Referenzfahrt ausführen; die Maschine fährt an ihre Endschalter.</translation>
     </message>
     <message>
-        <source>Declare that the machine now stands at the profile&apos;s home pose (G10 L20).</source>
+        <source>Declare that the machine now stands at the profile's home pose (G10 L20).</source>
         <translation>Festlegen, dass die Maschine jetzt in der Ausgangspose des Profils steht (G10 L20).</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachineDialogs</name>
+    <message>
+        <source>Set the reference pose?
+
+The studio will take the machine's current position to be the home pose of "%1": motor 1 at %2°, motor 2 at %3°. Every later move is computed from it.
+
+Confirm only if the arms stand exactly in that pose now. If they stand elsewhere, moves will land in the wrong place and can drive the arms into each other or into the base.</source>
+        <translation>Referenzstellung setzen?
+
+Das Studio nimmt die aktuelle Position der Maschine als Grundstellung von „%1“: Motor 1 bei %2°, Motor 2 bei %3°. Jede spätere Bewegung wird daraus berechnet.
+
+Bestätigen Sie nur, wenn die Arme jetzt genau in dieser Stellung stehen. Stehen sie anders, landen Bewegungen an der falschen Stelle und können die Arme ineinander oder in die Basis fahren.</translation>
+    </message>
+    <message>
+        <source>Set reference pose</source>
+        <translation>Referenzstellung setzen</translation>
+    </message>
+    <message>
+        <source>The arms stand in the home pose: set it</source>
+        <translation>Die Arme stehen in der Grundstellung: setzen</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
     </message>
 </context>
 <context>
@@ -1104,6 +1329,38 @@
         <source>planner %1 of %2 blocks free, RX %3 of %4 bytes free</source>
         <translation>Planer %1 von %2 Blöcken frei, RX %3 von %4 Bytes frei</translation>
     </message>
+    <message>
+        <source>Pen</source>
+        <translation>Stift</translation>
+    </message>
+    <message>
+        <source>Review and write...</source>
+        <translation>Prüfen und schreiben...</translation>
+    </message>
+    <message>
+        <source>Compare the board's settings with the profile and write the differences (a backup is saved first)</source>
+        <translation>Die Einstellungen der Steuerung mit dem Profil vergleichen und die Unterschiede schreiben (vorher wird eine Sicherung gespeichert)</translation>
+    </message>
+    <message>
+        <source>No answer from the machine</source>
+        <translation>Keine Antwort von der Maschine</translation>
+    </message>
+    <message>
+        <source>Connecting to %1: waiting for the board to answer...</source>
+        <translation>Verbinde mit %1: warte auf die Antwort der Steuerung...</translation>
+    </message>
+    <message>
+        <source>up</source>
+        <translation>oben</translation>
+    </message>
+    <message>
+        <source>down (drawing)</source>
+        <translation>unten (zeichnet)</translation>
+    </message>
+    <message>
+        <source>not known yet</source>
+        <translation>noch unbekannt</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachineSession</name>
@@ -1171,6 +1428,62 @@
         <source>the simulated machine</source>
         <translation>der simulierten Maschine</translation>
     </message>
+    <message>
+        <source>set the reference pose (Machine panel) or home the machine</source>
+        <translation>setzen Sie die Referenzstellung (Maschinen-Panel) oder referenzieren Sie die Maschine</translation>
+    </message>
+    <message>
+        <source>%1 at %2 baud</source>
+        <translation>%1 mit %2 Baud</translation>
+    </message>
+    <message>
+        <source>Opened %1; waiting for the board to answer...</source>
+        <translation>%1 geöffnet; warte auf die Antwort der Steuerung...</translation>
+    </message>
+    <message>
+        <source>No GRBL board answered on %1 within %2 s. Check that the port is the machine's, that the baud rate matches its firmware (GRBL 1.1: usually 115200) and that it is powered.</source>
+        <translation>Auf %1 hat innerhalb von %2 s keine GRBL-Steuerung geantwortet. Prüfen Sie, ob der Anschluss der der Maschine ist, ob die Baudrate zu ihrer Firmware passt (GRBL 1.1: meist 115200) und ob sie eingeschaltet ist.</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>Nicht gesendet: %1</translation>
+    </message>
+    <message>
+        <source>Unchecked: %1</source>
+        <translation>Ungeprüft: %1</translation>
+    </message>
+    <message>
+        <source>The machine's position is not known yet (no status report with its work position): wait a moment, or set the reference pose.</source>
+        <translation>Die Position der Maschine ist noch unbekannt (kein Statusbericht mit ihrer Werkstückposition): Warten Sie einen Moment oder setzen Sie die Referenzstellung.</translation>
+    </message>
+    <message>
+        <source>The machine is still moving or busy: send a move when it stands still (Idle), so it can be checked from where the machine really is.</source>
+        <translation>Die Maschine bewegt sich noch oder ist beschäftigt: Senden Sie eine Bewegung, wenn sie stillsteht (Bereit), damit sie von der wirklichen Position aus geprüft werden kann.</translation>
+    </message>
+    <message>
+        <source>Console lines are sent UNCHECKED from now on.</source>
+        <translation>Konsolenzeilen werden ab jetzt UNGEPRÜFT gesendet.</translation>
+    </message>
+    <message>
+        <source>Console lines are checked again.</source>
+        <translation>Konsolenzeilen werden wieder geprüft.</translation>
+    </message>
+    <message>
+        <source>The machine must be connected, idle and its position known.</source>
+        <translation>Die Maschine muss verbunden und bereit sein, und ihre Position muss bekannt sein.</translation>
+    </message>
+    <message>
+        <source>The profile's home pose does not close the linkage.</source>
+        <translation>Die Grundstellung des Profils schließt das Gestänge nicht.</translation>
+    </message>
+    <message>
+        <source>No checked move to the home pose: %1</source>
+        <translation>Keine geprüfte Bewegung zur Grundstellung: %1</translation>
+    </message>
+    <message>
+        <source>The move was not sent (see the console).</source>
+        <translation>Die Bewegung wurde nicht gesendet (siehe Konsole).</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachineSettingsDialog</name>
@@ -1179,7 +1492,7 @@
         <translation>Maschineneinstellungen</translation>
     </message>
     <message>
-        <source>The board&apos;s GRBL settings next to the values the machine profile needs. Writing saves a backup of the board&apos;s settings first.</source>
+        <source>The board's GRBL settings next to the values the machine profile needs. Writing saves a backup of the board's settings first.</source>
         <translation>Die GRBL-Einstellungen der Steuerung neben den Werten, die das Maschinenprofil braucht. Vor dem Schreiben wird eine Sicherung der Einstellungen der Steuerung gespeichert.</translation>
     </message>
     <message>
@@ -1231,11 +1544,11 @@
         <translation>Zum Ändern der Einstellungen muss die Maschine im Ruhezustand (oder im Alarm) sein.</translation>
     </message>
     <message>
-        <source>Reading the board&apos;s settings...</source>
+        <source>Reading the board's settings...</source>
         <translation>Einstellungen der Steuerung werden gelesen...</translation>
     </message>
     <message>
-        <source>Nothing to write: read the board&apos;s settings first.</source>
+        <source>Nothing to write: read the board's settings first.</source>
         <translation>Nichts zu schreiben: zuerst die Einstellungen der Steuerung lesen.</translation>
     </message>
     <message>
@@ -1250,7 +1563,7 @@
         </translation>
     </message>
     <message>
-        <source>The board&apos;s settings match the profile.</source>
+        <source>The board's settings match the profile.</source>
         <translation>Die Einstellungen der Steuerung stimmen mit dem Profil überein.</translation>
     </message>
     <message numerus="yes">
@@ -1305,6 +1618,26 @@
     <message>
         <source>Machine &amp;settings...</source>
         <translation>Maschinen&amp;einstellungen...</translation>
+    </message>
+    <message>
+        <source>A job is running</source>
+        <translation>Ein Auftrag läuft</translation>
+    </message>
+    <message>
+        <source>The machine is drawing "%1". Quitting the studio would leave it without its stream of lines.
+
+Hold, stop and quit: the machine stops cleanly and the progress is saved, so you can resume later.</source>
+        <translation>Die Maschine zeichnet „%1“. Beim Beenden des Studios bekäme sie keine weiteren Zeilen.
+
+Anhalten, stoppen und beenden: Die Maschine hält sauber an und der Fortschritt wird gespeichert, sodass Sie später fortsetzen können.</translation>
+    </message>
+    <message>
+        <source>Hold, stop and quit</source>
+        <translation>Anhalten, stoppen und beenden</translation>
+    </message>
+    <message>
+        <source>Keep running</source>
+        <translation>Weiterlaufen lassen</translation>
     </message>
 </context>
 <context>
@@ -1784,7 +2117,7 @@
 %2</translation>
     </message>
     <message>
-        <source>Fix the profile&apos;s problems before exporting it.</source>
+        <source>Fix the profile's problems before exporting it.</source>
         <translation>Beheben Sie die Probleme des Profils, bevor Sie es exportieren.</translation>
     </message>
     <message>
@@ -1807,6 +2140,14 @@
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
+    <message>
+        <source> steps/°</source>
+        <translation> Schritte/°</translation>
+    </message>
+    <message>
+        <source> baud</source>
+        <translation> Baud</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::RunController</name>
@@ -1827,12 +2168,36 @@
         <translation>Nichts fortzusetzen: Neben %1 ist kein Fortschritt gespeichert.</translation>
     </message>
     <message>
-        <source>Resuming %1…</source>
-        <translation>%1 wird fortgesetzt…</translation>
+        <source>line %1 of %2</source>
+        <translation>Zeile %1 von %2</translation>
     </message>
     <message>
-        <source>Running %1…</source>
-        <translation>%1 läuft…</translation>
+        <source>The run of "%1" was interrupted at %2: %3</source>
+        <translation>Der Lauf von „%1“ wurde bei %2 unterbrochen: %3</translation>
+    </message>
+    <message>
+        <source>press Resume</source>
+        <translation>drücken Sie Fortsetzen</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Fortsetzen</translation>
+    </message>
+    <message>
+        <source>The machine raised an alarm and the job stopped (the banner in the Machine panel says why). The progress is saved: clear the alarm (Reset, Unlock), check the pen stands where the studio shows it, then press Resume.</source>
+        <translation>Die Maschine hat einen Alarm ausgelöst und der Auftrag wurde angehalten (das Banner im Maschinen-Panel sagt, warum). Der Fortschritt ist gespeichert: Heben Sie den Alarm auf (Reset, Entsperren), prüfen Sie, dass der Stift dort steht, wo das Studio ihn zeigt, und drücken Sie dann Fortsetzen.</translation>
+    </message>
+    <message>
+        <source>Resuming "%1"…</source>
+        <translation>Setze „%1“ fort…</translation>
+    </message>
+    <message>
+        <source>Running "%1"…</source>
+        <translation>„%1“ läuft…</translation>
+    </message>
+    <message>
+        <source>"%1" is drawn.</source>
+        <translation>„%1“ ist gezeichnet.</translation>
     </message>
 </context>
 <context>
@@ -1922,16 +2287,8 @@
         <translation>Den unterbrochenen Auftrag ab seinem letzten fertigen Zeichenpunkt fortsetzen, mit sicherer Anfahrt bei angehobenem Stift</translation>
     </message>
     <message>
-        <source>An interrupted run was saved (line %1 of %2 done): %3</source>
-        <translation>Ein unterbrochener Lauf wurde gespeichert (Zeile %1 von %2 erledigt): %3</translation>
-    </message>
-    <message>
         <source>No job sent yet</source>
         <translation>Noch kein Auftrag gesendet</translation>
-    </message>
-    <message>
-        <source>%1 of %2 lines executed</source>
-        <translation>%1 von %2 Zeilen ausgeführt</translation>
     </message>
     <message>
         <source>%1 left</source>
@@ -1940,6 +2297,142 @@
     <message>
         <source>Long job</source>
         <translation>Langer Auftrag</translation>
+    </message>
+    <message>
+        <source>Start from the beginning?</source>
+        <translation>Von vorn beginnen?</translation>
+    </message>
+    <message>
+        <source>%1
+
+Start draws "%2" from the beginning and discards this saved progress. Resume continues the interrupted run instead.</source>
+        <translation>%1
+
+Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. Fortsetzen setzt stattdessen den unterbrochenen Lauf fort.</translation>
+    </message>
+    <message>
+        <source>Discard and start over</source>
+        <translation>Verwerfen und neu beginnen</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Reading the board's settings to compare them with the profile: press Start again in a moment.</source>
+        <translation>Die Einstellungen der Steuerung werden zum Vergleich mit dem Profil gelesen: Drücken Sie gleich noch einmal Start.</translation>
+    </message>
+    <message>
+        <source>The board's settings differ</source>
+        <translation>Die Einstellungen der Steuerung weichen ab</translation>
+    </message>
+    <message>
+        <source>Write the profile's settings...</source>
+        <translation>Einstellungen des Profils schreiben...</translation>
+    </message>
+    <message>
+        <source>Start anyway</source>
+        <translation>Trotzdem starten</translation>
+    </message>
+    <message>
+        <source>%1 % (%2)</source>
+        <translation>%1 % (%2)</translation>
+    </message>
+    <message>
+        <source>%1 left (on hold)</source>
+        <translation>noch %1 (angehalten)</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::SettingsAdvice</name>
+    <message>
+        <source>soft limits are on, but this machine has no homing switches: the board measures its travel from where it was switched on, not from the reference pose, and stops the job with ALARM:2 when a move leaves that range.</source>
+        <translation>Software-Endlagen sind an, aber diese Maschine hat keine Referenzschalter: Die Steuerung misst ihren Verfahrweg ab der Einschaltstellung, nicht ab der Referenzstellung, und stoppt den Auftrag mit ALARM:2, sobald eine Bewegung diesen Bereich verlässt.</translation>
+    </message>
+    <message>
+        <source>soft limits are off although the profile expects them.</source>
+        <translation>Software-Endlagen sind aus, obwohl das Profil sie erwartet.</translation>
+    </message>
+    <message>
+        <source>hard limits are on: without limit switches wired, noise on the pins stops the machine with ALARM:1.</source>
+        <translation>Hardware-Endlagen sind an: Ohne angeschlossene Endschalter stoppen Störungen an den Pins die Maschine mit ALARM:1.</translation>
+    </message>
+    <message>
+        <source>hard limits are off although the profile expects them.</source>
+        <translation>Hardware-Endlagen sind aus, obwohl das Profil sie erwartet.</translation>
+    </message>
+    <message>
+        <source>the homing cycle is on: the board starts locked and wants $H, which needs homing switches.</source>
+        <translation>Der Referenzlauf ist an: Die Steuerung startet gesperrt und verlangt $H, wofür Referenzschalter nötig sind.</translation>
+    </message>
+    <message>
+        <source>the homing cycle is off although the profile has switches.</source>
+        <translation>Der Referenzlauf ist aus, obwohl das Profil Schalter hat.</translation>
+    </message>
+    <message>
+        <source>steps per degree differ: every motor angle would be wrong by the ratio, so the arms would leave the checked, safe poses.</source>
+        <translation>Die Schritte pro Grad weichen ab: Jeder Motorwinkel wäre um dieses Verhältnis falsch, die Arme verließen also die geprüften, sicheren Stellungen.</translation>
+    </message>
+    <message>
+        <source>the board's maximum rate is lower: the job runs slower than planned and the time estimate is off.</source>
+        <translation>Die Höchstgeschwindigkeit der Steuerung ist niedriger: Der Auftrag läuft langsamer als geplant und die Zeitschätzung stimmt nicht.</translation>
+    </message>
+    <message>
+        <source>the board's maximum rate is higher than the profile allows: the motors may lose steps.</source>
+        <translation>Die Höchstgeschwindigkeit der Steuerung ist höher, als das Profil erlaubt: Die Motoren können Schritte verlieren.</translation>
+    </message>
+    <message>
+        <source>the board accelerates more gently: the job takes longer than planned.</source>
+        <translation>Die Steuerung beschleunigt sanfter: Der Auftrag dauert länger als geplant.</translation>
+    </message>
+    <message>
+        <source>the board accelerates harder than the profile allows: the motors may lose steps.</source>
+        <translation>Die Steuerung beschleunigt stärker, als das Profil erlaubt: Die Motoren können Schritte verlieren.</translation>
+    </message>
+    <message>
+        <source>the motor's travel for soft limits differs: with soft limits on, a move beyond it stops the job with ALARM:2.</source>
+        <translation>Der Verfahrweg des Motors für die Software-Endlagen weicht ab: Mit Software-Endlagen stoppt eine Bewegung darüber hinaus den Auftrag mit ALARM:2.</translation>
+    </message>
+    <message>
+        <source>the spindle (pen servo / laser) range differs: the pen may not lift or lower as planned.</source>
+        <translation>Der Spindelbereich (Stiftservo / Laser) weicht ab: Der Stift hebt oder senkt sich womöglich nicht wie geplant.</translation>
+    </message>
+    <message>
+        <source>the junction deviation differs: corners run at other speeds than planned.</source>
+        <translation>Die Eckenabweichung weicht ab: Ecken werden mit anderen Geschwindigkeiten als geplant gefahren.</translation>
+    </message>
+    <message>
+        <source>differs from what the profile expects.</source>
+        <translation>weicht von dem ab, was das Profil erwartet.</translation>
+    </message>
+    <message>
+        <source>not reported</source>
+        <translation>nicht gemeldet</translation>
+    </message>
+    <message>
+        <source>$%1 is %2 on the board, the profile wants %3: %4</source>
+        <translation>$%1 ist auf der Steuerung %2, das Profil will %3: %4</translation>
+    </message>
+    <message numerus="yes">
+        <source>The board's settings differ from the profile in %n place(s): %1.</source>
+        <translation>
+            <numerusform>Die Einstellungen der Steuerung weichen an %n Stelle vom Profil ab: %1.</numerusform><numerusform>Die Einstellungen der Steuerung weichen an %n Stellen vom Profil ab: %1.</numerusform></translation>
+    </message>
+    <message>
+        <source>A job would stop or move wrongly with them.</source>
+        <translation>Ein Auftrag würde damit stoppen oder falsch fahren.</translation>
+    </message>
+    <message>
+        <source>The board's GRBL settings differ from the machine profile, and the job would not run as planned:</source>
+        <translation>Die GRBL-Einstellungen der Steuerung weichen vom Maschinenprofil ab, und der Auftrag liefe nicht wie geplant:</translation>
+    </message>
+    <message>
+        <source>The board's GRBL settings differ from the machine profile:</source>
+        <translation>Die GRBL-Einstellungen der Steuerung weichen vom Maschinenprofil ab:</translation>
+    </message>
+    <message>
+        <source>Write the profile's settings to the board (its current ones are saved to a backup file first), or start anyway.</source>
+        <translation>Schreiben Sie die Einstellungen des Profils auf die Steuerung (die aktuellen werden vorher in einer Sicherungsdatei gespeichert), oder starten Sie trotzdem.</translation>
     </message>
 </context>
 <context>
@@ -2014,6 +2507,560 @@
         <source>Change layer tool settings</source>
         <translation>Werkzeugeinstellungen der Ebene ändern</translation>
     </message>
+    <message>
+        <source>Change layer fill</source>
+        <translation>Füllung der Ebene ändern</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::ApplyPage</name>
+    <message>
+        <source>5. Apply the calibration to the profile</source>
+        <translation>5. Die Kalibrierung ins Profil übernehmen</translation>
+    </message>
+    <message>
+        <source>Applying writes the fitted link lengths into the profile and keeps the motor zeros and the backlash in its calibration section. From then on every plan, jog and check uses them. &lt;b&gt;Edit &amp;gt; Undo&lt;/b&gt; takes it back; the profile is saved with the project, and you can also save it as a profile file for other projects.</source>
+        <translation>Beim Übernehmen kommen die ermittelten Gliedlängen ins Profil, die Motornullpunkte und das Umkehrspiel in seinen Kalibrierabschnitt. Ab dann verwenden jede Planung, jedes Verfahren und jede Prüfung diese Werte. &lt;b&gt;Bearbeiten &amp;gt; Rückgängig&lt;/b&gt; nimmt es zurück; das Profil wird mit dem Projekt gespeichert, und Sie können es auch als Profildatei für andere Projekte speichern.</translation>
+    </message>
+    <message>
+        <source>Apply to the profile</source>
+        <translation>Ins Profil übernehmen</translation>
+    </message>
+    <message>
+        <source>Save profile as...</source>
+        <translation>Profil speichern unter...</translation>
+    </message>
+    <message>
+        <source>Save the calibrated profile</source>
+        <translation>Das kalibrierte Profil speichern</translation>
+    </message>
+    <message>
+        <source>Machine profile (*.json)</source>
+        <translation>Maschinenprofil (*.json)</translation>
+    </message>
+    <message>
+        <source>Saved %1.</source>
+        <translation>%1 gespeichert.</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>motor 1 zero</source>
+        <translation>Nullpunkt Motor 1</translation>
+    </message>
+    <message>
+        <source>motor 2 zero</source>
+        <translation>Nullpunkt Motor 2</translation>
+    </message>
+    <message>
+        <source>motor 1 backlash</source>
+        <translation>Umkehrspiel Motor 1</translation>
+    </message>
+    <message>
+        <source>motor 2 backlash</source>
+        <translation>Umkehrspiel Motor 2</translation>
+    </message>
+    <message>
+        <source>Applied. Edit &gt; Undo restores the profile as it was.</source>
+        <translation>Übernommen. Bearbeiten &gt; Rückgängig stellt das alte Profil wieder her.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::CalibrationPreview</name>
+    <message>
+        <source>No pattern yet</source>
+        <translation>Noch kein Muster</translation>
+    </message>
+    <message>
+        <source>pattern as planned</source>
+        <translation>Muster wie geplant</translation>
+    </message>
+    <message>
+        <source>drawn by the pen (simulation)</source>
+        <translation>vom Stift gezeichnet (Simulation)</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>gemessen</translation>
+    </message>
+    <message>
+        <source>error before</source>
+        <translation>Fehler vorher</translation>
+    </message>
+    <message>
+        <source>error after</source>
+        <translation>Fehler nachher</translation>
+    </message>
+    <message>
+        <source>arrows ×%1</source>
+        <translation>Pfeile ×%1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::CalibrationWizard</name>
+    <message>
+        <source>Calibrate the machine</source>
+        <translation>Die Maschine kalibrieren</translation>
+    </message>
+    <message>
+        <source>&amp;Calibrate...</source>
+        <translation>&amp;Kalibrieren...</translation>
+    </message>
+    <message>
+        <source>Measure a drawn pattern and correct the profile's link lengths and motor zeros</source>
+        <translation>Ein gezeichnetes Muster vermessen und die Gliedlängen und Motornullpunkte des Profils korrigieren</translation>
+    </message>
+    <message>
+        <source>Choose a pattern first.</source>
+        <translation>Wählen Sie zuerst ein Muster.</translation>
+    </message>
+    <message>
+        <source>The pattern cannot be planned: %1</source>
+        <translation>Das Muster lässt sich nicht planen: %1</translation>
+    </message>
+    <message>
+        <source>The pattern's G-code cannot be written: %1</source>
+        <translation>Der G-Code des Musters lässt sich nicht schreiben: %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::DrawPage</name>
+    <message>
+        <source>2. Draw the pattern</source>
+        <translation>2. Das Muster zeichnen</translation>
+    </message>
+    <message>
+        <source>Tape a sheet down so it cannot move, and draw the pattern with the pen you normally use. Draw it on the connected machine, or export its G-code and send it your way. Keep MARKS.csv: it says which motor angles drew each mark.</source>
+        <translation>Kleben Sie ein Blatt fest, damit es nicht verrutscht, und zeichnen Sie das Muster mit dem Stift, den Sie sonst auch benutzen. Zeichnen Sie es auf der verbundenen Maschine, oder exportieren Sie den G-Code und senden Sie ihn auf Ihre Weise. Heben Sie MARKS.csv auf: Dort steht, mit welchen Motorwinkeln jede Marke gezeichnet wurde.</translation>
+    </message>
+    <message>
+        <source>Draw on the connected machine</source>
+        <translation>Auf der verbundenen Maschine zeichnen</translation>
+    </message>
+    <message>
+        <source>Export G-code...</source>
+        <translation>G-Code exportieren...</translation>
+    </message>
+    <message>
+        <source>Export MARKS.csv...</source>
+        <translation>MARKS.csv exportieren...</translation>
+    </message>
+    <message>
+        <source>No hardware? Simulate an imperfect machine</source>
+        <translation>Keine Hardware? Eine unvollkommene Maschine simulieren</translation>
+    </message>
+    <message>
+        <source>Simulate an imperfect machine (the sheet below is what it draws)</source>
+        <translation>Eine unvollkommene Maschine simulieren (das Blatt unten zeigt, was sie zeichnet)</translation>
+    </message>
+    <message>
+        <source>The simulated machine differs by these amounts from the profile as it was when this wizard opened, as a real one would. The picture shows what its pen really draws (orange) beside the plan.</source>
+        <translation>Die simulierte Maschine weicht um diese Beträge vom Profil ab, wie es beim Öffnen dieses Assistenten war, so wie eine echte Maschine. Das Bild zeigt, was ihr Stift wirklich zeichnet (orange), neben dem Plan.</translation>
+    </message>
+    <message>
+        <source>a1 longer by</source>
+        <translation>a1 länger um</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>b1 longer by</source>
+        <translation>b1 länger um</translation>
+    </message>
+    <message>
+        <source>a2 longer by</source>
+        <translation>a2 länger um</translation>
+    </message>
+    <message>
+        <source>b2 longer by</source>
+        <translation>b2 länger um</translation>
+    </message>
+    <message>
+        <source>motors farther apart by</source>
+        <translation>Motorabstand größer um</translation>
+    </message>
+    <message>
+        <source>motor 1 zero off by</source>
+        <translation>Nullpunkt Motor 1 versetzt um</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>motor 2 zero off by</source>
+        <translation>Nullpunkt Motor 2 versetzt um</translation>
+    </message>
+    <message>
+        <source>motor 1 backlash</source>
+        <translation>Umkehrspiel Motor 1</translation>
+    </message>
+    <message>
+        <source>motor 2 backlash</source>
+        <translation>Umkehrspiel Motor 2</translation>
+    </message>
+    <message>
+        <source>The pattern is drawn. Take the sheet off and measure it.</source>
+        <translation>Das Muster ist gezeichnet. Nehmen Sie das Blatt ab und vermessen Sie es.</translation>
+    </message>
+    <message>
+        <source>Drawing the pattern (%1 lines of G-code)...</source>
+        <translation>Das Muster wird gezeichnet (%1 Zeilen G-Code)...</translation>
+    </message>
+    <message>
+        <source>Export the pattern's G-code</source>
+        <translation>Den G-Code des Musters exportieren</translation>
+    </message>
+    <message>
+        <source>G-code (*.gcode *.nc)</source>
+        <translation>G-Code (*.gcode *.nc)</translation>
+    </message>
+    <message>
+        <source>Wrote %1.</source>
+        <translation>%1 geschrieben.</translation>
+    </message>
+    <message>
+        <source>Export MARKS.csv</source>
+        <translation>MARKS.csv exportieren</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Streams the pattern with the same checks as the Run panel</source>
+        <translation>Sendet das Muster mit denselben Prüfungen wie die Ausführen-Leiste</translation>
+    </message>
+    <message>
+        <source>Connect a machine or the simulated machine in the Machine panel first</source>
+        <translation>Verbinden Sie zuerst eine Maschine oder die simulierte Maschine in der Maschinen-Leiste</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::FitPage</name>
+    <message>
+        <source>4. Fit the machine to the marks</source>
+        <translation>4. Die Maschine an die Marken anpassen</translation>
+    </message>
+    <message>
+        <source>The fit looks for the link lengths and motor zeros with which the machine would have put every mark where you measured it. Some marks are kept out of the fit and only used to check it afterwards ("held out"): their error is the honest one. The arrows show each mark's error, greatly enlarged: grey before, red after.</source>
+        <translation>Die Anpassung sucht die Gliedlängen und Motornullpunkte, mit denen die Maschine jede Marke dorthin gesetzt hätte, wo Sie sie gemessen haben. Einige Marken bleiben aus der Anpassung heraus und dienen nur der Kontrolle danach („zurückgehalten“): Ihr Fehler ist der ehrliche. Die Pfeile zeigen den Fehler jeder Marke, stark vergrößert: grau vorher, rot nachher.</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation>Profil</translation>
+    </message>
+    <message>
+        <source>Fitted ± std. dev.</source>
+        <translation>Angepasst ± Std.-Abw.</translation>
+    </message>
+    <message>
+        <source>&lt;span style='color:#b00000'&gt;&lt;b&gt;The fit failed:&lt;/b&gt; %1&lt;/span&gt;&lt;br&gt;Go back, check the table, or measure more marks.</source>
+        <translation>&lt;span style='color:#b00000'&gt;&lt;b&gt;Die Anpassung ist fehlgeschlagen:&lt;/b&gt; %1&lt;/span&gt;&lt;br&gt;Gehen Sie zurück, prüfen Sie die Tabelle oder messen Sie mehr Marken.</translation>
+    </message>
+    <message>
+        <source>Backlash from %1 + %2 rows: motor 1 %3°, motor 2 %4°.</source>
+        <translation>Umkehrspiel aus %1 + %2 Reihen: Motor 1 %3°, Motor 2 %4°.</translation>
+    </message>
+    <message>
+        <source>Backlash not measured: %1</source>
+        <translation>Umkehrspiel nicht gemessen: %1</translation>
+    </message>
+    <message>
+        <source>No mark looks mis-measured.</source>
+        <translation>Keine Marke scheint falsch gemessen.</translation>
+    </message>
+    <message>
+        <source>&lt;span style='color:#b00000'&gt;Left out as mis-measured: mark %1. Check it on the sheet.&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#b00000'&gt;Als falsch gemessen weggelassen: Marke %1. Prüfen Sie sie auf dem Blatt.&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Error before: %1 mm RMS&lt;/b&gt; (largest %2 mm) &amp;rarr; &lt;b&gt;after: %3 mm RMS&lt;/b&gt; (largest %4 mm) over %5 marks.&lt;br&gt;Held-out marks (%6): %7 mm before &amp;rarr; %8 mm after.&lt;br&gt;%9&lt;br&gt;%10&lt;br&gt;&lt;small&gt;Condition number %11 (below 10000 is fine).&lt;/small&gt;</source>
+        <translation>&lt;b&gt;Fehler vorher: %1 mm RMS&lt;/b&gt; (größter %2 mm) &amp;rarr; &lt;b&gt;nachher: %3 mm RMS&lt;/b&gt; (größter %4 mm) über %5 Marken.&lt;br&gt;Zurückgehaltene Marken (%6): %7 mm vorher &amp;rarr; %8 mm nachher.&lt;br&gt;%9&lt;br&gt;%10&lt;br&gt;&lt;small&gt;Konditionszahl %11 (unter 10000 ist gut).&lt;/small&gt;</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>%1 ± %2%3</source>
+        <translation>%1 ± %2%3</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::MeasurePage</name>
+    <message>
+        <source>3. Measure the marks</source>
+        <translation>3. Die Marken vermessen</translation>
+    </message>
+    <message>
+        <source>Measure the centre of each numbered dot with a ruler and type its x and y in millimetres. Any corner of the sheet can be the origin, and y may point up or down: the fit finds how the sheet lay. The mark you are typing is circled on the picture. Leave a row empty if a mark cannot be read; a mis-measured mark is found and named by the fit. With a scanner, import a scan instead: the marks are found and numbered for you.</source>
+        <translation>Messen Sie die Mitte jedes nummerierten Punkts mit einem Lineal und tippen Sie x und y in Millimetern ein. Jede Ecke des Blatts kann der Ursprung sein, und y darf nach oben oder unten zeigen: Die Anpassung findet heraus, wie das Blatt lag. Die Marke, die Sie gerade eintippen, ist im Bild eingekreist. Lassen Sie eine Zeile leer, wenn eine Marke nicht lesbar ist; eine falsch gemessene Marke findet und nennt die Anpassung. Mit einem Scanner importieren Sie stattdessen einen Scan: Die Marken werden für Sie gefunden und nummeriert.</translation>
+    </message>
+    <message>
+        <source>Mark</source>
+        <translation>Marke</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>x (mm)</source>
+        <translation>x (mm)</translation>
+    </message>
+    <message>
+        <source>y (mm)</source>
+        <translation>y (mm)</translation>
+    </message>
+    <message>
+        <source>Simulation: measure the simulated sheet</source>
+        <translation>Simulation: das simulierte Blatt vermessen</translation>
+    </message>
+    <message>
+        <source>Fills the table with where the simulated imperfect machine put each mark, plus ruler noise. For trying the wizard without hardware.</source>
+        <translation>Füllt die Tabelle mit den Stellen, an die die simulierte unvollkommene Maschine jede Marke gesetzt hat, plus Messrauschen. Zum Ausprobieren des Assistenten ohne Hardware.</translation>
+    </message>
+    <message>
+        <source>noise ±</source>
+        <translation>Rauschen ±</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Import a scan...</source>
+        <translation>Scan importieren...</translation>
+    </message>
+    <message>
+        <source>A scan or photo taken straight from above (PNG or JPEG): the marks are found and numbered by themselves.</source>
+        <translation>Ein Scan oder ein gerade von oben aufgenommenes Foto (PNG oder JPEG): Die Marken werden von selbst gefunden und nummeriert.</translation>
+    </message>
+    <message>
+        <source> dpi</source>
+        <translation> dpi</translation>
+    </message>
+    <message>
+        <source>The scanner's resolution: the scan's size in mm comes from it.</source>
+        <translation>Die Auflösung des Scanners: Aus ihr ergibt sich die Größe des Scans in mm.</translation>
+    </message>
+    <message>
+        <source>Load MEASURED.csv...</source>
+        <translation>MEASURED.csv laden...</translation>
+    </message>
+    <message>
+        <source>Save MEASURED.csv...</source>
+        <translation>MEASURED.csv speichern...</translation>
+    </message>
+    <message>
+        <source>Import a scan of the sheet</source>
+        <translation>Einen Scan des Blatts importieren</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.tif *.tiff *.bmp)</source>
+        <translation>Bilder (*.png *.jpg *.jpeg *.tif *.tiff *.bmp)</translation>
+    </message>
+    <message>
+        <source>Load MEASURED.csv</source>
+        <translation>MEASURED.csv laden</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Save MEASURED.csv</source>
+        <translation>MEASURED.csv speichern</translation>
+    </message>
+    <message>
+        <source>fit</source>
+        <translation>Anpassung</translation>
+    </message>
+    <message>
+        <source>backlash %1</source>
+        <translation>Umkehrspiel %1</translation>
+    </message>
+    <message>
+        <source>Filled from the simulated sheet (simulation, not a measurement).</source>
+        <translation>Aus dem simulierten Blatt gefüllt (Simulation, keine Messung).</translation>
+    </message>
+    <message>
+        <source>Mark %1: %2 is empty. Type both x and y, or leave both empty.</source>
+        <translation>Marke %1: %2 ist leer. Tippen Sie x und y ein, oder lassen Sie beide leer.</translation>
+    </message>
+    <message>
+        <source>Mark %1, %2: '%3' is not a number.</source>
+        <translation>Marke %1, %2: „%3“ ist keine Zahl.</translation>
+    </message>
+    <message>
+        <source>Only %1 marks for the fit are measured; measure at least %2 (the fit finds 5 lengths, 2 motor zeros and how the sheet lay).</source>
+        <translation>Nur %1 Marken für die Anpassung sind gemessen; messen Sie mindestens %2 (die Anpassung bestimmt 5 Längen, 2 Motornullpunkte und die Lage des Blatts).</translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2</source>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <source>Found %1 of %2 marks in the scan (sheet turned %3°%4).%5</source>
+        <translation>%1 von %2 Marken im Scan gefunden (Blatt um %3° gedreht%4).%5</translation>
+    </message>
+    <message>
+        <source>, mirrored</source>
+        <translation>, gespiegelt</translation>
+    </message>
+    <message>
+        <source> Not found: %1; type them in by hand.</source>
+        <translation> Nicht gefunden: %1; tippen Sie sie von Hand ein.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::PatternPage</name>
+    <message>
+        <source>1. Choose the pattern</source>
+        <translation>1. Das Muster wählen</translation>
+    </message>
+    <message>
+        <source>No machine is built exactly as drawn: a link cut half a millimetre long or a motor zero set by eye bends every drawing. The studio draws a &lt;b&gt;pattern&lt;/b&gt; of numbered marks, you measure where they really landed, and a fit finds the machine's true link lengths and motor zeros.&lt;br&gt;&lt;br&gt;&lt;b&gt;Calibration marks&lt;/b&gt;: numbered dots in rings spread over the whole working area, plus rows that show the slack (backlash) of each motor. Use these to calibrate.&lt;br&gt;&lt;b&gt;Accuracy pattern&lt;/b&gt; (Hoang): ten parallel lines, 40 mm long and 10 mm apart, to judge straightness and length before and after; nothing to measure.</source>
+        <translation>Keine Maschine ist genau so gebaut wie gezeichnet: Ein Glied einen halben Millimeter zu lang oder ein nach Augenmaß gesetzter Motornullpunkt verbiegt jede Zeichnung. Das Studio zeichnet ein &lt;b&gt;Muster&lt;/b&gt; aus nummerierten Marken, Sie messen, wo sie wirklich gelandet sind, und eine Anpassung findet die wahren Gliedlängen und Motornullpunkte der Maschine.&lt;br&gt;&lt;br&gt;&lt;b&gt;Kalibriermarken&lt;/b&gt;: nummerierte Punkte in Ringen über den ganzen Arbeitsbereich verteilt, dazu Reihen, die das Spiel (Umkehrspiel) jedes Motors zeigen. Damit wird kalibriert.&lt;br&gt;&lt;b&gt;Genauigkeitsmuster&lt;/b&gt; (Hoang): zehn parallele Linien, 40 mm lang und 10 mm voneinander, um Geradheit und Länge vorher und nachher zu beurteilen; nichts zu messen.</translation>
+    </message>
+    <message>
+        <source>Calibration marks</source>
+        <translation>Kalibriermarken</translation>
+    </message>
+    <message>
+        <source>Accuracy pattern only (10 lines)</source>
+        <translation>Nur Genauigkeitsmuster (10 Linien)</translation>
+    </message>
+    <message>
+        <source> marks</source>
+        <translation> Marken</translation>
+    </message>
+    <message>
+        <source>More marks: a more certain fit, more to measure. 25 is a good start.</source>
+        <translation>Mehr Marken: eine sicherere Anpassung, mehr zu messen. 25 sind ein guter Anfang.</translation>
+    </message>
+    <message>
+        <source>Marks for the fit:</source>
+        <translation>Marken für die Anpassung:</translation>
+    </message>
+    <message>
+        <source>&lt;span style='color:#b00000'&gt;%1&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#b00000'&gt;%1&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>For &lt;b&gt;%1&lt;/b&gt;: %2 marks for the fit and %3 marks in backlash rows%4.</source>
+        <translation>Für &lt;b&gt;%1&lt;/b&gt;: %2 Marken für die Anpassung und %3 Marken in Umkehrspiel-Reihen%4.</translation>
+    </message>
+    <message>
+        <source>, with the accuracy lines in the middle</source>
+        <translation>, mit den Genauigkeitslinien in der Mitte</translation>
+    </message>
+    <message>
+        <source>For &lt;b&gt;%1&lt;/b&gt;: ten lines of 40 mm in the middle of the working area.</source>
+        <translation>Für &lt;b&gt;%1&lt;/b&gt;: zehn Linien zu 40 mm in der Mitte des Arbeitsbereichs.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::PatternSender</name>
+    <message>
+        <source>The machine was disconnected while drawing the pattern.</source>
+        <translation>Die Maschine wurde getrennt, während das Muster gezeichnet wurde.</translation>
+    </message>
+    <message>
+        <source>The pattern is already being drawn.</source>
+        <translation>Das Muster wird bereits gezeichnet.</translation>
+    </message>
+    <message>
+        <source>Connect a machine (or the simulated machine) in the Machine panel first, and let any running job finish.</source>
+        <translation>Verbinden Sie zuerst eine Maschine (oder die simulierte Maschine) in der Maschinen-Leiste, und lassen Sie einen laufenden Auftrag zu Ende laufen.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::SheetLayer</name>
+    <message>
+        <source>Calibration pattern (plan)</source>
+        <translation>Kalibriermuster (Plan)</translation>
+    </message>
+    <message>
+        <source>Drawn by the pen (simulated imperfect machine)</source>
+        <translation>Vom Stift gezeichnet (simulierte unvollkommene Maschine)</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::VerifyPage</name>
+    <message>
+        <source>6. Draw the verification pattern</source>
+        <translation>6. Das Prüfmuster zeichnen</translation>
+    </message>
+    <message>
+        <source>Draw the pattern once more, now planned with the calibrated profile, on a fresh sheet. Its marks should land where they were meant, and the accuracy lines should be straight and 40 mm long. Measure it again in this wizard if you want numbers.</source>
+        <translation>Zeichnen Sie das Muster noch einmal, jetzt mit dem kalibrierten Profil geplant, auf ein frisches Blatt. Seine Marken sollten dort landen, wo sie hingehören, und die Genauigkeitslinien sollten gerade und 40 mm lang sein. Vermessen Sie es erneut in diesem Assistenten, wenn Sie Zahlen wollen.</translation>
+    </message>
+    <message>
+        <source>Draw on the connected machine</source>
+        <translation>Auf der verbundenen Maschine zeichnen</translation>
+    </message>
+    <message>
+        <source>Export G-code...</source>
+        <translation>G-Code exportieren...</translation>
+    </message>
+    <message>
+        <source>The verification pattern is drawn.</source>
+        <translation>Das Prüfmuster ist gezeichnet.</translation>
+    </message>
+    <message>
+        <source>Drawing the verification pattern...</source>
+        <translation>Das Prüfmuster wird gezeichnet...</translation>
+    </message>
+    <message>
+        <source>Export the verification G-code</source>
+        <translation>Den G-Code des Prüfmusters exportieren</translation>
+    </message>
+    <message>
+        <source>G-code (*.gcode *.nc)</source>
+        <translation>G-Code (*.gcode *.nc)</translation>
+    </message>
+    <message>
+        <source>Wrote %1.</source>
+        <translation>%1 geschrieben.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1.</source>
+        <translation>%1 kann nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Simulation:&lt;/b&gt; the imperfect machine puts the marks %1 mm RMS (largest %2 mm) from where they are meant with the old profile, and &lt;b&gt;%3 mm RMS (largest %4 mm)&lt;/b&gt; with the profile now in use%5.</source>
+        <translation>&lt;b&gt;Simulation:&lt;/b&gt; Die unvollkommene Maschine setzt die Marken mit dem alten Profil %1 mm RMS (größter %2 mm) neben ihren Sollort, und &lt;b&gt;%3 mm RMS (größter %4 mm)&lt;/b&gt; mit dem jetzt verwendeten Profil%5.</translation>
+    </message>
+    <message>
+        <source> (the calibration is not applied)</source>
+        <translation> (die Kalibrierung ist nicht übernommen)</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -2054,7 +3101,7 @@
         <translation>Gefüllte Formen: outline (Standard), hatch oder none; bei hatch: SPACING_MM und ANGLE_DEG nach Doppelpunkten.</translation>
     </message>
     <message>
-        <source>User interface language: de, en, es or fr (default: View &gt; Language, else the system&apos;s).</source>
+        <source>User interface language: de, en, es or fr (default: View &gt; Language, else the system's).</source>
         <translation>Sprache der Oberfläche: de, en, es oder fr (Vorgabe: Ansicht &gt; Sprache, sonst die des Systems).</translation>
     </message>
 </context>
