@@ -1,6 +1,13 @@
-<?xml version="1.0" encoding="utf-8"?>
+<?xml version='1.0' encoding='utf-8'?>
 <!DOCTYPE TS>
 <TS version="2.1" language="es_ES">
+<context>
+    <name>CalibrationWizard</name>
+    <message>
+        <source>Hoang's accuracy pattern (10 lines of 40 mm) does not fit in this machine's safe area.</source>
+        <translation>El patrón de precisión de Hoang (10 líneas de 40 mm) no cabe en el área segura de esta máquina.</translation>
+    </message>
+</context>
 <context>
     <name>DesignPainter</name>
     <message>
@@ -41,6 +48,113 @@
     <message>
         <source>Change machine profile</source>
         <translation>Cambiar perfil de máquina</translation>
+    </message>
+</context>
+<context>
+    <name>ImportWarning</name>
+    <message>
+        <source>attribute d: invalid path data at character %1 %2: drawn up to the error</source>
+        <translation>atributo d: datos de trazado no válidos en el carácter %1 %2: dibujado hasta el error</translation>
+    </message>
+    <message>
+        <source>attribute d: invalid path data at character %1: drawn up to the error</source>
+        <translation>atributo d: datos de trazado no válidos en el carácter %1: dibujado hasta el error</translation>
+    </message>
+    <message>
+        <source>transform-origin="%1" not understood: ignored</source>
+        <translation>transform-origin="%1" no reconocido: ignorado</translation>
+    </message>
+    <message>
+        <source>marker #%1 not found: not drawn</source>
+        <translation>marcador #%1 no encontrado: no se dibuja</translation>
+    </message>
+    <message>
+        <source>markers on %1 are not drawn (drawn on path, line, polyline and polygon)</source>
+        <translation>los marcadores en %1 no se dibujan (se dibujan en path, line, polyline y polygon)</translation>
+    </message>
+    <message>
+        <source>markers set in a style sheet for the selector '%1' are not drawn (only type, #id and .class selectors are applied)</source>
+        <translation>los marcadores definidos en una hoja de estilo para el selector '%1' no se dibujan (solo se aplican selectores de tipo, #id y .class)</translation>
+    </message>
+    <message>
+        <source>external reference removed from %1</source>
+        <translation>referencia externa eliminada de %1</translation>
+    </message>
+    <message>
+        <source>%1 element removed</source>
+        <translation>elemento %1 eliminado</translation>
+    </message>
+    <message>
+        <source>long &lt;path&gt; split into %1 parts to avoid Qt SVG's 32,767-element truncation</source>
+        <translation>&lt;path&gt; largo dividido en %1 partes para evitar el truncamiento de Qt SVG a 32.767 elementos</translation>
+    </message>
+    <message>
+        <source>further element warnings not listed</source>
+        <translation>no se listan más avisos de elementos</translation>
+    </message>
+    <message>
+        <source>DOCTYPE with entity declarations removed (internal entities were expanded)</source>
+        <translation>DOCTYPE con declaraciones de entidades eliminado (las entidades internas se expandieron)</translation>
+    </message>
+    <message>
+        <source>unresolved entity reference dropped</source>
+        <translation>referencia a entidad sin resolver descartada</translation>
+    </message>
+    <message>
+        <source>external style sheet (xml-stylesheet) ignored</source>
+        <translation>hoja de estilo externa (xml-stylesheet) ignorada</translation>
+    </message>
+    <message>
+        <source>event attribute (on...) removed</source>
+        <translation>atributo de evento (on...) eliminado</translation>
+    </message>
+    <message>
+        <source>CSS @import removed</source>
+        <translation>@import de CSS eliminado</translation>
+    </message>
+    <message>
+        <source>transform-origin in a style is not applied</source>
+        <translation>transform-origin en un estilo no se aplica</translation>
+    </message>
+    <message>
+        <source>clip-path not applied: clipped shapes are drawn whole</source>
+        <translation>clip-path no aplicado: las formas recortadas se dibujan completas</translation>
+    </message>
+    <message>
+        <source>mask not applied: masked shapes are drawn whole</source>
+        <translation>máscara no aplicada: las formas enmascaradas se dibujan completas</translation>
+    </message>
+    <message>
+        <source>per-glyph rotate on &lt;text&gt; is not applied: glyphs are drawn upright</source>
+        <translation>la rotación por glifo en &lt;text&gt; no se aplica: los glifos se dibujan rectos</translation>
+    </message>
+    <message>
+        <source>text on a path (&lt;textPath&gt;) is not drawn</source>
+        <translation>el texto sobre trazado (&lt;textPath&gt;) no se dibuja</translation>
+    </message>
+    <message>
+        <source>pattern fills are drawn as outlines, without the pattern</source>
+        <translation>los rellenos de patrón se dibujan como contornos, sin el patrón</translation>
+    </message>
+    <message>
+        <source>more than 100000 marker instances: the rest are not drawn</source>
+        <translation>más de 100000 instancias de marcador: el resto no se dibuja</translation>
+    </message>
+    <message>
+        <source>marker overflow clipping not applied: marker content is drawn whole</source>
+        <translation>recorte de desbordamiento del marcador no aplicado: el contenido del marcador se dibuja completo</translation>
+    </message>
+    <message>
+        <source>no usable width/height/viewBox: page size taken from the drawing's extent</source>
+        <translation>sin width/height/viewBox utilizables: tamaño de página tomado de la extensión del dibujo</translation>
+    </message>
+    <message>
+        <source>line %1: %2 %3</source>
+        <translation>línea %1: %2 %3</translation>
+    </message>
+    <message>
+        <source>%1 (%2x, first at line %3)</source>
+        <translation>%1 (%2x, la primera en la línea %3)</translation>
     </message>
 </context>
 <context>
@@ -97,6 +211,10 @@
     <message>
         <source>Planning failed: %1</source>
         <translation>La planificación falló: %1</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>No se puede escribir %1: %2</translation>
     </message>
 </context>
 <context>
@@ -414,12 +532,28 @@
         <translation>Aquí aparecen las líneas enviadas a la máquina y recibidas de ella.</translation>
     </message>
     <message>
-        <source>G-code or $ command, e.g. $$ or G0 X10 Y20</source>
-        <translation>Código G u orden $, p. ej. $$ o G0 X10 Y20</translation>
-    </message>
-    <message>
         <source>Send</source>
         <translation>Enviar</translation>
+    </message>
+    <message>
+        <source>G-code or $ command, e.g. $$ or $I; moves are checked first</source>
+        <translation>G-code u orden $, p. ej. $$ o $I; los movimientos se comprueban antes</translation>
+    </message>
+    <message>
+        <source>Send unchecked (expert)</source>
+        <translation>Enviar sin comprobar (experto)</translation>
+    </message>
+    <message>
+        <source>Send lines without the motion check. X and Y are motor angles in degrees: a wrong number swings an arm across the base.</source>
+        <translation>Enviar líneas sin la comprobación de movimiento. X e Y son ángulos de motor en grados: un número erróneo hace girar un brazo contra la base.</translation>
+    </message>
+    <message>
+        <source>Unchecked console: lines go to the machine as typed, without the motion check. A wrong X or Y (motor angles in degrees) can drive the arms into each other or the base.</source>
+        <translation>Consola sin comprobar: las líneas van a la máquina tal como se escriben, sin la comprobación de movimiento. Una X o Y errónea (ángulos de motor en grados) puede hacer chocar los brazos entre sí o con la base.</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>No enviado: %1</translation>
     </message>
 </context>
 <context>
@@ -660,7 +794,7 @@
         <translation>Sin dibujar</translation>
     </message>
     <message>
-        <source>Outline: the shape&apos;s edge (as AxiDraw and vpype draw fills). Hatch: parallel lines inside the shape. Not drawn: fill-only shapes are left out.</source>
+        <source>Outline: the shape's edge (as AxiDraw and vpype draw fills). Hatch: parallel lines inside the shape. Not drawn: fill-only shapes are left out.</source>
         <translation>Contorno: el borde de la forma (como dibujan los rellenos AxiDraw y vpype). Rayado: líneas paralelas dentro de la forma. Sin dibujar: se omiten las formas que solo tienen relleno.</translation>
     </message>
     <message>
@@ -703,7 +837,7 @@
         <translation>Conecta primero la máquina: su posición es desconocida.</translation>
     </message>
     <message>
-        <source>Go to %1, %2 mm? The dashed path is the pen&apos;s travel (%3 checked moves).</source>
+        <source>Go to %1, %2 mm? The dashed path is the pen's travel (%3 checked moves).</source>
         <translation>¿Ir a %1, %2 mm? El trazo discontinuo es el recorrido de la pluma (%3 movimientos comprobados).</translation>
     </message>
     <message>
@@ -752,6 +886,18 @@
     <message>
         <source>Drawings and projects (*.svg *.fivebar);;SVG drawings (*.svg);;FiveBar projects (*.fivebar);;All files (*)</source>
         <translation>Dibujos y proyectos (*.svg *.fivebar);;Dibujos SVG (*.svg);;Proyectos FiveBar (*.fivebar);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>Very large drawing</source>
+        <translation>Dibujo muy grande</translation>
+    </message>
+    <message>
+        <source>%1 has more than %2 points after flattening (a runaway file?). Reading it was stopped there.
+
+Planning and plotting it may take very long. Import it whole anyway?</source>
+        <translation>%1 tiene más de %2 puntos tras aplanarlo (¿un archivo desbocado?). La lectura se detuvo ahí.
+
+Planificarlo y plotearlo puede tardar mucho. ¿Importarlo entero de todos modos?</translation>
     </message>
 </context>
 <context>
@@ -874,12 +1020,20 @@
         <translation>Ejecutar la búsqueda de origen</translation>
     </message>
     <message>
-        <source>Declare that the machine now stands at the profile&apos;s home pose</source>
+        <source>Declare that the machine now stands at the profile's home pose</source>
         <translation>Declarar que la máquina está ahora en la pose de origen del perfil</translation>
     </message>
     <message>
         <source>Speed of XY jogs</source>
         <translation>Velocidad de los movimientos XY</translation>
+    </message>
+    <message>
+        <source>Go to home pose</source>
+        <translation>Ir a la posición de inicio</translation>
+    </message>
+    <message>
+        <source>Move the pen up to the profile's home pose by a checked move (the reference must be set)</source>
+        <translation>Ir con la pluma levantada a la posición de inicio del perfil mediante un movimiento comprobado (la referencia debe estar fijada)</translation>
     </message>
 </context>
 <context>
@@ -929,6 +1083,50 @@
             <numerusform>%n punto</numerusform>
             <numerusform>%n puntos</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Fill of the selected layer</source>
+        <translation>Relleno de la capa seleccionada</translation>
+    </message>
+    <message>
+        <source>Outline</source>
+        <translation>Contorno</translation>
+    </message>
+    <message>
+        <source>Hatch</source>
+        <translation>Rayado</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Ninguno</translation>
+    </message>
+    <message>
+        <source>How the layer's filled shapes are drawn: their outline, parallel hatch lines inside them, or not at all (stroked shapes keep their stroke).</source>
+        <translation>Cómo se dibujan las formas rellenas de la capa: su contorno, líneas de rayado paralelas en su interior o nada (las formas con trazo conservan su trazo).</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>Crosshatch</source>
+        <translation>Rayado cruzado</translation>
+    </message>
+    <message>
+        <source>Fill:</source>
+        <translation>Relleno:</translation>
+    </message>
+    <message>
+        <source>Hatch spacing:</source>
+        <translation>Separación del rayado:</translation>
+    </message>
+    <message>
+        <source>Hatch angle:</source>
+        <translation>Ángulo del rayado:</translation>
     </message>
 </context>
 <context>
@@ -982,8 +1180,35 @@
         <translation>Ejecutar la búsqueda de origen; la máquina se mueve hasta sus finales de carrera.</translation>
     </message>
     <message>
-        <source>Declare that the machine now stands at the profile&apos;s home pose (G10 L20).</source>
+        <source>Declare that the machine now stands at the profile's home pose (G10 L20).</source>
         <translation>Declarar que la máquina está ahora en la pose de origen del perfil (G10 L20).</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachineDialogs</name>
+    <message>
+        <source>Set the reference pose?
+
+The studio will take the machine's current position to be the home pose of "%1": motor 1 at %2°, motor 2 at %3°. Every later move is computed from it.
+
+Confirm only if the arms stand exactly in that pose now. If they stand elsewhere, moves will land in the wrong place and can drive the arms into each other or into the base.</source>
+        <translation>¿Fijar la pose de referencia?
+
+El estudio tomará la posición actual de la máquina como la posición de inicio de "%1": motor 1 a %2°, motor 2 a %3°. Todos los movimientos posteriores se calculan a partir de ella.
+
+Confirme solo si los brazos están ahora exactamente en esa pose. Si están en otro sitio, los movimientos acabarán en el lugar equivocado y pueden hacer chocar los brazos entre sí o con la base.</translation>
+    </message>
+    <message>
+        <source>Set reference pose</source>
+        <translation>Fijar pose de referencia</translation>
+    </message>
+    <message>
+        <source>The arms stand in the home pose: set it</source>
+        <translation>Los brazos están en la posición de inicio: fijarla</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
     </message>
 </context>
 <context>
@@ -1104,6 +1329,38 @@
         <source>planner %1 of %2 blocks free, RX %3 of %4 bytes free</source>
         <translation>planificador: %1 de %2 bloques libres, RX: %3 de %4 bytes libres</translation>
     </message>
+    <message>
+        <source>Pen</source>
+        <translation>Pluma</translation>
+    </message>
+    <message>
+        <source>Review and write...</source>
+        <translation>Revisar y escribir...</translation>
+    </message>
+    <message>
+        <source>Compare the board's settings with the profile and write the differences (a backup is saved first)</source>
+        <translation>Comparar los ajustes de la placa con el perfil y escribir las diferencias (antes se guarda una copia de seguridad)</translation>
+    </message>
+    <message>
+        <source>No answer from the machine</source>
+        <translation>La máquina no responde</translation>
+    </message>
+    <message>
+        <source>Connecting to %1: waiting for the board to answer...</source>
+        <translation>Conectando a %1: esperando respuesta de la placa...</translation>
+    </message>
+    <message>
+        <source>up</source>
+        <translation>arriba</translation>
+    </message>
+    <message>
+        <source>down (drawing)</source>
+        <translation>abajo (dibujando)</translation>
+    </message>
+    <message>
+        <source>not known yet</source>
+        <translation>aún desconocido</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachineSession</name>
@@ -1171,6 +1428,62 @@
         <source>the simulated machine</source>
         <translation>la máquina simulada</translation>
     </message>
+    <message>
+        <source>set the reference pose (Machine panel) or home the machine</source>
+        <translation>fije la pose de referencia (panel Máquina) o haga el homing de la máquina</translation>
+    </message>
+    <message>
+        <source>%1 at %2 baud</source>
+        <translation>%1 a %2 baudios</translation>
+    </message>
+    <message>
+        <source>Opened %1; waiting for the board to answer...</source>
+        <translation>%1 abierto; esperando respuesta de la placa...</translation>
+    </message>
+    <message>
+        <source>No GRBL board answered on %1 within %2 s. Check that the port is the machine's, that the baud rate matches its firmware (GRBL 1.1: usually 115200) and that it is powered.</source>
+        <translation>Ninguna placa GRBL respondió en %1 en %2 s. Compruebe que el puerto es el de la máquina, que la velocidad en baudios coincide con su firmware (GRBL 1.1: normalmente 115200) y que está encendida.</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>No enviado: %1</translation>
+    </message>
+    <message>
+        <source>Unchecked: %1</source>
+        <translation>Sin comprobar: %1</translation>
+    </message>
+    <message>
+        <source>The machine's position is not known yet (no status report with its work position): wait a moment, or set the reference pose.</source>
+        <translation>La posición de la máquina aún no se conoce (no hay informe de estado con su posición de trabajo): espere un momento o fije la pose de referencia.</translation>
+    </message>
+    <message>
+        <source>The machine is still moving or busy: send a move when it stands still (Idle), so it can be checked from where the machine really is.</source>
+        <translation>La máquina aún se mueve o está ocupada: envíe el movimiento cuando esté parada (Idle), para poder comprobarlo desde donde está realmente.</translation>
+    </message>
+    <message>
+        <source>Console lines are sent UNCHECKED from now on.</source>
+        <translation>A partir de ahora las líneas de consola se envían SIN COMPROBAR.</translation>
+    </message>
+    <message>
+        <source>Console lines are checked again.</source>
+        <translation>Las líneas de consola vuelven a comprobarse.</translation>
+    </message>
+    <message>
+        <source>The machine must be connected, idle and its position known.</source>
+        <translation>La máquina debe estar conectada, inactiva y con su posición conocida.</translation>
+    </message>
+    <message>
+        <source>The profile's home pose does not close the linkage.</source>
+        <translation>La posición de inicio del perfil no cierra el mecanismo.</translation>
+    </message>
+    <message>
+        <source>No checked move to the home pose: %1</source>
+        <translation>No hay movimiento comprobado a la posición de inicio: %1</translation>
+    </message>
+    <message>
+        <source>The move was not sent (see the console).</source>
+        <translation>El movimiento no se envió (véase la consola).</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachineSettingsDialog</name>
@@ -1179,7 +1492,7 @@
         <translation>Ajustes de la máquina</translation>
     </message>
     <message>
-        <source>The board&apos;s GRBL settings next to the values the machine profile needs. Writing saves a backup of the board&apos;s settings first.</source>
+        <source>The board's GRBL settings next to the values the machine profile needs. Writing saves a backup of the board's settings first.</source>
         <translation>Los ajustes GRBL de la placa junto a los valores que necesita el perfil de máquina. Antes de escribir se guarda una copia de seguridad de los ajustes de la placa.</translation>
     </message>
     <message>
@@ -1231,11 +1544,11 @@
         <translation>La máquina debe estar en reposo (o en alarma) para cambiar los ajustes.</translation>
     </message>
     <message>
-        <source>Reading the board&apos;s settings...</source>
+        <source>Reading the board's settings...</source>
         <translation>Leyendo los ajustes de la placa…</translation>
     </message>
     <message>
-        <source>Nothing to write: read the board&apos;s settings first.</source>
+        <source>Nothing to write: read the board's settings first.</source>
         <translation>Nada que escribir: lee primero los ajustes de la placa.</translation>
     </message>
     <message>
@@ -1250,7 +1563,7 @@
         </translation>
     </message>
     <message>
-        <source>The board&apos;s settings match the profile.</source>
+        <source>The board's settings match the profile.</source>
         <translation>Los ajustes de la placa coinciden con el perfil.</translation>
     </message>
     <message numerus="yes">
@@ -1305,6 +1618,26 @@
     <message>
         <source>Machine &amp;settings...</source>
         <translation>&amp;Ajustes de la máquina…</translation>
+    </message>
+    <message>
+        <source>A job is running</source>
+        <translation>Hay un trabajo en curso</translation>
+    </message>
+    <message>
+        <source>The machine is drawing "%1". Quitting the studio would leave it without its stream of lines.
+
+Hold, stop and quit: the machine stops cleanly and the progress is saved, so you can resume later.</source>
+        <translation>La máquina está dibujando "%1". Salir del estudio la dejaría sin su flujo de líneas.
+
+Pausar, detener y salir: la máquina se detiene limpiamente y el progreso se guarda para que pueda reanudarlo más tarde.</translation>
+    </message>
+    <message>
+        <source>Hold, stop and quit</source>
+        <translation>Pausar, detener y salir</translation>
+    </message>
+    <message>
+        <source>Keep running</source>
+        <translation>Seguir ejecutando</translation>
     </message>
 </context>
 <context>
@@ -1784,7 +2117,7 @@
 %2</translation>
     </message>
     <message>
-        <source>Fix the profile&apos;s problems before exporting it.</source>
+        <source>Fix the profile's problems before exporting it.</source>
         <translation>Corrige los problemas del perfil antes de exportarlo.</translation>
     </message>
     <message>
@@ -1807,6 +2140,14 @@
         <source>Export failed</source>
         <translation>Error de exportación</translation>
     </message>
+    <message>
+        <source> steps/°</source>
+        <translation> pasos/°</translation>
+    </message>
+    <message>
+        <source> baud</source>
+        <translation> baudios</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::RunController</name>
@@ -1827,12 +2168,36 @@
         <translation>Nada que reanudar: no hay progreso guardado junto a %1.</translation>
     </message>
     <message>
-        <source>Resuming %1…</source>
-        <translation>Reanudando %1…</translation>
+        <source>line %1 of %2</source>
+        <translation>línea %1 de %2</translation>
     </message>
     <message>
-        <source>Running %1…</source>
-        <translation>Ejecutando %1…</translation>
+        <source>The run of "%1" was interrupted at %2: %3</source>
+        <translation>La ejecución de "%1" se interrumpió en %2: %3</translation>
+    </message>
+    <message>
+        <source>press Resume</source>
+        <translation>pulse Reanudar</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Reanudar</translation>
+    </message>
+    <message>
+        <source>The machine raised an alarm and the job stopped (the banner in the Machine panel says why). The progress is saved: clear the alarm (Reset, Unlock), check the pen stands where the studio shows it, then press Resume.</source>
+        <translation>La máquina lanzó una alarma y el trabajo se detuvo (el aviso del panel Máquina indica por qué). El progreso está guardado: borre la alarma (Reset, Desbloquear), compruebe que la pluma está donde la muestra el estudio y pulse Reanudar.</translation>
+    </message>
+    <message>
+        <source>Resuming "%1"…</source>
+        <translation>Reanudando "%1"…</translation>
+    </message>
+    <message>
+        <source>Running "%1"…</source>
+        <translation>Ejecutando "%1"…</translation>
+    </message>
+    <message>
+        <source>"%1" is drawn.</source>
+        <translation>"%1" está dibujado.</translation>
     </message>
 </context>
 <context>
@@ -1922,16 +2287,8 @@
         <translation>Continuar el trabajo interrumpido desde su último punto dibujado, con una aproximación segura con la pluma subida</translation>
     </message>
     <message>
-        <source>An interrupted run was saved (line %1 of %2 done): %3</source>
-        <translation>Se guardó una ejecución interrumpida (línea %1 de %2 hecha): %3</translation>
-    </message>
-    <message>
         <source>No job sent yet</source>
         <translation>Aún no se ha enviado ningún trabajo</translation>
-    </message>
-    <message>
-        <source>%1 of %2 lines executed</source>
-        <translation>%1 de %2 líneas ejecutadas</translation>
     </message>
     <message>
         <source>%1 left</source>
@@ -1940,6 +2297,142 @@
     <message>
         <source>Long job</source>
         <translation>Trabajo largo</translation>
+    </message>
+    <message>
+        <source>Start from the beginning?</source>
+        <translation>¿Empezar desde el principio?</translation>
+    </message>
+    <message>
+        <source>%1
+
+Start draws "%2" from the beginning and discards this saved progress. Resume continues the interrupted run instead.</source>
+        <translation>%1
+
+Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanudar, en cambio, continúa la ejecución interrumpida.</translation>
+    </message>
+    <message>
+        <source>Discard and start over</source>
+        <translation>Descartar y empezar de nuevo</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Reading the board's settings to compare them with the profile: press Start again in a moment.</source>
+        <translation>Leyendo los ajustes de la placa para compararlos con el perfil: pulse Iniciar de nuevo en un momento.</translation>
+    </message>
+    <message>
+        <source>The board's settings differ</source>
+        <translation>Los ajustes de la placa difieren</translation>
+    </message>
+    <message>
+        <source>Write the profile's settings...</source>
+        <translation>Escribir los ajustes del perfil...</translation>
+    </message>
+    <message>
+        <source>Start anyway</source>
+        <translation>Iniciar de todos modos</translation>
+    </message>
+    <message>
+        <source>%1 % (%2)</source>
+        <translation>%1 % (%2)</translation>
+    </message>
+    <message>
+        <source>%1 left (on hold)</source>
+        <translation>quedan %1 (en pausa)</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::SettingsAdvice</name>
+    <message>
+        <source>soft limits are on, but this machine has no homing switches: the board measures its travel from where it was switched on, not from the reference pose, and stops the job with ALARM:2 when a move leaves that range.</source>
+        <translation>los límites por software están activados, pero esta máquina no tiene finales de carrera para homing: la placa mide su recorrido desde donde se encendió, no desde la pose de referencia, y detiene el trabajo con ALARM:2 cuando un movimiento sale de ese rango.</translation>
+    </message>
+    <message>
+        <source>soft limits are off although the profile expects them.</source>
+        <translation>los límites por software están desactivados aunque el perfil los espera.</translation>
+    </message>
+    <message>
+        <source>hard limits are on: without limit switches wired, noise on the pins stops the machine with ALARM:1.</source>
+        <translation>los límites por hardware están activados: sin finales de carrera conectados, el ruido en los pines detiene la máquina con ALARM:1.</translation>
+    </message>
+    <message>
+        <source>hard limits are off although the profile expects them.</source>
+        <translation>los límites por hardware están desactivados aunque el perfil los espera.</translation>
+    </message>
+    <message>
+        <source>the homing cycle is on: the board starts locked and wants $H, which needs homing switches.</source>
+        <translation>el ciclo de homing está activado: la placa arranca bloqueada y pide $H, que necesita finales de carrera.</translation>
+    </message>
+    <message>
+        <source>the homing cycle is off although the profile has switches.</source>
+        <translation>el ciclo de homing está desactivado aunque el perfil tiene finales de carrera.</translation>
+    </message>
+    <message>
+        <source>steps per degree differ: every motor angle would be wrong by the ratio, so the arms would leave the checked, safe poses.</source>
+        <translation>los pasos por grado difieren: cada ángulo de motor sería erróneo en esa proporción, así que los brazos saldrían de las poses comprobadas y seguras.</translation>
+    </message>
+    <message>
+        <source>the board's maximum rate is lower: the job runs slower than planned and the time estimate is off.</source>
+        <translation>la velocidad máxima de la placa es menor: el trabajo va más lento de lo planificado y la estimación de tiempo falla.</translation>
+    </message>
+    <message>
+        <source>the board's maximum rate is higher than the profile allows: the motors may lose steps.</source>
+        <translation>la velocidad máxima de la placa es mayor de lo que permite el perfil: los motores pueden perder pasos.</translation>
+    </message>
+    <message>
+        <source>the board accelerates more gently: the job takes longer than planned.</source>
+        <translation>la placa acelera más suavemente: el trabajo tarda más de lo planificado.</translation>
+    </message>
+    <message>
+        <source>the board accelerates harder than the profile allows: the motors may lose steps.</source>
+        <translation>la placa acelera más fuerte de lo que permite el perfil: los motores pueden perder pasos.</translation>
+    </message>
+    <message>
+        <source>the motor's travel for soft limits differs: with soft limits on, a move beyond it stops the job with ALARM:2.</source>
+        <translation>el recorrido del motor para los límites por software difiere: con ellos activados, un movimiento que lo supere detiene el trabajo con ALARM:2.</translation>
+    </message>
+    <message>
+        <source>the spindle (pen servo / laser) range differs: the pen may not lift or lower as planned.</source>
+        <translation>el rango del husillo (servo de pluma / láser) difiere: puede que la pluma no suba o baje como está previsto.</translation>
+    </message>
+    <message>
+        <source>the junction deviation differs: corners run at other speeds than planned.</source>
+        <translation>la desviación de unión (junction deviation) difiere: las esquinas van a velocidades distintas de las planificadas.</translation>
+    </message>
+    <message>
+        <source>differs from what the profile expects.</source>
+        <translation>difiere de lo que espera el perfil.</translation>
+    </message>
+    <message>
+        <source>not reported</source>
+        <translation>no informado</translation>
+    </message>
+    <message>
+        <source>$%1 is %2 on the board, the profile wants %3: %4</source>
+        <translation>$%1 vale %2 en la placa, el perfil quiere %3: %4</translation>
+    </message>
+    <message numerus="yes">
+        <source>The board's settings differ from the profile in %n place(s): %1.</source>
+        <translation>
+            <numerusform>Los ajustes de la placa difieren del perfil en %n punto: %1.</numerusform><numerusform>Los ajustes de la placa difieren del perfil en %n puntos: %1.</numerusform></translation>
+    </message>
+    <message>
+        <source>A job would stop or move wrongly with them.</source>
+        <translation>Con ellos, un trabajo se detendría o se movería mal.</translation>
+    </message>
+    <message>
+        <source>The board's GRBL settings differ from the machine profile, and the job would not run as planned:</source>
+        <translation>Los ajustes GRBL de la placa difieren del perfil de la máquina y el trabajo no se ejecutaría como está planificado:</translation>
+    </message>
+    <message>
+        <source>The board's GRBL settings differ from the machine profile:</source>
+        <translation>Los ajustes GRBL de la placa difieren del perfil de la máquina:</translation>
+    </message>
+    <message>
+        <source>Write the profile's settings to the board (its current ones are saved to a backup file first), or start anyway.</source>
+        <translation>Escriba los ajustes del perfil en la placa (los actuales se guardan antes en un archivo de copia de seguridad) o inicie de todos modos.</translation>
     </message>
 </context>
 <context>
@@ -2014,6 +2507,560 @@
         <source>Change layer tool settings</source>
         <translation>Cambiar los ajustes de herramienta de la capa</translation>
     </message>
+    <message>
+        <source>Change layer fill</source>
+        <translation>Cambiar relleno de capa</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::ApplyPage</name>
+    <message>
+        <source>5. Apply the calibration to the profile</source>
+        <translation>5. Aplicar la calibración al perfil</translation>
+    </message>
+    <message>
+        <source>Applying writes the fitted link lengths into the profile and keeps the motor zeros and the backlash in its calibration section. From then on every plan, jog and check uses them. &lt;b&gt;Edit &amp;gt; Undo&lt;/b&gt; takes it back; the profile is saved with the project, and you can also save it as a profile file for other projects.</source>
+        <translation>Al aplicar se escriben las longitudes de eslabón ajustadas en el perfil y se guardan los ceros de motor y la holgura en su sección de calibración. A partir de entonces, todos los planes, movimientos manuales y comprobaciones los usan. &lt;b&gt;Editar &amp;gt; Deshacer&lt;/b&gt; lo revierte; el perfil se guarda con el proyecto y también puede guardarlo como archivo de perfil para otros proyectos.</translation>
+    </message>
+    <message>
+        <source>Apply to the profile</source>
+        <translation>Aplicar al perfil</translation>
+    </message>
+    <message>
+        <source>Save profile as...</source>
+        <translation>Guardar perfil como...</translation>
+    </message>
+    <message>
+        <source>Save the calibrated profile</source>
+        <translation>Guardar el perfil calibrado</translation>
+    </message>
+    <message>
+        <source>Machine profile (*.json)</source>
+        <translation>Perfil de máquina (*.json)</translation>
+    </message>
+    <message>
+        <source>Saved %1.</source>
+        <translation>Guardado %1.</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>motor 1 zero</source>
+        <translation>cero del motor 1</translation>
+    </message>
+    <message>
+        <source>motor 2 zero</source>
+        <translation>cero del motor 2</translation>
+    </message>
+    <message>
+        <source>motor 1 backlash</source>
+        <translation>holgura del motor 1</translation>
+    </message>
+    <message>
+        <source>motor 2 backlash</source>
+        <translation>holgura del motor 2</translation>
+    </message>
+    <message>
+        <source>Applied. Edit &gt; Undo restores the profile as it was.</source>
+        <translation>Aplicado. Editar &gt; Deshacer restaura el perfil como estaba.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::CalibrationPreview</name>
+    <message>
+        <source>No pattern yet</source>
+        <translation>Aún no hay patrón</translation>
+    </message>
+    <message>
+        <source>pattern as planned</source>
+        <translation>patrón según el plan</translation>
+    </message>
+    <message>
+        <source>drawn by the pen (simulation)</source>
+        <translation>dibujado por la pluma (simulación)</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>medido</translation>
+    </message>
+    <message>
+        <source>error before</source>
+        <translation>error antes</translation>
+    </message>
+    <message>
+        <source>error after</source>
+        <translation>error después</translation>
+    </message>
+    <message>
+        <source>arrows ×%1</source>
+        <translation>flechas ×%1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::CalibrationWizard</name>
+    <message>
+        <source>Calibrate the machine</source>
+        <translation>Calibrar la máquina</translation>
+    </message>
+    <message>
+        <source>&amp;Calibrate...</source>
+        <translation>&amp;Calibrar...</translation>
+    </message>
+    <message>
+        <source>Measure a drawn pattern and correct the profile's link lengths and motor zeros</source>
+        <translation>Medir un patrón dibujado y corregir las longitudes de eslabón y los ceros de motor del perfil</translation>
+    </message>
+    <message>
+        <source>Choose a pattern first.</source>
+        <translation>Elija primero un patrón.</translation>
+    </message>
+    <message>
+        <source>The pattern cannot be planned: %1</source>
+        <translation>No se puede planificar el patrón: %1</translation>
+    </message>
+    <message>
+        <source>The pattern's G-code cannot be written: %1</source>
+        <translation>No se puede escribir el G-code del patrón: %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::DrawPage</name>
+    <message>
+        <source>2. Draw the pattern</source>
+        <translation>2. Dibujar el patrón</translation>
+    </message>
+    <message>
+        <source>Tape a sheet down so it cannot move, and draw the pattern with the pen you normally use. Draw it on the connected machine, or export its G-code and send it your way. Keep MARKS.csv: it says which motor angles drew each mark.</source>
+        <translation>Fije una hoja con cinta para que no se mueva y dibuje el patrón con la pluma que usa normalmente. Dibújelo en la máquina conectada, o exporte su G-code y envíelo a su manera. Conserve MARKS.csv: indica qué ángulos de motor dibujaron cada marca.</translation>
+    </message>
+    <message>
+        <source>Draw on the connected machine</source>
+        <translation>Dibujar en la máquina conectada</translation>
+    </message>
+    <message>
+        <source>Export G-code...</source>
+        <translation>Exportar G-code...</translation>
+    </message>
+    <message>
+        <source>Export MARKS.csv...</source>
+        <translation>Exportar MARKS.csv...</translation>
+    </message>
+    <message>
+        <source>No hardware? Simulate an imperfect machine</source>
+        <translation>¿Sin hardware? Simular una máquina imperfecta</translation>
+    </message>
+    <message>
+        <source>Simulate an imperfect machine (the sheet below is what it draws)</source>
+        <translation>Simular una máquina imperfecta (la hoja de abajo es lo que dibuja)</translation>
+    </message>
+    <message>
+        <source>The simulated machine differs by these amounts from the profile as it was when this wizard opened, as a real one would. The picture shows what its pen really draws (orange) beside the plan.</source>
+        <translation>La máquina simulada difiere en estas cantidades del perfil tal como estaba al abrir este asistente, como lo haría una real. La imagen muestra lo que su pluma dibuja realmente (naranja) junto al plan.</translation>
+    </message>
+    <message>
+        <source>a1 longer by</source>
+        <translation>a1 más largo en</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>b1 longer by</source>
+        <translation>b1 más largo en</translation>
+    </message>
+    <message>
+        <source>a2 longer by</source>
+        <translation>a2 más largo en</translation>
+    </message>
+    <message>
+        <source>b2 longer by</source>
+        <translation>b2 más largo en</translation>
+    </message>
+    <message>
+        <source>motors farther apart by</source>
+        <translation>motores más separados en</translation>
+    </message>
+    <message>
+        <source>motor 1 zero off by</source>
+        <translation>cero del motor 1 desviado en</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>motor 2 zero off by</source>
+        <translation>cero del motor 2 desviado en</translation>
+    </message>
+    <message>
+        <source>motor 1 backlash</source>
+        <translation>holgura del motor 1</translation>
+    </message>
+    <message>
+        <source>motor 2 backlash</source>
+        <translation>holgura del motor 2</translation>
+    </message>
+    <message>
+        <source>The pattern is drawn. Take the sheet off and measure it.</source>
+        <translation>El patrón está dibujado. Retire la hoja y mídala.</translation>
+    </message>
+    <message>
+        <source>Drawing the pattern (%1 lines of G-code)...</source>
+        <translation>Dibujando el patrón (%1 líneas de G-code)...</translation>
+    </message>
+    <message>
+        <source>Export the pattern's G-code</source>
+        <translation>Exportar el G-code del patrón</translation>
+    </message>
+    <message>
+        <source>G-code (*.gcode *.nc)</source>
+        <translation>G-code (*.gcode *.nc)</translation>
+    </message>
+    <message>
+        <source>Wrote %1.</source>
+        <translation>Escrito %1.</translation>
+    </message>
+    <message>
+        <source>Export MARKS.csv</source>
+        <translation>Exportar MARKS.csv</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Streams the pattern with the same checks as the Run panel</source>
+        <translation>Envía el patrón con las mismas comprobaciones que el panel Ejecutar</translation>
+    </message>
+    <message>
+        <source>Connect a machine or the simulated machine in the Machine panel first</source>
+        <translation>Conecte primero una máquina o la máquina simulada en el panel Máquina</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::FitPage</name>
+    <message>
+        <source>4. Fit the machine to the marks</source>
+        <translation>4. Ajustar la máquina a las marcas</translation>
+    </message>
+    <message>
+        <source>The fit looks for the link lengths and motor zeros with which the machine would have put every mark where you measured it. Some marks are kept out of the fit and only used to check it afterwards ("held out"): their error is the honest one. The arrows show each mark's error, greatly enlarged: grey before, red after.</source>
+        <translation>El ajuste busca las longitudes de eslabón y los ceros de motor con los que la máquina habría puesto cada marca donde usted la midió. Algunas marcas quedan fuera del ajuste y solo sirven para comprobarlo después ("reservadas"): su error es el honesto. Las flechas muestran el error de cada marca, muy ampliado: gris antes, rojo después.</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parámetro</translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation>Perfil</translation>
+    </message>
+    <message>
+        <source>Fitted ± std. dev.</source>
+        <translation>Ajustado ± desv. est.</translation>
+    </message>
+    <message>
+        <source>&lt;span style='color:#b00000'&gt;&lt;b&gt;The fit failed:&lt;/b&gt; %1&lt;/span&gt;&lt;br&gt;Go back, check the table, or measure more marks.</source>
+        <translation>&lt;span style='color:#b00000'&gt;&lt;b&gt;El ajuste falló:&lt;/b&gt; %1&lt;/span&gt;&lt;br&gt;Vuelva atrás, revise la tabla o mida más marcas.</translation>
+    </message>
+    <message>
+        <source>Backlash from %1 + %2 rows: motor 1 %3°, motor 2 %4°.</source>
+        <translation>Holgura a partir de %1 + %2 filas: motor 1 %3°, motor 2 %4°.</translation>
+    </message>
+    <message>
+        <source>Backlash not measured: %1</source>
+        <translation>Holgura no medida: %1</translation>
+    </message>
+    <message>
+        <source>No mark looks mis-measured.</source>
+        <translation>Ninguna marca parece mal medida.</translation>
+    </message>
+    <message>
+        <source>&lt;span style='color:#b00000'&gt;Left out as mis-measured: mark %1. Check it on the sheet.&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#b00000'&gt;Excluida por mal medida: marca %1. Revísela en la hoja.&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Error before: %1 mm RMS&lt;/b&gt; (largest %2 mm) &amp;rarr; &lt;b&gt;after: %3 mm RMS&lt;/b&gt; (largest %4 mm) over %5 marks.&lt;br&gt;Held-out marks (%6): %7 mm before &amp;rarr; %8 mm after.&lt;br&gt;%9&lt;br&gt;%10&lt;br&gt;&lt;small&gt;Condition number %11 (below 10000 is fine).&lt;/small&gt;</source>
+        <translation>&lt;b&gt;Error antes: %1 mm RMS&lt;/b&gt; (máx. %2 mm) &amp;rarr; &lt;b&gt;después: %3 mm RMS&lt;/b&gt; (máx. %4 mm) en %5 marcas.&lt;br&gt;Marcas reservadas (%6): %7 mm antes &amp;rarr; %8 mm después.&lt;br&gt;%9&lt;br&gt;%10&lt;br&gt;&lt;small&gt;Número de condición %11 (por debajo de 10000 está bien).&lt;/small&gt;</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>%1 ± %2%3</source>
+        <translation>%1 ± %2%3</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::MeasurePage</name>
+    <message>
+        <source>3. Measure the marks</source>
+        <translation>3. Medir las marcas</translation>
+    </message>
+    <message>
+        <source>Measure the centre of each numbered dot with a ruler and type its x and y in millimetres. Any corner of the sheet can be the origin, and y may point up or down: the fit finds how the sheet lay. The mark you are typing is circled on the picture. Leave a row empty if a mark cannot be read; a mis-measured mark is found and named by the fit. With a scanner, import a scan instead: the marks are found and numbered for you.</source>
+        <translation>Mida el centro de cada punto numerado con una regla y escriba su x e y en milímetros. Cualquier esquina de la hoja puede ser el origen, y la y puede apuntar hacia arriba o hacia abajo: el ajuste averigua cómo estaba la hoja. La marca que está escribiendo aparece rodeada con un círculo en la imagen. Deje una fila vacía si una marca no se puede leer; el ajuste detecta y señala una marca mal medida. Con un escáner, importe un escaneo en su lugar: las marcas se encuentran y numeran automáticamente.</translation>
+    </message>
+    <message>
+        <source>Mark</source>
+        <translation>Marca</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>x (mm)</source>
+        <translation>x (mm)</translation>
+    </message>
+    <message>
+        <source>y (mm)</source>
+        <translation>y (mm)</translation>
+    </message>
+    <message>
+        <source>Simulation: measure the simulated sheet</source>
+        <translation>Simulación: medir la hoja simulada</translation>
+    </message>
+    <message>
+        <source>Fills the table with where the simulated imperfect machine put each mark, plus ruler noise. For trying the wizard without hardware.</source>
+        <translation>Rellena la tabla con dónde puso cada marca la máquina imperfecta simulada, más ruido de regla. Para probar el asistente sin hardware.</translation>
+    </message>
+    <message>
+        <source>noise ±</source>
+        <translation>ruido ±</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Import a scan...</source>
+        <translation>Importar un escaneo...</translation>
+    </message>
+    <message>
+        <source>A scan or photo taken straight from above (PNG or JPEG): the marks are found and numbered by themselves.</source>
+        <translation>Un escaneo o foto tomada justo desde arriba (PNG o JPEG): las marcas se encuentran y numeran automáticamente.</translation>
+    </message>
+    <message>
+        <source> dpi</source>
+        <translation> dpi</translation>
+    </message>
+    <message>
+        <source>The scanner's resolution: the scan's size in mm comes from it.</source>
+        <translation>La resolución del escáner: de ella sale el tamaño del escaneo en mm.</translation>
+    </message>
+    <message>
+        <source>Load MEASURED.csv...</source>
+        <translation>Cargar MEASURED.csv...</translation>
+    </message>
+    <message>
+        <source>Save MEASURED.csv...</source>
+        <translation>Guardar MEASURED.csv...</translation>
+    </message>
+    <message>
+        <source>Import a scan of the sheet</source>
+        <translation>Importar un escaneo de la hoja</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.tif *.tiff *.bmp)</source>
+        <translation>Imágenes (*.png *.jpg *.jpeg *.tif *.tiff *.bmp)</translation>
+    </message>
+    <message>
+        <source>Load MEASURED.csv</source>
+        <translation>Cargar MEASURED.csv</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Save MEASURED.csv</source>
+        <translation>Guardar MEASURED.csv</translation>
+    </message>
+    <message>
+        <source>fit</source>
+        <translation>ajuste</translation>
+    </message>
+    <message>
+        <source>backlash %1</source>
+        <translation>holgura %1</translation>
+    </message>
+    <message>
+        <source>Filled from the simulated sheet (simulation, not a measurement).</source>
+        <translation>Rellenado a partir de la hoja simulada (simulación, no una medición).</translation>
+    </message>
+    <message>
+        <source>Mark %1: %2 is empty. Type both x and y, or leave both empty.</source>
+        <translation>Marca %1: %2 está vacío. Escriba x e y, o deje ambos vacíos.</translation>
+    </message>
+    <message>
+        <source>Mark %1, %2: '%3' is not a number.</source>
+        <translation>Marca %1, %2: '%3' no es un número.</translation>
+    </message>
+    <message>
+        <source>Only %1 marks for the fit are measured; measure at least %2 (the fit finds 5 lengths, 2 motor zeros and how the sheet lay).</source>
+        <translation>Solo hay %1 marcas medidas para el ajuste; mida al menos %2 (el ajuste busca 5 longitudes, 2 ceros de motor y cómo estaba la hoja).</translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2</source>
+        <translation>No se puede leer %1: %2</translation>
+    </message>
+    <message>
+        <source>Found %1 of %2 marks in the scan (sheet turned %3°%4).%5</source>
+        <translation>Se encontraron %1 de %2 marcas en el escaneo (hoja girada %3°%4).%5</translation>
+    </message>
+    <message>
+        <source>, mirrored</source>
+        <translation>, reflejada</translation>
+    </message>
+    <message>
+        <source> Not found: %1; type them in by hand.</source>
+        <translation> No encontradas: %1; introdúzcalas a mano.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>No se puede escribir %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::PatternPage</name>
+    <message>
+        <source>1. Choose the pattern</source>
+        <translation>1. Elegir el patrón</translation>
+    </message>
+    <message>
+        <source>No machine is built exactly as drawn: a link cut half a millimetre long or a motor zero set by eye bends every drawing. The studio draws a &lt;b&gt;pattern&lt;/b&gt; of numbered marks, you measure where they really landed, and a fit finds the machine's true link lengths and motor zeros.&lt;br&gt;&lt;br&gt;&lt;b&gt;Calibration marks&lt;/b&gt;: numbered dots in rings spread over the whole working area, plus rows that show the slack (backlash) of each motor. Use these to calibrate.&lt;br&gt;&lt;b&gt;Accuracy pattern&lt;/b&gt; (Hoang): ten parallel lines, 40 mm long and 10 mm apart, to judge straightness and length before and after; nothing to measure.</source>
+        <translation>Ninguna máquina está construida exactamente como en el plano: un eslabón medio milímetro más largo o un cero de motor fijado a ojo deforma cada dibujo. El estudio dibuja un &lt;b&gt;patrón&lt;/b&gt; de marcas numeradas, usted mide dónde cayeron realmente y un ajuste encuentra las longitudes de eslabón y los ceros de motor reales de la máquina.&lt;br&gt;&lt;br&gt;&lt;b&gt;Marcas de calibración&lt;/b&gt;: puntos numerados en anillos repartidos por toda el área de trabajo, más filas que muestran el juego (holgura) de cada motor. Úselas para calibrar.&lt;br&gt;&lt;b&gt;Patrón de precisión&lt;/b&gt; (Hoang): diez líneas paralelas de 40 mm de largo y separadas 10 mm, para juzgar rectitud y longitud antes y después; no hay nada que medir.</translation>
+    </message>
+    <message>
+        <source>Calibration marks</source>
+        <translation>Marcas de calibración</translation>
+    </message>
+    <message>
+        <source>Accuracy pattern only (10 lines)</source>
+        <translation>Solo patrón de precisión (10 líneas)</translation>
+    </message>
+    <message>
+        <source> marks</source>
+        <translation> marcas</translation>
+    </message>
+    <message>
+        <source>More marks: a more certain fit, more to measure. 25 is a good start.</source>
+        <translation>Más marcas: un ajuste más fiable, más que medir. 25 es un buen comienzo.</translation>
+    </message>
+    <message>
+        <source>Marks for the fit:</source>
+        <translation>Marcas para el ajuste:</translation>
+    </message>
+    <message>
+        <source>&lt;span style='color:#b00000'&gt;%1&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#b00000'&gt;%1&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>For &lt;b&gt;%1&lt;/b&gt;: %2 marks for the fit and %3 marks in backlash rows%4.</source>
+        <translation>Para &lt;b&gt;%1&lt;/b&gt;: %2 marcas para el ajuste y %3 marcas en filas de holgura%4.</translation>
+    </message>
+    <message>
+        <source>, with the accuracy lines in the middle</source>
+        <translation>, con las líneas de precisión en el centro</translation>
+    </message>
+    <message>
+        <source>For &lt;b&gt;%1&lt;/b&gt;: ten lines of 40 mm in the middle of the working area.</source>
+        <translation>Para &lt;b&gt;%1&lt;/b&gt;: diez líneas de 40 mm en el centro del área de trabajo.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::PatternSender</name>
+    <message>
+        <source>The machine was disconnected while drawing the pattern.</source>
+        <translation>La máquina se desconectó mientras dibujaba el patrón.</translation>
+    </message>
+    <message>
+        <source>The pattern is already being drawn.</source>
+        <translation>El patrón ya se está dibujando.</translation>
+    </message>
+    <message>
+        <source>Connect a machine (or the simulated machine) in the Machine panel first, and let any running job finish.</source>
+        <translation>Conecte primero una máquina (o la máquina simulada) en el panel Máquina y deje que termine cualquier trabajo en curso.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>No se puede escribir %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::SheetLayer</name>
+    <message>
+        <source>Calibration pattern (plan)</source>
+        <translation>Patrón de calibración (plan)</translation>
+    </message>
+    <message>
+        <source>Drawn by the pen (simulated imperfect machine)</source>
+        <translation>Dibujado por la pluma (máquina imperfecta simulada)</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::VerifyPage</name>
+    <message>
+        <source>6. Draw the verification pattern</source>
+        <translation>6. Dibujar el patrón de verificación</translation>
+    </message>
+    <message>
+        <source>Draw the pattern once more, now planned with the calibrated profile, on a fresh sheet. Its marks should land where they were meant, and the accuracy lines should be straight and 40 mm long. Measure it again in this wizard if you want numbers.</source>
+        <translation>Dibuje el patrón una vez más, ahora planificado con el perfil calibrado, en una hoja nueva. Sus marcas deberían caer donde corresponde y las líneas de precisión deberían ser rectas y de 40 mm. Mídalo de nuevo en este asistente si quiere cifras.</translation>
+    </message>
+    <message>
+        <source>Draw on the connected machine</source>
+        <translation>Dibujar en la máquina conectada</translation>
+    </message>
+    <message>
+        <source>Export G-code...</source>
+        <translation>Exportar G-code...</translation>
+    </message>
+    <message>
+        <source>The verification pattern is drawn.</source>
+        <translation>El patrón de verificación está dibujado.</translation>
+    </message>
+    <message>
+        <source>Drawing the verification pattern...</source>
+        <translation>Dibujando el patrón de verificación...</translation>
+    </message>
+    <message>
+        <source>Export the verification G-code</source>
+        <translation>Exportar el G-code de verificación</translation>
+    </message>
+    <message>
+        <source>G-code (*.gcode *.nc)</source>
+        <translation>G-code (*.gcode *.nc)</translation>
+    </message>
+    <message>
+        <source>Wrote %1.</source>
+        <translation>Escrito %1.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1.</source>
+        <translation>No se puede escribir %1.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Simulation:&lt;/b&gt; the imperfect machine puts the marks %1 mm RMS (largest %2 mm) from where they are meant with the old profile, and &lt;b&gt;%3 mm RMS (largest %4 mm)&lt;/b&gt; with the profile now in use%5.</source>
+        <translation>&lt;b&gt;Simulación:&lt;/b&gt; la máquina imperfecta pone las marcas a %1 mm RMS (máx. %2 mm) de donde deberían con el perfil antiguo, y a &lt;b&gt;%3 mm RMS (máx. %4 mm)&lt;/b&gt; con el perfil en uso ahora%5.</translation>
+    </message>
+    <message>
+        <source> (the calibration is not applied)</source>
+        <translation> (la calibración no está aplicada)</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -2054,7 +3101,7 @@
         <translation>Formas rellenas: outline (predeterminado), hatch o none; con hatch: SPACING_MM y ANGLE_DEG tras dos puntos.</translation>
     </message>
     <message>
-        <source>User interface language: de, en, es or fr (default: View &gt; Language, else the system&apos;s).</source>
+        <source>User interface language: de, en, es or fr (default: View &gt; Language, else the system's).</source>
         <translation>Idioma de la interfaz: de, en, es o fr (predeterminado: Ver &gt; Idioma, si no, el del sistema).</translation>
     </message>
 </context>

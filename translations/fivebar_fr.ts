@@ -1,6 +1,13 @@
-<?xml version="1.0" encoding="utf-8"?>
+<?xml version='1.0' encoding='utf-8'?>
 <!DOCTYPE TS>
 <TS version="2.1" language="fr_FR">
+<context>
+    <name>CalibrationWizard</name>
+    <message>
+        <source>Hoang's accuracy pattern (10 lines of 40 mm) does not fit in this machine's safe area.</source>
+        <translation>Le motif de précision de Hoang (10 lignes de 40 mm) ne tient pas dans la zone sûre de cette machine.</translation>
+    </message>
+</context>
 <context>
     <name>DesignPainter</name>
     <message>
@@ -44,6 +51,113 @@
     </message>
 </context>
 <context>
+    <name>ImportWarning</name>
+    <message>
+        <source>attribute d: invalid path data at character %1 %2: drawn up to the error</source>
+        <translation>attribut d : données de tracé invalides au caractère %1 %2 : tracé jusqu'à l'erreur</translation>
+    </message>
+    <message>
+        <source>attribute d: invalid path data at character %1: drawn up to the error</source>
+        <translation>attribut d : données de tracé invalides au caractère %1 : tracé jusqu'à l'erreur</translation>
+    </message>
+    <message>
+        <source>transform-origin="%1" not understood: ignored</source>
+        <translation>transform-origin="%1" non compris : ignoré</translation>
+    </message>
+    <message>
+        <source>marker #%1 not found: not drawn</source>
+        <translation>marqueur #%1 introuvable : non tracé</translation>
+    </message>
+    <message>
+        <source>markers on %1 are not drawn (drawn on path, line, polyline and polygon)</source>
+        <translation>les marqueurs sur %1 ne sont pas tracés (tracés sur path, line, polyline et polygon)</translation>
+    </message>
+    <message>
+        <source>markers set in a style sheet for the selector '%1' are not drawn (only type, #id and .class selectors are applied)</source>
+        <translation>les marqueurs définis dans une feuille de style pour le sélecteur '%1' ne sont pas tracés (seuls les sélecteurs de type, #id et .class sont appliqués)</translation>
+    </message>
+    <message>
+        <source>external reference removed from %1</source>
+        <translation>référence externe supprimée de %1</translation>
+    </message>
+    <message>
+        <source>%1 element removed</source>
+        <translation>élément %1 supprimé</translation>
+    </message>
+    <message>
+        <source>long &lt;path&gt; split into %1 parts to avoid Qt SVG's 32,767-element truncation</source>
+        <translation>&lt;path&gt; long découpé en %1 parties pour éviter la troncature à 32 767 éléments de Qt SVG</translation>
+    </message>
+    <message>
+        <source>further element warnings not listed</source>
+        <translation>autres avertissements d'éléments non listés</translation>
+    </message>
+    <message>
+        <source>DOCTYPE with entity declarations removed (internal entities were expanded)</source>
+        <translation>DOCTYPE avec déclarations d'entités supprimé (les entités internes ont été développées)</translation>
+    </message>
+    <message>
+        <source>unresolved entity reference dropped</source>
+        <translation>référence d'entité non résolue abandonnée</translation>
+    </message>
+    <message>
+        <source>external style sheet (xml-stylesheet) ignored</source>
+        <translation>feuille de style externe (xml-stylesheet) ignorée</translation>
+    </message>
+    <message>
+        <source>event attribute (on...) removed</source>
+        <translation>attribut d'événement (on...) supprimé</translation>
+    </message>
+    <message>
+        <source>CSS @import removed</source>
+        <translation>@import CSS supprimé</translation>
+    </message>
+    <message>
+        <source>transform-origin in a style is not applied</source>
+        <translation>transform-origin dans un style n'est pas appliqué</translation>
+    </message>
+    <message>
+        <source>clip-path not applied: clipped shapes are drawn whole</source>
+        <translation>clip-path non appliqué : les formes découpées sont tracées entières</translation>
+    </message>
+    <message>
+        <source>mask not applied: masked shapes are drawn whole</source>
+        <translation>masque non appliqué : les formes masquées sont tracées entières</translation>
+    </message>
+    <message>
+        <source>per-glyph rotate on &lt;text&gt; is not applied: glyphs are drawn upright</source>
+        <translation>la rotation par glyphe sur &lt;text&gt; n'est pas appliquée : les glyphes sont tracés droits</translation>
+    </message>
+    <message>
+        <source>text on a path (&lt;textPath&gt;) is not drawn</source>
+        <translation>le texte sur un chemin (&lt;textPath&gt;) n'est pas tracé</translation>
+    </message>
+    <message>
+        <source>pattern fills are drawn as outlines, without the pattern</source>
+        <translation>les remplissages à motif sont tracés en contour, sans le motif</translation>
+    </message>
+    <message>
+        <source>more than 100000 marker instances: the rest are not drawn</source>
+        <translation>plus de 100000 instances de marqueurs : les suivantes ne sont pas tracées</translation>
+    </message>
+    <message>
+        <source>marker overflow clipping not applied: marker content is drawn whole</source>
+        <translation>découpage du débordement des marqueurs non appliqué : leur contenu est tracé entier</translation>
+    </message>
+    <message>
+        <source>no usable width/height/viewBox: page size taken from the drawing's extent</source>
+        <translation>pas de width/height/viewBox utilisable : taille de page prise de l'étendue du dessin</translation>
+    </message>
+    <message>
+        <source>line %1: %2 %3</source>
+        <translation>ligne %1 : %2 %3</translation>
+    </message>
+    <message>
+        <source>%1 (%2x, first at line %3)</source>
+        <translation>%1 (%2x, première à la ligne %3)</translation>
+    </message>
+</context>
+<context>
     <name>ImportWarningsPanel</name>
     <message>
         <source>%1 has %2 points after flattening, more than the budget of %3 (a runaway file?).</source>
@@ -55,14 +169,14 @@
     </message>
     <message>
         <source>Planning and plotting it may take very long. Import it anyway?</source>
-        <translation>Sa planification et son tracé peuvent être très longs. L&apos;importer quand même ?</translation>
+        <translation>Sa planification et son tracé peuvent être très longs. L'importer quand même ?</translation>
     </message>
 </context>
 <context>
     <name>JobPipeline</name>
     <message>
         <source>Nothing to plan: the drawing has no visible path.</source>
-        <translation>Rien à planifier : le dessin n&apos;a aucun tracé visible.</translation>
+        <translation>Rien à planifier : le dessin n'a aucun tracé visible.</translation>
     </message>
     <message>
         <source>Planning cancelled.</source>
@@ -98,6 +212,10 @@
         <source>Planning failed: %1</source>
         <translation>Échec de la planification : %1</translation>
     </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Impossible d'écrire %1 : %2</translation>
+    </message>
 </context>
 <context>
     <name>WorkspaceLegend</name>
@@ -119,7 +237,7 @@
     </message>
     <message>
         <source>reach boundary</source>
-        <translation>limite d&apos;atteinte</translation>
+        <translation>limite d'atteinte</translation>
     </message>
     <message>
         <source>singularity-free boundary</source>
@@ -150,19 +268,19 @@
     </message>
     <message>
         <source>%1 has changes that are not saved. Save them first?</source>
-        <translation>%1 contient des modifications non enregistrées. Les enregistrer d&apos;abord ?</translation>
+        <translation>%1 contient des modifications non enregistrées. Les enregistrer d'abord ?</translation>
     </message>
     <message>
         <source>Cannot save %1: %2</source>
-        <translation>Impossible d&apos;enregistrer %1 : %2</translation>
+        <translation>Impossible d'enregistrer %1 : %2</translation>
     </message>
     <message>
         <source>Nothing to save: open a drawing first.</source>
-        <translation>Rien à enregistrer : ouvrez d&apos;abord un dessin.</translation>
+        <translation>Rien à enregistrer : ouvrez d'abord un dessin.</translation>
     </message>
     <message>
         <source>Save failed</source>
-        <translation>Échec de l&apos;enregistrement</translation>
+        <translation>Échec de l'enregistrement</translation>
     </message>
     <message>
         <source>Saved %1</source>
@@ -182,11 +300,11 @@
     </message>
     <message>
         <source>There is no planned job to export (see the job preview).</source>
-        <translation>Il n&apos;y a aucune tâche planifiée à exporter (voir l&apos;aperçu de la tâche).</translation>
+        <translation>Il n'y a aucune tâche planifiée à exporter (voir l'aperçu de la tâche).</translation>
     </message>
     <message>
         <source>Cannot write %1: %2</source>
-        <translation>Impossible d&apos;écrire %1 : %2</translation>
+        <translation>Impossible d'écrire %1 : %2</translation>
     </message>
     <message>
         <source>Export G-code</source>
@@ -221,7 +339,7 @@
     </message>
     <message>
         <source>The new language applies when FiveBar Studio starts again.</source>
-        <translation>La nouvelle langue s&apos;applique au prochain démarrage de FiveBar Studio.</translation>
+        <translation>La nouvelle langue s'applique au prochain démarrage de FiveBar Studio.</translation>
     </message>
 </context>
 <context>
@@ -284,7 +402,7 @@
     </message>
     <message>
         <source>&amp;Fit drawing to workspace</source>
-        <translation>&amp;Ajuster le dessin à l&apos;espace de travail</translation>
+        <translation>&amp;Ajuster le dessin à l'espace de travail</translation>
     </message>
     <message>
         <source>Ctrl+F</source>
@@ -360,7 +478,7 @@
     </message>
     <message>
         <source>&lt;b&gt;FiveBar Studio %1&lt;/b&gt;&lt;p&gt;Plans and simulates drawings for five-bar linkage robots: workspace and singularity analysis, safe job planning, GRBL output.&lt;/p&gt;</source>
-        <translation>&lt;b&gt;FiveBar Studio %1&lt;/b&gt;&lt;p&gt;Planifie et simule des dessins pour robots à cinq barres : analyse de l&apos;espace de travail et des singularités, planification sûre des tâches, sortie GRBL.&lt;/p&gt;</translation>
+        <translation>&lt;b&gt;FiveBar Studio %1&lt;/b&gt;&lt;p&gt;Planifie et simule des dessins pour robots à cinq barres : analyse de l'espace de travail et des singularités, planification sûre des tâches, sortie GRBL.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>Main</source>
@@ -404,22 +522,38 @@
     </message>
     <message>
         <source>Import warnings</source>
-        <translation>Avertissements d&apos;import</translation>
+        <translation>Avertissements d'import</translation>
     </message>
 </context>
 <context>
     <name>fivebar::widgets::ConsolePanel</name>
     <message>
         <source>Lines sent to and received from the machine appear here.</source>
-        <translation>Les lignes envoyées à la machine et reçues d&apos;elle apparaissent ici.</translation>
-    </message>
-    <message>
-        <source>G-code or $ command, e.g. $$ or G0 X10 Y20</source>
-        <translation>G-code ou commande $, p. ex. $$ ou G0 X10 Y20</translation>
+        <translation>Les lignes envoyées à la machine et reçues d'elle apparaissent ici.</translation>
     </message>
     <message>
         <source>Send</source>
         <translation>Envoyer</translation>
+    </message>
+    <message>
+        <source>G-code or $ command, e.g. $$ or $I; moves are checked first</source>
+        <translation>G-code ou commande $, p. ex. $$ ou $I ; les déplacements sont d'abord vérifiés</translation>
+    </message>
+    <message>
+        <source>Send unchecked (expert)</source>
+        <translation>Envoyer sans vérification (expert)</translation>
+    </message>
+    <message>
+        <source>Send lines without the motion check. X and Y are motor angles in degrees: a wrong number swings an arm across the base.</source>
+        <translation>Envoyer les lignes sans vérification du mouvement. X et Y sont des angles moteur en degrés : une valeur erronée fait balayer un bras à travers la base.</translation>
+    </message>
+    <message>
+        <source>Unchecked console: lines go to the machine as typed, without the motion check. A wrong X or Y (motor angles in degrees) can drive the arms into each other or the base.</source>
+        <translation>Console non vérifiée : les lignes partent vers la machine telles que saisies, sans vérification du mouvement. Un X ou Y erroné (angles moteur en degrés) peut faire heurter les bras entre eux ou contre la base.</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>Non envoyé : %1</translation>
     </message>
 </context>
 <context>
@@ -660,7 +794,7 @@
         <translation>Non tracées</translation>
     </message>
     <message>
-        <source>Outline: the shape&apos;s edge (as AxiDraw and vpype draw fills). Hatch: parallel lines inside the shape. Not drawn: fill-only shapes are left out.</source>
+        <source>Outline: the shape's edge (as AxiDraw and vpype draw fills). Hatch: parallel lines inside the shape. Not drawn: fill-only shapes are left out.</source>
         <translation>Contour : le bord de la forme (comme AxiDraw et vpype tracent les remplissages). Hachures : des lignes parallèles dans la forme. Non tracées : les formes seulement remplies sont omises.</translation>
     </message>
     <message>
@@ -700,15 +834,15 @@
     <name>fivebar::widgets::GoToTool</name>
     <message>
         <source>Connect the machine first: its position is not known.</source>
-        <translation>Connectez d&apos;abord la machine : sa position est inconnue.</translation>
+        <translation>Connectez d'abord la machine : sa position est inconnue.</translation>
     </message>
     <message>
-        <source>Go to %1, %2 mm? The dashed path is the pen&apos;s travel (%3 checked moves).</source>
+        <source>Go to %1, %2 mm? The dashed path is the pen's travel (%3 checked moves).</source>
         <translation>Aller à %1, %2 mm ? Le tracé en pointillés est le trajet du stylo (%3 mouvements vérifiés).</translation>
     </message>
     <message>
         <source>Cannot go there: %1</source>
-        <translation>Impossible d&apos;y aller : %1</translation>
+        <translation>Impossible d'y aller : %1</translation>
     </message>
 </context>
 <context>
@@ -735,11 +869,11 @@
     </message>
     <message>
         <source>%1 could not be imported.</source>
-        <translation>%1 n&apos;a pas pu être importé.</translation>
+        <translation>%1 n'a pas pu être importé.</translation>
     </message>
     <message>
         <source>Import failed</source>
-        <translation>Échec de l&apos;import</translation>
+        <translation>Échec de l'import</translation>
     </message>
     <message>
         <source>%1 contains nothing to draw.</source>
@@ -753,16 +887,28 @@
         <source>Drawings and projects (*.svg *.fivebar);;SVG drawings (*.svg);;FiveBar projects (*.fivebar);;All files (*)</source>
         <translation>Dessins et projets (*.svg *.fivebar);;Dessins SVG (*.svg);;Projets FiveBar (*.fivebar);;Tous les fichiers (*)</translation>
     </message>
+    <message>
+        <source>Very large drawing</source>
+        <translation>Dessin très volumineux</translation>
+    </message>
+    <message>
+        <source>%1 has more than %2 points after flattening (a runaway file?). Reading it was stopped there.
+
+Planning and plotting it may take very long. Import it whole anyway?</source>
+        <translation>%1 compte plus de %2 points après aplatissement (fichier aberrant ?). La lecture s'est arrêtée là.
+
+La planification et le traçage peuvent être très longs. L'importer quand même en entier ?</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::ImportWarningsPanel</name>
     <message>
         <source>No drawing imported yet.</source>
-        <translation>Aucun dessin importé pour l&apos;instant.</translation>
+        <translation>Aucun dessin importé pour l'instant.</translation>
     </message>
     <message>
         <source>What the importer dropped, approximated or could not draw. docs/svg-import.md lists what is supported.</source>
-        <translation>Ce que l&apos;import a omis, approché ou n&apos;a pas pu tracer. docs/svg-import.md liste ce qui est pris en charge.</translation>
+        <translation>Ce que l'import a omis, approché ou n'a pas pu tracer. docs/svg-import.md liste ce qui est pris en charge.</translation>
     </message>
     <message>
         <source>%1 imported without warnings.</source>
@@ -770,11 +916,11 @@
     </message>
     <message>
         <source>1 warning while importing %1: part of the drawing may differ from what a browser shows.</source>
-        <translation>1 avertissement à l&apos;import de %1 : une partie du dessin peut différer de ce qu&apos;affiche un navigateur.</translation>
+        <translation>1 avertissement à l'import de %1 : une partie du dessin peut différer de ce qu'affiche un navigateur.</translation>
     </message>
     <message>
         <source>%1 warnings while importing %2: parts of the drawing may differ from what a browser shows.</source>
-        <translation>%1 avertissements à l&apos;import de %2 : des parties du dessin peuvent différer de ce qu&apos;affiche un navigateur.</translation>
+        <translation>%1 avertissements à l'import de %2 : des parties du dessin peuvent différer de ce qu'affiche un navigateur.</translation>
     </message>
 </context>
 <context>
@@ -788,7 +934,7 @@
     <name>fivebar::widgets::JogController</name>
     <message>
         <source>Jog refused: the machine is not connected, not idle, or a job is running.</source>
-        <translation>Déplacement refusé : la machine n&apos;est pas connectée, pas au repos, ou une tâche est en cours.</translation>
+        <translation>Déplacement refusé : la machine n'est pas connectée, pas au repos, ou une tâche est en cours.</translation>
     </message>
     <message>
         <source>Jog stopped at the last safe point: %1</source>
@@ -815,11 +961,11 @@
     </message>
     <message>
         <source>Turn motor %1 clockwise by one step</source>
-        <translation>Tourner le moteur %1 d&apos;un pas dans le sens horaire</translation>
+        <translation>Tourner le moteur %1 d'un pas dans le sens horaire</translation>
     </message>
     <message>
         <source>Turn motor %1 counter-clockwise by one step</source>
-        <translation>Tourner le moteur %1 d&apos;un pas dans le sens antihoraire</translation>
+        <translation>Tourner le moteur %1 d'un pas dans le sens antihoraire</translation>
     </message>
     <message>
         <source>Step</source>
@@ -871,15 +1017,23 @@
     </message>
     <message>
         <source>Run the homing cycle</source>
-        <translation>Lancer la prise d&apos;origine</translation>
+        <translation>Lancer la prise d'origine</translation>
     </message>
     <message>
-        <source>Declare that the machine now stands at the profile&apos;s home pose</source>
-        <translation>Déclarer que la machine est maintenant dans la pose d&apos;origine du profil</translation>
+        <source>Declare that the machine now stands at the profile's home pose</source>
+        <translation>Déclarer que la machine est maintenant dans la pose d'origine du profil</translation>
     </message>
     <message>
         <source>Speed of XY jogs</source>
         <translation>Vitesse des déplacements XY</translation>
+    </message>
+    <message>
+        <source>Go to home pose</source>
+        <translation>Aller à la position d'origine</translation>
+    </message>
+    <message>
+        <source>Move the pen up to the profile's home pose by a checked move (the reference must be set)</source>
+        <translation>Amener le stylo relevé à la position d'origine du profil par un déplacement vérifié (la référence doit être définie)</translation>
     </message>
 </context>
 <context>
@@ -894,7 +1048,7 @@
     </message>
     <message>
         <source>Tool settings of the selected layer</source>
-        <translation>Réglages d&apos;outil du calque sélectionné</translation>
+        <translation>Réglages d'outil du calque sélectionné</translation>
     </message>
     <message>
         <source> mm/s</source>
@@ -930,6 +1084,50 @@
             <numerusform>%n points</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Fill of the selected layer</source>
+        <translation>Remplissage du calque sélectionné</translation>
+    </message>
+    <message>
+        <source>Outline</source>
+        <translation>Contour</translation>
+    </message>
+    <message>
+        <source>Hatch</source>
+        <translation>Hachures</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Aucun</translation>
+    </message>
+    <message>
+        <source>How the layer's filled shapes are drawn: their outline, parallel hatch lines inside them, or not at all (stroked shapes keep their stroke).</source>
+        <translation>Comment les formes remplies du calque sont tracées : leur contour, des hachures parallèles à l'intérieur, ou pas du tout (les formes à trait gardent leur trait).</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>Crosshatch</source>
+        <translation>Hachures croisées</translation>
+    </message>
+    <message>
+        <source>Fill:</source>
+        <translation>Remplissage :</translation>
+    </message>
+    <message>
+        <source>Hatch spacing:</source>
+        <translation>Espacement des hachures :</translation>
+    </message>
+    <message>
+        <source>Hatch angle:</source>
+        <translation>Angle des hachures :</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachineBanner</name>
@@ -947,7 +1145,7 @@
     </message>
     <message>
         <source>Leave the alarm state without homing. Only when you know the machine stands where the studio shows it.</source>
-        <translation>Quitter l&apos;état d&apos;alarme sans prise d&apos;origine. Seulement si vous savez que la machine est là où le studio l&apos;affiche.</translation>
+        <translation>Quitter l'état d'alarme sans prise d'origine. Seulement si vous savez que la machine est là où le studio l'affiche.</translation>
     </message>
     <message>
         <source>Dismiss</source>
@@ -955,7 +1153,7 @@
     </message>
     <message>
         <source>Alarm %1: the machine stopped</source>
-        <translation>Alarme %1 : la machine s&apos;est arrêtée</translation>
+        <translation>Alarme %1 : la machine s'est arrêtée</translation>
     </message>
     <message>
         <source>Alarm: the machine is locked</source>
@@ -967,7 +1165,7 @@
     </message>
     <message>
         <source>The board waits for a reset first: press Reset, then Unlock.</source>
-        <translation>La carte attend d&apos;abord une réinitialisation : appuyez sur Réinitialiser, puis Déverrouiller.</translation>
+        <translation>La carte attend d'abord une réinitialisation : appuyez sur Réinitialiser, puis Déverrouiller.</translation>
     </message>
     <message>
         <source>Home ($H)</source>
@@ -979,11 +1177,38 @@
     </message>
     <message>
         <source>Run the homing cycle; the machine moves to its switches.</source>
-        <translation>Lancer la prise d&apos;origine ; la machine va jusqu&apos;à ses capteurs.</translation>
+        <translation>Lancer la prise d'origine ; la machine va jusqu'à ses capteurs.</translation>
     </message>
     <message>
-        <source>Declare that the machine now stands at the profile&apos;s home pose (G10 L20).</source>
-        <translation>Déclarer que la machine est maintenant dans la pose d&apos;origine du profil (G10 L20).</translation>
+        <source>Declare that the machine now stands at the profile's home pose (G10 L20).</source>
+        <translation>Déclarer que la machine est maintenant dans la pose d'origine du profil (G10 L20).</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachineDialogs</name>
+    <message>
+        <source>Set the reference pose?
+
+The studio will take the machine's current position to be the home pose of "%1": motor 1 at %2°, motor 2 at %3°. Every later move is computed from it.
+
+Confirm only if the arms stand exactly in that pose now. If they stand elsewhere, moves will land in the wrong place and can drive the arms into each other or into the base.</source>
+        <translation>Définir la pose de référence ?
+
+Le studio va considérer la position actuelle de la machine comme la position d'origine de « %1 » : moteur 1 à %2°, moteur 2 à %3°. Tous les déplacements suivants sont calculés à partir d'elle.
+
+Confirmez seulement si les bras sont exactement dans cette pose. S'ils sont ailleurs, les déplacements arriveront au mauvais endroit et peuvent faire heurter les bras entre eux ou contre la base.</translation>
+    </message>
+    <message>
+        <source>Set reference pose</source>
+        <translation>Définir la pose de référence</translation>
+    </message>
+    <message>
+        <source>The arms stand in the home pose: set it</source>
+        <translation>Les bras sont en position d'origine : la définir</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
     </message>
 </context>
 <context>
@@ -1018,7 +1243,7 @@
     </message>
     <message>
         <source>Homing</source>
-        <translation>Prise d&apos;origine</translation>
+        <translation>Prise d'origine</translation>
     </message>
     <message>
         <source>Sleeping</source>
@@ -1104,12 +1329,44 @@
         <source>planner %1 of %2 blocks free, RX %3 of %4 bytes free</source>
         <translation>planificateur : %1 blocs libres sur %2, RX : %3 octets libres sur %4</translation>
     </message>
+    <message>
+        <source>Pen</source>
+        <translation>Stylo</translation>
+    </message>
+    <message>
+        <source>Review and write...</source>
+        <translation>Vérifier et écrire...</translation>
+    </message>
+    <message>
+        <source>Compare the board's settings with the profile and write the differences (a backup is saved first)</source>
+        <translation>Comparer les réglages de la carte avec le profil et écrire les différences (une sauvegarde est faite d'abord)</translation>
+    </message>
+    <message>
+        <source>No answer from the machine</source>
+        <translation>Aucune réponse de la machine</translation>
+    </message>
+    <message>
+        <source>Connecting to %1: waiting for the board to answer...</source>
+        <translation>Connexion à %1 : attente de la réponse de la carte...</translation>
+    </message>
+    <message>
+        <source>up</source>
+        <translation>levé</translation>
+    </message>
+    <message>
+        <source>down (drawing)</source>
+        <translation>baissé (tracé)</translation>
+    </message>
+    <message>
+        <source>not known yet</source>
+        <translation>pas encore connu</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachineSession</name>
     <message>
         <source>Cannot open %1.</source>
-        <translation>Impossible d&apos;ouvrir %1.</translation>
+        <translation>Impossible d'ouvrir %1.</translation>
     </message>
     <message>
         <source>Connected to %1.</source>
@@ -1121,7 +1378,7 @@
     </message>
     <message>
         <source>Not connected: %1 was not sent.</source>
-        <translation>Non connecté : %1 n&apos;a pas été envoyé.</translation>
+        <translation>Non connecté : %1 n'a pas été envoyé.</translation>
     </message>
     <message>
         <source>Not sent (%1): %2</source>
@@ -1129,11 +1386,11 @@
     </message>
     <message>
         <source>A job is running: %1 was not sent.</source>
-        <translation>Une tâche est en cours : %1 n&apos;a pas été envoyé.</translation>
+        <translation>Une tâche est en cours : %1 n'a pas été envoyé.</translation>
     </message>
     <message>
         <source>Jog refused: the machine is not idle, not connected or a job is running.</source>
-        <translation>Déplacement refusé : la machine n&apos;est pas au repos, pas connectée, ou une tâche est en cours.</translation>
+        <translation>Déplacement refusé : la machine n'est pas au repos, pas connectée, ou une tâche est en cours.</translation>
     </message>
     <message>
         <source>%1 (jog in %2 checked moves)</source>
@@ -1145,7 +1402,7 @@
     </message>
     <message>
         <source>[feed hold]</source>
-        <translation>[pause d&apos;avance]</translation>
+        <translation>[pause d'avance]</translation>
     </message>
     <message>
         <source>[cycle start]</source>
@@ -1157,7 +1414,7 @@
     </message>
     <message>
         <source>The machine is locked (alarm state). Unlock it with $X or home it with $H once you know where it stands.</source>
-        <translation>La machine est verrouillée (état d&apos;alarme). Déverrouillez-la avec $X ou faites sa prise d&apos;origine avec $H une fois que vous savez où elle se trouve.</translation>
+        <translation>La machine est verrouillée (état d'alarme). Déverrouillez-la avec $X ou faites sa prise d'origine avec $H une fois que vous savez où elle se trouve.</translation>
     </message>
     <message>
         <source>The board reset (Grbl %1).</source>
@@ -1171,6 +1428,62 @@
         <source>the simulated machine</source>
         <translation>la machine simulée</translation>
     </message>
+    <message>
+        <source>set the reference pose (Machine panel) or home the machine</source>
+        <translation>définissez la pose de référence (panneau Machine) ou lancez le homing de la machine</translation>
+    </message>
+    <message>
+        <source>%1 at %2 baud</source>
+        <translation>%1 à %2 bauds</translation>
+    </message>
+    <message>
+        <source>Opened %1; waiting for the board to answer...</source>
+        <translation>%1 ouvert ; attente de la réponse de la carte...</translation>
+    </message>
+    <message>
+        <source>No GRBL board answered on %1 within %2 s. Check that the port is the machine's, that the baud rate matches its firmware (GRBL 1.1: usually 115200) and that it is powered.</source>
+        <translation>Aucune carte GRBL n'a répondu sur %1 en %2 s. Vérifiez que le port est celui de la machine, que le débit correspond à son firmware (GRBL 1.1 : souvent 115200) et qu'elle est alimentée.</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>Non envoyé : %1</translation>
+    </message>
+    <message>
+        <source>Unchecked: %1</source>
+        <translation>Non vérifié : %1</translation>
+    </message>
+    <message>
+        <source>The machine's position is not known yet (no status report with its work position): wait a moment, or set the reference pose.</source>
+        <translation>La position de la machine n'est pas encore connue (aucun rapport d'état avec sa position de travail) : patientez un instant ou définissez la pose de référence.</translation>
+    </message>
+    <message>
+        <source>The machine is still moving or busy: send a move when it stands still (Idle), so it can be checked from where the machine really is.</source>
+        <translation>La machine bouge encore ou est occupée : envoyez un déplacement quand elle est à l'arrêt (Idle), pour qu'il soit vérifié depuis sa position réelle.</translation>
+    </message>
+    <message>
+        <source>Console lines are sent UNCHECKED from now on.</source>
+        <translation>Les lignes de la console sont désormais envoyées SANS VÉRIFICATION.</translation>
+    </message>
+    <message>
+        <source>Console lines are checked again.</source>
+        <translation>Les lignes de la console sont de nouveau vérifiées.</translation>
+    </message>
+    <message>
+        <source>The machine must be connected, idle and its position known.</source>
+        <translation>La machine doit être connectée, au repos et sa position connue.</translation>
+    </message>
+    <message>
+        <source>The profile's home pose does not close the linkage.</source>
+        <translation>La position d'origine du profil ne ferme pas la chaîne articulée.</translation>
+    </message>
+    <message>
+        <source>No checked move to the home pose: %1</source>
+        <translation>Pas de déplacement vérifié vers la position d'origine : %1</translation>
+    </message>
+    <message>
+        <source>The move was not sent (see the console).</source>
+        <translation>Le déplacement n'a pas été envoyé (voir la console).</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachineSettingsDialog</name>
@@ -1179,8 +1492,8 @@
         <translation>Réglages de la machine</translation>
     </message>
     <message>
-        <source>The board&apos;s GRBL settings next to the values the machine profile needs. Writing saves a backup of the board&apos;s settings first.</source>
-        <translation>Les réglages GRBL de la carte à côté des valeurs dont le profil de machine a besoin. L&apos;écriture sauvegarde d&apos;abord les réglages de la carte.</translation>
+        <source>The board's GRBL settings next to the values the machine profile needs. Writing saves a backup of the board's settings first.</source>
+        <translation>Les réglages GRBL de la carte à côté des valeurs dont le profil de machine a besoin. L'écriture sauvegarde d'abord les réglages de la carte.</translation>
     </message>
     <message>
         <source>Setting</source>
@@ -1216,7 +1529,7 @@
     </message>
     <message>
         <source>Connect the machine first.</source>
-        <translation>Connectez d&apos;abord la machine.</translation>
+        <translation>Connectez d'abord la machine.</translation>
     </message>
     <message>
         <source>A job is running.</source>
@@ -1231,12 +1544,12 @@
         <translation>La machine doit être au repos (ou en alarme) pour changer les réglages.</translation>
     </message>
     <message>
-        <source>Reading the board&apos;s settings...</source>
+        <source>Reading the board's settings...</source>
         <translation>Lecture des réglages de la carte…</translation>
     </message>
     <message>
-        <source>Nothing to write: read the board&apos;s settings first.</source>
-        <translation>Rien à écrire : lisez d&apos;abord les réglages de la carte.</translation>
+        <source>Nothing to write: read the board's settings first.</source>
+        <translation>Rien à écrire : lisez d'abord les réglages de la carte.</translation>
     </message>
     <message>
         <source>Write settings</source>
@@ -1245,12 +1558,12 @@
     <message numerus="yes">
         <source>Write %n setting(s) to the board? Its current settings are saved to a backup file first.</source>
         <translation>
-            <numerusform>Écrire %n réglage sur la carte ? Ses réglages actuels sont d&apos;abord sauvegardés dans un fichier.</numerusform>
-            <numerusform>Écrire %n réglages sur la carte ? Ses réglages actuels sont d&apos;abord sauvegardés dans un fichier.</numerusform>
+            <numerusform>Écrire %n réglage sur la carte ? Ses réglages actuels sont d'abord sauvegardés dans un fichier.</numerusform>
+            <numerusform>Écrire %n réglages sur la carte ? Ses réglages actuels sont d'abord sauvegardés dans un fichier.</numerusform>
         </translation>
     </message>
     <message>
-        <source>The board&apos;s settings match the profile.</source>
+        <source>The board's settings match the profile.</source>
         <translation>Les réglages de la carte correspondent au profil.</translation>
     </message>
     <message numerus="yes">
@@ -1306,6 +1619,26 @@
         <source>Machine &amp;settings...</source>
         <translation>&amp;Réglages de la machine…</translation>
     </message>
+    <message>
+        <source>A job is running</source>
+        <translation>Une tâche est en cours</translation>
+    </message>
+    <message>
+        <source>The machine is drawing "%1". Quitting the studio would leave it without its stream of lines.
+
+Hold, stop and quit: the machine stops cleanly and the progress is saved, so you can resume later.</source>
+        <translation>La machine trace « %1 ». Quitter le studio la priverait de son flux de lignes.
+
+Pause, arrêter et quitter : la machine s'arrête proprement et la progression est enregistrée, vous pourrez reprendre plus tard.</translation>
+    </message>
+    <message>
+        <source>Hold, stop and quit</source>
+        <translation>Pause, arrêter et quitter</translation>
+    </message>
+    <message>
+        <source>Keep running</source>
+        <translation>Continuer</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::ModePanel</name>
@@ -1351,7 +1684,7 @@
     </message>
     <message>
         <source>Workspace legend</source>
-        <translation>Légende de l&apos;espace de travail</translation>
+        <translation>Légende de l'espace de travail</translation>
     </message>
     <message>
         <source>None</source>
@@ -1433,7 +1766,7 @@
     </message>
     <message>
         <source>Fit to workspace</source>
-        <translation>Ajuster à l&apos;espace</translation>
+        <translation>Ajuster à l'espace</translation>
     </message>
     <message>
         <source>Keep aspect ratio</source>
@@ -1457,7 +1790,7 @@
     </message>
     <message>
         <source>Scale the drawing to fill the largest singularity-free rectangle</source>
-        <translation>Mettre le dessin à l&apos;échelle du plus grand rectangle sans singularité</translation>
+        <translation>Mettre le dessin à l'échelle du plus grand rectangle sans singularité</translation>
     </message>
     <message>
         <source>No singularity-free area to fit the drawing into.</source>
@@ -1591,7 +1924,7 @@
     </message>
     <message>
         <source>Connection and home pose</source>
-        <translation>Connexion et pose d&apos;origine</translation>
+        <translation>Connexion et pose d'origine</translation>
     </message>
     <message>
         <source> mm</source>
@@ -1735,7 +2068,7 @@
     </message>
     <message>
         <source>Assembly mode</source>
-        <translation>Mode d&apos;assemblage</translation>
+        <translation>Mode d'assemblage</translation>
     </message>
     <message>
         <source>Drawing speed</source>
@@ -1763,7 +2096,7 @@
     </message>
     <message>
         <source>The machine has homing switches ($H)</source>
-        <translation>La machine a des capteurs d&apos;origine ($H)</translation>
+        <translation>La machine a des capteurs d'origine ($H)</translation>
     </message>
     <message>
         <source>Home θ1</source>
@@ -1775,7 +2108,7 @@
     </message>
     <message>
         <source>The profile is not applied until these problems are fixed.</source>
-        <translation>Le profil n&apos;est pas appliqué tant que ces problèmes ne sont pas corrigés.</translation>
+        <translation>Le profil n'est pas appliqué tant que ces problèmes ne sont pas corrigés.</translation>
     </message>
     <message>
         <source>%1 cannot be used:
@@ -1784,8 +2117,8 @@
 %2</translation>
     </message>
     <message>
-        <source>Fix the profile&apos;s problems before exporting it.</source>
-        <translation>Corrigez les problèmes du profil avant de l&apos;exporter.</translation>
+        <source>Fix the profile's problems before exporting it.</source>
+        <translation>Corrigez les problèmes du profil avant de l'exporter.</translation>
     </message>
     <message>
         <source>Import machine profile</source>
@@ -1797,7 +2130,7 @@
     </message>
     <message>
         <source>Import failed</source>
-        <translation>Échec de l&apos;import</translation>
+        <translation>Échec de l'import</translation>
     </message>
     <message>
         <source>Export machine profile</source>
@@ -1805,18 +2138,26 @@
     </message>
     <message>
         <source>Export failed</source>
-        <translation>Échec de l&apos;export</translation>
+        <translation>Échec de l'export</translation>
+    </message>
+    <message>
+        <source> steps/°</source>
+        <translation> pas/°</translation>
+    </message>
+    <message>
+        <source> baud</source>
+        <translation> bauds</translation>
     </message>
 </context>
 <context>
     <name>fivebar::widgets::RunController</name>
     <message>
         <source>The connection was closed during the run. The progress is saved beside the job: reconnect and resume.</source>
-        <translation>La connexion a été fermée pendant l&apos;exécution. La progression est enregistrée à côté de la tâche : reconnectez et reprenez.</translation>
+        <translation>La connexion a été fermée pendant l'exécution. La progression est enregistrée à côté de la tâche : reconnectez et reprenez.</translation>
     </message>
     <message>
         <source>Cannot start: connect the machine, wait until it is idle, and let the job plan first.</source>
-        <translation>Impossible de démarrer : connectez la machine, attendez qu&apos;elle soit au repos et laissez d&apos;abord la tâche se planifier.</translation>
+        <translation>Impossible de démarrer : connectez la machine, attendez qu'elle soit au repos et laissez d'abord la tâche se planifier.</translation>
     </message>
     <message>
         <source>Cannot create the job folder %1.</source>
@@ -1827,12 +2168,36 @@
         <translation>Rien à reprendre : aucune progression enregistrée à côté de %1.</translation>
     </message>
     <message>
-        <source>Resuming %1…</source>
-        <translation>Reprise de %1…</translation>
+        <source>line %1 of %2</source>
+        <translation>ligne %1 sur %2</translation>
     </message>
     <message>
-        <source>Running %1…</source>
-        <translation>Exécution de %1…</translation>
+        <source>The run of "%1" was interrupted at %2: %3</source>
+        <translation>L'exécution de « %1 » a été interrompue à %2 : %3</translation>
+    </message>
+    <message>
+        <source>press Resume</source>
+        <translation>appuyez sur Reprendre</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Reprendre</translation>
+    </message>
+    <message>
+        <source>The machine raised an alarm and the job stopped (the banner in the Machine panel says why). The progress is saved: clear the alarm (Reset, Unlock), check the pen stands where the studio shows it, then press Resume.</source>
+        <translation>La machine a déclenché une alarme et la tâche s'est arrêtée (le bandeau du panneau Machine indique pourquoi). La progression est enregistrée : acquittez l'alarme (Reset, Unlock), vérifiez que le stylo est bien là où le studio l'affiche, puis appuyez sur Reprendre.</translation>
+    </message>
+    <message>
+        <source>Resuming "%1"…</source>
+        <translation>Reprise de « %1 »…</translation>
+    </message>
+    <message>
+        <source>Running "%1"…</source>
+        <translation>Exécution de « %1 »…</translation>
+    </message>
+    <message>
+        <source>"%1" is drawn.</source>
+        <translation>« %1 » est tracé.</translation>
     </message>
 </context>
 <context>
@@ -1855,7 +2220,7 @@
     </message>
     <message>
         <source>Paused by a problem</source>
-        <translation>En pause à cause d&apos;un problème</translation>
+        <translation>En pause à cause d'un problème</translation>
     </message>
     <message>
         <source>Stopping…</source>
@@ -1887,7 +2252,7 @@
     </message>
     <message>
         <source>Write the planned job as G-code and stream it to the machine</source>
-        <translation>Écrire la tâche planifiée en G-code et l&apos;envoyer à la machine</translation>
+        <translation>Écrire la tâche planifiée en G-code et l'envoyer à la machine</translation>
     </message>
     <message>
         <source>Hold</source>
@@ -1895,7 +2260,7 @@
     </message>
     <message>
         <source>Feed hold: the machine decelerates and waits</source>
-        <translation>Pause d&apos;avance : la machine ralentit et attend</translation>
+        <translation>Pause d'avance : la machine ralentit et attend</translation>
     </message>
     <message>
         <source>Continue</source>
@@ -1922,16 +2287,8 @@
         <translation>Reprendre la tâche interrompue à partir de son dernier point tracé, avec une approche sûre stylo levé</translation>
     </message>
     <message>
-        <source>An interrupted run was saved (line %1 of %2 done): %3</source>
-        <translation>Une exécution interrompue a été enregistrée (ligne %1 sur %2 faite) : %3</translation>
-    </message>
-    <message>
         <source>No job sent yet</source>
         <translation>Aucune tâche envoyée</translation>
-    </message>
-    <message>
-        <source>%1 of %2 lines executed</source>
-        <translation>%1 lignes exécutées sur %2</translation>
     </message>
     <message>
         <source>%1 left</source>
@@ -1941,12 +2298,148 @@
         <source>Long job</source>
         <translation>Tâche longue</translation>
     </message>
+    <message>
+        <source>Start from the beginning?</source>
+        <translation>Recommencer depuis le début ?</translation>
+    </message>
+    <message>
+        <source>%1
+
+Start draws "%2" from the beginning and discards this saved progress. Resume continues the interrupted run instead.</source>
+        <translation>%1
+
+Démarrer trace « %2 » depuis le début et abandonne cette progression enregistrée. Reprendre poursuit plutôt l'exécution interrompue.</translation>
+    </message>
+    <message>
+        <source>Discard and start over</source>
+        <translation>Abandonner et recommencer</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>Reading the board's settings to compare them with the profile: press Start again in a moment.</source>
+        <translation>Lecture des réglages de la carte pour les comparer au profil : appuyez de nouveau sur Démarrer dans un instant.</translation>
+    </message>
+    <message>
+        <source>The board's settings differ</source>
+        <translation>Les réglages de la carte diffèrent</translation>
+    </message>
+    <message>
+        <source>Write the profile's settings...</source>
+        <translation>Écrire les réglages du profil...</translation>
+    </message>
+    <message>
+        <source>Start anyway</source>
+        <translation>Démarrer quand même</translation>
+    </message>
+    <message>
+        <source>%1 % (%2)</source>
+        <translation>%1 % (%2)</translation>
+    </message>
+    <message>
+        <source>%1 left (on hold)</source>
+        <translation>%1 restant (en pause)</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::SettingsAdvice</name>
+    <message>
+        <source>soft limits are on, but this machine has no homing switches: the board measures its travel from where it was switched on, not from the reference pose, and stops the job with ALARM:2 when a move leaves that range.</source>
+        <translation>les limites logicielles sont actives, mais cette machine n'a pas de fins de course de homing : la carte mesure sa course depuis sa position à la mise sous tension, pas depuis la pose de référence, et arrête la tâche avec ALARM:2 quand un déplacement sort de cette plage.</translation>
+    </message>
+    <message>
+        <source>soft limits are off although the profile expects them.</source>
+        <translation>les limites logicielles sont désactivées alors que le profil les attend.</translation>
+    </message>
+    <message>
+        <source>hard limits are on: without limit switches wired, noise on the pins stops the machine with ALARM:1.</source>
+        <translation>les limites matérielles sont actives : sans fins de course câblés, du bruit sur les broches arrête la machine avec ALARM:1.</translation>
+    </message>
+    <message>
+        <source>hard limits are off although the profile expects them.</source>
+        <translation>les limites matérielles sont désactivées alors que le profil les attend.</translation>
+    </message>
+    <message>
+        <source>the homing cycle is on: the board starts locked and wants $H, which needs homing switches.</source>
+        <translation>le cycle de homing est actif : la carte démarre verrouillée et attend $H, qui nécessite des fins de course.</translation>
+    </message>
+    <message>
+        <source>the homing cycle is off although the profile has switches.</source>
+        <translation>le cycle de homing est désactivé alors que le profil a des fins de course.</translation>
+    </message>
+    <message>
+        <source>steps per degree differ: every motor angle would be wrong by the ratio, so the arms would leave the checked, safe poses.</source>
+        <translation>les pas par degré diffèrent : chaque angle moteur serait faux dans ce rapport, et les bras quitteraient les poses vérifiées et sûres.</translation>
+    </message>
+    <message>
+        <source>the board's maximum rate is lower: the job runs slower than planned and the time estimate is off.</source>
+        <translation>la vitesse maximale de la carte est plus basse : la tâche est plus lente que prévu et l'estimation du temps est fausse.</translation>
+    </message>
+    <message>
+        <source>the board's maximum rate is higher than the profile allows: the motors may lose steps.</source>
+        <translation>la vitesse maximale de la carte dépasse ce que le profil permet : les moteurs peuvent perdre des pas.</translation>
+    </message>
+    <message>
+        <source>the board accelerates more gently: the job takes longer than planned.</source>
+        <translation>la carte accélère plus doucement : la tâche dure plus longtemps que prévu.</translation>
+    </message>
+    <message>
+        <source>the board accelerates harder than the profile allows: the motors may lose steps.</source>
+        <translation>la carte accélère plus fort que ce que le profil permet : les moteurs peuvent perdre des pas.</translation>
+    </message>
+    <message>
+        <source>the motor's travel for soft limits differs: with soft limits on, a move beyond it stops the job with ALARM:2.</source>
+        <translation>la course du moteur pour les limites logicielles diffère : avec les limites logicielles actives, un déplacement au-delà arrête la tâche avec ALARM:2.</translation>
+    </message>
+    <message>
+        <source>the spindle (pen servo / laser) range differs: the pen may not lift or lower as planned.</source>
+        <translation>la plage de la broche (servo de stylo / laser) diffère : le stylo risque de ne pas se lever ou s'abaisser comme prévu.</translation>
+    </message>
+    <message>
+        <source>the junction deviation differs: corners run at other speeds than planned.</source>
+        <translation>la déviation de jonction diffère : les angles sont parcourus à d'autres vitesses que prévu.</translation>
+    </message>
+    <message>
+        <source>differs from what the profile expects.</source>
+        <translation>diffère de ce qu'attend le profil.</translation>
+    </message>
+    <message>
+        <source>not reported</source>
+        <translation>non signalé</translation>
+    </message>
+    <message>
+        <source>$%1 is %2 on the board, the profile wants %3: %4</source>
+        <translation>$%1 vaut %2 sur la carte, le profil attend %3 : %4</translation>
+    </message>
+    <message numerus="yes">
+        <source>The board's settings differ from the profile in %n place(s): %1.</source>
+        <translation>
+            <numerusform>Les réglages de la carte diffèrent du profil en %n endroit : %1.</numerusform><numerusform>Les réglages de la carte diffèrent du profil en %n endroits : %1.</numerusform></translation>
+    </message>
+    <message>
+        <source>A job would stop or move wrongly with them.</source>
+        <translation>Une tâche s'arrêterait ou se déplacerait mal avec eux.</translation>
+    </message>
+    <message>
+        <source>The board's GRBL settings differ from the machine profile, and the job would not run as planned:</source>
+        <translation>Les réglages GRBL de la carte diffèrent du profil machine, et la tâche ne se déroulerait pas comme prévu :</translation>
+    </message>
+    <message>
+        <source>The board's GRBL settings differ from the machine profile:</source>
+        <translation>Les réglages GRBL de la carte diffèrent du profil machine :</translation>
+    </message>
+    <message>
+        <source>Write the profile's settings to the board (its current ones are saved to a backup file first), or start anyway.</source>
+        <translation>Écrivez les réglages du profil sur la carte (les actuels sont d'abord sauvegardés dans un fichier), ou démarrez quand même.</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::SimulationPanel</name>
     <message>
         <source>Step back one move</source>
-        <translation>Reculer d&apos;un mouvement</translation>
+        <translation>Reculer d'un mouvement</translation>
     </message>
     <message>
         <source>Play / pause the simulation</source>
@@ -1954,7 +2447,7 @@
     </message>
     <message>
         <source>Step forward one move</source>
-        <translation>Avancer d&apos;un mouvement</translation>
+        <translation>Avancer d'un mouvement</translation>
     </message>
     <message>
         <source>Simulation speed</source>
@@ -2012,7 +2505,561 @@
     </message>
     <message>
         <source>Change layer tool settings</source>
-        <translation>Changer les réglages d&apos;outil du calque</translation>
+        <translation>Changer les réglages d'outil du calque</translation>
+    </message>
+    <message>
+        <source>Change layer fill</source>
+        <translation>Modifier le remplissage du calque</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::ApplyPage</name>
+    <message>
+        <source>5. Apply the calibration to the profile</source>
+        <translation>5. Appliquer l'étalonnage au profil</translation>
+    </message>
+    <message>
+        <source>Applying writes the fitted link lengths into the profile and keeps the motor zeros and the backlash in its calibration section. From then on every plan, jog and check uses them. &lt;b&gt;Edit &amp;gt; Undo&lt;/b&gt; takes it back; the profile is saved with the project, and you can also save it as a profile file for other projects.</source>
+        <translation>L'application écrit les longueurs de bras ajustées dans le profil et conserve les zéros moteur et le jeu dans sa section d'étalonnage. Dès lors, chaque plan, déplacement manuel et vérification les utilise. &lt;b&gt;Édition &amp;gt; Annuler&lt;/b&gt; revient en arrière ; le profil est enregistré avec le projet, et vous pouvez aussi l'enregistrer comme fichier de profil pour d'autres projets.</translation>
+    </message>
+    <message>
+        <source>Apply to the profile</source>
+        <translation>Appliquer au profil</translation>
+    </message>
+    <message>
+        <source>Save profile as...</source>
+        <translation>Enregistrer le profil sous...</translation>
+    </message>
+    <message>
+        <source>Save the calibrated profile</source>
+        <translation>Enregistrer le profil étalonné</translation>
+    </message>
+    <message>
+        <source>Machine profile (*.json)</source>
+        <translation>Profil machine (*.json)</translation>
+    </message>
+    <message>
+        <source>Saved %1.</source>
+        <translation>%1 enregistré.</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>motor 1 zero</source>
+        <translation>zéro moteur 1</translation>
+    </message>
+    <message>
+        <source>motor 2 zero</source>
+        <translation>zéro moteur 2</translation>
+    </message>
+    <message>
+        <source>motor 1 backlash</source>
+        <translation>jeu moteur 1</translation>
+    </message>
+    <message>
+        <source>motor 2 backlash</source>
+        <translation>jeu moteur 2</translation>
+    </message>
+    <message>
+        <source>Applied. Edit &gt; Undo restores the profile as it was.</source>
+        <translation>Appliqué. Édition &gt; Annuler rétablit le profil tel qu'il était.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::CalibrationPreview</name>
+    <message>
+        <source>No pattern yet</source>
+        <translation>Pas encore de motif</translation>
+    </message>
+    <message>
+        <source>pattern as planned</source>
+        <translation>motif prévu</translation>
+    </message>
+    <message>
+        <source>drawn by the pen (simulation)</source>
+        <translation>tracé par le stylo (simulation)</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>mesuré</translation>
+    </message>
+    <message>
+        <source>error before</source>
+        <translation>erreur avant</translation>
+    </message>
+    <message>
+        <source>error after</source>
+        <translation>erreur après</translation>
+    </message>
+    <message>
+        <source>arrows ×%1</source>
+        <translation>flèches ×%1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::CalibrationWizard</name>
+    <message>
+        <source>Calibrate the machine</source>
+        <translation>Étalonner la machine</translation>
+    </message>
+    <message>
+        <source>&amp;Calibrate...</source>
+        <translation>É&amp;talonner...</translation>
+    </message>
+    <message>
+        <source>Measure a drawn pattern and correct the profile's link lengths and motor zeros</source>
+        <translation>Mesurer un motif tracé et corriger les longueurs de bras et les zéros moteur du profil</translation>
+    </message>
+    <message>
+        <source>Choose a pattern first.</source>
+        <translation>Choisissez d'abord un motif.</translation>
+    </message>
+    <message>
+        <source>The pattern cannot be planned: %1</source>
+        <translation>Le motif ne peut pas être planifié : %1</translation>
+    </message>
+    <message>
+        <source>The pattern's G-code cannot be written: %1</source>
+        <translation>Le G-code du motif ne peut pas être écrit : %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::DrawPage</name>
+    <message>
+        <source>2. Draw the pattern</source>
+        <translation>2. Tracer le motif</translation>
+    </message>
+    <message>
+        <source>Tape a sheet down so it cannot move, and draw the pattern with the pen you normally use. Draw it on the connected machine, or export its G-code and send it your way. Keep MARKS.csv: it says which motor angles drew each mark.</source>
+        <translation>Fixez une feuille avec du ruban adhésif pour qu'elle ne bouge pas, et tracez le motif avec le stylo que vous utilisez d'habitude. Tracez-le sur la machine connectée, ou exportez son G-code et envoyez-le à votre façon. Gardez MARKS.csv : il indique quels angles moteur ont tracé chaque repère.</translation>
+    </message>
+    <message>
+        <source>Draw on the connected machine</source>
+        <translation>Tracer sur la machine connectée</translation>
+    </message>
+    <message>
+        <source>Export G-code...</source>
+        <translation>Exporter le G-code...</translation>
+    </message>
+    <message>
+        <source>Export MARKS.csv...</source>
+        <translation>Exporter MARKS.csv...</translation>
+    </message>
+    <message>
+        <source>No hardware? Simulate an imperfect machine</source>
+        <translation>Pas de matériel ? Simulez une machine imparfaite</translation>
+    </message>
+    <message>
+        <source>Simulate an imperfect machine (the sheet below is what it draws)</source>
+        <translation>Simuler une machine imparfaite (la feuille ci-dessous est ce qu'elle trace)</translation>
+    </message>
+    <message>
+        <source>The simulated machine differs by these amounts from the profile as it was when this wizard opened, as a real one would. The picture shows what its pen really draws (orange) beside the plan.</source>
+        <translation>La machine simulée diffère de ces valeurs par rapport au profil tel qu'il était à l'ouverture de cet assistant, comme le ferait une vraie. L'image montre ce que son stylo trace réellement (orange) à côté du plan.</translation>
+    </message>
+    <message>
+        <source>a1 longer by</source>
+        <translation>a1 plus long de</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>b1 longer by</source>
+        <translation>b1 plus long de</translation>
+    </message>
+    <message>
+        <source>a2 longer by</source>
+        <translation>a2 plus long de</translation>
+    </message>
+    <message>
+        <source>b2 longer by</source>
+        <translation>b2 plus long de</translation>
+    </message>
+    <message>
+        <source>motors farther apart by</source>
+        <translation>moteurs plus écartés de</translation>
+    </message>
+    <message>
+        <source>motor 1 zero off by</source>
+        <translation>zéro moteur 1 décalé de</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>motor 2 zero off by</source>
+        <translation>zéro moteur 2 décalé de</translation>
+    </message>
+    <message>
+        <source>motor 1 backlash</source>
+        <translation>jeu moteur 1</translation>
+    </message>
+    <message>
+        <source>motor 2 backlash</source>
+        <translation>jeu moteur 2</translation>
+    </message>
+    <message>
+        <source>The pattern is drawn. Take the sheet off and measure it.</source>
+        <translation>Le motif est tracé. Retirez la feuille et mesurez-la.</translation>
+    </message>
+    <message>
+        <source>Drawing the pattern (%1 lines of G-code)...</source>
+        <translation>Tracé du motif (%1 lignes de G-code)...</translation>
+    </message>
+    <message>
+        <source>Export the pattern's G-code</source>
+        <translation>Exporter le G-code du motif</translation>
+    </message>
+    <message>
+        <source>G-code (*.gcode *.nc)</source>
+        <translation>G-code (*.gcode *.nc)</translation>
+    </message>
+    <message>
+        <source>Wrote %1.</source>
+        <translation>%1 écrit.</translation>
+    </message>
+    <message>
+        <source>Export MARKS.csv</source>
+        <translation>Exporter MARKS.csv</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Streams the pattern with the same checks as the Run panel</source>
+        <translation>Envoie le motif avec les mêmes vérifications que le panneau Exécution</translation>
+    </message>
+    <message>
+        <source>Connect a machine or the simulated machine in the Machine panel first</source>
+        <translation>Connectez d'abord une machine ou la machine simulée dans le panneau Machine</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::FitPage</name>
+    <message>
+        <source>4. Fit the machine to the marks</source>
+        <translation>4. Ajuster la machine aux repères</translation>
+    </message>
+    <message>
+        <source>The fit looks for the link lengths and motor zeros with which the machine would have put every mark where you measured it. Some marks are kept out of the fit and only used to check it afterwards ("held out"): their error is the honest one. The arrows show each mark's error, greatly enlarged: grey before, red after.</source>
+        <translation>L'ajustement cherche les longueurs de bras et les zéros moteur avec lesquels la machine aurait placé chaque repère là où vous l'avez mesuré. Certains repères sont exclus de l'ajustement et servent seulement à le vérifier ensuite (« réservés ») : leur erreur est la plus honnête. Les flèches montrent l'erreur de chaque repère, fortement agrandie : gris avant, rouge après.</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Paramètre</translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation>Profil</translation>
+    </message>
+    <message>
+        <source>Fitted ± std. dev.</source>
+        <translation>Ajusté ± écart type</translation>
+    </message>
+    <message>
+        <source>&lt;span style='color:#b00000'&gt;&lt;b&gt;The fit failed:&lt;/b&gt; %1&lt;/span&gt;&lt;br&gt;Go back, check the table, or measure more marks.</source>
+        <translation>&lt;span style='color:#b00000'&gt;&lt;b&gt;L'ajustement a échoué :&lt;/b&gt; %1&lt;/span&gt;&lt;br&gt;Revenez en arrière, vérifiez le tableau ou mesurez plus de repères.</translation>
+    </message>
+    <message>
+        <source>Backlash from %1 + %2 rows: motor 1 %3°, motor 2 %4°.</source>
+        <translation>Jeu d'après %1 + %2 rangées : moteur 1 %3°, moteur 2 %4°.</translation>
+    </message>
+    <message>
+        <source>Backlash not measured: %1</source>
+        <translation>Jeu non mesuré : %1</translation>
+    </message>
+    <message>
+        <source>No mark looks mis-measured.</source>
+        <translation>Aucun repère ne semble mal mesuré.</translation>
+    </message>
+    <message>
+        <source>&lt;span style='color:#b00000'&gt;Left out as mis-measured: mark %1. Check it on the sheet.&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#b00000'&gt;Écarté car mal mesuré : repère %1. Vérifiez-le sur la feuille.&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Error before: %1 mm RMS&lt;/b&gt; (largest %2 mm) &amp;rarr; &lt;b&gt;after: %3 mm RMS&lt;/b&gt; (largest %4 mm) over %5 marks.&lt;br&gt;Held-out marks (%6): %7 mm before &amp;rarr; %8 mm after.&lt;br&gt;%9&lt;br&gt;%10&lt;br&gt;&lt;small&gt;Condition number %11 (below 10000 is fine).&lt;/small&gt;</source>
+        <translation>&lt;b&gt;Erreur avant : %1 mm RMS&lt;/b&gt; (max. %2 mm) &amp;rarr; &lt;b&gt;après : %3 mm RMS&lt;/b&gt; (max. %4 mm) sur %5 repères.&lt;br&gt;Repères réservés (%6) : %7 mm avant &amp;rarr; %8 mm après.&lt;br&gt;%9&lt;br&gt;%10&lt;br&gt;&lt;small&gt;Conditionnement %11 (sous 10000, c'est bon).&lt;/small&gt;</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>%1 ± %2%3</source>
+        <translation>%1 ± %2%3</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::MeasurePage</name>
+    <message>
+        <source>3. Measure the marks</source>
+        <translation>3. Mesurer les repères</translation>
+    </message>
+    <message>
+        <source>Measure the centre of each numbered dot with a ruler and type its x and y in millimetres. Any corner of the sheet can be the origin, and y may point up or down: the fit finds how the sheet lay. The mark you are typing is circled on the picture. Leave a row empty if a mark cannot be read; a mis-measured mark is found and named by the fit. With a scanner, import a scan instead: the marks are found and numbered for you.</source>
+        <translation>Mesurez le centre de chaque point numéroté avec une règle et saisissez ses x et y en millimètres. N'importe quel coin de la feuille peut servir d'origine, et y peut pointer vers le haut ou le bas : l'ajustement trouve comment la feuille était posée. Le repère en cours de saisie est entouré sur l'image. Laissez une ligne vide si un repère est illisible ; un repère mal mesuré est détecté et signalé par l'ajustement. Avec un scanner, importez plutôt une numérisation : les repères sont trouvés et numérotés pour vous.</translation>
+    </message>
+    <message>
+        <source>Mark</source>
+        <translation>Repère</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Type</translation>
+    </message>
+    <message>
+        <source>x (mm)</source>
+        <translation>x (mm)</translation>
+    </message>
+    <message>
+        <source>y (mm)</source>
+        <translation>y (mm)</translation>
+    </message>
+    <message>
+        <source>Simulation: measure the simulated sheet</source>
+        <translation>Simulation : mesurer la feuille simulée</translation>
+    </message>
+    <message>
+        <source>Fills the table with where the simulated imperfect machine put each mark, plus ruler noise. For trying the wizard without hardware.</source>
+        <translation>Remplit le tableau avec les positions où la machine imparfaite simulée a placé chaque repère, plus un bruit de règle. Pour essayer l'assistant sans matériel.</translation>
+    </message>
+    <message>
+        <source>noise ±</source>
+        <translation>bruit ±</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Import a scan...</source>
+        <translation>Importer une numérisation...</translation>
+    </message>
+    <message>
+        <source>A scan or photo taken straight from above (PNG or JPEG): the marks are found and numbered by themselves.</source>
+        <translation>Une numérisation ou une photo prise bien à la verticale (PNG ou JPEG) : les repères sont trouvés et numérotés automatiquement.</translation>
+    </message>
+    <message>
+        <source> dpi</source>
+        <translation> dpi</translation>
+    </message>
+    <message>
+        <source>The scanner's resolution: the scan's size in mm comes from it.</source>
+        <translation>La résolution du scanner : la taille de la numérisation en mm en découle.</translation>
+    </message>
+    <message>
+        <source>Load MEASURED.csv...</source>
+        <translation>Charger MEASURED.csv...</translation>
+    </message>
+    <message>
+        <source>Save MEASURED.csv...</source>
+        <translation>Enregistrer MEASURED.csv...</translation>
+    </message>
+    <message>
+        <source>Import a scan of the sheet</source>
+        <translation>Importer une numérisation de la feuille</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.tif *.tiff *.bmp)</source>
+        <translation>Images (*.png *.jpg *.jpeg *.tif *.tiff *.bmp)</translation>
+    </message>
+    <message>
+        <source>Load MEASURED.csv</source>
+        <translation>Charger MEASURED.csv</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Save MEASURED.csv</source>
+        <translation>Enregistrer MEASURED.csv</translation>
+    </message>
+    <message>
+        <source>fit</source>
+        <translation>ajustement</translation>
+    </message>
+    <message>
+        <source>backlash %1</source>
+        <translation>jeu %1</translation>
+    </message>
+    <message>
+        <source>Filled from the simulated sheet (simulation, not a measurement).</source>
+        <translation>Rempli d'après la feuille simulée (simulation, pas une mesure).</translation>
+    </message>
+    <message>
+        <source>Mark %1: %2 is empty. Type both x and y, or leave both empty.</source>
+        <translation>Repère %1 : %2 est vide. Saisissez x et y, ou laissez les deux vides.</translation>
+    </message>
+    <message>
+        <source>Mark %1, %2: '%3' is not a number.</source>
+        <translation>Repère %1, %2 : '%3' n'est pas un nombre.</translation>
+    </message>
+    <message>
+        <source>Only %1 marks for the fit are measured; measure at least %2 (the fit finds 5 lengths, 2 motor zeros and how the sheet lay).</source>
+        <translation>Seuls %1 repères pour l'ajustement sont mesurés ; mesurez-en au moins %2 (l'ajustement trouve 5 longueurs, 2 zéros moteur et la position de la feuille).</translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2</source>
+        <translation>Impossible de lire %1 : %2</translation>
+    </message>
+    <message>
+        <source>Found %1 of %2 marks in the scan (sheet turned %3°%4).%5</source>
+        <translation>%1 repères sur %2 trouvés dans la numérisation (feuille tournée de %3°%4).%5</translation>
+    </message>
+    <message>
+        <source>, mirrored</source>
+        <translation>, en miroir</translation>
+    </message>
+    <message>
+        <source> Not found: %1; type them in by hand.</source>
+        <translation> Non trouvés : %1 ; saisissez-les à la main.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Impossible d'écrire %1 : %2</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::PatternPage</name>
+    <message>
+        <source>1. Choose the pattern</source>
+        <translation>1. Choisir le motif</translation>
+    </message>
+    <message>
+        <source>No machine is built exactly as drawn: a link cut half a millimetre long or a motor zero set by eye bends every drawing. The studio draws a &lt;b&gt;pattern&lt;/b&gt; of numbered marks, you measure where they really landed, and a fit finds the machine's true link lengths and motor zeros.&lt;br&gt;&lt;br&gt;&lt;b&gt;Calibration marks&lt;/b&gt;: numbered dots in rings spread over the whole working area, plus rows that show the slack (backlash) of each motor. Use these to calibrate.&lt;br&gt;&lt;b&gt;Accuracy pattern&lt;/b&gt; (Hoang): ten parallel lines, 40 mm long and 10 mm apart, to judge straightness and length before and after; nothing to measure.</source>
+        <translation>Aucune machine n'est construite exactement comme dessinée : un bras coupé un demi-millimètre trop long ou un zéro moteur réglé à l'œil déforme chaque dessin. Le studio trace un &lt;b&gt;motif&lt;/b&gt; de repères numérotés, vous mesurez où ils sont vraiment tombés, et un ajustement trouve les vraies longueurs de bras et zéros moteur de la machine.&lt;br&gt;&lt;br&gt;&lt;b&gt;Repères d'étalonnage&lt;/b&gt; : points numérotés en anneaux répartis sur toute la zone de travail, plus des rangées qui montrent le jeu de chaque moteur. À utiliser pour l'étalonnage.&lt;br&gt;&lt;b&gt;Motif de précision&lt;/b&gt; (Hoang) : dix lignes parallèles de 40 mm, espacées de 10 mm, pour juger rectitude et longueur avant et après ; rien à mesurer.</translation>
+    </message>
+    <message>
+        <source>Calibration marks</source>
+        <translation>Repères d'étalonnage</translation>
+    </message>
+    <message>
+        <source>Accuracy pattern only (10 lines)</source>
+        <translation>Motif de précision seul (10 lignes)</translation>
+    </message>
+    <message>
+        <source> marks</source>
+        <translation> repères</translation>
+    </message>
+    <message>
+        <source>More marks: a more certain fit, more to measure. 25 is a good start.</source>
+        <translation>Plus de repères : un ajustement plus sûr, plus à mesurer. 25 est un bon début.</translation>
+    </message>
+    <message>
+        <source>Marks for the fit:</source>
+        <translation>Repères pour l'ajustement :</translation>
+    </message>
+    <message>
+        <source>&lt;span style='color:#b00000'&gt;%1&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#b00000'&gt;%1&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>For &lt;b&gt;%1&lt;/b&gt;: %2 marks for the fit and %3 marks in backlash rows%4.</source>
+        <translation>Pour &lt;b&gt;%1&lt;/b&gt; : %2 repères pour l'ajustement et %3 repères en rangées de jeu%4.</translation>
+    </message>
+    <message>
+        <source>, with the accuracy lines in the middle</source>
+        <translation>, avec les lignes de précision au milieu</translation>
+    </message>
+    <message>
+        <source>For &lt;b&gt;%1&lt;/b&gt;: ten lines of 40 mm in the middle of the working area.</source>
+        <translation>Pour &lt;b&gt;%1&lt;/b&gt; : dix lignes de 40 mm au milieu de la zone de travail.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::PatternSender</name>
+    <message>
+        <source>The machine was disconnected while drawing the pattern.</source>
+        <translation>La machine a été déconnectée pendant le tracé du motif.</translation>
+    </message>
+    <message>
+        <source>The pattern is already being drawn.</source>
+        <translation>Le motif est déjà en cours de tracé.</translation>
+    </message>
+    <message>
+        <source>Connect a machine (or the simulated machine) in the Machine panel first, and let any running job finish.</source>
+        <translation>Connectez d'abord une machine (ou la machine simulée) dans le panneau Machine, et laissez finir toute tâche en cours.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Impossible d'écrire %1 : %2</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::SheetLayer</name>
+    <message>
+        <source>Calibration pattern (plan)</source>
+        <translation>Motif d'étalonnage (plan)</translation>
+    </message>
+    <message>
+        <source>Drawn by the pen (simulated imperfect machine)</source>
+        <translation>Tracé par le stylo (machine imparfaite simulée)</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::VerifyPage</name>
+    <message>
+        <source>6. Draw the verification pattern</source>
+        <translation>6. Tracer le motif de vérification</translation>
+    </message>
+    <message>
+        <source>Draw the pattern once more, now planned with the calibrated profile, on a fresh sheet. Its marks should land where they were meant, and the accuracy lines should be straight and 40 mm long. Measure it again in this wizard if you want numbers.</source>
+        <translation>Tracez le motif encore une fois, maintenant planifié avec le profil étalonné, sur une feuille neuve. Ses repères doivent tomber là où prévu, et les lignes de précision être droites et longues de 40 mm. Mesurez-le à nouveau dans cet assistant si vous voulez des chiffres.</translation>
+    </message>
+    <message>
+        <source>Draw on the connected machine</source>
+        <translation>Tracer sur la machine connectée</translation>
+    </message>
+    <message>
+        <source>Export G-code...</source>
+        <translation>Exporter le G-code...</translation>
+    </message>
+    <message>
+        <source>The verification pattern is drawn.</source>
+        <translation>Le motif de vérification est tracé.</translation>
+    </message>
+    <message>
+        <source>Drawing the verification pattern...</source>
+        <translation>Tracé du motif de vérification...</translation>
+    </message>
+    <message>
+        <source>Export the verification G-code</source>
+        <translation>Exporter le G-code de vérification</translation>
+    </message>
+    <message>
+        <source>G-code (*.gcode *.nc)</source>
+        <translation>G-code (*.gcode *.nc)</translation>
+    </message>
+    <message>
+        <source>Wrote %1.</source>
+        <translation>%1 écrit.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1.</source>
+        <translation>Impossible d'écrire %1.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Simulation:&lt;/b&gt; the imperfect machine puts the marks %1 mm RMS (largest %2 mm) from where they are meant with the old profile, and &lt;b&gt;%3 mm RMS (largest %4 mm)&lt;/b&gt; with the profile now in use%5.</source>
+        <translation>&lt;b&gt;Simulation :&lt;/b&gt; avec l'ancien profil, la machine imparfaite place les repères à %1 mm RMS (max. %2 mm) de leur position prévue, et à &lt;b&gt;%3 mm RMS (max. %4 mm)&lt;/b&gt; avec le profil actuel%5.</translation>
+    </message>
+    <message>
+        <source> (the calibration is not applied)</source>
+        <translation> (l'étalonnage n'est pas appliqué)</translation>
     </message>
 </context>
 <context>
@@ -2031,7 +3078,7 @@
     </message>
     <message>
         <source>With --screenshot: show the workspace legend (legend) or a map (transmission, conditioning or resolution).</source>
-        <translation>Avec --screenshot : afficher la légende de l&apos;espace de travail (legend) ou une carte (transmission, conditioning ou resolution).</translation>
+        <translation>Avec --screenshot : afficher la légende de l'espace de travail (legend) ou une carte (transmission, conditioning ou resolution).</translation>
     </message>
     <message>
         <source>With --screenshot: simulation position as a fraction of the job (0 to 1).</source>
@@ -2054,8 +3101,8 @@
         <translation>Formes remplies : outline (par défaut), hatch ou none ; avec hatch : SPACING_MM et ANGLE_DEG après des deux-points.</translation>
     </message>
     <message>
-        <source>User interface language: de, en, es or fr (default: View &gt; Language, else the system&apos;s).</source>
-        <translation>Langue de l&apos;interface : de, en, es ou fr (par défaut : Affichage &gt; Langue, sinon celle du système).</translation>
+        <source>User interface language: de, en, es or fr (default: View &gt; Language, else the system's).</source>
+        <translation>Langue de l'interface : de, en, es ou fr (par défaut : Affichage &gt; Langue, sinon celle du système).</translation>
     </message>
 </context>
 </TS>
