@@ -1,12 +1,17 @@
 // fivebar calibrate fit: measured marks -> a calibrated profile and a report (docs/calibration.md).
+#include <algorithm>
 #include <ctime>
+#include <map>
+#include <optional>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "core/calibration/backlash.hpp"
 #include "core/calibration/fit.hpp"
+#include "core/calibration/marks_csv.hpp"
 #include "core/calibration/measurements.hpp"
 #include "machine_arg.hpp"
 #include "options.hpp"
@@ -19,14 +24,19 @@ using nlohmann::json;
 
 constexpr const char* kHelp =
     "usage: fivebar calibrate fit --machine PRESET|FILE --measured MEASURED.csv -o CALIBRATED.json\n"
-    "                             [--report REPORT.json] [--marks MARKS.csv] [--fit-pen-offset]\n"
+    "                             [--report REPORT.json] [--marks MARKS.csv] [--reversed REVERSED.csv]\n"
+    "                             [--fit-pen-offset]\n"
     "Fits the machine's link lengths and motor zero offsets to measured marks and writes the\n"
     "complete calibrated profile (docs/calibration.md).\n"
     "  --machine PRESET|FILE   the profile the marks were drawn with\n"
     "  --measured FILE         CSV: id,theta1_deg,theta2_deg,x_mm,y_mm (theta = commanded angles as\n"
     "                          sent in G-code; x, y in any paper frame, mirrored or not), or\n"
     "                          id_a,id_b,distance_mm (ruler distances; needs --marks)\n"
-    "  --marks FILE            CSV: id,theta1_deg,theta2_deg of the marks (the distance form)\n"
+    "  --marks FILE            CSV: id,theta1_deg,theta2_deg of the marks (the distance form), or\n"
+    "                          the full MARKS.csv of `fivebar calibrate pattern` (needed by --reversed)\n"
+    "  --reversed FILE         the backlash rows' middle marks (`calibrate scan --reversed`, same paper\n"
+    "                          frame as --measured): estimates each motor's backlash (clamped >= 0)\n"
+    "                          into the profile's calibration section\n"
     "  -o, --output FILE       the calibrated profile (nothing is written when the fit fails)\n"
     "  --report FILE           JSON: before/after errors, parameters with standard deviations,\n"
     "                          outliers, conditioning, every mark's residual\n"
@@ -50,7 +60,8 @@ const char* roleName(Role r) {
   return "fitted";
 }
 
-json reportOf(const CalibrationFit& f, const MachineProfile& nominal, const std::string& measured, bool distances) {
+json reportOf(const CalibrationFit& f, const MachineProfile& nominal, const std::string& measured, bool distances,
+              const std::optional<BacklashEstimate>& backlash) {
   json j;
   j["schema"] = "fivebar-calibration-report";
   j["version"] = 1;
@@ -85,6 +96,15 @@ json reportOf(const CalibrationFit& f, const MachineProfile& nominal, const std:
     j["measurements"].push_back(m);
   }
   j["functionEvaluations"] = f.functionEvaluations;
+  if (backlash) {
+    j["backlash"] = {{"motor1Deg", degFromRad(backlash->play.motor1Rad)},
+                     {"motor2Deg", degFromRad(backlash->play.motor2Rad)},
+                     {"rowsMotor1", backlash->rowsMotor1},
+                     {"rowsMotor2", backlash->rowsMotor2},
+                     {"rows", json::array()}};
+    for (const BacklashRowEstimate& r : backlash->rows)
+      j["backlash"]["rows"].push_back({{"group", r.group}, {"motor", r.motor}, {"playDeg", degFromRad(r.playRad)}});
+  }
   return j;
 }
 
@@ -103,6 +123,47 @@ void printSummary(const CalibrationFit& f) {
                              << " +- " << e.stdDev << " " << e.unit << "\n";
 }
 
+// The play per motor from MEASURED.csv + REVERSED.csv and the full MARKS.csv; an error message
+// naming the file when something is missing or unreadable.
+std::optional<BacklashEstimate> backlashOf(const std::string& marksPath, const std::string& measuredPath,
+                                           const std::string& measuredText, const std::string& reversedPath,
+                                           std::string& error) {
+  std::string marksText, reversedText;
+  if (!readTextFile(marksPath, marksText, error) || !readTextFile(reversedPath, reversedText, error)) return {};
+  const MarksLoad marks = parseMarksCsv(marksText, marksPath);
+  if (!marks.ok()) {
+    error = marks.error + " (--reversed needs the full MARKS.csv of `fivebar calibrate pattern`)";
+    return {};
+  }
+  std::map<int, Vec2> measuredById;
+  for (const auto& [path, text] : {std::pair{measuredPath, measuredText}, std::pair{reversedPath, reversedText}}) {
+    const MeasuredLoad m = parseMeasuredCsv(text, path);
+    if (!m.ok()) {
+      error = m.error;
+      return {};
+    }
+    for (const MeasuredMark& x : m.marks) measuredById[x.id] = x.measuredMm;
+  }
+  std::vector<PatternMark> pattern;
+  std::vector<int> missing;
+  for (const MarkRecord& r : marks.marks) {
+    pattern.push_back(r.mark);
+    if (r.mark.kind == MarkKind::Backlash && !measuredById.count(r.mark.id)) missing.push_back(r.mark.id);
+  }
+  if (!missing.empty()) {
+    error = reversedPath + ": incomplete backlash rows: mark";
+    for (std::size_t i = 0; i < missing.size(); ++i) error += (i ? ", " : " ") + std::to_string(missing[i]);
+    error += " of " + marksPath + " not measured in " + measuredPath + " or " + reversedPath;
+    return {};
+  }
+  BacklashEstimate b = estimateBacklash(pattern, measuredById);
+  if (!b.ok()) {
+    error = reversedPath + ": " + b.error;
+    return {};
+  }
+  return b;
+}
+
 int fit(const Options& o) {
   const std::string measuredPath = o.required("--measured"), output = o.required("--output");
   const auto nominal = loadMachine(o.required("--machine"), "calibrate fit", std::cerr);
@@ -115,6 +176,14 @@ int fit(const Options& o) {
   if (!readTextFile(measuredPath, text, error)) return fail(error);
   const MeasurementRead read = readMeasurements(text, measuredPath);
   if (!read.ok()) return fail(read.error);
+  std::optional<BacklashEstimate> backlash;
+  if (const auto reversedPath = o.value("--reversed")) {
+    const auto marksPath = o.value("--marks");
+    if (!marksPath) return fail("--reversed " + *reversedPath + " needs the pattern's marks: give --marks MARKS.csv");
+    if (read.form != MeasurementForm::Marks) return fail("--reversed needs marks measured on the sheet, but " + measuredPath + " holds distances");
+    backlash = backlashOf(*marksPath, measuredPath, text, *reversedPath, error);
+    if (!backlash) return fail(error + "; no profile written");
+  }
   FitOptions options;
   options.fitPenOffset = o.flag("--fit-pen-offset");
   CalibrationFit result;
@@ -133,16 +202,31 @@ int fit(const Options& o) {
     result = fitMarks(*nominal, read.marks, options);
   }
   if (!result.ok()) return fail(measuredPath + ": no profile written: " + result.reason);
-  const MachineProfile calibrated = calibratedProfile(*nominal, result, nowIso());
+  MachineProfile calibrated = calibratedProfile(*nominal, result, nowIso());
+  if (backlash && calibrated.calibration) {
+    calibrated.calibration->backlashRad1 = std::max(0.0, backlash->play.motor1Rad);
+    calibrated.calibration->backlashRad2 = std::max(0.0, backlash->play.motor2Rad);
+  }
   const std::vector<ValidationIssue> issues = validate(calibrated);
   if (!issues.empty()) return fail("the fitted profile is not valid (" + issues[0].message + "); no profile written");
   if (const auto reportPath = o.value("--report")) {
     std::ofstream report(*reportPath, std::ios::binary);
-    if (!(report << reportOf(result, *nominal, measuredPath, distances).dump(2) << "\n"))
+    if (!(report << reportOf(result, *nominal, measuredPath, distances, backlash).dump(2) << "\n"))
       return fail("cannot write " + *reportPath);
   }
   if (const std::string saveError = saveProfile(calibrated, output); !saveError.empty()) return fail(saveError);
   printSummary(result);
+  if (backlash) {
+    std::cout << "backlash: motor 1 " << std::setprecision(3) << degFromRad(calibrated.calibration->backlashRad1)
+              << " deg (" << backlash->rowsMotor1 << " rows), motor 2 "
+              << degFromRad(calibrated.calibration->backlashRad2) << " deg (" << backlash->rowsMotor2 << " rows)\n";
+    for (int k = 1; k <= 2; ++k) {
+      const double rad = k == 1 ? backlash->play.motor1Rad : backlash->play.motor2Rad;
+      if (rad < 0.0)
+        std::cout << "note: motor " << k << "'s backlash estimate was negative (" << std::setprecision(3)
+                  << degFromRad(rad) << " deg, measurement noise); written as 0\n";
+    }
+  }
   std::cout << "wrote " << output << "\n";
   return 0;
 }
@@ -154,7 +238,7 @@ int runCalibrateFit(const Args& args) {
     Args normalized = args;
     for (std::string& a : normalized)
       if (a == "-o") a = "--output";
-    const Options o(normalized, {"--machine", "--measured", "--output", "--report", "--marks"},
+    const Options o(normalized, {"--machine", "--measured", "--output", "--report", "--marks", "--reversed"},
                     {"--fit-pen-offset", "--help"});
     if (o.flag("--help")) {
       std::cout << kHelp;

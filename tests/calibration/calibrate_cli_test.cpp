@@ -6,6 +6,8 @@
 #include <QTemporaryDir>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "../cli/cli_support.hpp"
 #include "core/calibration/marks_csv.hpp"
@@ -73,6 +75,72 @@ TEST(CalibratePatternScanCli, PatternThenScanGivesTheMeasuredMarks) {
     EXPECT_NEAR(x.theta1Deg, degFromRad(pm.q.theta1), 1e-9);
     EXPECT_NEAR(x.theta2Deg, degFromRad(pm.q.theta2), 1e-9);
   }
+}
+
+// pattern -> synthetic scan with --reversed -> fit with --marks and --reversed: the profile carries
+// the estimated backlash (none drawn: close to 0) and the report names it; --reversed without
+// --marks, or with a REVERSED.csv missing a row's mark, is refused with nothing written.
+TEST(CalibratePatternScanCli, FitWithReversedWritesTheBacklash) {
+  QTemporaryDir tmp;
+  const fs::path dir = tmp.path().toStdString();
+  const std::string marks = (dir / "MARKS.csv").string(), gcode = (dir / "P.gcode").string();
+  ASSERT_EQ(run("calibrate pattern --machine maker-plotter -o " + quote(gcode) + " --marks " + quote(marks), dir).exitCode, 0);
+  const PatternResult pr = makeCalibrationPattern(*preset("maker-plotter"));
+  ASSERT_TRUE(pr.pattern);
+  test::SheetOptions o;
+  o.dpi = 600;
+  o.rotationDeg = -20.0;
+  o.blurSigmaPx = 1.0;
+  o.noiseSigma = 4.0;
+  o.seed = test::seed();
+  const std::string png = (dir / "SCAN.png").string(), measured = (dir / "MEASURED.csv").string(),
+                    reversed = (dir / "REV.csv").string();
+  ASSERT_TRUE(test::renderSheet(*pr.pattern, o).image.save(QString::fromStdString(png)));
+  ASSERT_EQ(run("calibrate scan --marks " + quote(marks) + " --image " + quote(png) + " --dpi 600 -o " +
+                    quote(measured) + " --reversed " + quote(reversed), dir).exitCode, 0);
+  const std::string profile = (dir / "CAL.json").string(), report = (dir / "REPORT.json").string();
+  const auto f = run("calibrate fit --machine maker-plotter --measured " + quote(measured) + " --marks " +
+                         quote(marks) + " --reversed " + quote(reversed) + " -o " + quote(profile) +
+                         " --report " + quote(report), dir);
+  ASSERT_EQ(f.exitCode, 0) << f.err << f.out;
+  EXPECT_NE(f.out.find("backlash: motor 1 "), std::string::npos) << f.out;
+  const nlohmann::json p = nlohmann::json::parse(slurp(profile));
+  ASSERT_TRUE(p.contains("calibration")) << p.dump(2);
+  const nlohmann::json& c = p["calibration"];
+  ASSERT_TRUE(c.contains("backlashDeg1") && c.contains("backlashDeg2")) << c.dump(2);  // rad in core, deg in the file
+  for (const char* k : {"backlashDeg1", "backlashDeg2"}) {
+    const double deg = c[k].get<double>();
+    EXPECT_GE(deg, 0.0) << k;
+    EXPECT_LT(deg, 0.05) << k;  // the synthetic sheet was drawn without play
+  }
+  const nlohmann::json rep = nlohmann::json::parse(slurp(report));
+  ASSERT_TRUE(rep.contains("backlash")) << rep.dump(2);
+  EXPECT_EQ(rep["backlash"]["rowsMotor1"].get<int>() + rep["backlash"]["rowsMotor2"].get<int>(), 4);
+  EXPECT_LT(std::abs(rep["backlash"]["motor1Deg"].get<double>()), 0.05);
+  EXPECT_LT(std::abs(rep["backlash"]["motor2Deg"].get<double>()), 0.05);
+  // --reversed without --marks: refused, nothing written.
+  const std::string none = (dir / "NONE.json").string();
+  auto r = run("calibrate fit --machine maker-plotter --measured " + quote(measured) + " --reversed " +
+                   quote(reversed) + " -o " + quote(none), dir);
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("give --marks MARKS.csv"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(none));
+  // A REVERSED.csv missing a row's middle mark: named, nothing written.
+  const std::string revText = slurp(reversed);
+  const std::string cut = revText.substr(0, revText.rfind('\n', revText.size() - 2) + 1);
+  const std::string shortRev = (dir / "SHORT.csv").string();
+  { std::ofstream(shortRev) << cut; }
+  r = run("calibrate fit --machine maker-plotter --measured " + quote(measured) + " --marks " + quote(marks) +
+              " --reversed " + quote(shortRev) + " -o " + quote(none), dir);
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find(shortRev + ": incomplete backlash rows"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(none));
+  // An unreadable REVERSED.csv.
+  r = run("calibrate fit --machine maker-plotter --measured " + quote(measured) + " --marks " + quote(marks) +
+              " --reversed " + quote((dir / "nosuch.csv").string()) + " -o " + quote(none), dir);
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("nosuch.csv"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(none));
 }
 
 TEST(CalibratePatternScanCli, BadInputIsNamedAndNothingIsWritten) {
