@@ -2660,8 +2660,8 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
         <translation>Eine unvollkommene Maschine simulieren (das Blatt unten zeigt, was sie zeichnet)</translation>
     </message>
     <message>
-        <source>The simulated machine differs by these amounts from the profile as it was when this wizard opened, as a real one would. The picture shows what its pen really draws (orange) beside the plan.</source>
-        <translation>Die simulierte Maschine weicht um diese Beträge vom Profil ab, wie es beim Öffnen dieses Assistenten war, so wie eine echte Maschine. Das Bild zeigt, was ihr Stift wirklich zeichnet (orange), neben dem Plan.</translation>
+        <source>The simulated machine differs by these amounts from the profile as it was when this wizard opened, as a real one would. The picture shows what its pen really draws (orange) beside the plan. The built-in simulated machine of the Machine panel takes these amounts the next time it connects.</source>
+        <translation>Die simulierte Maschine weicht um diese Beträge vom Profil ab, wie es beim Öffnen dieses Assistenten war, so wie eine echte Maschine. Das Bild zeigt, was ihr Stift wirklich zeichnet (orange), neben dem Plan. Die eingebaute simulierte Maschine im Maschinen-Panel übernimmt diese Beträge beim nächsten Verbinden.</translation>
     </message>
     <message>
         <source>a1 longer by</source>

@@ -2660,8 +2660,8 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
         <translation>Simular una máquina imperfecta (la hoja de abajo es lo que dibuja)</translation>
     </message>
     <message>
-        <source>The simulated machine differs by these amounts from the profile as it was when this wizard opened, as a real one would. The picture shows what its pen really draws (orange) beside the plan.</source>
-        <translation>La máquina simulada difiere en estas cantidades del perfil tal como estaba al abrir este asistente, como lo haría una real. La imagen muestra lo que su pluma dibuja realmente (naranja) junto al plan.</translation>
+        <source>The simulated machine differs by these amounts from the profile as it was when this wizard opened, as a real one would. The picture shows what its pen really draws (orange) beside the plan. The built-in simulated machine of the Machine panel takes these amounts the next time it connects.</source>
+        <translation>La máquina simulada difiere en estas cantidades del perfil tal como estaba al abrir este asistente, como lo haría una real. La imagen muestra lo que su pluma dibuja realmente (naranja) junto al plan. La máquina simulada integrada del panel Máquina toma estos valores la próxima vez que se conecta.</translation>
     </message>
     <message>
         <source>a1 longer by</source>

@@ -2660,8 +2660,8 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
         <translation>Simuler une machine imparfaite (la feuille ci-dessous est ce qu'elle trace)</translation>
     </message>
     <message>
-        <source>The simulated machine differs by these amounts from the profile as it was when this wizard opened, as a real one would. The picture shows what its pen really draws (orange) beside the plan.</source>
-        <translation>La machine simulée diffère de ces valeurs par rapport au profil tel qu'il était à l'ouverture de cet assistant, comme le ferait une vraie. L'image montre ce que son stylo trace réellement (orange) à côté du plan.</translation>
+        <source>The simulated machine differs by these amounts from the profile as it was when this wizard opened, as a real one would. The picture shows what its pen really draws (orange) beside the plan. The built-in simulated machine of the Machine panel takes these amounts the next time it connects.</source>
+        <translation>La machine simulée diffère de ces valeurs par rapport au profil tel qu'il était à l'ouverture de cet assistant, comme le ferait une vraie. L'image montre ce que son stylo trace réellement (orange) à côté du plan. La machine simulée intégrée du panneau Machine prend ces valeurs à sa prochaine connexion.</translation>
     </message>
     <message>
         <source>a1 longer by</source>

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <QComboBox>
+#include <QElapsedTimer>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
@@ -140,6 +141,71 @@ TEST(MachineSession, SetReferencePoseMakesTheCurrentPoseTheHomePose) {
   const JointAngles q = *rig.session.motorAngles();
   EXPECT_NEAR(degFromRad(q.theta1), degFromRad(rig.doc.profile().homeAngles.theta1), 0.01);
   EXPECT_NEAR(degFromRad(q.theta2), degFromRad(rig.doc.profile().homeAngles.theta2), 0.01);
+}
+
+// The simulated machine drives a true machine when given one (issue 13): with link b1 0.5 mm
+// longer, its pen draws where the true geometry puts it, not where the profile says; without
+// one, exactly on the plan (within a step).
+struct DrawnEnd {
+  Vec2 tracedMm;      // the last point of the drawn trace
+  JointAngles motor;  // the motors' reported angles there
+};
+std::optional<DrawnEnd> drawShortStroke(std::optional<MachineProfile> trueMachine) {
+  MachineRig rig;
+  rig.session.setSimulatedTrueMachine(std::move(trueMachine));
+  if (!rig.connect(50.0) || !rig.waitIdle()) {
+    ADD_FAILURE() << "the simulated machine did not connect";
+    return std::nullopt;
+  }
+  const ToolSettings& tool = rig.doc.profile().tool;
+  EXPECT_EQ(tool.kind, ToolKind::PenServo);
+  for (const QString& line : {QStringLiteral("M3 S%1").arg(tool.penDownS), QStringLiteral("G91 G1 X4 Y-3 F300"),
+                              QStringLiteral("G1 X-2 Y-2"), QStringLiteral("G90")}) {
+    QString refusal;
+    const bool settled = waitUntil([&] { return rig.session.bytesInFlight() == 0; }, 5000) && rig.waitIdle();
+    if (!settled || !rig.session.sendLine(line, &refusal)) {
+      ADD_FAILURE() << line.toStdString() << ": " << refusal.toStdString();
+      return std::nullopt;
+    }
+  }
+  // Done when the motors stand still: the reported angles no longer change between reports.
+  std::optional<JointAngles> last;
+  QElapsedTimer still;
+  still.start();
+  if (!waitUntil([&] {
+        const auto q = rig.session.motorAngles();
+        if (!(q && last && q->theta1 == last->theta1 && q->theta2 == last->theta2)) still.restart();
+        last = q;
+        return still.elapsed() > 700 && rig.session.bytesInFlight() == 0 && rig.session.state() == grbl::MachineState::Idle;
+      }, 10000))
+    return std::nullopt;
+  const auto trace = rig.session.simulatedDrawnTrace();
+  const auto q = rig.session.motorAngles();
+  if (trace.empty() || trace.back().size() < 2 || !q) return std::nullopt;
+  return DrawnEnd{trace.back().back(), *q};
+}
+
+TEST(MachineSession, SimulatedMachineDrawsWithItsTrueMachine) {
+  const MachineProfile nominal = test::makerPlotter();
+  MachineProfile truth = nominal;
+  truth.geometry.b1 += 0.5;
+
+  const auto perfect = drawShortStroke(std::nullopt);
+  ASSERT_TRUE(perfect);
+  const FkResult planned = forward(nominal.geometry, perfect->motor, nominal.assembly);
+  ASSERT_TRUE(planned.ok());
+  const double stepMm = 0.05;  // a motor step (1/stepsPerDeg deg) moves the pen far less
+  EXPECT_LT((perfect->tracedMm - planned.p).norm(), stepMm);
+
+  const auto imperfect = drawShortStroke(truth);
+  ASSERT_TRUE(imperfect);
+  const FkResult meant = forward(nominal.geometry, imperfect->motor, nominal.assembly);
+  const FkResult real = forward(truth.geometry, imperfect->motor, truth.assembly);
+  ASSERT_TRUE(meant.ok() && real.ok());
+  const double expectedMm = (real.p - meant.p).norm();
+  ASSERT_GT(expectedMm, 0.1);  // b1 0.5 mm longer moves the pen by a visible amount
+  EXPECT_NEAR((imperfect->tracedMm - meant.p).norm(), expectedMm, 0.02);
+  EXPECT_LT((imperfect->tracedMm - real.p).norm(), 0.02);
 }
 
 }  // namespace

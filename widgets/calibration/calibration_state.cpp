@@ -21,6 +21,18 @@ Geometry TrueMachine::geometry() const {
   return g;
 }
 
+MachineProfile trueMachineProfile(const MachineProfile& nominal, const TrueMachine& truth) {
+  MachineProfile m = nominal;
+  m.geometry = truth.geometry();
+  MachineCalibration c;
+  c.zeroOffsetRad1 = truth.zeroOffsetRad1;
+  c.zeroOffsetRad2 = truth.zeroOffsetRad2;
+  c.backlashRad1 = truth.play.motor1Rad;
+  c.backlashRad2 = truth.play.motor2Rad;
+  m.calibration = c;
+  return m;
+}
+
 bool TrueMachine::perfect() const {
   return da1Mm == 0.0 && db1Mm == 0.0 && da2Mm == 0.0 && db2Mm == 0.0 && dwMm == 0.0 &&
          zeroOffsetRad1 == 0.0 && zeroOffsetRad2 == 0.0 && play.none();

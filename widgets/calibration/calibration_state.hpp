@@ -27,6 +27,11 @@ struct TrueMachine {
   bool perfect() const;
 };
 
+// The true machine as a profile for the simulated machine (sim::SimConfig::trueMachine):
+// `nominal` with truth.geometry() and a calibration section holding only the true zero offsets
+// and backlash (no pen offset).
+MachineProfile trueMachineProfile(const MachineProfile& nominal, const TrueMachine& truth);
+
 // The pattern kinds the wizard offers.
 enum class PatternKind { Marks, AccuracyOnly };
 

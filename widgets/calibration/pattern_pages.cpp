@@ -153,7 +153,8 @@ DrawPage::DrawPage(CalibrationWizard& wizard) : w_(wizard) {
   boxLayout->addWidget(simulate_);
   boxLayout->addWidget(explanation(
       tr("The simulated machine differs by these amounts from the profile as it was when this wizard opened, as a real one would. "
-         "The picture shows what its pen really draws (orange) beside the plan.")));
+         "The picture shows what its pen really draws (orange) beside the plan. The built-in simulated "
+         "machine of the Machine panel takes these amounts the next time it connects.")));
   truthBox_ = new QWidget;
   auto* grid = new QGridLayout(truthBox_);
   grid->setContentsMargins(0, 0, 0, 0);
@@ -263,6 +264,10 @@ void DrawPage::refresh() {
   w_.simulated = simulate_->isChecked();
   truthBox_->setEnabled(w_.simulated);
   readTruth();
+  // The built-in simulated machine becomes this imperfect machine (from its next connect).
+  if (w_.session())
+    w_.session()->setSimulatedTrueMachine(
+        w_.simulated ? std::optional<MachineProfile>(trueMachineProfile(w_.nominal, w_.truth)) : std::nullopt);
   std::vector<std::vector<Vec2>> trace;
   if (w_.simulated && !w_.job.moves.empty()) trace = trueTrace(w_.job, w_.nominal, w_.truth);
   preview_->setTrueTrace(trace);

@@ -54,6 +54,7 @@ bool MachineSession::connectSimulated(double speedup, const sim::Fault& fault, Q
   sim::SimConfig config;
   config.profile = doc_.profile();
   config.fault = fault;
+  config.trueMachine = simTrueMachine_;
   config.setUp = true;  // a board set up for the profile; it starts at MPos 0,0 (no reference)
   auto transport = std::make_unique<SimulatedTransport>(config, speedup);
   SimulatedTransport* simulated = transport.get();
@@ -61,6 +62,15 @@ bool MachineSession::connectSimulated(double speedup, const sim::Fault& fault, Q
   simulated_ = simulated;
   simulated_->startClock(kSimClockMs);
   return true;
+}
+
+void MachineSession::setSimulatedTrueMachine(std::optional<MachineProfile> trueMachine) {
+  simTrueMachine_ = std::move(trueMachine);
+}
+
+std::vector<std::vector<Vec2>> MachineSession::simulatedDrawnTrace() const {
+  if (!simulated_) return {};
+  return simulated_->machine().drawnTrace();
 }
 
 bool MachineSession::connectSerial(const QString& portPath, int baudRate, QString* error) {

@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <vector>
 
 #include "core/kinematics/kinematics.hpp"
 #include "drivers/grbl_protocol.hpp"
@@ -66,6 +67,14 @@ class MachineSession : public QObject, private grbl::ProtocolListener {
   QString linkName() const;
   MachineLink* link() const { return link_.get(); }
   SimulatedTransport* simulatedTransport() const { return simulated_; }
+  // The real machine the simulated motors drive (sim::SimConfig::trueMachine: its geometry and,
+  // in its calibration section, the true zero offsets and backlash); nullopt: the document's
+  // profile itself. Applied the next time connectSimulated runs, not to a machine already open.
+  void setSimulatedTrueMachine(std::optional<MachineProfile> trueMachine);
+  const std::optional<MachineProfile>& simulatedTrueMachine() const { return simTrueMachine_; }
+  // What the simulated machine's pen really drew (SimMachine::drawnTrace: one polyline per
+  // pen-down run, machine frame, mm); empty when the simulated machine is not open.
+  std::vector<std::vector<Vec2>> simulatedDrawnTrace() const;
 
   // --- state, as last reported by the board ---
   grbl::MachineState state() const;
@@ -154,6 +163,7 @@ class MachineSession : public QObject, private grbl::ProtocolListener {
   std::unique_ptr<Transport> transport_;
   std::unique_ptr<MachineLink> link_;
   SimulatedTransport* simulated_ = nullptr;
+  std::optional<MachineProfile> simTrueMachine_;
   std::set<std::uint64_t> userLines_;  // ids of lines sent by the user (errors go to the banner)
   std::set<std::uint64_t> jogLines_;  // lines of jog / go-to plans not yet answered
   // Jog lines already in the board's buffer at a cancel: once they are answered they have entered
