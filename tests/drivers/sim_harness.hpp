@@ -34,7 +34,16 @@ struct SimLink {
   // A board set up for the profile (fivebar setup --write) and referenced at its home pose, as
   // a user leaves it; tests of the factory-fresh board build their own SimConfig.
   explicit SimLink(const MachineProfile& profile, sim::Fault fault = {}, bool instant = false)
-      : SimLink(sim::SimConfig{profile, fault, instant, true, true}) {}
+      : SimLink(userBoard(profile, fault, instant)) {}
+  static sim::SimConfig userBoard(const MachineProfile& profile, sim::Fault fault, bool instant) {
+    sim::SimConfig config;
+    config.profile = profile;
+    config.fault = fault;
+    config.instant = instant;
+    config.setUp = true;
+    config.referenced = true;
+    return config;
+  }
   explicit SimLink(const sim::SimConfig& config)
       : sim(config),
         protocol([this](std::string_view b) { toSim.append(b); }) {

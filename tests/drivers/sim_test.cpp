@@ -63,7 +63,9 @@ TEST(SimMachine, TrapezoidalTimingOfOneMove) {
 
 TEST(SimMachine, SoftLimitAlarmLocksUntilResetAndUnlock) {
   const MachineProfile p = testProfile();
-  SimLink link(sim::SimConfig{p, {}, false, false, false});  // a factory-fresh board
+  sim::SimConfig factoryFresh;  // a factory-fresh board: default settings, no offsets
+  factoryFresh.profile = p;
+  SimLink link(factoryFresh);
   LineLog log;
   link.protocol.addListener(&log);
   link.protocol.enqueue("$20=1");  // GRBL 1.1h: soft limits need homing enabled

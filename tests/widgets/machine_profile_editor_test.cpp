@@ -70,8 +70,9 @@ TEST(ProfileEditor, RowsAreBuiltFromTheProfileFieldTable) {
     EXPECT_EQ(box->maximum(), f.inputMax) << f.path;
     EXPECT_EQ(box->decimals(), f.decimals) << f.path;
     EXPECT_EQ(box->suffix(), widgets::profileUnitSuffix(f)) << f.path;
-    if (std::string(f.path).rfind("limits.", 0) != 0)  // shown at +-180 while unlimited
+    if (std::string(f.path).rfind("limits.", 0) != 0) {  // shown at +-180 while unlimited
       EXPECT_NEAR(box->value(), f.get(doc.profile()), 0.5 * std::pow(10.0, -f.decimals)) << f.path;
+    }
     // The label in the form row is the table's label in the UI language.
     auto* form = qobject_cast<QFormLayout*>(box->parentWidget()->layout());
     ASSERT_NE(form, nullptr) << f.path;

@@ -186,7 +186,7 @@ TEST(Translations, MainWindowShowsNoEnglish) {
     fivebar::studio::MainWindow window(*profile);
     english = visibleTexts(window);
   }
-  for (const QString lang : {QStringLiteral("de"), QStringLiteral("fr"), QStringLiteral("es")}) {
+  for (const QString& lang : {QStringLiteral("de"), QStringLiteral("fr"), QStringLiteral("es")}) {
     QTranslator translator;
     ASSERT_TRUE(translator.load(QStringLiteral(":/i18n/fivebar_%1.qm").arg(lang)));
     QCoreApplication::installTranslator(&translator);
