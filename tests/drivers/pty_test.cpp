@@ -242,7 +242,11 @@ TEST(FakeTransport, TranscriptReplayThroughMachineLinkAndOneDisconnect) {
 // times 20): the transport seam swaps without changing anything above it.
 TEST(SimulatedTransport, StreamsAJobInProcess) {
   PtyJob job;
-  SimulatedTransport transport({job.p, {}, false, true, true}, 20.0);
+  sim::SimConfig board;  // set up for the profile and referenced at its home pose
+  board.profile = job.p;
+  board.setUp = true;
+  board.referenced = true;
+  SimulatedTransport transport(board, 20.0);
   MachineLink link(transport);
   StreamSession session(link, job.options(false));
   QString error;
