@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/machine/pen_kinematics.hpp"
 #include "core/planning/safety.hpp"
 #include "core/kinematics/units.hpp"
 
@@ -28,9 +29,23 @@ double jointFeed(const JointAngles& a, const JointAngles& b, double lengthMm, do
   return jointDeg / std::max(lengthMm / speedMmPerS, 1e-6) * 60.0;
 }
 
+// The pen (pen_kinematics.hpp: the calibrated pen offset) and the working mode at kinematic
+// angles q; nullopt when the loop does not close.
+struct PenAt {
+  Vec2 pen = Vec2::Zero();
+  WorkingMode mode = WorkingMode::PlusPlus;
+};
+std::optional<PenAt> penAt(const MachineProfile& p, const JointAngles& q) {
+  const FkResult fk = forward(p.geometry, q, p.assembly);
+  if (!fk.ok()) return std::nullopt;
+  return PenAt{penFromDistal(calibratedPenOffset(p), p.geometry, elbow1(p.geometry, q.theta1), fk.p),
+               workingModeOf(p.geometry, makePose(p.geometry, q, fk.p))};
+}
+
+// Kinematic angles that put the pen at xy, unwrapped near `near` (kinematic).
 std::optional<JointAngles> ikNear(const MachineProfile& p, const Vec2& xy, WorkingMode mode,
                                   const JointAngles& near) {
-  const IkResult ik = inverse(p.geometry, xy, mode);
+  const IkResult ik = penInverse(p, xy, mode);
   if (!ik.ok()) return std::nullopt;
   return JointAngles{unwrapNear(ik.angles.theta1, near.theta1), unwrapNear(ik.angles.theta2, near.theta2)};
 }
@@ -41,8 +56,7 @@ double deviationMm(const MachineProfile& p, const JointAngles& a, const JointAng
   double worst = 0.0;
   const Vec2 d = pb - pa;
   for (double t : {0.25, 0.5, 0.75}) {
-    const FkResult fk = forward(p.geometry, {a.theta1 + t * (b.theta1 - a.theta1),
-                                             a.theta2 + t * (b.theta2 - a.theta2)}, p.assembly);
+    const FkResult fk = penForward(p, {a.theta1 + t * (b.theta1 - a.theta1), a.theta2 + t * (b.theta2 - a.theta2)});
     if (!fk.ok()) return 1e9;
     const double len = d.norm();
     const double off = len > 0 ? std::abs(cross(d, fk.p - pa)) / len : (fk.p - pa).norm();
@@ -97,16 +111,15 @@ JogPlan walkLine(const MachineProfile& p, const JointAngles& start, const Vec2& 
 JogPlan planCartesianJog(const MachineProfile& p, const JointAngles& currentCommanded, const Vec2& direction,
                          double distanceMm, double speedMmPerS, double maxDeviationMm) {
   const JointAngles current = kinematicFromCommanded(p.calibration, currentCommanded);
-  const FkResult fk = forward(p.geometry, current, p.assembly);
-  if (!fk.ok() || direction.norm() == 0.0) {
+  const auto here = penAt(p, current);
+  if (!here || direction.norm() == 0.0) {
     JogPlan plan;
     plan.status = JogStatus::NoPosition;
-    plan.reason = fk.ok() ? "no jog direction" : "the current motor angles do not close the linkage";
+    plan.reason = here ? "no jog direction" : "the current motor angles do not close the linkage";
     return plan;
   }
-  const WorkingMode mode = workingModeOf(p.geometry, makePose(p.geometry, current, fk.p));
-  return walkLine(p, current, fk.p, direction.normalized(), distanceMm, speedMmPerS, maxDeviationMm,
-                  mode, true);
+  return walkLine(p, current, here->pen, direction.normalized(), distanceMm, speedMmPerS, maxDeviationMm,
+                  here->mode, true);
 }
 
 JogPlan planMotorJog(const MachineProfile& p, const JointAngles& currentCommanded, int motor, double deltaDeg,
@@ -137,14 +150,13 @@ JogPlan planMotorJog(const MachineProfile& p, const JointAngles& currentCommande
 JogPlan planGoTo(const MachineProfile& p, const JointAngles& currentCommanded, const Vec2& targetMm) {
   JogPlan plan;
   const JointAngles current = kinematicFromCommanded(p.calibration, currentCommanded);
-  const FkResult fk = forward(p.geometry, current, p.assembly);
-  if (!fk.ok()) {
+  const auto here = penAt(p, current);
+  if (!here) {
     plan.status = JogStatus::NoPosition;
     plan.reason = "the current motor angles do not close the linkage";
     return plan;
   }
-  const WorkingMode mode = workingModeOf(p.geometry, makePose(p.geometry, current, fk.p));
-  const auto q = ikNear(p, targetMm, mode, current);
+  const auto q = ikNear(p, targetMm, here->mode, current);
   const auto travel = q ? planSafeTravel(p, current, *q) : std::nullopt;
   if (!travel) {
     plan.status = JogStatus::Blocked;
@@ -157,7 +169,7 @@ JogPlan planGoTo(const MachineProfile& p, const JointAngles& currentCommanded, c
     plan.lines.push_back(job::moveTo({degFromRad(w.theta1), degFromRad(w.theta2)}, true));
     plan.targets.push_back(w);
   }
-  plan.lengthMm = (targetMm - fk.p).norm();
+  plan.lengthMm = (targetMm - here->pen).norm();
   return plan;
 }
 
@@ -195,12 +207,12 @@ JogPlan planFrame(const MachineProfile& p, const JointAngles& current, const job
   std::vector<Vec2> xy;
   std::optional<WorkingMode> mode;
   for (const auto& stroke : job::strokesOf(gcodeJob, rules))
-    for (const auto& q : stroke) {
-      const JointAngles a{radFromDeg(q[0]), radFromDeg(q[1])};
-      const FkResult fk = forward(p.geometry, a, p.assembly);
-      if (!fk.ok()) continue;
-      if (!mode) mode = workingModeOf(p.geometry, makePose(p.geometry, a, fk.p));
-      xy.push_back(fk.p);
+    for (const auto& q : stroke) {  // G-code X, Y: commanded angles
+      const JointAngles a = kinematicFromCommanded(p.calibration, {radFromDeg(q[0]), radFromDeg(q[1])});
+      const auto at = penAt(p, a);
+      if (!at) continue;
+      if (!mode) mode = at->mode;
+      xy.push_back(at->pen);
     }
   if (xy.empty() || !mode) {
     plan.status = JogStatus::Blocked;
@@ -213,7 +225,7 @@ JogPlan planFrame(const MachineProfile& p, const JointAngles& current, const job
     for (const Vec2& v : xy) { lo = lo.cwiseMin(v); hi = hi.cwiseMax(v); }
     corners = {lo, {hi.x(), lo.y()}, hi, {lo.x(), hi.y()}};
   }
-  const auto first = ikNear(p, corners[0], *mode, current);
+  const auto first = ikNear(p, corners[0], *mode, kinematicFromCommanded(p.calibration, current));
   const JogPlan travel = first ? planGoTo(p, current, corners[0]) : JogPlan{JogStatus::Blocked};
   if (!travel.ok()) {
     plan.status = JogStatus::Blocked;
@@ -221,7 +233,7 @@ JogPlan planFrame(const MachineProfile& p, const JointAngles& current, const job
     return plan;
   }
   plan = travel;
-  JointAngles q = travel.targets.back();
+  JointAngles q = kinematicFromCommanded(p.calibration, travel.targets.back());  // walkLine: kinematic
   for (size_t i = 1; i <= corners.size(); ++i) {
     const Vec2 a = corners[i - 1], b = corners[i % corners.size()];
     const JogPlan edge = walkLine(p, q, a, (b - a).normalized(), (b - a).norm(), speedMmPerS,
@@ -234,7 +246,7 @@ JogPlan planFrame(const MachineProfile& p, const JointAngles& current, const job
     plan.lines.insert(plan.lines.end(), edge.lines.begin(), edge.lines.end());
     plan.targets.insert(plan.targets.end(), edge.targets.begin(), edge.targets.end());
     plan.lengthMm += edge.lengthMm;
-    q = edge.targets.back();
+    q = kinematicFromCommanded(p.calibration, edge.targets.back());
   }
   return plan;
 }

@@ -27,6 +27,10 @@ class PenTrace {
   void place(const std::array<double, 2>& commandedDeg);
   // A joint-linear move of the motors from the last point to `commandedDeg`; drawn when penDown.
   void moveTo(const std::array<double, 2>& commandedDeg, bool penDown);
+  // The pen touches the paper where it stands: a dot (a one-point polyline) until it moves.
+  void touchDown() {
+    if (!open_) penAt(out_, true);
+  }
   // The pen leaves the paper: the current polyline ends.
   void liftPen() { open_ = false; }
 

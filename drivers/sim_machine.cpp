@@ -161,6 +161,7 @@ void SimMachine::setPen(bool down) {
   } else if (!strokes_.empty() && strokes_.back().back() != here) {
     strokes_.back().push_back(here);  // a move cut short by a stop or an alarm
   }
+  if (down) trace_.touchDown();  // a dot where the pen lands, even if it never moves
   if (!down) trace_.liftPen();
   penDown_ = down;
 }

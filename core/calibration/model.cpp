@@ -3,18 +3,15 @@
 
 #include <cmath>
 
+#include "core/machine/pen_kinematics.hpp"
+
 namespace fivebar::calibration {
 
 std::optional<Vec2> penPosition(const MachineParameters& m, AssemblyMode assembly, const JointAngles& commanded) {
   const JointAngles q{commanded.theta1 + m.zeroOffsetRad1, commanded.theta2 + m.zeroOffsetRad2};
-  const FkResult fk = forward(m.geometry, q, assembly);
+  const FkResult fk = penForward(m.geometry, m.penOffset, q, assembly);  // the one pen formula
   if (!fk.ok()) return std::nullopt;
-  if (!m.penOffset) return fk.p;
-  // Pen fixed to floating link b1: e along R1 -> P, n = e turned 90 deg counter-clockwise.
-  const Vec2 R1 = elbow1(m.geometry, q.theta1);
-  const Vec2 e = (fk.p - R1) / m.geometry.b1;
-  const Vec2 n(-e.y(), e.x());
-  return Vec2(fk.p + m.penOffset->alongMm * e + m.penOffset->normalMm * n);
+  return fk.p;
 }
 
 Vec2 PaperPose::paperFromMachine(const Vec2& machine) const {

@@ -60,5 +60,14 @@ inline JointAngles commandedFromKinematic(const std::optional<MachineCalibration
   if (!c) return kinematic;
   return {kinematic.theta1 - c->zeroOffsetRad1, kinematic.theta2 - c->zeroOffsetRad2};
 }
+// The profile's joint limits, which are on commanded angles (GRBL's soft limits count commanded
+// steps), as bounds of the kinematic angles: each corner converted with kinematicFromCommanded.
+// For searches that walk kinematic angles (a box to search in); a single pose is checked by
+// converting it to commanded angles instead.
+inline JointLimits kinematicLimits(const std::optional<MachineCalibration>& c, const JointLimits& commanded) {
+  const JointAngles lo = kinematicFromCommanded(c, {commanded.theta1Min, commanded.theta2Min});
+  const JointAngles hi = kinematicFromCommanded(c, {commanded.theta1Max, commanded.theta2Max});
+  return {lo.theta1, hi.theta1, lo.theta2, hi.theta2};
+}
 
 }  // namespace fivebar

@@ -57,19 +57,34 @@ BacklashPass compensateBacklash(PlannedJob& job, const MachineProfile& profile, 
   preamble.targetXY = job.startXY;
   takeUp(preamble, {job.start.theta1 - m1.play, job.start.theta2 - m2.play});
   takeUp(preamble, job.start);
+  // The take-up a motion move from `planned` to `target` needs, if it reverses a motor: added as
+  // a move of the kind of `like`, standing at the planned pose.
+  auto takeUpFor = [&](const JobMove& like, const JointAngles& target) {
+    const bool r1 = m1.reverses(target.theta1 - planned.theta1);
+    const bool r2 = m2.reverses(target.theta2 - planned.theta2);
+    if (r1) m1.dir = m1.dir == Direction::Up ? Direction::Down : Direction::Up;
+    if (r2) m2.dir = m2.dir == Direction::Up ? Direction::Down : Direction::Up;
+    if (!r1 && !r2) return;
+    JobMove at = like;
+    at.targetXY = out.empty() ? job.startXY : out.back().targetXY;
+    takeUp(at, {planned.theta1 + m1.offset(), planned.theta2 + m2.offset()});
+  };
   for (size_t j = 0; j < job.moves.size(); ++j) {
     JobMove m = job.moves[j];
+    if (m.kind == JobMoveKind::PenDown) {
+      // A stroke whose first move reverses a motor: its take-up runs before the pen goes down
+      // (a travel: pen up, laser off), not as a standstill with the pen on the paper.
+      size_t k = j + 1;
+      while (k < job.moves.size() && !isMotion(job.moves[k].kind)) ++k;
+      if (k < job.moves.size() && job.moves[k].kind == JobMoveKind::Draw) {
+        JobMove like = job.moves[k];
+        like.kind = JobMoveKind::Travel;
+        takeUpFor(like, job.moves[k].target);
+      }
+    }
     newIndex[j] = static_cast<int>(out.size());
     if (isMotion(m.kind)) {
-      const bool r1 = m1.reverses(m.target.theta1 - planned.theta1);
-      const bool r2 = m2.reverses(m.target.theta2 - planned.theta2);
-      if (r1) m1.dir = m1.dir == Direction::Up ? Direction::Down : Direction::Up;
-      if (r2) m2.dir = m2.dir == Direction::Up ? Direction::Down : Direction::Up;
-      if (r1 || r2) {
-        JobMove like = m;
-        like.targetXY = out.empty() ? job.startXY : out.back().targetXY;
-        takeUp(like, {planned.theta1 + m1.offset(), planned.theta2 + m2.offset()});
-      }
+      takeUpFor(m, m.target);
       planned = m.target;
       m.target = {planned.theta1 + m1.offset(), planned.theta2 + m2.offset()};
       commanded = m.target;

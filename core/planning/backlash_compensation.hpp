@@ -42,7 +42,9 @@ struct BacklashPass {
 // shifted by -b while a motor last moved down, and a last take-up that ends the job at its start
 // pose with every motor last moving up. Non-motion moves carry the commanded pose. targetXY keeps
 // the planned (arm) position. Take-up moves are of the kind of the move they precede (Draw with
-// the pen down), run at the slower motor's top speed, and belong to its stroke. The commanded
+// the pen down inside a stroke, where the arm stands still while the motor crosses its play),
+// except that a stroke's first draw move gets its take-up before the pen goes down, as a Travel
+// (pen up, laser at S0); they run at the slower motor's top speed and belong to its stroke. The commanded
 // joint path is checked with checkJointPath (what a checked stream sees). No play: unchanged.
 // Move times are not refilled (the caller runs fillJobTimes).
 BacklashPass compensateBacklash(PlannedJob& job, const MachineProfile& profile, const MotorPlay& play);

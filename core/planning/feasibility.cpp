@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "core/support/parallel.hpp"
+#include "core/machine/pen_kinematics.hpp"
 #include "core/planning/placement.hpp"
 
 namespace fivebar {
@@ -23,14 +24,6 @@ constexpr int kMoveGridCells = 32;
 constexpr int kMaxDetourSearches = 16;
 // Full preflight verifications a fix search may spend.
 constexpr int kMaxFixVerifications = 3;
-
-// The representative of `angle` near `ref`, shifted by a turn when that keeps it in [lo, hi].
-double nearWithinLimits(double angle, double ref, double lo, double hi) {
-  const double a = unwrapNear(angle, ref);
-  for (double shift : {0.0, 2.0 * kPi, -2.0 * kPi})
-    if (a + shift >= lo && a + shift <= hi) return a + shift;
-  return a;
-}
 
 std::string pointText(const Stroke& s, int k, const Vec2& p) {
   char b[160];
@@ -70,7 +63,7 @@ class Preflight {
   Preflight(const MachineProfile& pr, WorkingMode mode, const PreflightOptions& o,
             FeasibilityReport& rep)
       : pr_(pr), g_(pr.geometry), mode_(mode), o_(o), rep_(rep),
-        home_(o.home.value_or(pr.homeAngles)) {}
+        home_(o.home.value_or(kinematicFromCommanded(pr.calibration, pr.homeAngles))) {}
 
   void run(const std::vector<Stroke>& strokes) {
     std::optional<JointAngles> at;
@@ -137,12 +130,9 @@ class Preflight {
   // one the stroke was checked with.
   bool startsAsAssumed(const Stroke& s, const StrokePass& pass, const std::optional<JointAngles>& at) const {
     if (!pass.first) return true;
-    const IkResult ik = inverse(g_, s.points[static_cast<std::size_t>(pass.firstIndex)], mode_);
+    const IkResult ik = penInverse(pr_, s.points[static_cast<std::size_t>(pass.firstIndex)], mode_);
     if (!ik.ok()) return false;
-    const JointAngles ref = at.value_or(home_);
-    const JointLimits& l = pr_.limits;
-    const JointAngles q{nearWithinLimits(ik.angles.theta1, ref.theta1, l.theta1Min, l.theta1Max),
-                        nearWithinLimits(ik.angles.theta2, ref.theta2, l.theta2Min, l.theta2Max)};
+    const JointAngles q = nearWithinLimits(pr_, ik.angles, at.value_or(home_));
     return q.theta1 == pass.first->theta1 && q.theta2 == pass.first->theta2;
   }
 
@@ -166,21 +156,18 @@ class Preflight {
   std::optional<JointAngles> jointsOf(const Stroke& s, int si, int k, const JointAngles& ref,
                                       bool strokeStart, std::optional<PreflightProblem>& pending) const {
     const Vec2& p = s.points[k];
-    const IkResult ik = inverse(g_, p, mode_);
+    Vec2 distal = p;  // P, where the pen is at p
+    const IkResult ik = penInverse(pr_, p, mode_, &distal);
     if (!ik.ok()) {
-      const bool leg1 = !inverseArm1(g_, p, arm1Sign(mode_)).has_value();
+      const bool leg1 = unreachableLeg(g_, calibratedPenOffset(pr_), p, mode_) == 1;
       pending = PreflightProblem{si, s.layerIndex, s.pathIndex, k, MoveKind::Point, p,
                                  MoveStatus::CannotClose,
                                  pointText(s, k, p) + " is out of reach of leg " + (leg1 ? "1" : "2")};
       return std::nullopt;
     }
     JointAngles q{unwrapNear(ik.angles.theta1, ref.theta1), unwrapNear(ik.angles.theta2, ref.theta2)};
-    if (strokeStart) {
-      const JointLimits& l = pr_.limits;
-      q = {nearWithinLimits(ik.angles.theta1, ref.theta1, l.theta1Min, l.theta1Max),
-           nearWithinLimits(ik.angles.theta2, ref.theta2, l.theta2Min, l.theta2Max)};
-    }
-    if (assemblyModeOf(makePose(g_, q, p)) != pr_.assembly) {
+    if (strokeStart) q = nearWithinLimits(pr_, ik.angles, ref);
+    if (assemblyModeOf(makePose(g_, q, distal)) != pr_.assembly) {
       const AssemblyMode other =
           pr_.assembly == AssemblyMode::Plus ? AssemblyMode::Minus : AssemblyMode::Plus;
       pending = PreflightProblem{si, s.layerIndex, s.pathIndex, k, MoveKind::Point, p,
@@ -286,11 +273,11 @@ bool quickOk(const std::vector<Vec2>& pts, const MachineProfile& pr, WorkingMode
   JointAngles ref = home;
   for (const Vec2& p0 : pts) {
     const Vec2 p = newAnchor + scale * (p0 - anchor);
-    const IkResult ik = inverse(pr.geometry, p, mode);
+    Vec2 distal = p;
+    const IkResult ik = penInverse(pr, p, mode, &distal);
     if (!ik.ok()) return false;
-    const JointAngles q{nearWithinLimits(ik.angles.theta1, ref.theta1, pr.limits.theta1Min, pr.limits.theta1Max),
-                        nearWithinLimits(ik.angles.theta2, ref.theta2, pr.limits.theta2Min, pr.limits.theta2Max)};
-    if (assemblyModeOf(makePose(pr.geometry, q, p)) != pr.assembly) return false;
+    const JointAngles q = nearWithinLimits(pr, ik.angles, ref);
+    if (assemblyModeOf(makePose(pr.geometry, q, distal)) != pr.assembly) return false;
     if (!checkPose(pr, q).ok()) return false;
     ref = q;
   }
@@ -316,7 +303,7 @@ void suggestFixes(const std::vector<Stroke>& strokes, const MachineProfile& pr, 
   const auto box = strokeBounds(strokes);
   if (!box) return;
   const Vec2 anchor = o.anchorMm.value_or(box->center());
-  const JointAngles home = o.home.value_or(pr.homeAngles);
+  const JointAngles home = o.home.value_or(kinematicFromCommanded(pr.calibration, pr.homeAngles));
   const std::vector<Vec2> pts = samplePoints(strokes);
   int budget = kMaxFixVerifications;
   for (int i = 1; i <= kShrinkSteps && budget > 0; ++i) {

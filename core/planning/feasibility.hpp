@@ -20,7 +20,8 @@ namespace fivebar {
 struct PreflightOptions {
   // Check the travel from the home pose to the first stroke and back after the last one.
   bool includeHomeTravel = true;
-  std::optional<JointAngles> home;  // nullopt = profile.homeAngles
+  std::optional<JointAngles> home;  // KINEMATIC angles; nullopt = the profile's home pose
+                                    // (homeAngles are commanded: converted with its calibration)
   // Travels that fail the straight joint move are accepted when planSafeTravel finds a detour
   // (at most 16 searches per preflight; later failing travels are reported as problems).
   bool allowTravelDetours = true;

@@ -13,6 +13,7 @@
 #include "core/planning/feeds.hpp"
 #include "core/support/memory_hint.hpp"
 #include "core/kinematics/move_samples.hpp"
+#include "core/machine/pen_kinematics.hpp"
 #include "core/support/parallel.hpp"
 #include "core/planning/planner.hpp"
 #include "core/planning/safety.hpp"
@@ -49,7 +50,7 @@ class MotionPlanner {
                 const MachineProfile& profile, WorkingMode mode, const PlanOptions& options,
                 PlanResult& out)
       : strokes_(strokes), layers_(layers), p_(profile), g_(profile.geometry), mode_(mode),
-        opt_(options), out_(out), job_(out.job) {
+        opt_(options), out_(out), job_(out.job), pen_(calibratedPenOffset(profile)) {
     limits_ = feedLimitsOf(profile);
     limits_.minSegmentDurationS = options.minSegmentDurationS;
   }
@@ -57,8 +58,8 @@ class MotionPlanner {
   // exactBudgetMm: the joint-linear budget of a stroke whose points are its geometry;
   // flattenedBudgetMm: of a stroke of flattened curves (Stroke::flattened).
   void run(double exactBudgetMm, double flattenedBudgetMm) {
-    segExact_.deviationBudgetMm = exactBudgetMm;
-    segFlattened_.deviationBudgetMm = flattenedBudgetMm;
+    segExact_.deviationBudgetMm = distalBudgetMm(exactBudgetMm);
+    segFlattened_.deviationBudgetMm = distalBudgetMm(flattenedBudgetMm);
     // The moves are measured between the angles as the G-code carries them.
     segExact_.angleDecimalsDeg = segFlattened_.angleDecimalsDeg = kGcodeAngleDecimals;
     job_.profileName = p_.name;
@@ -118,9 +119,9 @@ class MotionPlanner {
               {"set a reachable home pose in the profile"});
       return false;
     }
-    job_.startXY = fk.p;
+    job_.startXY = penOf(job_.start, fk.p);
     at_ = job_.start;
-    atXY_ = fk.p;
+    atXY_ = job_.startXY;
     return true;
   }
 
@@ -210,8 +211,24 @@ class MotionPlanner {
   void prepare(size_t k, Prepared& out) const {
     const Stroke& s = strokes_[k];
     if (s.points.empty()) return;
-    out.seg = segmentStroke(g_, mode_, p_.assembly, s.points, job_.start,
-                            s.flattened ? segFlattened_ : segExact_);
+    if (pen_) {  // the pen is off P: segment the path of P that draws the pen's stroke
+      Vec2 failedAt = Vec2::Zero();
+      const auto distal = distalPath(g_, *pen_, mode_, s.points, &failedAt);
+      if (!distal) {
+        out.seg.status = SegmentStatus::OutOfReach;
+        out.seg.failedAt = failedAt;
+        return;
+      }
+      out.seg = segmentStroke(g_, mode_, p_.assembly, *distal, job_.start, s.flattened ? segFlattened_ : segExact_);
+      if (!out.seg.ok()) {
+        out.seg.failedAt = penOf(out.seg.failedAt);
+        return;
+      }
+      for (JointWaypoint& w : out.seg.waypoints) w.p = penOf(w.q, w.p);
+    } else {
+      out.seg = segmentStroke(g_, mode_, p_.assembly, s.points, job_.start,
+                              s.flattened ? segFlattened_ : segExact_);
+    }
     if (!out.seg.ok()) return;
     out.check = checkWaypoints(out.seg);
     if (!out.check.ok()) return;
@@ -237,13 +254,30 @@ class MotionPlanner {
     }
   }
 
-  // Shifts the stroke's angles by whole turns so that it starts nearest the current pose.
-  // Returns whether the angles changed (joint limits then need a new check).
+  // Shifts the stroke's angles by whole turns so that it starts nearest the current pose; when
+  // that turn takes a motor of the stroke beyond its joint limits (on commanded angles), by the
+  // nearest turn that keeps that motor's whole stroke inside them. Returns whether the angles
+  // changed (joint limits then need a new check).
   bool unwrapNearCurrent(SegmentedStroke& seg) const {
     if (seg.waypoints.empty()) return false;
     const JointAngles q0 = seg.waypoints[0].q;
-    const double d1 = unwrapNear(q0.theta1, at_.theta1) - q0.theta1;
-    const double d2 = unwrapNear(q0.theta2, at_.theta2) - q0.theta2;
+    JointAngles lo = q0, hi = q0;
+    for (const JointWaypoint& w : seg.waypoints) {
+      lo = {std::min(lo.theta1, w.q.theta1), std::min(lo.theta2, w.q.theta2)};
+      hi = {std::max(hi.theta1, w.q.theta1), std::max(hi.theta2, w.q.theta2)};
+    }
+    const JointAngles cLo = commandedFromKinematic(p_.calibration, lo);
+    const JointAngles cHi = commandedFromKinematic(p_.calibration, hi);
+    const JointLimits& l = p_.limits;  // commanded
+    const auto turn = [](double nearest, double from, double to, double min, double max) {
+      for (double shift : {nearest, nearest + 2.0 * kPi, nearest - 2.0 * kPi})
+        if (from + shift >= min && to + shift <= max) return shift;
+      return nearest;
+    };
+    const double d1 = turn(unwrapNear(q0.theta1, at_.theta1) - q0.theta1, cLo.theta1, cHi.theta1,
+                           l.theta1Min, l.theta1Max);
+    const double d2 = turn(unwrapNear(q0.theta2, at_.theta2) - q0.theta2, cLo.theta2, cHi.theta2,
+                           l.theta2Min, l.theta2Max);
     if (d1 == 0.0 && d2 == 0.0) return false;
     for (JointWaypoint& w : seg.waypoints) w.q = {w.q.theta1 + d1, w.q.theta2 + d2};
     return true;
@@ -326,10 +360,10 @@ class MotionPlanner {
     if (!path) return t;
     t.found = true;
     const FkResult start = forward(g_, from, p_.assembly);
-    t.chain.push_back({from, start.ok() ? start.p : Vec2::Zero(), 0.0, 0.0});
+    t.chain.push_back({from, start.ok() ? penOf(from, start.p) : Vec2::Zero(), 0.0, 0.0});
     for (const JointAngles& q : *path) {
       const auto [length, end] = travelLength(t.chain.back().q, q);
-      t.chain.push_back({q, end, 0.0, length});
+      t.chain.push_back({q, penOf(q, end), 0.0, length});
     }
     t.feeds = planFeeds(g_, p_.assembly, t.chain, p_.travelSpeedMmPerS, limits_);
     return t;
@@ -416,8 +450,26 @@ class MotionPlanner {
     return m;
   }
 
+  // `p` is the pen; the margin is that of the linkage, at P.
   double typeIIMarginAt(const JointAngles& q, const Vec2& p) const {
-    return singularityMargins(g_, makePose(g_, q, p)).typeII;
+    const Vec2 P = pen_ ? forward(g_, q, p_.assembly).p : p;
+    return singularityMargins(g_, makePose(g_, q, P)).typeII;
+  }
+
+  // The pen of the pose q whose distal joint is P (P itself without a pen offset).
+  Vec2 penOf(const JointAngles& q, const Vec2& P) const {
+    return pen_ ? penFromDistal(pen_, g_, elbow1(g_, q.theta1), P) : P;
+  }
+  // The pen where P is at `P` in the planned working mode (for a failure's place).
+  Vec2 penOf(const Vec2& P) const {
+    const IkResult ik = inverse(g_, P, mode_);
+    return ik.ok() ? penOf(ik.angles, P) : P;
+  }
+  // The budget of P's deviation that keeps the pen within `budgetMm` (pen_kinematics.hpp): the
+  // mapping's chord tolerance paid, the rest divided by the pen's lever factor.
+  double distalBudgetMm(double budgetMm) const {
+    if (!pen_) return budgetMm;
+    return (budgetMm - kDistalChordToleranceMm) / penDeviationFactor(g_, pen_);
   }
 
   void moved(const JointAngles& q, const Vec2& p) { moved(q, p, typeIIMarginAt(q, p)); }
@@ -465,6 +517,7 @@ class MotionPlanner {
   const PlanOptions& opt_;
   PlanResult& out_;
   PlannedJob& job_;
+  const std::optional<PenOffset>& pen_;  // the calibrated pen offset (pen_kinematics.hpp)
   FeedLimits limits_;
   SegmentationOptions segExact_, segFlattened_;
   JointAngles at_;

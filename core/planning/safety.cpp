@@ -289,6 +289,19 @@ PathCheck checkJointPath(const MachineProfile& profile, const std::vector<JointA
   return path;
 }
 
+JointAngles nearWithinLimits(const MachineProfile& profile, const JointAngles& kinematic, const JointAngles& near) {
+  const JointAngles q{unwrapNear(kinematic.theta1, near.theta1), unwrapNear(kinematic.theta2, near.theta2)};
+  const JointAngles c = commandedFromKinematic(profile.calibration, q);  // limits are commanded
+  const JointLimits& l = profile.limits;
+  const auto turnInto = [](double commanded, double lo, double hi) {
+    for (double shift : {0.0, 2.0 * kPi, -2.0 * kPi})
+      if (commanded + shift >= lo && commanded + shift <= hi) return shift;
+    return 0.0;
+  };
+  return {q.theta1 + turnInto(c.theta1, l.theta1Min, l.theta1Max),
+          q.theta2 + turnInto(c.theta2, l.theta2Min, l.theta2Max)};
+}
+
 std::string_view toString(MoveStatus status) {
   switch (status) {
     case MoveStatus::Ok: return "ok";

@@ -73,6 +73,11 @@ PathCheck checkJointPath(const MachineProfile& profile, const std::vector<JointA
 // joint limits, loop closure, type II (assembly ambiguity and margin), type I margin.
 MoveCheck checkPose(const MachineProfile& profile, const JointAngles& q);
 
+// Kinematic angles `kinematic` unwrapped near `near` (both kinematic), each motor shifted by a
+// whole turn when that brings its COMMANDED angle (commandedFromKinematic) inside the profile's
+// joint limits; unchanged from the nearest turn when no turn does.
+JointAngles nearWithinLimits(const MachineProfile& profile, const JointAngles& kinematic, const JointAngles& near);
+
 // Short name: "ok", "near type II", "near type I", "beyond joint limit", "cannot close",
 // "assembly change".
 std::string_view toString(MoveStatus status);

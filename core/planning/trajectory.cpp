@@ -2,10 +2,12 @@
 
 #include <algorithm>
 
+#include "core/machine/pen_kinematics.hpp"
+
 namespace fivebar {
 
 Trajectory::Trajectory(const PlannedJob& job, const MachineProfile& profile)
-    : job_(job), geometry_(profile.geometry) {
+    : job_(job), geometry_(profile.geometry), pen_(calibratedPenOffset(profile)) {
   timings_ = estimateJobTime(job_, profile);
   durationS_ = job_.summary.estimatedTimeS;
   from_.reserve(job_.moves.size());
@@ -42,7 +44,7 @@ TrajectorySample Trajectory::at(double timeS) const {
       s.q = isMotion(m.kind) ? m.target : from_[i];
     }
   }
-  const FkResult fk = forward(geometry_, s.q, job_.assembly);
+  const FkResult fk = penForward(geometry_, pen_, s.q, job_.assembly);
   s.p = fk.ok() ? fk.p : job_.startXY;
   return s;
 }

@@ -3,6 +3,7 @@
 // state and do not belong here.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "core/planning/job.hpp"
@@ -14,7 +15,8 @@ namespace fivebar {
 struct TrajectorySample {
   double timeS = 0.0;
   JointAngles q;           // continuous motor angles (rad)
-  Vec2 p = Vec2::Zero();   // end-effector (mm), FK of q in the job's assembly mode
+  Vec2 p = Vec2::Zero();   // the pen (mm): FK of q in the job's assembly mode, with the
+                           // profile's calibrated pen offset (pen_kinematics.hpp)
   int moveIndex = -1;      // move executing at timeS (-1 before the first)
   bool penDown = false;    // tool down (drawing) at timeS
 };
@@ -33,6 +35,7 @@ class Trajectory {
  private:
   PlannedJob job_;
   Geometry geometry_;
+  std::optional<PenOffset> pen_;  // the profile's calibrated pen offset
   std::vector<GrblBlockTiming> timings_;
   std::vector<JointAngles> from_;   // pose before each move
   std::vector<bool> penDownAfter_;  // tool state after each move

@@ -32,10 +32,12 @@ class DetourGrid {
              WorkingMode mode)
       : pr_(pr), mode_(mode) {
     const double pad = kPi;
-    lo1_ = std::max(pr.limits.theta1Min, std::min(from.theta1, to.theta1) - pad);
-    lo2_ = std::max(pr.limits.theta2Min, std::min(from.theta2, to.theta2) - pad);
-    const double hi1 = std::min(pr.limits.theta1Max, std::max(from.theta1, to.theta1) + pad);
-    const double hi2 = std::min(pr.limits.theta2Max, std::max(from.theta2, to.theta2) + pad);
+    // The grid walks kinematic angles; the profile's limits are on commanded angles.
+    const JointLimits l = kinematicLimits(pr.calibration, pr.limits);
+    lo1_ = std::max(l.theta1Min, std::min(from.theta1, to.theta1) - pad);
+    lo2_ = std::max(l.theta2Min, std::min(from.theta2, to.theta2) - pad);
+    const double hi1 = std::min(l.theta1Max, std::max(from.theta1, to.theta1) + pad);
+    const double hi2 = std::min(l.theta2Max, std::max(from.theta2, to.theta2) + pad);
     n1_ = std::clamp(static_cast<int>(std::ceil((hi1 - lo1_) / kDetourGridStepRad)) + 1, 2,
                      kDetourMaxCellsPerMotor);
     n2_ = std::clamp(static_cast<int>(std::ceil((hi2 - lo2_) / kDetourGridStepRad)) + 1, 2,

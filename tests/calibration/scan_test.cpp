@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <QTemporaryDir>
+#include <algorithm>
 #include <random>
 
 #include "core/calibration/mark_match.hpp"
@@ -84,6 +85,23 @@ TEST(Scan, ImperfectMachineMarksAreStillNumberedRight) {
   o.seed = test::seed() + 2;
   for (const PatternMark& m : maker().pattern.marks) o.displacementMm[m.id] = Vec2(u(rng), u(rng));
   expectExact(test::renderSheet(maker().pattern, o), 300, false, "300 dpi, displaced marks, 181 deg");
+}
+
+TEST(SyntheticScan, EachMarksStrokesMoveWithItWhateverTheOrderOfTheMarks) {
+  // renderSheet finds a mark's strokes by plotting order, not by the order of the marks (by id):
+  // the same pattern with its marks listed in another order renders the same sheet.
+  std::mt19937_64 rng = test::rng();
+  std::uniform_real_distribution<double> u(-1.4, 1.4);
+  test::SheetOptions o;
+  o.dpi = 150;
+  for (const PatternMark& m : maker().pattern.marks) o.displacementMm[m.id] = Vec2(u(rng), u(rng));
+  const CalibrationPattern& pattern = maker().pattern;
+  CalibrationPattern reversed = pattern;
+  std::reverse(reversed.marks.begin(), reversed.marks.end());
+  std::reverse(reversed.dotStroke.begin(), reversed.dotStroke.end());
+  const test::Sheet a = test::renderSheet(pattern, o), b = test::renderSheet(reversed, o);
+  EXPECT_TRUE(a.image == b.image) << "the order of the marks changed the drawing";
+  EXPECT_EQ(a.truePaperMm, b.truePaperMm);
 }
 
 TEST(Scan, ReadsPngAndJpegFiles) {

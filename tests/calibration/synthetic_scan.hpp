@@ -78,15 +78,30 @@ inline void addNoise(QImage& img, double sigma, std::uint64_t seed) {
 }
 
 inline Sheet renderSheet(const CalibrationPattern& pattern, const SheetOptions& o) {
-  // Drawn positions (machine frame): every stroke of a mark moves with its displacement.
+  // Drawn positions (machine frame): every stroke of a mark moves with its displacement. A mark's
+  // strokes (ring, number, dot) are those after the previous dot IN PLOTTING ORDER up to its own
+  // dot, and near it: the marks are listed by id, not in plotting order, and the accuracy lines
+  // (an item of the same tour) belong to no mark.
   std::vector<Vec2> strokeShift(pattern.strokes.size(), Vec2::Zero());
-  for (size_t i = 0; i < pattern.marks.size(); ++i) {
+  std::vector<size_t> byDot(pattern.marks.size());
+  for (size_t i = 0; i < byDot.size(); ++i) byDot[i] = i;
+  std::sort(byDot.begin(), byDot.end(),
+            [&](size_t a, size_t b) { return pattern.dotStroke[a] < pattern.dotStroke[b]; });
+  const double markRadiusMm = 15.0;  // ring and number lie within this of the dot
+  int previousDot = -1;
+  for (const size_t i : byDot) {
+    const int dot = pattern.dotStroke[i];
+    const int first = previousDot + 1;
+    previousDot = dot;
     const auto it = o.displacementMm.find(pattern.marks[i].id);
     if (it == o.displacementMm.end()) continue;
-    const int dot = pattern.dotStroke[i];
-    // The mark's strokes: from the end of the previous mark's dot to its own dot.
-    const int first = i == 0 ? 0 : pattern.dotStroke[i - 1] + 1;
-    for (int s = first; s <= dot; ++s) strokeShift[static_cast<size_t>(s)] = it->second;
+    for (int s = first; s <= dot; ++s) {
+      const auto& pts = pattern.strokes[static_cast<size_t>(s)].points;
+      const bool near = std::all_of(pts.begin(), pts.end(), [&](const Vec2& p) {
+        return (p - pattern.marks[i].nominalMm).norm() <= markRadiusMm;
+      });
+      if (near) strokeShift[static_cast<size_t>(s)] = it->second;
+    }
   }
   const double a = o.rotationDeg * kPi / 180.0;
   const Eigen::Matrix2d R = Eigen::Rotation2Dd(a).toRotationMatrix() *

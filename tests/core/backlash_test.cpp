@@ -157,6 +157,50 @@ TEST(BacklashCompensation, EndsAtTheStartPoseAndKeepsStrokesConsistent) {
   EXPECT_EQ(job.moves[static_cast<size_t>(s.firstMove + s.moveCount)].kind, JobMoveKind::PenUp);
 }
 
+// A stroke whose first move reverses a motor gets its take-up before the pen goes down, as a
+// travel (pen up, laser at S0): at no touch-down does the pen stand on the paper while a motor
+// crosses its play (a blot, or a burn with a laser); the strokes are still drawn true.
+TEST(BacklashCompensation, TakeUpBeforeATouchDownRunsWithThePenUp) {
+  const MachineProfile p = *preset("maker-plotter");
+  std::vector<Stroke> strokes;
+  for (int k = 0; k < 8; ++k) {  // short strokes in eight directions around a circle
+    const double a = kPi * k / 4.0;
+    const Vec2 from = Vec2(0, 175) + 25.0 * Vec2(std::cos(a), std::sin(a));
+    Stroke s;
+    s.points = {from, from + 12.0 * Vec2(std::cos(a + 2.0), std::sin(a + 2.0))};
+    s.pathIndex = k;
+    strokes.push_back(s);
+  }
+  PlanOptions o;
+  o.optimise = false;
+  const PlanResult r = planStrokes(strokes, {}, p, p.defaultMode, o);
+  ASSERT_TRUE(r.ok()) << r.message;
+  PlannedJob job = r.job;
+  ASSERT_TRUE(compensateBacklash(job, p, kPlay).ok);
+  int beforeTouchDown = 0;
+  PlayState s(kPlay, job.start);
+  bool firstAfterDown = false;
+  for (size_t i = 0; i < job.moves.size(); ++i) {
+    const JobMove& m = job.moves[i];
+    if (m.kind == JobMoveKind::PenDown) {
+      firstAfterDown = true;
+      if (i > 0 && job.moves[i - 1].kind == JobMoveKind::Travel && job.moves[i - 1].feedMmPerS == 0.0)
+        ++beforeTouchDown;
+    }
+    if (!isMotion(m.kind)) continue;
+    const JointAngles before = s.arm();
+    s.moveTo(m.target);
+    if (firstAfterDown) {
+      EXPECT_EQ(m.kind, JobMoveKind::Draw);
+      EXPECT_GT(std::hypot(s.arm().theta1 - before.theta1, s.arm().theta2 - before.theta2), 1e-6)
+          << "move " << i << ": the pen stands still on the paper";
+      firstAfterDown = false;
+    }
+  }
+  EXPECT_GT(beforeTouchDown, 0) << "no stroke started by reversing a motor: the test shows nothing";
+  EXPECT_LT(drawnErrors(job, p, kPlay).worstVertexMm, 0.05);
+}
+
 // The planner applies the compensation of the profile's calibration to every job.
 TEST(BacklashCompensation, PlannerAppliesTheProfilesBacklash) {
   MachineProfile p = *preset("maker-plotter");

@@ -8,10 +8,13 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "core/calibration/backlash.hpp"
+#include "core/calibration/pattern.hpp"
 #include "core/kinematics/kinematics.hpp"
 #include "core/kinematics/units.hpp"
 #include "core/machine/profile.hpp"
@@ -192,6 +195,100 @@ TEST(TrueMachine, BacklashLeavesACircleOpenByTheExpectedGap) {
   const auto closed = drawOn(p, p, job);
   ASSERT_EQ(closed.size(), 1u);
   EXPECT_LT((closed.front().back() - closed.front().front()).norm(), 1e-6);
+}
+
+// The check on the simulated machine: a true machine with play 0.5 deg on motor 1 and
+// 0.3 deg on motor 2, and a profile calibrated for it (that play, and the zero offsets a fit of
+// marks approached with the motors moving up finds there: the drive trails a motor that pushes
+// it by half its play, pen_trace.hpp, so -play/2). With the planner's compensation a circle
+// closes and a square's corners meet, within 0.05 mm (the drawn line within the plan's tolerance
+// plus one motor step); without compensation they miss by about half a millimetre.
+TEST(TrueMachine, BacklashCompensationClosesACircleAndASquaresCornersMeet) {
+  const MachineProfile p = makerPlotter();
+  const double play1Deg = 0.5, play2Deg = 0.3;
+  MachineProfile real = p;
+  MachineCalibration truth;
+  truth.backlashRad1 = radFromDeg(play1Deg);
+  truth.backlashRad2 = radFromDeg(play2Deg);
+  real.calibration = truth;
+  MachineProfile calibrated = p;
+  MachineCalibration c = truth;
+  c.zeroOffsetRad1 = -0.5 * truth.backlashRad1;
+  c.zeroOffsetRad2 = -0.5 * truth.backlashRad2;
+  calibrated.calibration = c;
+  MachineProfile uncompensated = calibrated;
+  uncompensated.calibration->backlashRad1 = uncompensated.calibration->backlashRad2 = 0.0;
+  const double stepMm = 0.06;  // one motor step at the pen, at most (see above)
+  for (const Polyline& shape : {circle(20.0), square(30.0)}) {
+    std::vector<Vec2> intended;
+    for (const Vec2& v : shape.points) intended.push_back(kCentreMm + v);
+    const auto drawn = drawOn(calibrated, real, plannedJob(calibrated, shape));
+    ASSERT_EQ(drawn.size(), 1u);
+    const double gap = (drawn.front().back() - drawn.front().front()).norm();
+    double worstVertex = 0.0;
+    for (const Vec2& v : intended) worstVertex = std::max(worstVertex, distanceToPolyline(v, drawn.front()));
+    double worstDrawn = 0.0;
+    for (const Vec2& q : drawn.front()) worstDrawn = std::max(worstDrawn, distanceToPolyline(q, intended));
+    std::printf("%s with play %.1f/%.1f deg, compensated: gap %.4f mm, vertices within %.4f mm, drawn within %.4f mm\n",
+                shape.points.size() == 5 ? "60 mm square" : "20 mm circle", play1Deg, play2Deg, gap, worstVertex,
+                worstDrawn);
+    const bool isSquare = shape.points.size() == 5;
+    EXPECT_LT(gap, 0.05);
+    // The square's corners are move ends; the circle's vertices may lie inside moves, which the
+    // plan keeps within its tolerance.
+    EXPECT_LT(worstVertex, isSquare ? 0.05 : kToleranceMm + stepMm);
+    EXPECT_LT(worstDrawn, kToleranceMm + stepMm);
+    const auto raw = drawOn(uncompensated, real, plannedJob(uncompensated, shape));
+    ASSERT_EQ(raw.size(), 1u);
+    double rawWorst = 0.0;
+    for (const Vec2& v : intended) rawWorst = std::max(rawWorst, distanceToPolyline(v, raw.front()));
+    std::printf("  the same without compensation: gap %.4f mm, vertices within %.4f mm\n",
+                (raw.front().back() - raw.front().front()).norm(), rawWorst);
+    EXPECT_GT(std::max(rawWorst, (raw.front().back() - raw.front().front()).norm()), 0.2);
+  }
+}
+
+// The backlash fit on the simulated machine: the calibration pattern drawn by a true machine
+// with play (0.5 and 0.3 deg) and links and zeros off; each dot's drawn place (the pen's
+// touch-down, drawnTrace) as the measurement; the rows give each motor's play back within
+// 0.03 deg, about one motor step (1/35.6 deg): GRBL puts each mark on a whole step.
+TEST(TrueMachine, BacklashFittedFromThePatternDrawnOnTheSimulatedMachine) {
+  const MachineProfile p = makerPlotter();
+  const PatternResult pr = makeCalibrationPattern(p);
+  ASSERT_TRUE(pr.pattern) << pr.error;
+  const PlanResult plan = planCalibrationPattern(*pr.pattern, p);
+  ASSERT_TRUE(plan.ok()) << plan.message;
+  const std::string gcode = writeGcode(plan.job, p);
+  for (const auto& [play1Deg, play2Deg] : {std::pair{0.5, 0.3}, std::pair{0.3, 0.5}}) {
+    MachineProfile real = p;
+    real.geometry.a1 += 0.3;
+    real.geometry.b2 -= 0.4;
+    MachineCalibration truth;
+    truth.zeroOffsetRad1 = radFromDeg(0.8);
+    truth.zeroOffsetRad2 = radFromDeg(-0.6);
+    truth.backlashRad1 = radFromDeg(play1Deg);
+    truth.backlashRad2 = radFromDeg(play2Deg);
+    real.calibration = truth;
+    const auto drawn = drawOn(p, real, gcode);
+    // Each dot is a one-point polyline; it belongs to the mark whose nominal place is nearest.
+    std::map<int, Vec2> measured;
+    for (const auto& line : drawn) {
+      if (line.size() != 1) continue;
+      const PatternMark* best = nullptr;
+      for (const PatternMark& m : pr.pattern->marks)
+        if (!best || (m.nominalMm - line[0]).norm() < (best->nominalMm - line[0]).norm()) best = &m;
+      ASSERT_LT((best->nominalMm - line[0]).norm(), 5.0) << "a dot far from every mark";
+      EXPECT_EQ(measured.count(best->id), 0u) << "two dots for mark " << best->id;
+      measured[best->id] = line[0];
+    }
+    EXPECT_EQ(measured.size(), pr.pattern->marks.size());
+    const BacklashEstimate e = estimateBacklash(pr.pattern->marks, measured);
+    ASSERT_TRUE(e.ok()) << e.error;
+    std::printf("true play %.2f / %.2f deg: fitted %.4f / %.4f deg\n", play1Deg, play2Deg,
+                degFromRad(e.play.motor1Rad), degFromRad(e.play.motor2Rad));
+    EXPECT_NEAR(degFromRad(e.play.motor1Rad), play1Deg, 0.03);
+    EXPECT_NEAR(degFromRad(e.play.motor2Rad), play2Deg, 0.03);
+  }
 }
 
 }  // namespace
