@@ -207,6 +207,215 @@
     </message>
 </context>
 <context>
+    <name>Placement</name>
+    <message>
+        <source>scaled to %1 % to fit the workspace</source>
+        <translation>auf %1 % verkleinert, damit sie in den Arbeitsraum passt</translation>
+    </message>
+</context>
+<context>
+    <name>Planner</name>
+    <message>
+        <source>layer '%1'</source>
+        <translation>Ebene '%1'</translation>
+    </message>
+    <message>
+        <source>layer %1</source>
+        <translation>Ebene %1</translation>
+    </message>
+    <message>
+        <source>move or shrink the drawing (--at, --scale, --fit)</source>
+        <translation>Zeichnung verschieben oder verkleinern (--at, --scale, --fit)</translation>
+    </message>
+    <message>
+        <source>try another working mode (--mode)</source>
+        <translation>einen anderen Arbeitsmodus versuchen (--mode)</translation>
+    </message>
+    <message>
+        <source>travel back to the start pose</source>
+        <translation>Rückfahrt zur Startstellung</translation>
+    </message>
+    <message>
+        <source>start pose</source>
+        <translation>Startstellung</translation>
+    </message>
+    <message>
+        <source>the profile's home pose does not close the linkage</source>
+        <translation>die Grundstellung des Profils schließt das Getriebe nicht</translation>
+    </message>
+    <message>
+        <source>set a reachable home pose in the profile</source>
+        <translation>eine erreichbare Grundstellung im Profil einstellen</translation>
+    </message>
+    <message>
+        <source>a point is out of reach in working mode %1</source>
+        <translation>ein Punkt ist im Arbeitsmodus %1 außer Reichweite</translation>
+    </message>
+    <message>
+        <source>the drawn curve cannot follow the stroke here (singular region)</source>
+        <translation>die gezeichnete Kurve kann dem Strich hier nicht folgen (singulärer Bereich)</translation>
+    </message>
+    <message>
+        <source>the drawn line %1</source>
+        <translation>die gezeichnete Linie %1</translation>
+    </message>
+    <message>
+        <source>travel to %1</source>
+        <translation>Fahrt zu %1</translation>
+    </message>
+    <message>
+        <source>no safe pen-up travel reaches it</source>
+        <translation>keine sichere Fahrt mit angehobenem Stift erreicht ihn</translation>
+    </message>
+    <message>
+        <source>move the drawing away from singular regions (--at)</source>
+        <translation>die Zeichnung von singulären Bereichen wegschieben (--at)</translation>
+    </message>
+    <message>
+        <source>try another --mode</source>
+        <translation>einen anderen --mode versuchen</translation>
+    </message>
+    <message>
+        <source>%1 path %2</source>
+        <translation>%1 Pfad %2</translation>
+    </message>
+    <message>
+        <source>tolerance %1 mm leaves nothing for the moves after flattening (%2 mm) and the G-code rounding (up to %3 mm)</source>
+        <translation>die Toleranz von %1 mm lässt nach der Kurvennäherung (%2 mm) und der G-Code-Rundung (bis %3 mm) nichts für die Bewegungen übrig</translation>
+    </message>
+    <message>
+        <source>backlash compensation</source>
+        <translation>Spielausgleich</translation>
+    </message>
+    <message>
+        <source>move the drawing away from the workspace edge (--at)</source>
+        <translation>die Zeichnung vom Rand des Arbeitsraums wegschieben (--at)</translation>
+    </message>
+    <message>
+        <source>planning cancelled</source>
+        <translation>Planung abgebrochen</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>backlash compensation: a compensated move %1</source>
+        <translation>Spielausgleich: eine ausgeglichene Bewegung %1</translation>
+    </message>
+    <message>
+        <source>shrink the drawing to %1 % (--scale %2)</source>
+        <translation>die Zeichnung auf %1 % verkleinern (--scale %2)</translation>
+    </message>
+    <message>
+        <source>move the drawing's centre to x %1 mm, y %2 mm (--at %3,%4)</source>
+        <translation>die Mitte der Zeichnung nach x %1 mm, y %2 mm verschieben (--at %3,%4)</translation>
+    </message>
+    <message>
+        <source>use working mode %1 (--mode %1)</source>
+        <translation>Arbeitsmodus %1 verwenden (--mode %1)</translation>
+    </message>
+    <message>
+        <source>fit the drawing into the workspace (--fit)</source>
+        <translation>die Zeichnung in den Arbeitsraum einpassen (--fit)</translation>
+    </message>
+    <message>
+        <source>job</source>
+        <translation>Auftrag</translation>
+    </message>
+    <message>
+        <source>working mode %1: %2: %3</source>
+        <translation>Arbeitsmodus %1: %2: %3</translation>
+    </message>
+    <message>
+        <source>scale must be a positive number</source>
+        <translation>der Maßstab muss eine positive Zahl sein</translation>
+    </message>
+    <message>
+        <source>nothing visible to draw in '%1'</source>
+        <translation>nichts Sichtbares zu zeichnen in '%1'</translation>
+    </message>
+    <message>
+        <source>no working mode has a singularity-free area to place the drawing in</source>
+        <translation>kein Arbeitsmodus hat einen singularitätsfreien Bereich, in den die Zeichnung passt</translation>
+    </message>
+    <message>
+        <source>check the profile</source>
+        <translation>das Profil prüfen</translation>
+    </message>
+    <message>
+        <source>the drawing was flattened within %1 mm, too coarse at %2 %: import it again within %3 mm</source>
+        <translation>die Zeichnung wurde auf %1 mm genau angenähert, zu grob bei %2 %: erneut auf %3 mm genau importieren</translation>
+    </message>
+</context>
+<context>
+    <name>Preflight</name>
+    <message>
+        <source>layer %1 path %2 point %3 at (%4, %5) mm</source>
+        <translation>Ebene %1 Pfad %2 Punkt %3 bei (%4; %5) mm</translation>
+    </message>
+    <message>
+        <source>%1 is out of reach of leg %2</source>
+        <translation>%1 ist außerhalb der Reichweite von Arm %2</translation>
+    </message>
+    <message>
+        <source>%1 needs assembly mode %2 in working mode %3</source>
+        <translation>%1 braucht Montagemodus %2 im Arbeitsmodus %3</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>the line to %1 %2</source>
+        <translation>die Linie zu %1 %2</translation>
+    </message>
+    <message>
+        <source>the travel back to the home pose</source>
+        <translation>die Rückfahrt zur Grundstellung</translation>
+    </message>
+    <message>
+        <source>the travel to %1</source>
+        <translation>die Fahrt zu %1</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>%1; no safe detour found</source>
+        <translation>%1; kein sicherer Umweg gefunden</translation>
+    </message>
+    <message>
+        <source>%1; detour not searched (limit of searches per job reached)</source>
+        <translation>%1; kein Umweg gesucht (Grenze der Suchen je Auftrag erreicht)</translation>
+    </message>
+    <message>
+        <source>mode %1: feasible, worst type II margin %2 deg</source>
+        <translation>Modus %1: machbar, kleinster Abstand zu Typ II %2°</translation>
+    </message>
+    <message>
+        <source>mode %1: 1 problem</source>
+        <translation>Modus %1: 1 Problem</translation>
+    </message>
+    <message>
+        <source>mode %1: %2 problems</source>
+        <translation>Modus %1: %2 Probleme</translation>
+    </message>
+    <message>
+        <source>%1 (first: %2)</source>
+        <translation>%1 (erstes: %2)</translation>
+    </message>
+    <message>
+        <source>%1; fix: shrink to %2%</source>
+        <translation>%1; Abhilfe: auf %2 % verkleinern</translation>
+    </message>
+    <message>
+        <source>%1; fix: move the centre to (%2, %3) mm</source>
+        <translation>%1; Abhilfe: die Mitte nach (%2; %3) mm verschieben</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>Planning failed: %1</source>
@@ -215,6 +424,37 @@
     <message>
         <source>Cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>Safety</name>
+    <message>
+        <source>safe; closest approach to a type II singularity %1 deg</source>
+        <translation>sicher; kleinster Abstand zu einer Typ-II-Singularität %1°</translation>
+    </message>
+    <message>
+        <source>passes within %1 deg of a type II singularity at (%2, %3) mm, %4% along the move</source>
+        <translation>kommt einer Typ-II-Singularität bis auf %1° nahe bei (%2; %3) mm, nach %4 % der Bewegung</translation>
+    </message>
+    <message>
+        <source>a leg comes too close to full stretch or fold (type I) at (%1, %2) mm, %3% along the move</source>
+        <translation>ein Arm kommt der vollen Streckung oder Faltung zu nahe (Typ I) bei (%1; %2) mm, nach %3 % der Bewegung</translation>
+    </message>
+    <message>
+        <source>goes beyond a motor's joint limit at (%1, %2) mm, %3% along the move</source>
+        <translation>überschreitet die Gelenkgrenze eines Motors bei (%1; %2) mm, nach %3 % der Bewegung</translation>
+    </message>
+    <message>
+        <source>leaves the reachable workspace (the linkage cannot close) at (%1, %2) mm, %3% along the move</source>
+        <translation>verlässt den erreichbaren Arbeitsraum (das Getriebe kann nicht schließen) bei (%1; %2) mm, nach %3 % der Bewegung</translation>
+    </message>
+    <message>
+        <source>passes through a type II singularity, where the assembly mode can flip at (%1, %2) mm, %3% along the move</source>
+        <translation>durchläuft eine Typ-II-Singularität, wo der Montagemodus umschlagen kann, bei (%1; %2) mm, nach %3 % der Bewegung</translation>
+    </message>
+    <message>
+        <source>unknown move status</source>
+        <translation>unbekannter Bewegungsstatus</translation>
     </message>
 </context>
 <context>

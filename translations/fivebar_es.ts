@@ -207,6 +207,215 @@
     </message>
 </context>
 <context>
+    <name>Placement</name>
+    <message>
+        <source>scaled to %1 % to fit the workspace</source>
+        <translation>reducido al %1 % para caber en el espacio de trabajo</translation>
+    </message>
+</context>
+<context>
+    <name>Planner</name>
+    <message>
+        <source>layer '%1'</source>
+        <translation>capa '%1'</translation>
+    </message>
+    <message>
+        <source>layer %1</source>
+        <translation>capa %1</translation>
+    </message>
+    <message>
+        <source>move or shrink the drawing (--at, --scale, --fit)</source>
+        <translation>mover o reducir el dibujo (--at, --scale, --fit)</translation>
+    </message>
+    <message>
+        <source>try another working mode (--mode)</source>
+        <translation>probar otro modo de trabajo (--mode)</translation>
+    </message>
+    <message>
+        <source>travel back to the start pose</source>
+        <translation>desplazamiento de vuelta a la posición inicial</translation>
+    </message>
+    <message>
+        <source>start pose</source>
+        <translation>posición inicial</translation>
+    </message>
+    <message>
+        <source>the profile's home pose does not close the linkage</source>
+        <translation>la posición de inicio del perfil no cierra el mecanismo</translation>
+    </message>
+    <message>
+        <source>set a reachable home pose in the profile</source>
+        <translation>fijar una posición de inicio alcanzable en el perfil</translation>
+    </message>
+    <message>
+        <source>a point is out of reach in working mode %1</source>
+        <translation>un punto está fuera de alcance en el modo de trabajo %1</translation>
+    </message>
+    <message>
+        <source>the drawn curve cannot follow the stroke here (singular region)</source>
+        <translation>la curva trazada no puede seguir el trazo aquí (zona singular)</translation>
+    </message>
+    <message>
+        <source>the drawn line %1</source>
+        <translation>la línea trazada %1</translation>
+    </message>
+    <message>
+        <source>travel to %1</source>
+        <translation>desplazamiento a %1</translation>
+    </message>
+    <message>
+        <source>no safe pen-up travel reaches it</source>
+        <translation>ningún desplazamiento seguro con la pluma levantada lo alcanza</translation>
+    </message>
+    <message>
+        <source>move the drawing away from singular regions (--at)</source>
+        <translation>alejar el dibujo de las zonas singulares (--at)</translation>
+    </message>
+    <message>
+        <source>try another --mode</source>
+        <translation>probar otro --mode</translation>
+    </message>
+    <message>
+        <source>%1 path %2</source>
+        <translation>%1 trazado %2</translation>
+    </message>
+    <message>
+        <source>tolerance %1 mm leaves nothing for the moves after flattening (%2 mm) and the G-code rounding (up to %3 mm)</source>
+        <translation>la tolerancia de %1 mm no deja nada para los movimientos tras el aplanado (%2 mm) y el redondeo del G-code (hasta %3 mm)</translation>
+    </message>
+    <message>
+        <source>backlash compensation</source>
+        <translation>compensación de holgura</translation>
+    </message>
+    <message>
+        <source>move the drawing away from the workspace edge (--at)</source>
+        <translation>alejar el dibujo del borde del espacio de trabajo (--at)</translation>
+    </message>
+    <message>
+        <source>planning cancelled</source>
+        <translation>planificación cancelada</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>backlash compensation: a compensated move %1</source>
+        <translation>compensación de holgura: un movimiento compensado %1</translation>
+    </message>
+    <message>
+        <source>shrink the drawing to %1 % (--scale %2)</source>
+        <translation>reducir el dibujo al %1 % (--scale %2)</translation>
+    </message>
+    <message>
+        <source>move the drawing's centre to x %1 mm, y %2 mm (--at %3,%4)</source>
+        <translation>mover el centro del dibujo a x %1 mm, y %2 mm (--at %3,%4)</translation>
+    </message>
+    <message>
+        <source>use working mode %1 (--mode %1)</source>
+        <translation>usar el modo de trabajo %1 (--mode %1)</translation>
+    </message>
+    <message>
+        <source>fit the drawing into the workspace (--fit)</source>
+        <translation>ajustar el dibujo al espacio de trabajo (--fit)</translation>
+    </message>
+    <message>
+        <source>job</source>
+        <translation>trabajo</translation>
+    </message>
+    <message>
+        <source>working mode %1: %2: %3</source>
+        <translation>modo de trabajo %1: %2: %3</translation>
+    </message>
+    <message>
+        <source>scale must be a positive number</source>
+        <translation>la escala debe ser un número positivo</translation>
+    </message>
+    <message>
+        <source>nothing visible to draw in '%1'</source>
+        <translation>nada visible que dibujar en '%1'</translation>
+    </message>
+    <message>
+        <source>no working mode has a singularity-free area to place the drawing in</source>
+        <translation>ningún modo de trabajo tiene una zona sin singularidades donde colocar el dibujo</translation>
+    </message>
+    <message>
+        <source>check the profile</source>
+        <translation>revisar el perfil</translation>
+    </message>
+    <message>
+        <source>the drawing was flattened within %1 mm, too coarse at %2 %: import it again within %3 mm</source>
+        <translation>el dibujo se aplanó con %1 mm de precisión, demasiado basto al %2 %: impórtelo de nuevo con %3 mm</translation>
+    </message>
+</context>
+<context>
+    <name>Preflight</name>
+    <message>
+        <source>layer %1 path %2 point %3 at (%4, %5) mm</source>
+        <translation>capa %1 trazado %2 punto %3 en (%4; %5) mm</translation>
+    </message>
+    <message>
+        <source>%1 is out of reach of leg %2</source>
+        <translation>%1 está fuera del alcance del brazo %2</translation>
+    </message>
+    <message>
+        <source>%1 needs assembly mode %2 in working mode %3</source>
+        <translation>%1 necesita el modo de ensamblaje %2 en el modo de trabajo %3</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>the line to %1 %2</source>
+        <translation>la línea a %1 %2</translation>
+    </message>
+    <message>
+        <source>the travel back to the home pose</source>
+        <translation>el desplazamiento de vuelta a la posición de inicio</translation>
+    </message>
+    <message>
+        <source>the travel to %1</source>
+        <translation>el desplazamiento a %1</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>%1; no safe detour found</source>
+        <translation>%1; no se encontró ningún rodeo seguro</translation>
+    </message>
+    <message>
+        <source>%1; detour not searched (limit of searches per job reached)</source>
+        <translation>%1; rodeo no buscado (límite de búsquedas por trabajo alcanzado)</translation>
+    </message>
+    <message>
+        <source>mode %1: feasible, worst type II margin %2 deg</source>
+        <translation>modo %1: factible, peor margen tipo II %2°</translation>
+    </message>
+    <message>
+        <source>mode %1: 1 problem</source>
+        <translation>modo %1: 1 problema</translation>
+    </message>
+    <message>
+        <source>mode %1: %2 problems</source>
+        <translation>modo %1: %2 problemas</translation>
+    </message>
+    <message>
+        <source>%1 (first: %2)</source>
+        <translation>%1 (primero: %2)</translation>
+    </message>
+    <message>
+        <source>%1; fix: shrink to %2%</source>
+        <translation>%1; solución: reducir al %2 %</translation>
+    </message>
+    <message>
+        <source>%1; fix: move the centre to (%2, %3) mm</source>
+        <translation>%1; solución: mover el centro a (%2; %3) mm</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>Planning failed: %1</source>
@@ -215,6 +424,37 @@
     <message>
         <source>Cannot write %1: %2</source>
         <translation>No se puede escribir %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>Safety</name>
+    <message>
+        <source>safe; closest approach to a type II singularity %1 deg</source>
+        <translation>seguro; máxima aproximación a una singularidad de tipo II %1°</translation>
+    </message>
+    <message>
+        <source>passes within %1 deg of a type II singularity at (%2, %3) mm, %4% along the move</source>
+        <translation>pasa a menos de %1° de una singularidad de tipo II en (%2; %3) mm, al %4 % del movimiento</translation>
+    </message>
+    <message>
+        <source>a leg comes too close to full stretch or fold (type I) at (%1, %2) mm, %3% along the move</source>
+        <translation>un brazo se acerca demasiado a la extensión o el pliegue completo (tipo I) en (%1; %2) mm, al %3 % del movimiento</translation>
+    </message>
+    <message>
+        <source>goes beyond a motor's joint limit at (%1, %2) mm, %3% along the move</source>
+        <translation>sobrepasa el límite articular de un motor en (%1; %2) mm, al %3 % del movimiento</translation>
+    </message>
+    <message>
+        <source>leaves the reachable workspace (the linkage cannot close) at (%1, %2) mm, %3% along the move</source>
+        <translation>sale del espacio de trabajo alcanzable (el mecanismo no puede cerrarse) en (%1; %2) mm, al %3 % del movimiento</translation>
+    </message>
+    <message>
+        <source>passes through a type II singularity, where the assembly mode can flip at (%1, %2) mm, %3% along the move</source>
+        <translation>atraviesa una singularidad de tipo II, donde el modo de ensamblaje puede cambiar, en (%1; %2) mm, al %3 % del movimiento</translation>
+    </message>
+    <message>
+        <source>unknown move status</source>
+        <translation>estado de movimiento desconocido</translation>
     </message>
 </context>
 <context>

@@ -207,6 +207,215 @@
     </message>
 </context>
 <context>
+    <name>Placement</name>
+    <message>
+        <source>scaled to %1 % to fit the workspace</source>
+        <translation>réduit à %1 % pour tenir dans l'espace de travail</translation>
+    </message>
+</context>
+<context>
+    <name>Planner</name>
+    <message>
+        <source>layer '%1'</source>
+        <translation>calque « %1 »</translation>
+    </message>
+    <message>
+        <source>layer %1</source>
+        <translation>calque %1</translation>
+    </message>
+    <message>
+        <source>move or shrink the drawing (--at, --scale, --fit)</source>
+        <translation>déplacer ou réduire le dessin (--at, --scale, --fit)</translation>
+    </message>
+    <message>
+        <source>try another working mode (--mode)</source>
+        <translation>essayer un autre mode de travail (--mode)</translation>
+    </message>
+    <message>
+        <source>travel back to the start pose</source>
+        <translation>retour à la position de départ</translation>
+    </message>
+    <message>
+        <source>start pose</source>
+        <translation>position de départ</translation>
+    </message>
+    <message>
+        <source>the profile's home pose does not close the linkage</source>
+        <translation>la position d'origine du profil ne ferme pas le mécanisme</translation>
+    </message>
+    <message>
+        <source>set a reachable home pose in the profile</source>
+        <translation>définir une position d'origine atteignable dans le profil</translation>
+    </message>
+    <message>
+        <source>a point is out of reach in working mode %1</source>
+        <translation>un point est hors de portée en mode de travail %1</translation>
+    </message>
+    <message>
+        <source>the drawn curve cannot follow the stroke here (singular region)</source>
+        <translation>la courbe tracée ne peut pas suivre le trait ici (zone singulière)</translation>
+    </message>
+    <message>
+        <source>the drawn line %1</source>
+        <translation>la ligne tracée %1</translation>
+    </message>
+    <message>
+        <source>travel to %1</source>
+        <translation>déplacement vers %1</translation>
+    </message>
+    <message>
+        <source>no safe pen-up travel reaches it</source>
+        <translation>aucun déplacement sûr stylo levé ne l'atteint</translation>
+    </message>
+    <message>
+        <source>move the drawing away from singular regions (--at)</source>
+        <translation>éloigner le dessin des zones singulières (--at)</translation>
+    </message>
+    <message>
+        <source>try another --mode</source>
+        <translation>essayer un autre --mode</translation>
+    </message>
+    <message>
+        <source>%1 path %2</source>
+        <translation>%1 chemin %2</translation>
+    </message>
+    <message>
+        <source>tolerance %1 mm leaves nothing for the moves after flattening (%2 mm) and the G-code rounding (up to %3 mm)</source>
+        <translation>la tolérance de %1 mm ne laisse rien aux mouvements après l'aplatissement (%2 mm) et l'arrondi du G-code (jusqu'à %3 mm)</translation>
+    </message>
+    <message>
+        <source>backlash compensation</source>
+        <translation>compensation du jeu</translation>
+    </message>
+    <message>
+        <source>move the drawing away from the workspace edge (--at)</source>
+        <translation>éloigner le dessin du bord de l'espace de travail (--at)</translation>
+    </message>
+    <message>
+        <source>planning cancelled</source>
+        <translation>planification annulée</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <source>backlash compensation: a compensated move %1</source>
+        <translation>compensation du jeu : un mouvement compensé %1</translation>
+    </message>
+    <message>
+        <source>shrink the drawing to %1 % (--scale %2)</source>
+        <translation>réduire le dessin à %1 % (--scale %2)</translation>
+    </message>
+    <message>
+        <source>move the drawing's centre to x %1 mm, y %2 mm (--at %3,%4)</source>
+        <translation>déplacer le centre du dessin en x %1 mm, y %2 mm (--at %3,%4)</translation>
+    </message>
+    <message>
+        <source>use working mode %1 (--mode %1)</source>
+        <translation>utiliser le mode de travail %1 (--mode %1)</translation>
+    </message>
+    <message>
+        <source>fit the drawing into the workspace (--fit)</source>
+        <translation>ajuster le dessin à l'espace de travail (--fit)</translation>
+    </message>
+    <message>
+        <source>job</source>
+        <translation>tâche</translation>
+    </message>
+    <message>
+        <source>working mode %1: %2: %3</source>
+        <translation>mode de travail %1 : %2 : %3</translation>
+    </message>
+    <message>
+        <source>scale must be a positive number</source>
+        <translation>l'échelle doit être un nombre positif</translation>
+    </message>
+    <message>
+        <source>nothing visible to draw in '%1'</source>
+        <translation>rien de visible à dessiner dans « %1 »</translation>
+    </message>
+    <message>
+        <source>no working mode has a singularity-free area to place the drawing in</source>
+        <translation>aucun mode de travail n'a de zone sans singularité où placer le dessin</translation>
+    </message>
+    <message>
+        <source>check the profile</source>
+        <translation>vérifier le profil</translation>
+    </message>
+    <message>
+        <source>the drawing was flattened within %1 mm, too coarse at %2 %: import it again within %3 mm</source>
+        <translation>le dessin a été aplati à %1 mm près, trop grossier à %2 % : l'importer à nouveau à %3 mm près</translation>
+    </message>
+</context>
+<context>
+    <name>Preflight</name>
+    <message>
+        <source>layer %1 path %2 point %3 at (%4, %5) mm</source>
+        <translation>calque %1 chemin %2 point %3 en (%4 ; %5) mm</translation>
+    </message>
+    <message>
+        <source>%1 is out of reach of leg %2</source>
+        <translation>%1 est hors de portée du bras %2</translation>
+    </message>
+    <message>
+        <source>%1 needs assembly mode %2 in working mode %3</source>
+        <translation>%1 demande le mode d'assemblage %2 en mode de travail %3</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <source>the line to %1 %2</source>
+        <translation>la ligne vers %1 %2</translation>
+    </message>
+    <message>
+        <source>the travel back to the home pose</source>
+        <translation>le retour à la position d'origine</translation>
+    </message>
+    <message>
+        <source>the travel to %1</source>
+        <translation>le déplacement vers %1</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>%1; no safe detour found</source>
+        <translation>%1 ; aucun détour sûr trouvé</translation>
+    </message>
+    <message>
+        <source>%1; detour not searched (limit of searches per job reached)</source>
+        <translation>%1 ; détour non cherché (limite de recherches par tâche atteinte)</translation>
+    </message>
+    <message>
+        <source>mode %1: feasible, worst type II margin %2 deg</source>
+        <translation>mode %1 : réalisable, pire marge type II %2°</translation>
+    </message>
+    <message>
+        <source>mode %1: 1 problem</source>
+        <translation>mode %1 : 1 problème</translation>
+    </message>
+    <message>
+        <source>mode %1: %2 problems</source>
+        <translation>mode %1 : %2 problèmes</translation>
+    </message>
+    <message>
+        <source>%1 (first: %2)</source>
+        <translation>%1 (premier : %2)</translation>
+    </message>
+    <message>
+        <source>%1; fix: shrink to %2%</source>
+        <translation>%1 ; solution : réduire à %2 %</translation>
+    </message>
+    <message>
+        <source>%1; fix: move the centre to (%2, %3) mm</source>
+        <translation>%1 ; solution : déplacer le centre en (%2 ; %3) mm</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>Planning failed: %1</source>
@@ -215,6 +424,37 @@
     <message>
         <source>Cannot write %1: %2</source>
         <translation>Impossible d'écrire %1 : %2</translation>
+    </message>
+</context>
+<context>
+    <name>Safety</name>
+    <message>
+        <source>safe; closest approach to a type II singularity %1 deg</source>
+        <translation>sûr ; approche la plus proche d'une singularité de type II %1°</translation>
+    </message>
+    <message>
+        <source>passes within %1 deg of a type II singularity at (%2, %3) mm, %4% along the move</source>
+        <translation>passe à moins de %1° d'une singularité de type II en (%2 ; %3) mm, à %4 % du mouvement</translation>
+    </message>
+    <message>
+        <source>a leg comes too close to full stretch or fold (type I) at (%1, %2) mm, %3% along the move</source>
+        <translation>un bras s'approche trop de l'extension ou du repli complet (type I) en (%1 ; %2) mm, à %3 % du mouvement</translation>
+    </message>
+    <message>
+        <source>goes beyond a motor's joint limit at (%1, %2) mm, %3% along the move</source>
+        <translation>dépasse la limite articulaire d'un moteur en (%1 ; %2) mm, à %3 % du mouvement</translation>
+    </message>
+    <message>
+        <source>leaves the reachable workspace (the linkage cannot close) at (%1, %2) mm, %3% along the move</source>
+        <translation>quitte l'espace de travail atteignable (le mécanisme ne peut pas se fermer) en (%1 ; %2) mm, à %3 % du mouvement</translation>
+    </message>
+    <message>
+        <source>passes through a type II singularity, where the assembly mode can flip at (%1, %2) mm, %3% along the move</source>
+        <translation>traverse une singularité de type II, où le mode d'assemblage peut basculer, en (%1 ; %2) mm, à %3 % du mouvement</translation>
+    </message>
+    <message>
+        <source>unknown move status</source>
+        <translation>état de mouvement inconnu</translation>
     </message>
 </context>
 <context>

@@ -124,7 +124,7 @@ void printProblems(const std::string& file, const PlanResult& r) {
     std::cerr << "  " << problems[i].path << ": " << problems[i].why << "\n";
   if (problems.size() > 5) std::cerr << "  ... " << problems.size() - 5 << " more in the report\n";
   if (!problems.empty())
-    for (const std::string& fix : problems.front().fixes) std::cerr << "  fix: " << fix << "\n";
+    for (const Message& fix : problems.front().fixes) std::cerr << "  fix: " << fix << "\n";
 }
 
 bool endsWith(const std::string& s, const std::string& tail) {
@@ -173,7 +173,7 @@ int plan(const Options& o) {
     std::cerr << "fivebar plan: " << error << "\n";
     return 1;
   }
-  for (const std::string& w : job->warnings) std::cerr << "fivebar plan: " << file << ": warning: " << w << "\n";
+  for (const Message& w : job->warnings) std::cerr << "fivebar plan: " << file << ": warning: " << w << "\n";
   if (!withinPointBudget(file, job->drawing, importSettings)) return 1;
   clock.lap("import and placement");
   if (!job->note.empty()) std::cerr << "fivebar plan: " << file << ": " << job->note << "\n";

@@ -56,7 +56,7 @@ int runHeadlessExport(int argc, char** argv) {
   PlanOptions defaults;  // the document's defaults: Auto mode, 0.1 mm
   auto job = widgets::loadJob(input, profile, defaults, error);
   if (!job) return fail(error);
-  if (!job->note.empty()) std::fprintf(stderr, "fivebar-studio: %s: %s\n", qPrintable(input), job->note.c_str());
+  if (!job->note.empty()) std::fprintf(stderr, "fivebar-studio: %s: %s\n", qPrintable(input), job->note.text().c_str());
   if (!job->options.atMm) return fail(input.toStdString() + ": nothing to place (no visible path or no singularity-free area)");
   const Placement placement{*job->options.atMm, job->options.rotationRad, job->options.scale,
                             job->options.stretchY};
@@ -65,9 +65,10 @@ int runHeadlessExport(int argc, char** argv) {
   PlanResult r = widgets::planRefining(job->drawing, job->source, job->profile, options, error);
   if (!r.ok()) {
     std::fprintf(stderr, "fivebar-studio: %s: %s\n", qPrintable(input),
-                 (error.empty() ? r.message : error).c_str());
+                 (error.empty() ? r.message.text() : error).c_str());
     for (std::size_t i = 0; i < r.report.problems.size() && i < 10; ++i)
-      std::fprintf(stderr, "  %s: %s\n", r.report.problems[i].path.c_str(), r.report.problems[i].why.c_str());
+      std::fprintf(stderr, "  %s: %s\n", r.report.problems[i].path.text().c_str(),
+                   r.report.problems[i].why.text().c_str());
     return 1;
   }
   QSaveFile file(output);

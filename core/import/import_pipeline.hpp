@@ -25,7 +25,7 @@ struct Capture {
   std::vector<CapturedRun> runs;          // page frame; runs handed to a sink are not repeated
   std::vector<TopLevelElement> topLevel;  // for layers
   PageSetup page;                         // finishImport uses sizeKnown, widthMm, heightMm
-  std::vector<std::string> warnings;
+  std::vector<Message> warnings;
 };
 
 // Receives captured runs in order as they are completed. May be empty (everything then stays in

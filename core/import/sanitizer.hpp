@@ -51,8 +51,8 @@ class Sanitizer {
   void pushMarkerState(QStringView tag, const QXmlStreamAttributes& attributes);
   bool writeMarkerDefinition(QStringView tag, const QXmlStreamAttributes& attributes);
   void writeMarkerInstances();
-  void warn(const std::string& what);
-  void warnAt(const QXmlStreamAttributes& attributes, const std::string& what);
+  void warn(Message what);
+  void warnAt(const QXmlStreamAttributes& attributes, Message what);
   void fail(ImportStatus status, const std::string& message);
   std::string where() const;
 
@@ -67,8 +67,13 @@ class Sanitizer {
   bool inStyle_ = false;
   bool sawRoot_ = false;
   QString svgNamespace_;
-  std::map<std::string, std::pair<int, qint64>> warnings_;  // what -> (count, first line)
-  std::vector<std::string> located_;  // warnings naming their own line, in document order
+  struct Repeated {
+    Message what;
+    int count = 0;
+    qint64 firstLine = 0;
+  };
+  std::map<std::string, Repeated> warnings_;  // English text -> the warning, count, first line
+  std::vector<Message> located_;  // warnings naming their own line, in document order
   std::map<QString, SymbolInfo> symbols_;  // from scanSymbols, for <use> of a <symbol>
   UserViewport viewport_;
   std::vector<double> fontSizes_;  // user units, one per open written element

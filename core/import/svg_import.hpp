@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "core/planning/drawing.hpp"
+#include "core/support/message.hpp"
 
 namespace fivebar::svg {
 
@@ -81,7 +82,7 @@ struct ImportResult {
   ImportStatus status = ImportStatus::Ok;
   std::string message;              // empty when Ok; else names the file and, when known, line/element
   Drawing drawing;                  // empty unless Ok
-  std::vector<std::string> warnings;  // things dropped or approximated (images, scripts, split paths)
+  std::vector<Message> warnings;  // translatable; things dropped or approximated (images, scripts, split paths)
   bool ok() const { return status == ImportStatus::Ok; }
 };
 

@@ -245,7 +245,7 @@ ImportResult finishImport(Capture&& capture, const QString& source, const Import
   drawing.widthMm = page.widthMm > 0.0 ? page.widthMm : extent.maxX;
   drawing.heightMm = page.heightMm > 0.0 ? page.heightMm : extent.maxY;
   if (!page.sizeKnown)
-    result.warnings.push_back("no usable width/height/viewBox: page size taken from the drawing's extent");
+    result.warnings.push_back(FB_TR("ImportWarning", "no usable width/height/viewBox: page size taken from the drawing's extent"));
   toWorkFrame(drawing, o);
   if (progress) progress(1.0);
   return result;

@@ -48,19 +48,21 @@ std::string Sanitizer::where() const {
          reader_.name().toString().toStdString() + ">";
 }
 
-void Sanitizer::warn(const std::string& what) {
-  auto [it, inserted] = warnings_.try_emplace(what, 0, reader_.lineNumber());
-  ++it->second.first;
+void Sanitizer::warn(Message what) {
+  std::string key = what.text();
+  auto [it, inserted] = warnings_.try_emplace(std::move(key), Repeated{std::move(what), 0, reader_.lineNumber()});
+  ++it->second.count;
 }
 
 // A warning about one element: "line 12: <path id="p3"> what".
-void Sanitizer::warnAt(const QXmlStreamAttributes& attributes, const std::string& what) {
+void Sanitizer::warnAt(const QXmlStreamAttributes& attributes, Message what) {
   constexpr std::size_t kMaxLocated = 50;
-  if (located_.size() >= kMaxLocated) return warn("further element warnings not listed");
+  if (located_.size() >= kMaxLocated) return warn(FB_TR("ImportWarning", "further element warnings not listed"));
   const QString id = attributes.value(QStringLiteral("id")).toString();
-  located_.push_back("line " + std::to_string(reader_.lineNumber()) + ": <" +
-                     reader_.name().toString().toStdString() +
-                     (id.isEmpty() ? "" : " id=\"" + id.toStdString() + "\"") + "> " + what);
+  const std::string element = "<" + reader_.name().toString().toStdString() +
+                              (id.isEmpty() ? "" : " id=\"" + id.toStdString() + "\"") + ">";
+  located_.push_back(FB_TR("ImportWarning", "line %1: %2 %3")
+                         .arg(static_cast<long long>(reader_.lineNumber())).arg(element).arg(std::move(what)));
 }
 
 void Sanitizer::fail(ImportStatus status, const std::string& message) {
@@ -87,14 +89,14 @@ SanitizeResult Sanitizer::run() {
       case QXmlStreamReader::Characters: characters(); break;
       case QXmlStreamReader::DTD:
         if (!reader_.entityDeclarations().isEmpty())
-          warn("DOCTYPE with entity declarations removed (internal entities were expanded)");
+          warn(FB_TR("ImportWarning", "DOCTYPE with entity declarations removed (internal entities were expanded)"));
         break;
       case QXmlStreamReader::EntityReference:
-        warn("unresolved entity reference dropped");
+        warn(FB_TR("ImportWarning", "unresolved entity reference dropped"));
         break;
       case QXmlStreamReader::ProcessingInstruction:
         if (reader_.processingInstructionTarget() == u"xml-stylesheet")
-          warn("external style sheet (xml-stylesheet) ignored");
+          warn(FB_TR("ImportWarning", "external style sheet (xml-stylesheet) ignored"));
         break;
       default: break;  // comments, StartDocument, EndDocument
     }
@@ -108,9 +110,11 @@ SanitizeResult Sanitizer::run() {
     fail(ImportStatus::InvalidDocument, "no <svg> element found");
   writer_.writeEndDocument();
   result_.warnings = std::move(located_);
-  for (const auto& [what, countLine] : warnings_) {
-    result_.warnings.push_back(what + " (" + std::to_string(countLine.first) + "x, first at line " +
-                               std::to_string(countLine.second) + ")");
+  for (auto& [text, repeated] : warnings_) {
+    result_.warnings.push_back(FB_TR("ImportWarning", "%1 (%2x, first at line %3)")
+                                   .arg(std::move(repeated.what))
+                                   .arg(repeated.count)
+                                   .arg(static_cast<long long>(repeated.firstLine)));
   }
   return std::move(result_);
 }
@@ -151,12 +155,12 @@ QXmlStreamAttributes Sanitizer::cleanAttributes(QStringView tag) {
     if (plainHref && a.name() == u"href" && a.namespaceUri() == kXlinkNs) continue;
     const QStringView name = a.name();
     if (name.startsWith(u"on") && a.namespaceUri().isEmpty()) {
-      warn("event attribute (on...) removed");
+      warn(FB_TR("ImportWarning", "event attribute (on...) removed"));
       continue;
     }
     if (name == u"href" && (a.namespaceUri() == kXlinkNs || a.namespaceUri().isEmpty())) {
       if (!a.value().startsWith(u'#')) {
-        warn("external reference removed from <" + tag.toString().toStdString() + ">");
+        warn(FB_TR("ImportWarning", "external reference removed from %1").arg("<" + tag.toString().toStdString() + ">"));
         continue;
       }
       if (a.namespaceUri().isEmpty()) {
@@ -200,11 +204,11 @@ bool Sanitizer::writeSplitPath(const QXmlStreamAttributes& attributes) {
   for (const PathCommand& c : parsed.commands) estimate += qtElementEstimate(c);
   if (estimate <= kMaxPathElements) return false;
   const std::vector<QString> parts = splitPathData(parsed.commands, kMaxPathElements);
-  warn("long <path> split into " + std::to_string(parts.size()) +
-       " parts to avoid Qt SVG's 32,767-element truncation");
+  warn(FB_TR("ImportWarning", "long <path> split into %1 parts to avoid Qt SVG's 32,767-element truncation")
+           .arg(parts.size()));
   if (parsed.error)
-    warnAt(attributes, "attribute d: invalid path data at character " +
-                           std::to_string(parsed.errorOffset + 1) + ": drawn up to the error");
+    warnAt(attributes, FB_TR("ImportWarning", "attribute d: invalid path data at character %1: drawn up to the error")
+                           .arg(static_cast<long long>(parsed.errorOffset + 1)));
   for (std::size_t i = 0; i < parts.size(); ++i) {
     if (i > 0) writer_.writeStartElement(reader_.namespaceUri().toString(), QStringLiteral("path"));
     for (const QXmlStreamAttribute& a : attributes) {
@@ -267,7 +271,7 @@ void Sanitizer::startElement() {
     return;
   }
   if (isDropped(tag)) {
-    warn("<" + tag.toStdString() + "> element removed");
+    warn(FB_TR("ImportWarning", "%1 element removed").arg("<" + tag.toStdString() + ">"));
     skipDepth_ = depth_;
     return;
   }
@@ -344,12 +348,13 @@ void Sanitizer::characters() {
   QString text = reader_.text().toString();
   if (inStyle_ && text.contains(QStringLiteral("marker")))
     for (const QString& selector : parseMarkerSheet(text).unsupported)
-      warn("markers set in a style sheet for the selector '" + selector.toStdString() +
-           "' are not drawn (only type, #id and .class selectors are applied)");
+      warn(FB_TR("ImportWarning", "markers set in a style sheet for the selector '%1' are not drawn "
+                                  "(only type, #id and .class selectors are applied)")
+               .arg(selector.toStdString()));
   if (inStyle_ && text.contains(QStringLiteral("@import"))) {
     static const QRegularExpression import(QStringLiteral("@import[^;]*;?"));
     text.remove(import);
-    warn("CSS @import removed");
+    warn(FB_TR("ImportWarning", "CSS @import removed"));
   }
   if (reader_.isCDATA()) writer_.writeCDATA(text);
   else writer_.writeCharacters(text);

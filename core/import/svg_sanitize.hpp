@@ -42,7 +42,7 @@ struct SanitizeResult {
   RootAttributes root;
   std::vector<TopLevelElement> topLevel;  // sentinel colour k + 1 marks element k
   long long shapeCount = 0;               // drawable elements, for progress
-  std::vector<std::string> warnings;
+  std::vector<Message> warnings;          // translatable (context "ImportWarning")
 };
 
 // True when the text holds "nan", "inf" or an exponent that overflows a double (the check the

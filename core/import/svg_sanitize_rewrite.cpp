@@ -73,7 +73,7 @@ QXmlStreamAttributes Sanitizer::rewriteAttributes(QStringView tag,
     const QString transform = out.value(QStringLiteral("transform")).toString();
     const std::optional<QString> folded = transformWithOrigin(transform, origin, viewport_, dpi_);
     if (!folded) {
-      warnAt(attributes, "transform-origin=\"" + origin.toStdString() + "\" not understood: ignored");
+      warnAt(attributes, FB_TR("ImportWarning", "transform-origin=\"%1\" not understood: ignored").arg(origin.toStdString()));
     } else if (!transform.isEmpty()) {
       QXmlStreamAttributes replaced;
       for (const QXmlStreamAttribute& a : out)
@@ -96,18 +96,18 @@ void Sanitizer::warnUnsupported(QStringView tag, const QXmlStreamAttributes& att
       const QStringView style = a.value();
       clip = clip || style.contains(u"clip-path");
       mask = mask || style.contains(u"mask");
-      if (style.contains(u"transform-origin")) warn("transform-origin in a style is not applied");
+      if (style.contains(u"transform-origin")) warn(FB_TR("ImportWarning", "transform-origin in a style is not applied"));
     }
     clip = clip || n == u"clip-path";
     mask = mask || n == u"mask";
     rotate = rotate || n == u"rotate";
   }
-  if (clip) warn("clip-path not applied: clipped shapes are drawn whole");
-  if (mask) warn("mask not applied: masked shapes are drawn whole");
+  if (clip) warn(FB_TR("ImportWarning", "clip-path not applied: clipped shapes are drawn whole"));
+  if (mask) warn(FB_TR("ImportWarning", "mask not applied: masked shapes are drawn whole"));
   if (rotate && (tag == u"text" || tag == u"tspan"))
-    warn("per-glyph rotate on <text> is not applied: glyphs are drawn upright");
-  if (tag == u"textPath") warn("text on a path (<textPath>) is not drawn");
-  if (tag == u"pattern") warn("pattern fills are drawn as outlines, without the pattern");
+    warn(FB_TR("ImportWarning", "per-glyph rotate on <text> is not applied: glyphs are drawn upright"));
+  if (tag == u"textPath") warn(FB_TR("ImportWarning", "text on a path (<textPath>) is not drawn"));
+  if (tag == u"pattern") warn(FB_TR("ImportWarning", "pattern fills are drawn as outlines, without the pattern"));
 }
 
 // Qt SVG draws a path up to the first error in its data, silently: say so.
@@ -117,9 +117,9 @@ void Sanitizer::checkPathData(const QXmlStreamAttributes& attributes) {
   const ParsedPath parsed = parsePathData(d);
   if (!parsed.error) return;
   const QString near = d.mid(parsed.errorOffset, 16).toString().simplified();
-  warnAt(attributes, "attribute d: invalid path data at character " +
-                         std::to_string(parsed.errorOffset + 1) + " (\"" + near.toStdString() +
-                         "\"): drawn up to the error");
+  warnAt(attributes, FB_TR("ImportWarning", "attribute d: invalid path data at character %1 %2: drawn up to the error")
+                         .arg(static_cast<long long>(parsed.errorOffset + 1))
+                         .arg("(\"" + near.toStdString() + "\")"));
 }
 
 // <symbol> -> <defs><g>: never drawn by itself. <use> of a symbol -> <g transform><use>.
@@ -180,11 +180,11 @@ void Sanitizer::pushMarkerState(QStringView tag, const QXmlStreamAttributes& att
         if (id.isEmpty()) return;
         const auto marker = markers_.find(id);
         if (marker == markers_.end())
-          return warnAt(attributes, "marker #" + id.toStdString() + " not found: not drawn");
+          return warnAt(attributes, FB_TR("ImportWarning", "marker #%1 not found: not drawn").arg(id.toStdString()));
         if (markerInstances_ >= kMaxMarkerInstances)
-          return warn("more than 100000 marker instances: the rest are not drawn");
+          return warn(FB_TR("ImportWarning", "more than 100000 marker instances: the rest are not drawn"));
         if (marker->second.clips)
-          warn("marker overflow clipping not applied: marker content is drawn whole");
+          warn(FB_TR("ImportWarning", "marker overflow clipping not applied: marker content is drawn whole"));
         if (const std::optional<QString> t =
                 markerInstanceTransform(marker->second, vertices[i], slot, state.strokeWidth)) {
           state.instances.emplace_back(id, *t);
@@ -199,8 +199,8 @@ void Sanitizer::pushMarkerState(QStringView tag, const QXmlStreamAttributes& att
     } else if ((tag == u"rect" || tag == u"circle" || tag == u"ellipse") &&
                (state.refs.start != inherited.start || state.refs.mid != inherited.mid ||
                 state.refs.end != inherited.end)) {  // SVG draws markers on the four above only
-      warn("markers on <" + tag.toString().toStdString() +
-           "> are not drawn (drawn on path, line, polyline and polygon)");
+      warn(FB_TR("ImportWarning", "markers on %1 are not drawn (drawn on path, line, polyline and polygon)")
+               .arg("<" + tag.toString().toStdString() + ">"));
     }
   }
   markerStates_.push_back(std::move(state));

@@ -76,11 +76,35 @@ void writeTexts(const std::vector<std::string>& texts, Writer& w) {
   for (const std::string& t : texts) w.text(t);
 }
 
+// A message: str context, str template, u32 n args, per arg u8 kind (0 text: str; 1 number:
+// f64 value, i32 decimals; 2 nested: a message).
+void writeMessage(const Message& m, Writer& w) {
+  w.text(m.context());
+  w.text(m.templ());
+  w.raw(static_cast<std::uint32_t>(m.args().size()));
+  for (const MessageArg& a : m.args()) {
+    w.raw(static_cast<std::uint8_t>(a.kind));
+    switch (a.kind) {
+      case MessageArg::Kind::Text: w.text(a.text); break;
+      case MessageArg::Kind::Number:
+        w.raw(a.value);
+        w.raw(static_cast<std::int32_t>(a.decimals));
+        break;
+      case MessageArg::Kind::Nested: writeMessage(*a.message, w); break;
+    }
+  }
+}
+
+void writeMessages(const std::vector<Message>& messages, Writer& w) {
+  w.raw(static_cast<std::uint32_t>(messages.size()));
+  for (const Message& m : messages) writeMessage(m, w);
+}
+
 void encode(const ImportResult& result, Writer& w) {
   w.bytes(kMagic);
   w.raw(static_cast<std::uint32_t>(result.status));
   w.text(result.message);
-  writeTexts(result.warnings, w);
+  writeMessages(result.warnings, w);
   const Drawing& d = result.drawing;
   w.raw(d.widthMm);
   w.raw(d.heightMm);
@@ -161,6 +185,54 @@ bool readTexts(Reader& r, std::vector<std::string>& out) {
   return true;
 }
 
+// Nesting and arguments a message may have on the wire (ours have at most 3 levels, 5 args).
+constexpr int kMaxMessageDepth = 8;
+constexpr std::uint32_t kMaxMessageArgs = 99;
+
+bool readMessage(Reader& r, Message& out, int depth = 0) {
+  std::string context, templ;
+  std::uint32_t n = 0;
+  if (depth > kMaxMessageDepth || !r.text(context) || !r.text(templ) || !r.raw(n) || n > kMaxMessageArgs)
+    return false;
+  out = context.empty() ? Message(std::move(templ)) : Message(std::move(context), std::move(templ));
+  for (std::uint32_t i = 0; i < n; ++i) {
+    std::uint8_t kind = 0;
+    if (!r.raw(kind)) return false;
+    switch (static_cast<MessageArg::Kind>(kind)) {
+      case MessageArg::Kind::Text: {
+        std::string t;
+        if (!r.text(t)) return false;
+        out.arg(std::move(t));
+        break;
+      }
+      case MessageArg::Kind::Number: {
+        double v = 0.0;
+        std::int32_t decimals = 0;
+        if (!r.raw(v) || !r.raw(decimals) || decimals < 0 || decimals > 17) return false;
+        out.arg(v, decimals);
+        break;
+      }
+      case MessageArg::Kind::Nested: {
+        Message nested;
+        if (!readMessage(r, nested, depth + 1)) return false;
+        out.arg(std::move(nested));
+        break;
+      }
+      default: return false;
+    }
+  }
+  return true;
+}
+
+bool readMessages(Reader& r, std::vector<Message>& out) {
+  std::uint32_t n = 0;
+  if (!r.count(n)) return false;
+  out.clear();
+  for (std::uint32_t i = 0; i < n; ++i)
+    if (!readMessage(r, out.emplace_back())) return false;
+  return true;
+}
+
 bool decodeLayer(Reader& r, Layer& layer) {
   std::uint8_t visible = 0;
   if (!r.text(layer.id) || !r.text(layer.name) || !r.raw(layer.rgb) || !r.raw(visible)) return false;
@@ -193,7 +265,7 @@ QByteArray encodeResult(const ImportResult& result) {
     for (const Polyline& line : layer.paths)
       bytes += 5 + 16 * static_cast<qsizetype>(line.points.size());
   }
-  for (const std::string& w : result.warnings) bytes += 4 + static_cast<qsizetype>(w.size());
+  for (const Message& w : result.warnings) bytes += 16 + static_cast<qsizetype>(w.templ().size());
   out.reserve(bytes + static_cast<qsizetype>(result.message.size() + result.drawing.source.size()));
   Writer w(out);
   encode(result, w);
@@ -204,7 +276,7 @@ bool decodeResult(ByteSource& source, ImportResult& result) {
   Reader r(source);
   std::uint32_t status = 0, layers = 0;
   if (!r.literal(kMagic) || !r.raw(status) || !r.text(result.message) ||
-      !readTexts(r, result.warnings))
+      !readMessages(r, result.warnings))
     return false;
   if (status > static_cast<std::uint32_t>(ImportStatus::TooManyPoints)) return false;
   result.status = static_cast<ImportStatus>(status);
@@ -257,7 +329,7 @@ bool CaptureStreamWriter::finish(const Capture& c, const std::vector<std::string
   w.raw(kFinalRecord);
   w.raw(static_cast<std::uint32_t>(c.status));
   w.text(c.message);
-  writeTexts(c.warnings, w);
+  writeMessages(c.warnings, w);
   writeTexts(qtMessages, w);
   w.raw(static_cast<std::uint8_t>(c.page.sizeKnown ? 1 : 0));
   w.raw(c.page.widthMm);
@@ -281,7 +353,7 @@ bool readFinal(Reader& r, StreamedCapture& out) {
   std::uint32_t status = 0, elements = 0;
   std::uint8_t sizeKnown = 0;
   if (!r.raw(status) || status > static_cast<std::uint32_t>(ImportStatus::TooManyPoints) ||
-      !r.text(c.message) || !readTexts(r, c.warnings) || !readTexts(r, out.qtMessages) ||
+      !r.text(c.message) || !readMessages(r, c.warnings) || !readTexts(r, out.qtMessages) ||
       !r.raw(sizeKnown) || !r.raw(c.page.widthMm) || !r.raw(c.page.heightMm) || !r.count(elements))
     return false;
   c.status = static_cast<ImportStatus>(status);

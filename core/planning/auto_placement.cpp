@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <vector>
 
 #include "core/kinematics/kinematics.hpp"
@@ -129,14 +128,10 @@ std::optional<AutoPlacement> autoPlacement(const Drawing& drawing, const Machine
   return best->placed;
 }
 
-std::string scaleNote(const AutoPlacement& placed) {
+Message scaleNote(const AutoPlacement& placed) {
   if (!placed.scaledDown) return {};
   const double percent = placed.placement.scale * 100.0;
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(percent < 10.0 ? 1 : 0);
-  s << "scaled to " << percent << " % to fit the workspace";
-  return s.str();
+  return FB_TR("Placement", "scaled to %1 % to fit the workspace").arg(percent, percent < 10.0 ? 1 : 0);
 }
 
 }  // namespace fivebar

@@ -12,6 +12,7 @@
 #include "core/machine/profile.hpp"
 #include "core/planning/drawing.hpp"
 #include "core/planning/placement.hpp"
+#include "core/support/message.hpp"
 
 namespace fivebar {
 
@@ -47,7 +48,7 @@ std::optional<AutoPlacement> autoPlacement(const Drawing& drawing, const Machine
                                            PlacementSizing sizing);
 
 // "scaled to 62 % to fit the workspace" for a scaled-down placement, "" otherwise.
-std::string scaleNote(const AutoPlacement& placed);
+Message scaleNote(const AutoPlacement& placed);
 
 // Upper bound (rad) of the type II margin any plan of the placed drawing can have in `mode`,
 // from a fixed sample of about 20,000 of its points; nullopt when a sampled point cannot be

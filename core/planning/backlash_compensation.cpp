@@ -115,7 +115,7 @@ BacklashPass compensateBacklash(PlannedJob& job, const MachineProfile& profile, 
   if (!check.ok()) {
     pass.ok = false;
     pass.problem = check.problems.front().check;
-    pass.message = "backlash compensation: a compensated move " + describe(pass.problem);
+    pass.message = FB_TR("Planner", "backlash compensation: a compensated move %1").arg(describeMove(pass.problem));
   }
   return pass;
 }

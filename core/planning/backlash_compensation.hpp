@@ -33,7 +33,7 @@ struct BacklashPass {
   std::size_t takeUpMoves = 0;  // inserted moves (job start and end included)
   bool ok = true;               // false: a compensated command fails the safety check
   MoveCheck problem;            // the first failing move's check when !ok
-  std::string message;
+  Message message;
 };
 
 // Rewrites `job` in place for a machine with this play: a take-up preamble at the start pose

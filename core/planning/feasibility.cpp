@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 
 #include "core/support/parallel.hpp"
@@ -25,11 +24,17 @@ constexpr int kMaxDetourSearches = 16;
 // Full preflight verifications a fix search may spend.
 constexpr int kMaxFixVerifications = 3;
 
-std::string pointText(const Stroke& s, int k, const Vec2& p) {
-  char b[160];
-  std::snprintf(b, sizeof b, "layer %d path %d point %d at (%.2f, %.2f) mm", s.layerIndex,
-                s.pathIndex, k, p.x(), p.y());
-  return b;
+// The representative of `angle` near `ref`, shifted by a turn when that keeps it in [lo, hi].
+double nearWithinLimits(double angle, double ref, double lo, double hi) {
+  const double a = unwrapNear(angle, ref);
+  for (double shift : {0.0, 2.0 * kPi, -2.0 * kPi})
+    if (a + shift >= lo && a + shift <= hi) return a + shift;
+  return a;
+}
+
+Message pointText(const Stroke& s, int k, const Vec2& p) {
+  return FB_TR("Preflight", "layer %1 path %2 point %3 at (%4, %5) mm")
+      .arg(s.layerIndex).arg(s.pathIndex).arg(k).arg(p.x(), 2).arg(p.y(), 2);
 }
 
 // What checking one stroke asks of the job-wide pass, in order: problems to add and travels
@@ -162,7 +167,8 @@ class Preflight {
       const bool leg1 = unreachableLeg(g_, calibratedPenOffset(pr_), p, mode_) == 1;
       pending = PreflightProblem{si, s.layerIndex, s.pathIndex, k, MoveKind::Point, p,
                                  MoveStatus::CannotClose,
-                                 pointText(s, k, p) + " is out of reach of leg " + (leg1 ? "1" : "2")};
+                                 FB_TR("Preflight", "%1 is out of reach of leg %2")
+                                     .arg(pointText(s, k, p)).arg(leg1 ? 1 : 2)};
       return std::nullopt;
     }
     JointAngles q{unwrapNear(ik.angles.theta1, ref.theta1), unwrapNear(ik.angles.theta2, ref.theta2)};
@@ -172,9 +178,8 @@ class Preflight {
           pr_.assembly == AssemblyMode::Plus ? AssemblyMode::Minus : AssemblyMode::Plus;
       pending = PreflightProblem{si, s.layerIndex, s.pathIndex, k, MoveKind::Point, p,
                                  MoveStatus::AssemblyChange,
-                                 pointText(s, k, p) + " needs assembly mode " +
-                                     std::string(toString(other)) + " in working mode " +
-                                     std::string(toString(mode_))};
+                                 FB_TR("Preflight", "%1 needs assembly mode %2 in working mode %3")
+                                     .arg(pointText(s, k, p)).arg(toString(other)).arg(toString(mode_))};
       return std::nullopt;
     }
     return q;
@@ -196,11 +201,12 @@ class Preflight {
       if (p.move == 0 && p.check.atFraction == 0.0) {
         const int k = index[0];
         problem(out, {si, s.layerIndex, s.pathIndex, k, MoveKind::Point, s.points[k], p.check.status,
-                      pointText(s, k, s.points[k]) + ": " + describe(p.check)});
+                      FB_TR("Preflight", "%1: %2").arg(pointText(s, k, s.points[k])).arg(describeMove(p.check))});
       } else {
         const int k = index[p.move + 1];
         problem(out, {si, s.layerIndex, s.pathIndex, k, MoveKind::Draw, p.check.where, p.check.status,
-                      "the line to " + pointText(s, k, s.points[k]) + " " + describe(p.check)});
+                      FB_TR("Preflight", "the line to %1 %2").arg(pointText(s, k, s.points[k]))
+                          .arg(describeMove(p.check))});
       }
     }
   }
@@ -216,13 +222,15 @@ class Preflight {
       ++detourSearches_;
       if (planSafeTravel(pr_, from, to)) return;
     }
-    const std::string target = si < 0 ? std::string("the travel back to the home pose")
-                                      : "the travel to " + pointText(s, k, s.points[k]);
-    add({si, s.layerIndex, s.pathIndex, k, MoveKind::Travel, c.where, c.status,
-         target + " " + describe(c) +
-             (searched                 ? "; no safe detour found"
-              : o_.allowTravelDetours ? "; detour not searched (limit of searches per job reached)"
-                                      : "")});
+    const Message target = si < 0 ? FB_TR("Preflight", "the travel back to the home pose")
+                                   : FB_TR("Preflight", "the travel to %1").arg(pointText(s, k, s.points[k]));
+    Message reason = FB_TR("Preflight", "%1 %2").arg(target).arg(describeMove(c));
+    if (searched)
+      reason = FB_TR("Preflight", "%1; no safe detour found").arg(std::move(reason));
+    else if (o_.allowTravelDetours)
+      reason = FB_TR("Preflight", "%1; detour not searched (limit of searches per job reached)")
+                   .arg(std::move(reason));
+    add({si, s.layerIndex, s.pathIndex, k, MoveKind::Travel, c.where, c.status, std::move(reason)});
   }
 
   void add(PreflightProblem problem) {
@@ -340,28 +348,22 @@ void suggestFixes(const std::vector<Stroke>& strokes, const MachineProfile& pr, 
 
 }  // namespace
 
-std::string FeasibilityReport::summary() const {
-  char b[256];
-  if (feasible) {
-    std::snprintf(b, sizeof b, "mode %s: feasible, worst type II margin %.1f deg",
-                  std::string(toString(mode)).c_str(), degFromRad(minTypeIIMarginRad));
-    return b;
-  }
-  std::snprintf(b, sizeof b, "mode %s: %zu problem%s", std::string(toString(mode)).c_str(),
-                problemCount, problemCount == 1 ? "" : "s");
-  std::string out = b;
-  if (!problems.empty()) out += " (first: " + problems.front().reason + ")";
-  if (shrinkFactor) {
-    std::snprintf(b, sizeof b, "; fix: shrink to %.0f%%", 100.0 * *shrinkFactor);
-    out += b;
-  }
-  if (suggestedAnchorMm) {
-    std::snprintf(b, sizeof b, "; fix: move the centre to (%.1f, %.1f) mm",
-                  suggestedAnchorMm->x(), suggestedAnchorMm->y());
-    out += b;
-  }
+Message FeasibilityReport::summaryMessage() const {
+  if (feasible)
+    return FB_TR("Preflight", "mode %1: feasible, worst type II margin %2 deg")
+        .arg(toString(mode)).arg(degFromRad(minTypeIIMarginRad), 1);
+  Message out = problemCount == 1 ? FB_TR("Preflight", "mode %1: 1 problem").arg(toString(mode))
+                                  : FB_TR("Preflight", "mode %1: %2 problems").arg(toString(mode)).arg(problemCount);
+  if (!problems.empty()) out = FB_TR("Preflight", "%1 (first: %2)").arg(std::move(out)).arg(problems.front().reason);
+  if (shrinkFactor)
+    out = FB_TR("Preflight", "%1; fix: shrink to %2%").arg(std::move(out)).arg(100.0 * *shrinkFactor, 0);
+  if (suggestedAnchorMm)
+    out = FB_TR("Preflight", "%1; fix: move the centre to (%2, %3) mm")
+              .arg(std::move(out)).arg(suggestedAnchorMm->x(), 1).arg(suggestedAnchorMm->y(), 1);
   return out;
 }
+
+std::string FeasibilityReport::summary() const { return summaryMessage().text(); }
 
 FeasibilityReport preflight(const std::vector<Stroke>& strokes, const MachineProfile& profile,
                             WorkingMode mode, const PreflightOptions& options) {

@@ -14,6 +14,7 @@
 #include "core/machine/profile.hpp"
 #include "core/planning/safety.hpp"
 #include "core/planning/strokes.hpp"
+#include "core/support/message.hpp"
 
 namespace fivebar {
 
@@ -43,7 +44,7 @@ struct PreflightProblem {
   MoveKind kind = MoveKind::Point;
   Vec2 whereMm = Vec2::Zero();  // machine frame
   MoveStatus status = MoveStatus::Ok;
-  std::string reason;     // human sentence, names the stroke and the point
+  Message reason;         // human sentence, names the stroke and the point
 };
 
 struct FeasibilityReport {
@@ -56,7 +57,9 @@ struct FeasibilityReport {
   // Fixes on offer when infeasible (each alone makes the job pass preflight):
   std::optional<double> shrinkFactor;   // scale the job about the anchor by this factor (< 1)
   std::optional<Vec2> suggestedAnchorMm; // move the anchor here, at the current scale
-  std::string summary() const;           // one line, e.g. "mode ++: feasible, margin 21.3 deg"
+  // One line, e.g. "mode ++: feasible, worst type II margin 21.3 deg"; summary() is its text.
+  Message summaryMessage() const;
+  std::string summary() const;
 };
 
 FeasibilityReport preflight(const std::vector<Stroke>& strokes, const MachineProfile& profile,

@@ -36,12 +36,18 @@ constexpr double kRoundingLeverFactor = 4.0;
 // the segmentation measures its moves between angles rounded so.
 constexpr int kGcodeAngleDecimals = 4;
 
-std::string layerLabel(const std::vector<Layer>& layers, int layerIndex) {
+Message layerLabel(const std::vector<Layer>& layers, int layerIndex) {
   if (layerIndex >= 0 && static_cast<size_t>(layerIndex) < layers.size()) {
     const Layer& l = layers[static_cast<size_t>(layerIndex)];
-    return "layer '" + (l.name.empty() ? l.id : l.name) + "'";
+    return FB_TR("Planner", "layer '%1'").arg(l.name.empty() ? l.id : l.name);
   }
-  return "layer " + std::to_string(layerIndex);
+  return FB_TR("Planner", "layer %1").arg(layerIndex);
+}
+
+// The fixes of a stroke the planner cannot draw.
+std::vector<Message> strokeFixes() {
+  return {FB_TR("Planner", "move or shrink the drawing (--at, --scale, --fit)"),
+          FB_TR("Planner", "try another working mode (--mode)")};
 }
 
 class MotionPlanner {
@@ -105,7 +111,7 @@ class MotionPlanner {
     }
     if (cancelled()) return;
     if (penDown_) penUp();
-    travelTo(job_.start, -1, -1, nullptr, [] { return std::string("travel back to the start pose"); });
+    travelTo(job_.start, -1, -1, nullptr, [] { return FB_TR("Planner", "travel back to the start pose"); });
   }
 
  private:
@@ -115,8 +121,9 @@ class MotionPlanner {
     job_.start = kinematicFromCommanded(p_.calibration, p_.homeAngles);  // home is commanded
     const FkResult fk = forward(g_, job_.start, p_.assembly);
     if (!fk.ok()) {
-      problem("start pose", Vec2::Zero(), "the profile's home pose does not close the linkage",
-              {"set a reachable home pose in the profile"});
+      problem(FB_TR("Planner", "start pose"), Vec2::Zero(),
+              FB_TR("Planner", "the profile's home pose does not close the linkage"),
+              {FB_TR("Planner", "set a reachable home pose in the profile")});
       return false;
     }
     job_.startXY = penOf(job_.start, fk.p);
@@ -295,18 +302,18 @@ class MotionPlanner {
     if (!seg.ok()) {
       problem(pathLabel(s), seg.failedAt,
               seg.status == SegmentStatus::OutOfReach
-                  ? "a point is out of reach in working mode " + std::string(toString(mode_))
-                  : "the drawn curve cannot follow the stroke here (singular region)",
-              {"move or shrink the drawing (--at, --scale, --fit)", "try another working mode (--mode)"},
-              s.layerIndex, s.pathIndex);
+                  ? FB_TR("Planner", "a point is out of reach in working mode %1").arg(toString(mode_))
+                  : FB_TR("Planner", "the drawn curve cannot follow the stroke here (singular region)"),
+              strokeFixes(), s.layerIndex, s.pathIndex);
       return;
     }
     if (!prepared.check.ok()) {
       const MoveCheck& c = prepared.check.problems.front().check;
       problem(pathLabel(s), c.where,
-              c.status == MoveStatus::NearTypeI ? describe(c) : "the drawn line " + describe(c),
-              {"move or shrink the drawing (--at, --scale, --fit)", "try another working mode (--mode)"},
-              s.layerIndex, s.pathIndex);
+              c.status == MoveStatus::NearTypeI
+                  ? describeMove(c)
+                  : FB_TR("Planner", "the drawn line %1").arg(describeMove(c)),
+              strokeFixes(), s.layerIndex, s.pathIndex);
       return;
     }
     minMargin_ = std::min(minMargin_, prepared.check.minTypeIIMarginRad);
@@ -316,7 +323,7 @@ class MotionPlanner {
     if (penDown_) penUp();
     if (newLayer && k > 0 && layerTool(layer).pauseBefore) push(JobMoveKind::Pause, -1, layer);
     const TravelPlan* ahead = prepared.travel ? &*prepared.travel : nullptr;
-    if (!travelTo(seg.waypoints[0].q, static_cast<int>(k), layer, ahead, [&] { return "travel to " + pathLabel(s); }))
+    if (!travelTo(seg.waypoints[0].q, static_cast<int>(k), layer, ahead, [&] { return FB_TR("Planner", "travel to %1").arg(pathLabel(s)); }))
       return;
     penDown(static_cast<int>(k), layer);
     ps.firstMove = static_cast<int>(job_.moves.size());
@@ -383,8 +390,9 @@ class MotionPlanner {
     const TravelPlan& t = reuse ? *ahead : fresh;
     if (!t.found) {
       const FkResult fk = forward(g_, target, p_.assembly);
-      problem(what(), fk.ok() ? fk.p : atXY_, "no safe pen-up travel reaches it",
-              {"move the drawing away from singular regions (--at)", "try another --mode"});
+      problem(what(), fk.ok() ? fk.p : atXY_, FB_TR("Planner", "no safe pen-up travel reaches it"),
+              {FB_TR("Planner", "move the drawing away from singular regions (--at)"),
+               FB_TR("Planner", "try another --mode")});
       return false;
     }
     for (size_t i = 0; i < t.feeds.size(); ++i) {
@@ -499,11 +507,11 @@ class MotionPlanner {
     return 0.0;
   }
 
-  std::string pathLabel(const Stroke& s) const {
-    return layerLabel(layers_, s.layerIndex) + " path " + std::to_string(s.pathIndex);
+  Message pathLabel(const Stroke& s) const {
+    return FB_TR("Planner", "%1 path %2").arg(layerLabel(layers_, s.layerIndex)).arg(s.pathIndex);
   }
 
-  void problem(std::string path, const Vec2& where, std::string why, std::vector<std::string> fixes,
+  void problem(Message path, const Vec2& where, Message why, std::vector<Message> fixes,
                int layerIndex = -1, int pathIndex = -1) {
     out_.report.problems.push_back(
         {std::move(path), where, std::move(why), std::move(fixes), layerIndex, pathIndex});
@@ -569,11 +577,11 @@ PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Lay
   const double budget = jointDeviationBudgetMm(profile, options, anyFlattened);
   if (!(budget > gcodeRoundingBoundMm(profile)) || !(options.toleranceMm > 0.0)) {
     out.status = PlanStatus::BadOptions;
-    out.message = "tolerance " + std::to_string(options.toleranceMm) +
-                  " mm leaves nothing for the moves after flattening (" +
-                  std::to_string(anyFlattened ? options.flatteningToleranceMm : 0.0) +
-                  " mm) and the G-code rounding (up to " +
-                  std::to_string(gcodeRoundingBoundMm(profile)) + " mm)";
+    out.message = FB_TR("Planner", "tolerance %1 mm leaves nothing for the moves after flattening "
+                                   "(%2 mm) and the G-code rounding (up to %3 mm)")
+                      .arg(options.toleranceMm, 6)
+                      .arg(anyFlattened ? options.flatteningToleranceMm : 0.0, 6)
+                      .arg(gcodeRoundingBoundMm(profile), 6);
     return out;
   }
   StageClock clock(out.timings);
@@ -588,14 +596,15 @@ PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Lay
     if (!play.none()) {
       const BacklashPass pass = compensateBacklash(out.job, profile, play);
       if (!pass.ok)
-        out.report.problems.push_back({"backlash compensation", pass.problem.where, pass.message,
-                                       {"move the drawing away from the workspace edge (--at)"}});
+        out.report.problems.push_back(
+            {FB_TR("Planner", "backlash compensation"), pass.problem.where, pass.message,
+             {FB_TR("Planner", "move the drawing away from the workspace edge (--at)")}});
       clock.lap("backlash compensation");
     }
   }
   if (options.cancel != nullptr && options.cancel->load()) {
     out.status = PlanStatus::Cancelled;
-    out.message = "planning cancelled";
+    out.message = FB_TR("Planner", "planning cancelled");
     out.job = PlannedJob();
     return out;
   }
@@ -622,7 +631,8 @@ PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Lay
   r.minSingularityMarginDeg = degFromRad(s.minTypeIIMarginRad);
   r.feedLimitedSegments = s.feedLimitedSegments;
   out.status = r.feasible ? PlanStatus::Ok : PlanStatus::Infeasible;
-  if (!r.feasible) out.message = r.problems.front().path + ": " + r.problems.front().why;
+  if (!r.feasible)
+    out.message = FB_TR("Planner", "%1: %2").arg(r.problems.front().path).arg(r.problems.front().why);
   return out;
 }
 

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "core/planning/feasibility.hpp"
 #include "core/planning/optimise.hpp"
@@ -47,41 +46,32 @@ bool hasFlattenedPaths(const Drawing& d) {
 
 double largestScale(const Placement& p) { return p.scale * std::max(1.0, std::abs(p.stretchY)); }
 
-std::string layerName(const Drawing& d, int layerIndex) {
+// A layer by name (or id), as problems name it: "layer 'ink'", or "layer 3" without one.
+Message layerName(const Drawing& d, int layerIndex) {
   if (layerIndex < 0 || static_cast<size_t>(layerIndex) >= d.layers.size())
-    return "layer " + std::to_string(layerIndex);
+    return FB_TR("Planner", "layer %1").arg(layerIndex);
   const Layer& l = d.layers[static_cast<size_t>(layerIndex)];
-  return "layer '" + (l.name.empty() ? l.id : l.name) + "'";
+  return FB_TR("Planner", "layer '%1'").arg(l.name.empty() ? l.id : l.name);
 }
 
-std::string fixedText(double v, int decimals) {
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(decimals);
-  s << v;
-  return s.str();
-}
-
-// What to change, in plain words, with the `fivebar plan` option that does it in brackets.
-std::vector<std::string> fixesOf(const Candidate& c, const std::vector<Candidate>& all,
-                                 bool fitted) {
-  std::vector<std::string> fixes;
+// What to change, in plain words, with the `fivebar plan` option that does it in brackets (the
+// option's values in the C locale: they are typed on a command line).
+std::vector<Message> fixesOf(const Candidate& c, const std::vector<Candidate>& all, bool fitted) {
+  std::vector<Message> fixes;
   if (c.report.shrinkFactor) {
     const double scale = c.placement.scale * *c.report.shrinkFactor;
-    fixes.push_back("shrink the drawing to " + fixedText(scale * 100.0, 0) + " % (--scale " +
-                    fixedText(scale, 3) + ")");
+    fixes.push_back(FB_TR("Planner", "shrink the drawing to %1 % (--scale %2)")
+                        .arg(scale * 100.0, 0).arg(fixedText(scale, 3)));
   }
   if (c.report.suggestedAnchorMm && !fitted) {
-    const std::string x = fixedText(c.report.suggestedAnchorMm->x(), 1);
-    const std::string y = fixedText(c.report.suggestedAnchorMm->y(), 1);
-    fixes.push_back("move the drawing's centre to x " + x + " mm, y " + y + " mm (--at " + x +
-                    "," + y + ")");
+    const double x = c.report.suggestedAnchorMm->x(), y = c.report.suggestedAnchorMm->y();
+    fixes.push_back(FB_TR("Planner", "move the drawing's centre to x %1 mm, y %2 mm (--at %3,%4)")
+                        .arg(x, 1).arg(y, 1).arg(fixedText(x, 1)).arg(fixedText(y, 1)));
   }
   for (const Candidate& other : all)
     if (other.report.feasible && other.mode != c.mode)
-      fixes.push_back("use working mode " + std::string(toString(other.mode)) + " (--mode " +
-                      std::string(toString(other.mode)) + ")");
-  if (!fitted) fixes.push_back("fit the drawing into the workspace (--fit)");
+      fixes.push_back(FB_TR("Planner", "use working mode %1 (--mode %1)").arg(toString(other.mode)));
+  if (!fitted) fixes.push_back(FB_TR("Planner", "fit the drawing into the workspace (--fit)"));
   return fixes;
 }
 
@@ -93,21 +83,23 @@ void reportInfeasible(const Drawing& d, const std::vector<Candidate>& cands, boo
   });
   out.report.mode = best->mode;
   out.report.minSingularityMarginDeg = degFromRad(best->report.minTypeIIMarginRad);
-  const std::vector<std::string> fixes = fixesOf(*best, cands, fitted);
+  const std::vector<Message> fixes = fixesOf(*best, cands, fitted);
   for (const PreflightProblem& pr : best->report.problems) {
-    std::string path = pr.strokeIndex < 0 ? "travel back to the start pose"
-                                          : layerName(d, pr.layerIndex) + " path " +
-                                                std::to_string(pr.pathIndex);
+    Message path = pr.strokeIndex < 0 ? FB_TR("Planner", "travel back to the start pose")
+                                      : FB_TR("Planner", "%1 path %2")
+                                            .arg(layerName(d, pr.layerIndex)).arg(pr.pathIndex);
     const bool travel = pr.kind == MoveKind::Travel;
-    if (travel && pr.strokeIndex >= 0) path = "travel to " + path;
+    if (travel && pr.strokeIndex >= 0) path = FB_TR("Planner", "travel to %1").arg(std::move(path));
     out.report.problems.push_back({path, pr.whereMm, pr.reason, fixes,
                                    travel ? -1 : pr.layerIndex, travel ? -1 : pr.pathIndex});
   }
   if (out.report.problems.empty())
-    out.report.problems.push_back({"job", Vec2::Zero(), best->report.summary(), fixes});
+    out.report.problems.push_back({FB_TR("Planner", "job"), Vec2::Zero(), best->report.summaryMessage(), fixes});
   out.status = PlanStatus::Infeasible;
-  out.message = "working mode " + std::string(toString(best->mode)) + ": " +
-                out.report.problems.front().path + ": " + out.report.problems.front().why;
+  out.message = FB_TR("Planner", "working mode %1: %2: %3")
+                    .arg(toString(best->mode))
+                    .arg(out.report.problems.front().path)
+                    .arg(out.report.problems.front().why);
 }
 
 // The whole plan in one working mode: placed strokes, optimised, segmented and checked.
@@ -118,7 +110,7 @@ PlanResult planInMode(const Drawing& drawing, const std::optional<RectMm>& bound
   if (options.cancel && options.cancel->load()) {
     PlanResult cancelled;
     cancelled.status = PlanStatus::Cancelled;
-    cancelled.message = "planning cancelled";
+    cancelled.message = FB_TR("Planner", "planning cancelled");
     return cancelled;
   }
   std::vector<Stroke> strokes = placeDrawing(drawing, machineFromWork(bounds, m.placement));
@@ -179,13 +171,13 @@ PlanResult planJob(const Drawing& drawing, const MachineProfile& profile,
   out.report.toleranceMm = options.toleranceMm;
   if (!(options.scale > 0.0) || !std::isfinite(options.scale) || !(options.stretchY > 0.0) ||
       !std::isfinite(options.stretchY)) {
-    out.message = "scale must be a positive number";
+    out.message = FB_TR("Planner", "scale must be a positive number");
     return out;
   }
   const std::optional<RectMm> bounds = drawingBounds(drawing);  // one pass over the points
   if (!bounds) {
     out.status = PlanStatus::EmptyDrawing;
-    out.message = "nothing visible to draw in '" + drawing.source + "'";
+    out.message = FB_TR("Planner", "nothing visible to draw in '%1'").arg(drawing.source);
     return out;
   }
   StageClock clock(out.timings);
@@ -198,8 +190,9 @@ PlanResult planJob(const Drawing& drawing, const MachineProfile& profile,
     clock.lap("placement");
     if (!placed) {
       out.status = PlanStatus::Infeasible;
-      out.message = "no working mode has a singularity-free area to place the drawing in";
-      out.report.problems.push_back({"job", Vec2::Zero(), out.message, {"check the profile"}});
+      out.message = FB_TR("Planner", "no working mode has a singularity-free area to place the drawing in");
+      out.report.problems.push_back({FB_TR("Planner", "job"), Vec2::Zero(), out.message,
+                                     {FB_TR("Planner", "check the profile")}});
       return out;
     }
     placement = placed->placement;
@@ -215,9 +208,10 @@ PlanResult planJob(const Drawing& drawing, const MachineProfile& profile,
       hasFlattenedPaths(drawing)) {
     out.status = PlanStatus::CoarseDrawing;
     out.requiredFlatteningToleranceMm = importToleranceMm(options.toleranceMm, scale);
-    out.message = "the drawing was flattened within " + fixedText(drawing.flatteningToleranceMm, 4) +
-                  " mm, too coarse at " + fixedText(scale * 100.0, 0) +
-                  " %: import it again within " + fixedText(out.requiredFlatteningToleranceMm, 5) + " mm";
+    out.message = FB_TR("Planner", "the drawing was flattened within %1 mm, too coarse at %2 %: "
+                                   "import it again within %3 mm")
+                      .arg(drawing.flatteningToleranceMm, 4).arg(scale * 100.0, 0)
+                      .arg(out.requiredFlatteningToleranceMm, 5);
     return out;
   }
   std::vector<WorkingMode> modes(kAllWorkingModes.begin(), kAllWorkingModes.end());
@@ -271,10 +265,14 @@ PlanResult planJob(const Drawing& drawing, const MachineProfile& profile,
 std::string reportToJson(const PlanReport& r) {
   nlohmann::json problems = nlohmann::json::array();
   for (const PlanProblem& p : r.problems)
-    problems.push_back({{"path", p.path},
+  {
+    std::vector<std::string> fixes;
+    for (const Message& f : p.fixes) fixes.push_back(f.text());
+    problems.push_back({{"path", p.path.text()},
                         {"where", {{"x_mm", p.whereMm.x()}, {"y_mm", p.whereMm.y()}}},
-                        {"why", p.why},
-                        {"fixes", p.fixes}});
+                        {"why", p.why.text()},
+                        {"fixes", fixes}});
+  }
   const nlohmann::json j = {
       {"feasible", r.feasible},
       {"mode", std::string(toString(r.mode))},

@@ -14,6 +14,7 @@
 #include "core/machine/profile.hpp"
 #include "core/planning/stage_times.hpp"
 #include "core/planning/strokes.hpp"
+#include "core/support/message.hpp"
 
 namespace fivebar {
 
@@ -54,11 +55,12 @@ double importToleranceMm(double toleranceMm, double placementScale = 1.0);
 // Options that plan at this fixed placement.
 void setFixedPlacement(PlanOptions& options, const Placement& placement);
 
+// The texts are translatable messages (core/support/message.hpp); .text() is the English.
 struct PlanProblem {
-  std::string path;   // "layer 'ink' path 3", "travel before layer 'ink' path 3", ...
+  Message path;   // "layer 'ink' path 3", "travel to layer 'ink' path 3", ...
   Vec2 whereMm = Vec2::Zero();
-  std::string why;
-  std::vector<std::string> fixes;
+  Message why;
+  std::vector<Message> fixes;
   int layerIndex = -1;  // the offending path (drawing indices); -1 for travels and the job
   int pathIndex = -1;
 };
@@ -101,12 +103,12 @@ enum class PlanStatus {
 
 struct PlanResult {
   PlanStatus status = PlanStatus::BadOptions;
-  std::string message;   // first problem in one line, or empty when Ok
+  Message message;       // first problem in one line, or empty when Ok
   PlannedJob job;        // complete when status == Ok
   PlanReport report;
   double placementScale = 1.0;  // work mm -> machine mm of the placement used (planJob)
   Placement placement;          // the placement used (planJob)
-  std::string placementNote;    // "scaled to 62 % to fit the workspace" when planJob scaled down
+  Message placementNote;        // "scaled to 62 % to fit the workspace" when planJob scaled down
   double requiredFlatteningToleranceMm = 0.0;  // CoarseDrawing: work-frame mm to import with
   StageTimes timings;           // wall-clock seconds per pipeline stage
   bool ok() const { return status == PlanStatus::Ok; }

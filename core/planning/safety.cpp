@@ -314,28 +314,30 @@ std::string_view toString(MoveStatus status) {
   return "unknown";
 }
 
-std::string describe(const MoveCheck& check) {
-  char where[96];
-  std::snprintf(where, sizeof where, " at (%.1f, %.1f) mm, %.0f%% along the move",
-                check.where.x(), check.where.y(), 100.0 * check.atFraction);
-  char margin[64];
-  std::snprintf(margin, sizeof margin, "%.1f deg", degFromRad(check.minTypeIIMarginRad));
+Message describeMove(const MoveCheck& check) {
+  const auto at = [&](Message m) {
+    return std::move(m.arg(check.where.x(), 1).arg(check.where.y(), 1).arg(100.0 * check.atFraction, 0));
+  };
   switch (check.status) {
     case MoveStatus::Ok:
-      return std::string("safe; closest approach to a type II singularity ") + margin;
+      return FB_TR("Safety", "safe; closest approach to a type II singularity %1 deg")
+          .arg(degFromRad(check.minTypeIIMarginRad), 1);
     case MoveStatus::NearTypeII:
-      return std::string("passes within ") + margin + " of a type II singularity" + where;
+      return FB_TR("Safety", "passes within %1 deg of a type II singularity at (%2, %3) mm, %4% along the move")
+          .arg(degFromRad(check.minTypeIIMarginRad), 1).arg(check.where.x(), 1).arg(check.where.y(), 1)
+          .arg(100.0 * check.atFraction, 0);
     case MoveStatus::NearTypeI:
-      return std::string("a leg comes too close to full stretch or fold (type I)") + where;
+      return at(FB_TR("Safety", "a leg comes too close to full stretch or fold (type I) at (%1, %2) mm, %3% along the move"));
     case MoveStatus::BeyondJointLimit:
-      return std::string("goes beyond a motor's joint limit") + where;
+      return at(FB_TR("Safety", "goes beyond a motor's joint limit at (%1, %2) mm, %3% along the move"));
     case MoveStatus::CannotClose:
-      return std::string("leaves the reachable workspace (the linkage cannot close)") + where;
+      return at(FB_TR("Safety", "leaves the reachable workspace (the linkage cannot close) at (%1, %2) mm, %3% along the move"));
     case MoveStatus::AssemblyChange:
-      return std::string("passes through a type II singularity, where the assembly mode "
-                         "can flip") + where;
+      return at(FB_TR("Safety", "passes through a type II singularity, where the assembly mode can flip at (%1, %2) mm, %3% along the move"));
   }
-  return "unknown move status";
+  return FB_TR("Safety", "unknown move status");
 }
+
+std::string describe(const MoveCheck& check) { return describeMove(check).text(); }
 
 }  // namespace fivebar

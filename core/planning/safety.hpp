@@ -11,6 +11,7 @@
 
 #include "core/kinematics/kinematics.hpp"
 #include "core/machine/profile.hpp"
+#include "core/support/message.hpp"
 
 namespace fivebar {
 
@@ -82,7 +83,9 @@ JointAngles nearWithinLimits(const MachineProfile& profile, const JointAngles& k
 // "assembly change".
 std::string_view toString(MoveStatus status);
 
-// Human-readable reason, e.g. "passes within 4.2 deg of a type II singularity".
+// Human-readable reason, e.g. "passes within 4.2 deg of a type II singularity at (1.0, 2.0) mm,
+// 50% along the move": describeMove is the translatable message, describe its English text.
+Message describeMove(const MoveCheck& check);
 std::string describe(const MoveCheck& check);
 
 }  // namespace fivebar

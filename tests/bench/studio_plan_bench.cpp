@@ -59,7 +59,7 @@ void BM_CliPlanJob(benchmark::State& state) {
   const PlanOptions o = widgets::studioPlanOptions(placement(), std::nullopt, 0.1);
   for (auto _ : state) {
     const PlanResult r = planJob(lines(), machine(), o);
-    if (!r.ok()) state.SkipWithError(r.message.c_str());
+    if (!r.ok()) state.SkipWithError(r.message.text().c_str());
     state.counters["segments"] = r.report.segments;
   }
 }

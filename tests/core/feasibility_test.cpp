@@ -80,8 +80,8 @@ TEST(Feasibility, OutOfReachPointIsNamedAndTheFixesWork) {
       EXPECT_EQ(p.strokeIndex, 4);
       EXPECT_NEAR((p.whereMm - job[4].points[p.pointIndex]).norm(), 0.0, 1e-12);
       EXPECT_GT(p.whereMm.y(), 255.0);
-      EXPECT_NE(p.reason.find("out of reach"), std::string::npos) << p.reason;
-      EXPECT_NE(p.reason.find("layer 2 path 7"), std::string::npos) << p.reason;
+      EXPECT_NE(p.reason.text().find("out of reach"), std::string::npos) << p.reason;
+      EXPECT_NE(p.reason.text().find("layer 2 path 7"), std::string::npos) << p.reason;
     }
   EXPECT_TRUE(namedReach);
   const Vec2 anchor = strokeBounds(job)->center();
@@ -167,7 +167,7 @@ TEST(Feasibility, PointNeedingTheOtherAssemblyModeIsReported) {
   const FeasibilityReport r = preflight({line(*other, *other + Vec2(1, 0), 1)}, pr, WorkingMode::PlusPlus, o);
   ASSERT_FALSE(r.feasible);
   EXPECT_EQ(r.problems.front().status, MoveStatus::AssemblyChange);
-  EXPECT_NE(r.problems.front().reason.find("assembly mode -"), std::string::npos);
+  EXPECT_NE(r.problems.front().reason.text().find("assembly mode -"), std::string::npos);
 }
 
 TEST(Feasibility, AutoPicksTheFeasibleModeWithTheLargestMargin) {

@@ -68,7 +68,7 @@ TEST(OneTruth, A5OnTheMakerPlotterStaysAtTrueSize) {
   ASSERT_TRUE(a3);
   EXPECT_TRUE(a3->scaledDown);
   EXPECT_LT(a3->placement.scale, 1.0);
-  EXPECT_EQ(scaleNote(*a3).rfind("scaled to ", 0), 0u);
+  EXPECT_EQ(scaleNote(*a3).text().rfind("scaled to ", 0), 0u);
 }
 
 TEST(OneTruth, TheSameInputGivesByteIdenticalGcodeUnderParallelLoad) {

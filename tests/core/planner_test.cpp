@@ -268,8 +268,8 @@ TEST_F(PlannerTest, ADrawingTooBigIsScaledDownAndSaysSo) {
   d.layers[0].paths.push_back({{{0, 0}, {2000, 0}, {2000, 1000}, {0, 1000}}, true});
   const PlanResult r = planJob(d, p, PlanOptions{});
   EXPECT_LT(r.placementScale, 1.0);
-  EXPECT_NE(r.placementNote.find("% to fit the workspace"), std::string::npos) << r.placementNote;
-  EXPECT_EQ(r.placementNote.find("scaled to "), 0u) << r.placementNote;
+  EXPECT_NE(r.placementNote.text().find("% to fit the workspace"), std::string::npos) << r.placementNote;
+  EXPECT_EQ(r.placementNote.text().find("scaled to "), 0u) << r.placementNote;
 }
 
 TEST_F(PlannerTest, ACoarseDrawingAsksForAFinerImport) {
@@ -282,7 +282,7 @@ TEST_F(PlannerTest, ACoarseDrawingAsksForAFinerImport) {
   const PlanResult r = planJob(d, p, o);
   EXPECT_EQ(r.status, PlanStatus::CoarseDrawing);
   EXPECT_DOUBLE_EQ(r.requiredFlatteningToleranceMm, 0.02);
-  EXPECT_NE(r.message.find("import it again"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.text().find("import it again"), std::string::npos) << r.message;
   d.flatteningToleranceMm = r.requiredFlatteningToleranceMm;
   EXPECT_TRUE(planJob(d, p, o).ok());
 }
@@ -316,7 +316,7 @@ TEST_F(PlannerTest, AFittedDiagonalLinePlans) {
   tiny.toleranceMm = 0.0001;
   const PlanResult r = planJob(d, p, tiny);
   EXPECT_EQ(r.status, PlanStatus::BadOptions);
-  EXPECT_NE(r.message.find("tolerance"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.text().find("tolerance"), std::string::npos) << r.message;
 }
 
 TEST_F(PlannerTest, InfeasibleJobNamesThePathAndTheReason) {
@@ -330,10 +330,10 @@ TEST_F(PlannerTest, InfeasibleJobNamesThePathAndTheReason) {
   o.mode = WorkingMode::PlusPlus;
   const PlanResult r = planJob(d, p, o);
   EXPECT_EQ(r.status, PlanStatus::Infeasible);
-  EXPECT_NE(r.message.find("layer 'ink' path 1"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.text().find("layer 'ink' path 1"), std::string::npos) << r.message;
   ASSERT_FALSE(r.report.problems.empty());
   EXPECT_FALSE(r.report.problems.front().fixes.empty());
-  EXPECT_NE(r.report.problems.front().why.find("out of reach"), std::string::npos);
+  EXPECT_NE(r.report.problems.front().why.text().find("out of reach"), std::string::npos);
 }
 
 TEST_F(PlannerTest, EmptyDrawingAndBadToleranceAreRefusedWithAReason) {
@@ -341,7 +341,7 @@ TEST_F(PlannerTest, EmptyDrawingAndBadToleranceAreRefusedWithAReason) {
   empty.source = "blank.svg";
   const PlanResult a = planJob(empty, p, atOptions());
   EXPECT_EQ(a.status, PlanStatus::EmptyDrawing);
-  EXPECT_NE(a.message.find("blank.svg"), std::string::npos);
+  EXPECT_NE(a.message.text().find("blank.svg"), std::string::npos);
   Drawing d;
   d.layers.resize(1);
   d.layers[0].paths.push_back({{{0, 0}, {10, 0}}, false});
@@ -349,7 +349,7 @@ TEST_F(PlannerTest, EmptyDrawingAndBadToleranceAreRefusedWithAReason) {
   o.toleranceMm = 0.0005;  // below the G-code rounding bound
   const PlanResult b = planJob(d, p, o);
   EXPECT_EQ(b.status, PlanStatus::BadOptions);
-  EXPECT_NE(b.message.find("tolerance"), std::string::npos);
+  EXPECT_NE(b.message.text().find("tolerance"), std::string::npos);
 }
 
 TEST_F(PlannerTest, ReportJsonCarriesTheFigures) {

@@ -243,7 +243,7 @@ TEST(DirectReader, LongPathsThatTheSanitiserWouldSplitAreDeclined) {
   const ImportResult r = importSvgData(svg, QStringLiteral("long.svg"));
   ASSERT_TRUE(r.ok()) << r.message;
   bool warned = false;
-  for (const std::string& w : r.warnings) warned = warned || w.find("split") != std::string::npos;
+  for (const fivebar::Message& w : r.warnings) warned = warned || w.text().find("split") != std::string::npos;
   EXPECT_TRUE(warned);
 }
 

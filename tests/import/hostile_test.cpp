@@ -65,7 +65,7 @@ TEST_F(Isolation, ImageThatLoadsItselfIsStrippedNotFatal) {
   ASSERT_TRUE(r.ok()) << r.message;
   EXPECT_EQ(test::pathCount(r.drawing), 1u);
   bool warned = false;
-  for (const std::string& w : r.warnings) warned = warned || w.find("<image>") != std::string::npos;
+  for (const fivebar::Message& w : r.warnings) warned = warned || w.text().find("<image>") != std::string::npos;
   EXPECT_TRUE(warned);
 }
 

@@ -25,15 +25,15 @@ inline std::string page(const std::string& body, double widthMm = 100, double he
 
 // True when one of the import's warnings contains `text`.
 inline bool warned(const svg::ImportResult& r, const std::string& text) {
-  for (const std::string& w : r.warnings)
-    if (w.find(text) != std::string::npos) return true;
+  for (const Message& w : r.warnings)
+    if (w.text().find(text) != std::string::npos) return true;
   return false;
 }
 
 // All warnings, a line each (for failure messages).
 inline std::string joined(const svg::ImportResult& r) {
   std::string s;
-  for (const std::string& w : r.warnings) s += w + "\n";
+  for (const Message& w : r.warnings) s += w.text() + "\n";
   return s;
 }
 

@@ -275,7 +275,7 @@ TEST(ImportHostile, PathWithMoreThan32767ElementsImportsWhole) {
   EXPECT_GE(p.size(), 2u);
   EXPECT_NEAR((p.back().points.back() - Vec2(kSegments * 0.002, 50.0)).norm(), 0.0, 1e-9);
   bool warned = false;
-  for (const std::string& w : r.warnings) warned = warned || w.find("split") != std::string::npos;
+  for (const fivebar::Message& w : r.warnings) warned = warned || w.text().find("split") != std::string::npos;
   EXPECT_TRUE(warned);
 }
 

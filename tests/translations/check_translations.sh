@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
-# check_translations.sh LUPDATE PROJECT.cmake GenerateLUpdateProject.cmake SOURCE_DIR
+# check_translations.sh LUPDATE PROJECT.cmake GenerateLUpdateProject.cmake SOURCE_DIR ALIASES
+# ALIASES: lupdate's -tr-function-alias value (the core's FB_TR markers), as the build uses it.
 set -uo pipefail
-lupdate=$1 project=$2 generate=$3 source=$4
+lupdate=$1 project=$2 generate=$3 source=$4 aliases=${5:-}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cp "$source"/translations/fivebar_*.ts "$tmp/"
 [ "$(ls "$tmp" | wc -l)" -ge 3 ] || { echo "FAIL: expected de, es and fr .ts files"; exit 1; }
 cmake -DIN_FILE="$project" -DOUT_FILE="$tmp/project.json" -P "$generate" || { echo "FAIL: lupdate project"; exit 1; }
 "$lupdate" -project "$tmp/project.json" -ts "$tmp"/fivebar_*.ts -no-obsolete -locations none \
+  ${aliases:+-tr-function-alias "$aliases"} \
   >"$tmp/lupdate.log" 2>&1 || { cat "$tmp/lupdate.log"; echo "FAIL: lupdate"; exit 1; }
 status=0
 for ts in "$tmp"/fivebar_*.ts; do

@@ -14,6 +14,7 @@
 #include <QRegularExpression>
 #include <QTranslator>
 #include <QXmlStreamReader>
+#include <algorithm>
 #include <set>
 
 #include "app/studio/language_menu.hpp"
@@ -25,7 +26,10 @@
 #include "widgets/panels/fill_options_box.hpp"
 #include "widgets/design/design_dialog.hpp"
 #include "widgets/design/pareto_plot.hpp"
+#include "core/import/svg_import.hpp"
+#include "widgets/document/core_message.hpp"
 #include "widgets/document/import_controller.hpp"
+#include "widgets/document/job_pipeline.hpp"
 #include "widgets/panels/import_warnings_panel.hpp"
 #include "widgets/machine/jog_controller.hpp"
 #include "widgets/machine/jog_goto_tool.hpp"
@@ -79,7 +83,9 @@ std::set<QString> runtimeContexts() {
   for (const char* c : {"QObject", "main", "DocumentCommands", "JobPipeline", "MapPainter",
                         "WorkspaceLegend", "ImportWarningsPanel", "DesignPainter", "ImportWarning",
                         "fivebar::widgets::MachineDialogs", "fivebar::widgets::SettingsAdvice",
-                        "CalibrationWizard"})
+                        "CalibrationWizard",
+                        // the core's messages (core/support/message.hpp, widgets::translated)
+                        "Placement", "Planner", "Preflight", "Safety"})
     names.insert(QString::fromLatin1(c));
   return names;
 }
@@ -119,28 +125,76 @@ TEST(Translations, RuntimeTrReturnsGerman) {
   QCoreApplication::removeTranslator(&translator);
 }
 
-// The importer's warnings (core, English) reach the warnings panel in German: the message
-// translated, the line, element and counts kept; an unknown message stays as it is.
+// The importer's warnings (core Messages, context "ImportWarning") reach the warnings panel in
+// German: the real importer's messages, translated with their line, element and counts kept.
 TEST(Translations, ImportWarningsAreShownInGerman) {
   QTranslator translator;
   ASSERT_TRUE(translator.load(QStringLiteral(":/i18n/fivebar_de.qm")));
   ASSERT_TRUE(QCoreApplication::installTranslator(&translator));
-  using fivebar::widgets::translatedImportWarning;
-  EXPECT_EQ(translatedImportWarning(QStringLiteral(
-                "line 9: <path id=\"wave\"> attribute d: invalid path data at character 53 (\"x\"): drawn up to the error")),
-            QStringLiteral("Zeile 9: <path id=\"wave\"> Attribut d: ungültige Pfaddaten bei Zeichen 53 (\"x\"): "
-                           "bis zum Fehler gezeichnet"));
-  EXPECT_EQ(translatedImportWarning(QStringLiteral("<image> element removed (2x, first at line 3)")),
-            QStringLiteral("Element <image> entfernt (2x, zuerst in Zeile 3)"));
-  EXPECT_EQ(translatedImportWarning(QStringLiteral("clip-path not applied: clipped shapes are drawn whole")),
-            QStringLiteral("clip-path nicht angewandt: beschnittene Formen werden ganz gezeichnet"));
-  EXPECT_EQ(translatedImportWarning(QStringLiteral("something new")), QStringLiteral("something new"));
+  const QByteArray svg =
+      "<svg xmlns='http://www.w3.org/2000/svg' width='100mm' height='100mm' viewBox='0 0 100 100'>\n"
+      "<image href='a.png' width='5' height='5'/>\n"
+      "<image href='b.png' width='5' height='5'/>\n"
+      "<path id='wave' d='M 0 0 L 10 10 x 5'/>\n"
+      "<path d='M 0 0 L 20 10' clip-path='url(#c)'/>\n"
+      "</svg>\n";
+  const fivebar::svg::ImportResult r = fivebar::svg::importSvgData(svg, QStringLiteral("a.svg"));
+  ASSERT_TRUE(r.ok()) << r.message;
+  const QStringList shown = fivebar::widgets::translated(r.warnings);
+  EXPECT_TRUE(shown.contains(QStringLiteral(
+      "Zeile 4: <path id=\"wave\"> Attribut d: ungültige Pfaddaten bei Zeichen 17 (\"5\"): "
+      "bis zum Fehler gezeichnet"))) << shown.join(QLatin1Char('\n')).toStdString();
+  EXPECT_TRUE(shown.contains(QStringLiteral("Element <image> entfernt (2x, zuerst in Zeile 2)")))
+      << shown.join(QLatin1Char('\n')).toStdString();
+  EXPECT_TRUE(shown.contains(QStringLiteral(
+      "clip-path nicht angewandt: beschnittene Formen werden ganz gezeichnet (1x, zuerst in Zeile 5)")))
+      << shown.join(QLatin1Char('\n')).toStdString();
+  // The CLI's English is the same message's text().
+  std::vector<std::string> english;
+  for (const fivebar::Message& w : r.warnings) english.push_back(w.text());
+  EXPECT_NE(std::find(english.begin(), english.end(), "<image> element removed (2x, first at line 2)"),
+            english.end());
   // The panel shows them so.
   fivebar::widgets::ImportWarningsPanel panel;
-  panel.showWarnings(QStringLiteral("a.svg"), {QStringLiteral("CSS @import removed (1x, first at line 2)")});
-  ASSERT_EQ(panel.list()->count(), 1);
-  EXPECT_EQ(panel.list()->item(0)->text(), QStringLiteral("CSS-@import entfernt (1x, zuerst in Zeile 2)"));
+  panel.showWarnings(QStringLiteral("a.svg"), shown);
+  ASSERT_EQ(panel.list()->count(), shown.size());
+  EXPECT_EQ(panel.list()->item(0)->text(), shown.front());
   QCoreApplication::removeTranslator(&translator);
+}
+
+// A pre-flight problem of the studio's planning (a drawing out of reach) is listed in German,
+// its coordinates with a decimal comma; the same problem's English text (the CLI's) is unchanged.
+TEST(Translations, PreflightProblemIsShownInGermanWithDecimalComma) {
+  const auto profile = fivebar::preset("maker-plotter");
+  ASSERT_TRUE(profile.has_value());
+  QTranslator translator;
+  ASSERT_TRUE(translator.load(QStringLiteral(":/i18n/fivebar_de.qm")));
+  ASSERT_TRUE(QCoreApplication::installTranslator(&translator));
+  const QLocale before;
+  QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+  fivebar::widgets::PipelineInput input;
+  fivebar::Layer layer;
+  layer.id = layer.name = "ink";
+  layer.paths.push_back({{fivebar::Vec2(0.0, 0.0), fivebar::Vec2(10.5, 0.0)}});
+  input.drawing.layers.push_back(layer);
+  input.drawing.source = "far.svg";
+  input.placement.centerMm = fivebar::Vec2(0.0, 700.0);  // far beyond every leg's reach
+  input.profile = *profile;
+  const fivebar::widgets::PreviewResult r = fivebar::widgets::runPipeline(input);
+  QLocale::setDefault(before);
+  QCoreApplication::removeTranslator(&translator);
+  ASSERT_EQ(r.status, fivebar::widgets::PreviewStatus::Infeasible) << r.message.toStdString();
+  ASSERT_FALSE(r.problems.empty());
+  const QString text = r.problems.front().text;
+  EXPECT_TRUE(text.startsWith(QStringLiteral("Ebene 'ink' Pfad 0: Ebene 0 Pfad 0 Punkt 0 bei (")))
+      << text.toStdString();
+  EXPECT_TRUE(text.contains(QStringLiteral("außerhalb der Reichweite von Arm"))) << text.toStdString();
+  EXPECT_TRUE(text.contains(QRegularExpression(QStringLiteral("\\(-?\\d+,\\d\\d; -?\\d+,\\d\\d\\) mm"))))
+      << text.toStdString();
+  EXPECT_FALSE(text.contains(QRegularExpression(QStringLiteral("\\d\\.\\d")))) << text.toStdString();
+  ASSERT_FALSE(r.problems.front().fixes.isEmpty());
+  EXPECT_FALSE(r.problems.front().fixes.join(QLatin1Char(' ')).contains(QStringLiteral("fit the drawing")));
+  EXPECT_TRUE(r.message.startsWith(QStringLiteral("Arbeitsmodus "))) << r.message.toStdString();
 }
 
 // The texts a user reads in the main window: actions, menus, dock titles, labels, group boxes,

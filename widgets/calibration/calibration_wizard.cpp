@@ -11,6 +11,7 @@
 #include "drivers/stream_session.hpp"
 #include "widgets/calibration/sheet_layer.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
+#include "widgets/document/core_message.hpp"
 #include "widgets/canvas/canvas_view.hpp"
 #include "widgets/machine/machine_session.hpp"
 
@@ -87,7 +88,7 @@ bool CalibrationWizard::planPattern(const MachineProfile& profile, QString* erro
   }
   PlanResult plan = planCalibrationPattern(*pattern, profile);
   if (!plan.ok()) {
-    if (error) *error = tr("The pattern cannot be planned: %1").arg(QString::fromStdString(plan.message));
+    if (error) *error = tr("The pattern cannot be planned: %1").arg(translated(plan.message));
     return false;
   }
   job = std::move(plan.job);

@@ -17,6 +17,7 @@
 #include "core/output/gcode.hpp"
 #include "core/kinematics/units.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
+#include "widgets/document/core_message.hpp"
 #include "widgets/machine/machine_session.hpp"
 
 namespace fivebar::widgets::calibration {
@@ -301,7 +302,7 @@ void VerifyPage::initializePage() {
         error = QString::fromUtf8(e.what());
       }
     } else {
-      error = QString::fromStdString(plan.message);
+      error = translated(plan.message);
     }
   }
   status_->setText(error);

@@ -9,6 +9,7 @@
 #include <QSettings>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include "widgets/document/core_message.hpp"
 #include "widgets/document/job_pipeline.hpp"
 
 namespace fivebar::widgets {
@@ -193,7 +194,7 @@ void ImportController::onFinished() {
     emit finished(false, refusal);
     return;
   }
-  note_ = QString::fromStdString(job.note);
+  note_ = translated(job.note);
   if (job.isProject) {
     doc_.loadProject(job.drawing, job.source, placement, job.options.mode, job.options.toleranceMm,
                      job.profile, name);
@@ -201,7 +202,7 @@ void ImportController::onFinished() {
     doc_.replaceDrawing(job.drawing, name, placement, job.source);
   }
   if (pendingRemember_) addRecent(name);
-  emit warningsReported(name, toQStringList(job.warnings));
+  emit warningsReported(name, translated(job.warnings));
   emit finished(true, note_);
 }
 

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/kinematics/units.hpp"
+#include "widgets/document/core_message.hpp"
 
 namespace fivebar::widgets {
 namespace {
@@ -109,8 +110,8 @@ PreviewResult runPipeline(const PipelineInput& input) {
   out.minMarginRad = radFromDeg(plan.report.minSingularityMarginDeg);
   for (const PlanProblem& p : plan.report.problems) {
     PreviewProblem q;
-    q.text = QString::fromStdString(p.path + ": " + p.why);
-    for (const std::string& f : p.fixes) q.fixes << QString::fromStdString(f);
+    q.text = trPipe(QT_TRANSLATE_NOOP("JobPipeline", "%1: %2")).arg(translated(p.path), translated(p.why));
+    q.fixes = translated(p.fixes);
     q.whereMm = toQ(p.whereMm);
     q.layerIndex = p.layerIndex;
     q.pathIndex = p.pathIndex;
@@ -125,15 +126,15 @@ PreviewResult runPipeline(const PipelineInput& input) {
       return out;
     case PlanStatus::Infeasible:
       out.status = PreviewStatus::Infeasible;
-      out.message = QString::fromStdString(plan.message);
+      out.message = translated(plan.message);
       return out;
     case PlanStatus::EmptyDrawing:
       out.status = PreviewStatus::Empty;
-      out.message = QString::fromStdString(plan.message);
+      out.message = translated(plan.message);
       return out;
     default:
       out.status = PreviewStatus::Failed;
-      out.message = QString::fromStdString(importError.empty() ? plan.message : importError);
+      out.message = importError.empty() ? translated(plan.message) : QString::fromStdString(importError);
       return out;
   }
   auto job = std::make_shared<PlannedJob>(std::move(plan.job));

@@ -15,7 +15,7 @@ bool isProjectPath(const QString& path) {
 
 std::optional<Drawing> importSvgText(const DrawingSource& source, double toleranceMm,
                                      std::string& error, const std::atomic<bool>* cancel,
-                                     std::vector<std::string>* warnings) {
+                                     std::vector<Message>* warnings) {
   // Through a file, so that the import runs in the isolated worker process.
   QTemporaryFile file(QStringLiteral("fivebar-import-XXXXXX.svg"));
   if (!file.open() || file.write(source.svg) != source.svg.size() || !file.flush()) {

@@ -43,7 +43,7 @@ bool isPointBudgetError(const std::string& error);
 std::optional<Drawing> importSvgText(const DrawingSource& source, double toleranceMm,
                                      std::string& error,
                                      const std::atomic<bool>* cancel = nullptr,
-                                     std::vector<std::string>* warnings = nullptr);
+                                     std::vector<Message>* warnings = nullptr);
 
 // planJob, and when the drawing was flattened too coarsely for its placement, the drawing
 // imported again within the tolerance the planner names and planned again (`drawing` is then
@@ -58,8 +58,8 @@ struct LoadedJob {
   Drawing drawing;
   PlanOptions options;      // mode, tolerance and the fixed placement
   MachineProfile profile;   // the project's, or the one passed in
-  std::string note;         // "scaled to 62 % to fit the workspace" or empty
-  std::vector<std::string> warnings;  // the import's warnings ("line 3: <path id=...> ...")
+  Message note;             // "scaled to 62 % to fit the workspace" or empty
+  std::vector<Message> warnings;  // the import's warnings ("line 3: <path id=...> ...")
   bool isProject = false;
   std::optional<Project> project;  // the project as read (isProject)
 };

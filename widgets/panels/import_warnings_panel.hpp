@@ -26,7 +26,8 @@ class ImportWarningsPanel : public QWidget {
   QListWidget* list() const { return list_; }
 
  public slots:
-  // Shows the warnings of an import of `fileName` (empty: "no warnings").
+  // Shows the warnings of an import of `fileName` (empty: "no warnings"), already in the UI
+  // language (the importer's messages are core Messages: widgets/document/core_message.hpp).
   void showWarnings(const QString& fileName, const QStringList& warnings);
 
  signals:
@@ -37,13 +38,6 @@ class ImportWarningsPanel : public QWidget {
   QLabel* heading_ = nullptr;
   QListWidget* list_ = nullptr;
 };
-
-QStringList toQStringList(const std::vector<std::string>& texts);
-
-// An importer warning (core/import, English) in the UI language: the location prefix ("line 12:
-// <path id="p3">") and the count suffix ("(3x, first at line 9)") kept, the message translated
-// (context "ImportWarning"); a message the table does not know is shown as it is.
-QString translatedImportWarning(const QString& warning);
 
 // Points of the visible layers after flattening.
 std::size_t drawingPointCount(const Drawing& drawing);

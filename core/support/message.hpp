@@ -1,0 +1,97 @@
+// A user-visible sentence of the core, kept translatable: a context and an English template with
+// %1..%n markers (QString::arg conventions) plus its arguments, some of which are numbers the
+// studio formats in the user's locale. The core stays free of Qt: text() gives the English
+// sentence (what the CLI prints, REPORT.json and the tests read); the studio translates the
+// template with QCoreApplication::translate(context, templ) and formats the numbers with QLocale
+// (widgets/support/core_message.hpp). Templates are marked for lupdate with FB_TR or FB_TR_NOOP,
+// which lupdate reads as QT_TRANSLATE_NOOP (-tr-function-alias QT_TRANSLATE_NOOP+=FB_TR,...).
+// Design: docs/translations.md.
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+// A translatable message of the core: FB_TR("Preflight", "point %1 at (%2, %3) mm").arg(...).
+// Both arguments must be string literals (lupdate extracts them).
+#define FB_TR(context, templ) ::fivebar::Message(context, templ)
+// Marks a translatable template kept as a plain literal (in a table); expands to the template.
+#define FB_TR_NOOP(context, templ) templ
+
+namespace fivebar {
+
+class Message;
+
+// One argument of a message: verbatim text (names, tags, ids, indices), a real number with
+// its number of decimals, or a nested message (translated on its own).
+struct MessageArg {
+  enum class Kind { Text, Number, Nested };
+  Kind kind = Kind::Text;
+  std::string text;                        // Text
+  double value = 0.0;                      // Number
+  int decimals = 0;                        // Number: digits after the decimal point
+  std::shared_ptr<const Message> message;  // Nested (never null when Nested)
+};
+
+class Message {
+ public:
+  Message() = default;
+  // A translatable template; both strings are normally literals marked with FB_TR_NOOP and the
+  // context is one of the contexts of translations/*.ts (e.g. "Preflight").
+  Message(std::string context, std::string templ)
+      : context_(std::move(context)), templ_(std::move(templ)) {}
+  // Verbatim text that is never translated (a message from a file, a library, the OS...).
+  // Implicit, so that code building plain strings keeps compiling.
+  Message(std::string text) : templ_(std::move(text)) {}  // NOLINT(google-explicit-constructor)
+  Message(const char* text) : templ_(text) {}             // NOLINT(google-explicit-constructor)
+
+  // Appends the next argument (%1, then %2, ...). Integers are text: indices and counts read
+  // the same in every language. Real numbers are written with `decimals` digits.
+  Message& arg(std::string text) &;
+  Message& arg(const char* text) &;
+  Message& arg(std::string_view text) &;
+  Message& arg(int value) &;
+  Message& arg(long long value) &;
+  Message& arg(std::size_t value) &;
+  Message& arg(double value, int decimals) &;
+  Message& arg(Message nested) &;
+  template <class... A>
+  Message&& arg(A&&... a) && {
+    arg(std::forward<A>(a)...);
+    return std::move(*this);
+  }
+
+  // The English sentence: the template with every %n replaced by argument n (a number in the
+  // C locale, a nested message by its text()).
+  std::string text() const;
+
+  bool translatable() const { return !context_.empty(); }
+  bool empty() const { return templ_.empty(); }
+  const std::string& context() const { return context_; }
+  const std::string& templ() const { return templ_; }
+  const std::vector<MessageArg>& args() const { return args_; }
+
+  bool operator==(const Message& other) const { return text() == other.text(); }
+
+ private:
+  std::string context_;  // empty: verbatim, templ_ is the text itself (no substitution)
+  std::string templ_;
+  std::vector<MessageArg> args_;
+};
+
+// QString::arg(a1, a2, ...) at run time: markers are %n and %Ln (n = 1..99, two digits read
+// greedily, as Qt does); the distinct marker numbers, in ascending order, take args[0], args[1],
+// ... (so "%2 %3" with two arguments reads "a1 a2"); markers left without an argument and every
+// other character are kept. One pass: replacements are never scanned for markers.
+std::string substituteArgs(std::string_view templ, const std::vector<std::string>& args);
+
+// A real number written with `decimals` digits after the point, in the C locale.
+std::string fixedText(double value, int decimals);
+
+// Writes text() (the CLI prints messages in English).
+std::ostream& operator<<(std::ostream& out, const Message& message);
+
+}  // namespace fivebar
