@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/kinematics/kinematics.hpp"
+#include "core/machine/pen_kinematics.hpp"
 #include "core/support/parallel.hpp"
 #include "core/workspace/workspace.hpp"
 
@@ -82,9 +83,10 @@ std::optional<double> screenMarginRad(const Drawing& d, const std::optional<Rect
       for (const Vec2& w : path.points) {
         if (k++ % stride != 0) continue;
         const Vec2 x = machineFromWorkT * w;
-        const IkResult ik = inverse(p.geometry, x, mode);
+        Vec2 distal = x;  // P, where the pen (with the calibrated pen offset) is at x
+        const IkResult ik = penInverse(p, x, mode, &distal);
         if (!ik.ok()) return std::nullopt;
-        const double s = signedSinTypeII(p.geometry, ik.angles, x, p.assembly);
+        const double s = signedSinTypeII(p.geometry, ik.angles, distal, p.assembly);
         if (s < 0.0) return std::nullopt;
         bound = std::min(bound, s);
       }

@@ -238,7 +238,8 @@ class MotionPlanner {
     }
     if (!out.seg.ok()) return;
     out.check = checkWaypoints(out.seg);
-    if (!out.check.ok()) return;
+    // Feeds even when the check fails here: drawStroke may turn the stroke into the joint limits
+    // (unwrapNearCurrent) and check it again; the feeds do not depend on the turn.
     out.feeds = planFeeds(g_, p_.assembly, out.seg.waypoints, drawSpeed(s.layerIndex), limits_);
   }
 

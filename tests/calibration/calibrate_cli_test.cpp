@@ -143,6 +143,51 @@ TEST(CalibratePatternScanCli, FitWithReversedWritesTheBacklash) {
   EXPECT_FALSE(fs::exists(none));
 }
 
+// The same path with play: the sheet drawn by a machine with 0.5 deg of play on motor 1 and 0.3 deg
+// on motor 2 (each mark approached with a motor moving down stands that motor's play further on,
+// the play model of core/calibration/backlash.hpp), scanned at 300 dpi turned and noisy: the fitted
+// profile carries each motor's play within 0.03 deg.
+TEST(CalibratePatternScanCli, FitWithReversedFindsEachMotorsPlay) {
+  QTemporaryDir tmp;
+  const fs::path dir = tmp.path().toStdString();
+  const std::string marks = (dir / "MARKS.csv").string(), gcode = (dir / "P.gcode").string();
+  ASSERT_EQ(run("calibrate pattern --machine maker-plotter -o " + quote(gcode) + " --marks " + quote(marks), dir).exitCode, 0);
+  const MachineProfile machine = *preset("maker-plotter");
+  const PatternResult pr = makeCalibrationPattern(machine);
+  ASSERT_TRUE(pr.pattern);
+  const double play1Rad = radFromDeg(0.5), play2Rad = radFromDeg(0.3);
+  test::SheetOptions o;
+  o.dpi = 300;
+  o.rotationDeg = 12.0;
+  o.blurSigmaPx = 0.8;
+  o.noiseSigma = 5.0;
+  o.seed = test::seed();
+  int reversedMarks = 0;
+  for (const PatternMark& m : pr.pattern->marks) {
+    JointAngles arm = m.q;
+    if (m.approach1 == Approach::Minus) arm.theta1 += play1Rad;
+    if (m.approach2 == Approach::Minus) arm.theta2 += play2Rad;
+    const FkResult fk = forward(machine.geometry, arm, machine.assembly);
+    ASSERT_TRUE(fk.ok());
+    o.displacementMm[m.id] = fk.p - m.nominalMm;
+    reversedMarks += (fk.p - m.nominalMm).norm() > 0.1 ? 1 : 0;
+  }
+  ASSERT_EQ(reversedMarks, 4);  // the middle mark of each backlash row
+  const std::string png = (dir / "SCAN.png").string(), measured = (dir / "MEASURED.csv").string(),
+                    reversed = (dir / "REV.csv").string(), profile = (dir / "CAL.json").string();
+  ASSERT_TRUE(test::renderSheet(*pr.pattern, o).image.save(QString::fromStdString(png)));
+  ASSERT_EQ(run("calibrate scan --marks " + quote(marks) + " --image " + quote(png) + " --dpi 300 -o " +
+                    quote(measured) + " --reversed " + quote(reversed), dir).exitCode, 0);
+  const auto f = run("calibrate fit --machine maker-plotter --measured " + quote(measured) + " --marks " +
+                         quote(marks) + " --reversed " + quote(reversed) + " -o " + quote(profile), dir);
+  ASSERT_EQ(f.exitCode, 0) << f.err << f.out;
+  const nlohmann::json c = nlohmann::json::parse(slurp(profile))["calibration"];
+  std::printf("play 0.5 / 0.3 deg drawn: fitted %.4f / %.4f deg\n", c["backlashDeg1"].get<double>(),
+              c["backlashDeg2"].get<double>());
+  EXPECT_NEAR(c["backlashDeg1"].get<double>(), 0.5, 0.03);
+  EXPECT_NEAR(c["backlashDeg2"].get<double>(), 0.3, 0.03);
+}
+
 TEST(CalibratePatternScanCli, BadInputIsNamedAndNothingIsWritten) {
   QTemporaryDir tmp;
   const fs::path dir = tmp.path().toStdString();

@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <random>
 
+#include <Eigen/Geometry>
+
 #include "core/calibration/model.hpp"
 #include "core/machine/pen_kinematics.hpp"
 #include "core/planning/feasibility.hpp"
@@ -225,6 +227,46 @@ TEST(JointLimitConvention, AOneDegreeZeroOffsetNearTheLimitIsJudgedOnCommandedAn
   const JointLimits k = kinematicLimits(c, p.limits);
   EXPECT_DOUBLE_EQ(k.theta1Min, p.limits.theta1Min + 0.02);
   EXPECT_DOUBLE_EQ(k.theta2Max, p.limits.theta2Max - 0.01);
+}
+
+// The planner's turn for a stroke: the nearest turn from where the pen is, unless that takes the
+// stroke beyond a joint limit and another turn keeps it inside. A coaxial machine (w = 0) turns
+// rigidly when both motors turn alike, so a travel of most of a turn is safe; its limits allow
+// 20 deg below the home pose and 350 deg above (commanded; zeros 1 deg off). A stroke 40 deg
+// clockwise of the home pose is drawn 320 deg up, not 40 deg down beyond the lower limit.
+TEST(JointLimitConvention, ThePlannerTurnsAStrokeIntoTheLimits) {
+  MachineProfile p = makerPlotter();
+  p.name = "coaxial";
+  p.geometry = {60.0, 100.0, 60.0, 100.0, 0.0};
+  const Vec2 home(0.0, 120.0);
+  const IkResult ik = inverse(p.geometry, home, WorkingMode::PlusPlus);
+  ASSERT_TRUE(ik.ok());
+  p.defaultMode = WorkingMode::PlusPlus;
+  p.assembly = assemblyModeOf(makePose(p.geometry, ik.angles, home));
+  MachineCalibration c;
+  c.zeroOffsetRad1 = c.zeroOffsetRad2 = radFromDeg(1.0);
+  p.calibration = c;
+  p.homeAngles = commandedFromKinematic(c, ik.angles);
+  p.limits = {p.homeAngles.theta1 - radFromDeg(20), p.homeAngles.theta1 + radFromDeg(350),
+              p.homeAngles.theta2 - radFromDeg(20), p.homeAngles.theta2 + radFromDeg(350)};
+  const Eigen::Rotation2Dd clockwise40(radFromDeg(-40.0));
+  Stroke s;
+  s.points = {clockwise40 * home, clockwise40 * (home + Vec2(-5.0, 0.0))};
+  PlanOptions o;
+  o.optimise = false;
+  const PlanResult r = planStrokes({s}, {}, p, p.defaultMode, o);
+  ASSERT_TRUE(r.ok()) << r.message;
+  bool drew = false;
+  for (const JobMove& m : r.job.moves) {
+    if (m.kind != JobMoveKind::Draw) continue;
+    drew = true;
+    const JointAngles commanded = commandedFromKinematic(p.calibration, m.target);
+    EXPECT_GT(commanded.theta1, p.homeAngles.theta1 + radFromDeg(300));
+    EXPECT_LE(commanded.theta1, p.limits.theta1Max);
+    EXPECT_GT(commanded.theta2, p.homeAngles.theta2 + radFromDeg(300));
+    EXPECT_LE(commanded.theta2, p.limits.theta2Max);
+  }
+  EXPECT_TRUE(drew);
 }
 
 }  // namespace

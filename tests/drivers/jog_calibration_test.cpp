@@ -2,6 +2,7 @@
 // commanded angles, the kinematics uses commanded + zero offset.
 #include <gtest/gtest.h>
 
+#include "core/calibration/model.hpp"
 #include "core/kinematics/units.hpp"
 #include "core/machine/profile.hpp"
 #include "core/planning/safety.hpp"
@@ -30,6 +31,42 @@ TEST(JogCalibration, GoToReachesThePointOnTheTrueMachine) {
   const FkResult fk = forward(calibrated.geometry, k, calibrated.assembly);
   ASSERT_TRUE(fk.ok());
   EXPECT_NEAR((fk.p - target).norm(), 0.0, 1e-6);
+}
+
+// With a calibrated pen offset (and zero offsets) go-to puts the PEN on the target and a Cartesian
+// jog walks the pen along a straight line: checked on the true machine's model
+// (calibration::penPosition of the commanded angles).
+TEST(JogCalibration, GoToAndCartesianJogAimThePenOffTheDistalJoint) {
+  MachineProfile p = *preset("maker-plotter");
+  p.calibration.emplace();
+  p.calibration->zeroOffsetRad1 = radFromDeg(0.7);
+  p.calibration->penOffset = PenOffset{4.0, 2.5};
+  calibration::MachineParameters truth;
+  truth.geometry = p.geometry;
+  truth.zeroOffsetRad1 = p.calibration->zeroOffsetRad1;
+  truth.penOffset = p.calibration->penOffset;
+  const Vec2 target(-15.0, 190.0);
+  const jog::JogPlan go = jog::planGoTo(p, p.homeAngles, target);
+  ASSERT_TRUE(go.ok()) << go.reason;
+  const auto pen = calibration::penPosition(truth, p.assembly, go.targets.back());
+  ASSERT_TRUE(pen.has_value());
+  EXPECT_LT((*pen - target).norm(), 1e-6);
+  // Without the pen offset in the profile the same go-to misses by about the offset.
+  MachineProfile noPen = p;
+  noPen.calibration->penOffset.reset();
+  const jog::JogPlan miss = jog::planGoTo(noPen, p.homeAngles, target);
+  ASSERT_TRUE(miss.ok());
+  EXPECT_GT((*calibration::penPosition(truth, p.assembly, miss.targets.back()) - target).norm(), 4.0);
+  // A 20 mm jog in +x from there: every line ends on the straight line through the pen.
+  const jog::JogPlan j = jog::planCartesianJog(p, go.targets.back(), Vec2(1.0, 0.0), 20.0, 20.0);
+  ASSERT_TRUE(j.ok()) << j.reason;
+  EXPECT_NEAR(j.lengthMm, 20.0, 1e-9);
+  for (const JointAngles& c : j.targets) {
+    const auto q = calibration::penPosition(truth, p.assembly, c);
+    ASSERT_TRUE(q.has_value());
+    EXPECT_NEAR(q->y(), target.y(), 1e-3);  // the angles go out with 3 decimals of a degree
+  }
+  EXPECT_NEAR(calibration::penPosition(truth, p.assembly, j.targets.back())->x(), target.x() + 20.0, 1e-3);
 }
 
 TEST(JogCalibration, MotorJogLineCarriesCommandedAngles) {

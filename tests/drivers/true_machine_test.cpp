@@ -230,7 +230,7 @@ TEST(TrueMachine, BacklashCompensationClosesACircleAndASquaresCornersMeet) {
     double worstDrawn = 0.0;
     for (const Vec2& q : drawn.front()) worstDrawn = std::max(worstDrawn, distanceToPolyline(q, intended));
     std::printf("%s with play %.1f/%.1f deg, compensated: gap %.4f mm, vertices within %.4f mm, drawn within %.4f mm\n",
-                shape.points.size() == 5 ? "60 mm square" : "20 mm circle", play1Deg, play2Deg, gap, worstVertex,
+                shape.points.size() == 5 ? "60 mm square" : "40 mm circle", play1Deg, play2Deg, gap, worstVertex,
                 worstDrawn);
     const bool isSquare = shape.points.size() == 5;
     EXPECT_LT(gap, 0.05);
