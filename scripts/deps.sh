@@ -6,6 +6,7 @@ packages=(
   cmake ninja-build g++ make pkg-config
   libeigen3-dev nlohmann-json3-dev zlib1g-dev libnlopt-cxx-dev
   qt6-base-dev qt6-svg-dev qt6-serialport-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
+  qt6-translations-l10n
   libgl-dev libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth
   dpkg-dev desktop-file-utils appstream man-db

@@ -190,6 +190,10 @@
         <source>This job is long: about %1 hours and %2 pen-down moves. The machine will be busy all that time. Start it anyway?</source>
         <translation>Dieser Auftrag ist lang: etwa %1 Stunden und %2 Zeichenbewegungen. Die Maschine ist die ganze Zeit beschäftigt. Trotzdem starten?</translation>
     </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
 </context>
 <context>
     <name>MapPainter</name>

@@ -190,6 +190,10 @@
         <source>This job is long: about %1 hours and %2 pen-down moves. The machine will be busy all that time. Start it anyway?</source>
         <translation>Este trabajo es largo: unas %1 horas y %2 movimientos con la pluma bajada. La máquina estará ocupada todo ese tiempo. ¿Iniciarlo de todos modos?</translation>
     </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
 </context>
 <context>
     <name>MapPainter</name>
@@ -2336,7 +2340,7 @@ Pausar, detener y salir: la máquina se detiene limpiamente y el progreso se gua
     </message>
     <message>
         <source>The machine has homing switches ($H)</source>
-        <translation>La máquina tiene finales de carrera de origen ($H)</translation>
+        <translation>Con finales de carrera de origen ($H)</translation>
     </message>
     <message>
         <source>Home θ1</source>

@@ -190,6 +190,10 @@
         <source>This job is long: about %1 hours and %2 pen-down moves. The machine will be busy all that time. Start it anyway?</source>
         <translation>Cette tâche est longue : environ %1 heures et %2 mouvements stylo baissé. La machine sera occupée tout ce temps. La lancer quand même ?</translation>
     </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
 </context>
 <context>
     <name>MapPainter</name>

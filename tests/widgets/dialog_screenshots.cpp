@@ -8,6 +8,8 @@
 //   dialog-preflight-LANG.png    the job preview with its pre-flight problems (the demo drawing
 //                                moved partly out of reach)
 // The language is installed as the studio installs it (translations and number format).
+// With FIVEBAR_DEBUG_WIDTHS set, the profile editor's widgets wider than 250 px are listed (the
+// ones that make the dock clip at the window's left dock width).
 #include <QAction>
 #include <QApplication>
 #include <QDockWidget>
@@ -95,7 +97,13 @@ int main(int argc, char** argv) {
   // The profile editor, in its dock.
   if (auto* editor = window.findChild<widgets::ProfileEditor*>()) {
     QDockWidget* dock = raisedDockOf(editor);
+    if (dock) dock->setFloating(true), dock->resize(330, 940);  // the width of the window's left docks
     ok = grab(dock ? static_cast<QWidget&>(*dock) : *editor, out + "/dialog-profile" + suffix) && ok;
+    if (qEnvironmentVariableIsSet("FIVEBAR_DEBUG_WIDTHS"))
+      for (QWidget* w : editor->findChildren<QWidget*>())
+        if (w->isVisible() && w->minimumSizeHint().width() > 250)
+          std::printf("%d %s %s\n", w->minimumSizeHint().width(), w->metaObject()->className(),
+                      qPrintable(w->property("text").toString()));
   }
 
   // Machine > Design..., before a search.

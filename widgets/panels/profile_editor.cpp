@@ -86,11 +86,18 @@ ProfileEditor::ProfileEditor(StudioDocument& doc, QWidget* parent) : QWidget(par
   importButton->setToolTip(tr("Load a machine profile from a JSON file"));
   auto* exportButton = new QPushButton(tr("Export…"), this);
   exportButton->setToolTip(tr("Save this machine profile as a JSON file"));
-  auto* top = new QHBoxLayout;
-  top->addWidget(presets_, 1);
-  top->addWidget(loadPresetButton);
-  top->addWidget(importButton);
-  top->addWidget(exportButton);
+  // Two rows, so that the dock stays narrow in every language (French and Spanish labels are
+  // longer: one row of four clipped the editor at the left docks' width).
+  auto* presetRow = new QHBoxLayout;
+  presetRow->addWidget(presets_, 1);
+  presetRow->addWidget(loadPresetButton);
+  auto* fileRow = new QHBoxLayout;
+  fileRow->addStretch(1);
+  fileRow->addWidget(importButton);
+  fileRow->addWidget(exportButton);
+  auto* top = new QVBoxLayout;
+  top->addLayout(presetRow);
+  top->addLayout(fileRow);
 
   general_ = new QLabel(this);
   general_->setWordWrap(true);
@@ -102,7 +109,9 @@ ProfileEditor::ProfileEditor(StudioDocument& doc, QWidget* parent) : QWidget(par
   auto group = [&](const QString& title) {
     auto* box = new QGroupBox(title, content);
     contentLayout->addWidget(box);
-    return new QFormLayout(box);
+    auto* form = new QFormLayout(box);
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows);  // long translated labels above their field
+    return form;
   };
   QFormLayout* general = group(tr("Machine"));
   name_ = new QLineEdit(content);
@@ -142,6 +151,8 @@ void ProfileEditor::buildFields(QFormLayout* geometry, QFormLayout* limits, QFor
   limited_ = new QCheckBox(tr("Limit the motor angles"), this);
   limits->addRow(limited_);
   toolKind_ = new QComboBox(this);
+  toolKind_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  toolKind_->setMinimumContentsLength(12);
   toolKind_->addItem(tr("Pen servo (M3 S / M5)"), int(ToolKind::PenServo));
   toolKind_->addItem(tr("Z axis"), int(ToolKind::ZAxis));
   toolKind_->addItem(tr("Laser (M4 S / M5)"), int(ToolKind::Laser));
