@@ -150,8 +150,14 @@ std::vector<Stroke> joinRun(std::vector<Stroke> run, const OptimiseOptions& o, s
       continue;
     }
     for (const Piece& pc : chain) {
-      appendPoints(joined.points, run[pc.stroke], pc.reversed);
-      joined.flattened = joined.flattened || run[pc.stroke].flattened;
+      const Stroke& part = run[pc.stroke];
+      if (!joined.points.empty()) {  // the bridge from the chain so far to this piece
+        const Vec2& start = pc.reversed ? part.points.back() : part.points.front();
+        joined.bridgedGapMm = std::max(joined.bridgedGapMm, (start - joined.points.back()).norm());
+      }
+      joined.bridgedGapMm = std::max(joined.bridgedGapMm, part.bridgedGapMm);
+      appendPoints(joined.points, part, pc.reversed);
+      joined.flattened = joined.flattened || part.flattened;
     }
     out.push_back(std::move(joined));
   }

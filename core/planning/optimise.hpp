@@ -17,7 +17,9 @@ namespace fivebar {
 
 struct OptimiseOptions {
   bool join = true;                 // join strokes of one layer whose ends meet
-  double joinToleranceMm = 0.05;    // end-to-start distance that counts as meeting
+  // End-to-start distance that counts as meeting: the gap is bridged by a drawn line (recorded in
+  // Stroke::bridgedGapMm). The planner sets joinGapMm(tolerance) (planner.hpp).
+  double joinToleranceMm = 0.05;
   double simplifyToleranceMm = 0.0; // RDP tolerance; 0 keeps every point
   bool reorder = true;              // greedy nearest neighbour + 2-opt
   bool allowReverse = true;         // strokes may be drawn backwards

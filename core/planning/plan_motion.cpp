@@ -218,6 +218,8 @@ class MotionPlanner {
   void prepare(size_t k, Prepared& out) const {
     const Stroke& s = strokes_[k];
     if (s.points.empty()) return;
+    SegmentationOptions so = s.flattened ? segFlattened_ : segExact_;
+    so.deviationBudgetMm -= 0.5 * s.bridgedGapMm;  // the drawn bridge's share (strokes.hpp)
     if (pen_) {  // the pen is off P: segment the path of P that draws the pen's stroke
       Vec2 failedAt = Vec2::Zero();
       const auto distal = distalPath(g_, *pen_, mode_, s.points, &failedAt);
@@ -226,15 +228,14 @@ class MotionPlanner {
         out.seg.failedAt = failedAt;
         return;
       }
-      out.seg = segmentStroke(g_, mode_, p_.assembly, *distal, job_.start, s.flattened ? segFlattened_ : segExact_);
+      out.seg = segmentStroke(g_, mode_, p_.assembly, *distal, job_.start, so);
       if (!out.seg.ok()) {
         out.seg.failedAt = penOf(out.seg.failedAt);
         return;
       }
       for (JointWaypoint& w : out.seg.waypoints) w.p = penOf(w.q, w.p);
     } else {
-      out.seg = segmentStroke(g_, mode_, p_.assembly, s.points, job_.start,
-                              s.flattened ? segFlattened_ : segExact_);
+      out.seg = segmentStroke(g_, mode_, p_.assembly, s.points, job_.start, so);
     }
     if (!out.seg.ok()) return;
     out.check = checkWaypoints(out.seg);
@@ -333,7 +334,9 @@ class MotionPlanner {
     const double flatteningMm = s.flattened ? opt_.flatteningToleranceMm : 0.0;
     if (!seg.waypoints.empty()) {
       maxFlatteningMm_ = std::max(maxFlatteningMm_, flatteningMm);
-      maxStrokeDeviationMm_ = std::max(maxStrokeDeviationMm_, seg.maxDeviationMm + flatteningMm);
+      maxBridgedGapMm_ = std::max(maxBridgedGapMm_, s.bridgedGapMm);
+      maxStrokeDeviationMm_ = std::max(maxStrokeDeviationMm_,
+                                       seg.maxDeviationMm + flatteningMm + 0.5 * s.bridgedGapMm);
     }
     ps.moveCount = static_cast<int>(job_.moves.size()) - ps.firstMove;
     for (const JointWaypoint& w : seg.waypoints) ps.lengthMm += w.pathLengthMm;
@@ -537,6 +540,7 @@ class MotionPlanner {
 
  public:
   double maxFlatteningMm_ = 0.0;       // largest flattening error of a drawn stroke
+  double maxBridgedGapMm_ = 0.0;       // largest gap joining bridged in a drawn stroke
   double maxStrokeDeviationMm_ = 0.0;  // largest joint deviation + flattening of a drawn stroke
 };
 
@@ -575,7 +579,9 @@ PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Lay
                                        [](const Stroke& s) { return s.flattened; });
   // Below the worst case of the G-code rounding no tolerance can be promised (the rounding is
   // measured move by move, but a budget under its bound would fail somewhere as "cannot follow").
-  const double budget = jointDeviationBudgetMm(profile, options, anyFlattened);
+  double largestBridgeMm = 0.0;
+  for (const Stroke& s : strokes) largestBridgeMm = std::max(largestBridgeMm, s.bridgedGapMm);
+  const double budget = jointDeviationBudgetMm(profile, options, anyFlattened) - 0.5 * largestBridgeMm;
   if (!(budget > gcodeRoundingBoundMm(profile)) || !(options.toleranceMm > 0.0)) {
     out.status = PlanStatus::BadOptions;
     out.message = FB_TR("Planner", "tolerance %1 mm leaves nothing for the moves after flattening "
@@ -609,7 +615,10 @@ PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Lay
     out.job = PlannedJob();
     return out;
   }
-  fillJobTimes(out.job, profile);
+  if (options.keepBlockTimings)
+    out.blockTimings = estimateJobTime(out.job, profile);
+  else
+    fillJobTimes(out.job, profile);
   clock.lap("time estimate");
   if (out.job.moves.size() <= kTimeOptimalMaxMoves) {
     std::vector<double> layerSpeeds;
@@ -627,6 +636,7 @@ PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Lay
   r.segments = s.segments;
   r.jointDeviationMm = s.maxDeviationMm;
   r.flatteningMm = planner.maxFlatteningMm_;
+  r.bridgedGapMm = planner.maxBridgedGapMm_;
   r.roundingMm = 0.0;  // measured: part of the joint deviation (moves between rounded angles)
   r.maxDeviationMm = s.segments > 0 ? planner.maxStrokeDeviationMm_ : 0.0;
   r.minSingularityMarginDeg = degFromRad(s.minTypeIIMarginRad);

@@ -119,6 +119,7 @@ PlanResult planInMode(const Drawing& drawing, const std::optional<RectMm>& bound
     OptimiseOptions oo;
     oo.start = kinematicFromCommanded(profile.calibration, profile.homeAngles);  // home is commanded
     oo.maxTwoOptSteps = kTwoOptSteps;  // under 0.1 s on 40,000 strokes
+    oo.joinToleranceMm = joinGapMm(options.toleranceMm);
     oo.measureTravel = false;
     strokes = optimise(std::move(strokes), profile, m.mode, oo).strokes;
     clock.lap("optimise");
@@ -152,6 +153,10 @@ std::vector<Candidate> preflightAll(const Drawing& drawing, const std::optional<
 }
 
 }  // namespace
+
+double joinGapMm(double toleranceMm) {
+  return std::min(kJoinGapMaxMm, kJoinGapShare * std::max(toleranceMm, 0.0));
+}
 
 double importToleranceMm(double toleranceMm, double placementScale) {
   return kFlatteningShare * toleranceMm / std::max(placementScale, 1e-12);
@@ -284,6 +289,7 @@ std::string reportToJson(const PlanReport& r) {
       {"max_deviation_mm", r.maxDeviationMm},
       {"joint_deviation_mm", r.jointDeviationMm},
       {"flattening_mm", r.flatteningMm},
+      {"bridged_gap_mm", r.bridgedGapMm},
       {"rounding_mm", r.roundingMm},
       {"tolerance_mm", r.toleranceMm},
       {"min_singularity_margin", r.minSingularityMarginDeg},

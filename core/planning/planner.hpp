@@ -15,6 +15,7 @@
 #include "core/planning/stage_times.hpp"
 #include "core/planning/strokes.hpp"
 #include "core/support/message.hpp"
+#include "core/planning/time_estimate.hpp"
 
 namespace fivebar {
 
@@ -39,6 +40,9 @@ struct PlanOptions {
   bool optimise = true;     // join, reverse and reorder strokes to cut travel time
   double minSegmentDurationS = 0.005;
   int maxListedProblems = 20;  // problems listed in an infeasible report
+  // Keep the per-move GRBL timings of the time estimate in PlanResult::blockTimings (about 50
+  // bytes a move), for a caller that animates the job (Trajectory) without timing it again.
+  bool keepBlockTimings = false;
   // Set from another thread to stop planning early (status Cancelled); may be null.
   const std::atomic<bool>* cancel = nullptr;
 };
@@ -47,6 +51,14 @@ struct PlanOptions {
 // flattened more coarsely than this share (at its placement scale) is refused with
 // PlanStatus::CoarseDrawing, naming the flattening tolerance to import it with.
 inline constexpr double kFlatteningShare = 0.4;
+
+// Stroke joining (optimise.hpp) bridges gaps up to joinGapMm(tolerance) = min(kJoinGapMaxMm,
+// kJoinGapShare x tolerance): a share of the budget, never more than the tolerance. Half of a
+// stroke's largest bridged gap is charged to its deviation (Stroke::bridgedGapMm) and taken from
+// its segmentation budget, so the bound stays within the tolerance.
+inline constexpr double kJoinGapShare = 0.2;
+inline constexpr double kJoinGapMaxMm = 0.05;
+double joinGapMm(double toleranceMm);
 
 // The flattening tolerance (work-frame mm) to import a drawing with, for a total tolerance and
 // the placement's largest scale (max(scale, scale * stretchY); 1 before the placement is known).
@@ -78,10 +90,12 @@ struct PlanReport {
   int segments = 0;
   // Bound of the distance between the drawn line and the drawing: the largest, over the drawn
   // strokes, of the joint-linear deviation of its moves (measured between the angles as the
-  // G-code rounds them) + its flattening error at the placement scale (0 for straight lines).
+  // G-code rounds them) + its flattening error at the placement scale (0 for straight lines)
+  // + half the largest gap joining bridged in it (0 without joins over a gap).
   double maxDeviationMm = 0.0;
   double jointDeviationMm = 0.0;     // the joint-linear part alone (measured, largest)
   double flatteningMm = 0.0;         // the largest flattening error of a drawn stroke (machine mm)
+  double bridgedGapMm = 0.0;         // the largest gap joining bridged in a drawn stroke (mm)
   // The G-code rounding reserve: 0, the rounding being measured in jointDeviationMm (kept for
   // REPORT.json readers; gcodeRoundingBoundMm is the bound it would be).
   double roundingMm = 0.0;
@@ -111,6 +125,7 @@ struct PlanResult {
   Message placementNote;        // "scaled to 62 % to fit the workspace" when planJob scaled down
   double requiredFlatteningToleranceMm = 0.0;  // CoarseDrawing: work-frame mm to import with
   StageTimes timings;           // wall-clock seconds per pipeline stage
+  std::vector<GrblBlockTiming> blockTimings;  // per move, with PlanOptions::keepBlockTimings
   bool ok() const { return status == PlanStatus::Ok; }
 };
 

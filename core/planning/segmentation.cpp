@@ -112,6 +112,7 @@ struct MoveEval {
   double deviationMm = kInfinity;
   double peakSpeedMmPerUnit = 0.0;
   double bowMm = 0.0;  // largest distance of a sample from the line through the move's ends
+  int bowSide = 0;     // side of that sample: +1 left of the move's direction, -1 right
 };
 
 // Deviation of the joint-linear move qa -> qb from `chain` (see jointMoveDeviation), and the
@@ -141,8 +142,13 @@ MoveEval evaluateMove(const Geometry& g, AssemblyMode assembly, const JointAngle
   const Vec2 chord = curve.back() - curve.front();
   const double chordLength = chord.norm();
   if (chordLength > 0.0)
-    for (const Vec2& c : curve)
-      out.bowMm = std::max(out.bowMm, std::abs(cross(chord, c - curve.front())) / chordLength);
+    for (const Vec2& c : curve) {
+      const double side = cross(chord, c - curve.front()) / chordLength;
+      if (std::abs(side) > out.bowMm) {
+        out.bowMm = std::abs(side);
+        out.bowSide = side > 0.0 ? 1 : -1;
+      }
+    }
   out.bowMm += allowance;
   return out;
 }
@@ -274,40 +280,64 @@ class Segmenter {
     const Vec2 a = cur_, b = pts_[i_ + 1];
     const double length = (b - a).norm();
     const double budget = opt_.deviationBudgetMm;
+    // Waypoints inside the segment go off the line against the side the last piece bowed to
+    // (SegmentationOptions::waypointOffsetShare); the first piece of a segment shows the side.
+    const Vec2 normal = length > 0.0 ? Vec2(Vec2(-(b - a).y(), (b - a).x()) / length) : Vec2(Vec2::Zero());
+    double offsetMm = std::isfinite(hintMm_) ? -bowSide_ * opt_.waypointOffsetShare * budget : 0.0;
     double t = std::isfinite(hintMm_) ? std::min(1.0, hintMm_ / length) : 1.0;
     JointAngles q;
-    auto tryAt = [&](double u, JointAngles& qOut) {
-      const auto qx = unwrappedIk(g_, mode_, a + u * (b - a), qcur_);
+    Vec2 target;
+    auto tryAt = [&](double u, JointAngles& qOut, Vec2& targetOut) {
+      targetOut = a + u * (b - a) + (u < 1.0 ? offsetMm : 0.0) * normal;
+      const auto qx = unwrappedIk(g_, mode_, targetOut, qcur_);
       if (!qx) return MoveEval{};
       qOut = roundedAngles(*qx, opt_.angleDecimalsDeg);
-      const Vec2 piece[2] = {a, a + u * (b - a)};
+      const Vec2 piece[2] = {a, a + u * (b - a)};  // measured against the line itself
       return evaluateMove(g_, assembly_, qcur_, trigCur_, qOut, piece);
     };
-    MoveEval e = tryAt(t, q);
+    // Length factor towards kSplitTarget of the budget: the deviation of a short move grows with
+    // the square of its length; with offset waypoints its bow does, aimed at the budget plus the
+    // offset (the curve then spans -offset .. budget around the line).
+    const auto towardsTarget = [&](const MoveEval& e, double lo, double hi) {
+      if (offsetMm == 0.0 || !std::isfinite(e.deviationMm)) return growth(e.deviationMm, lo, hi);
+      if (!(e.bowMm > 0.0)) return hi;
+      const double aim = kSplitTarget * budget + std::abs(offsetMm);
+      return std::clamp(std::sqrt(aim / e.bowMm), lo, hi) *
+             (e.deviationMm > budget ? std::min(1.0, std::sqrt(budget / e.deviationMm)) : 1.0);
+    };
+    MoveEval e = tryAt(t, q, target);
     while (!(e.deviationMm <= budget)) {
-      t *= growth(e.deviationMm, 0.25, 0.9);
+      t *= std::min(0.9, towardsTarget(e, 0.25, 0.9));
+      if (offsetMm != 0.0 && t * length < 0.25 * hintMm_) {  // the offset does not pay here
+        offsetMm = 0.0;
+        t = std::min(1.0, hintMm_ / length);
+      }
       if (t * length < opt_.minPieceMm) {
         out_.status = SegmentStatus::CannotFollow;
         out_.failedAt = a;
         return false;
       }
-      e = tryAt(t, q);
+      e = tryAt(t, q, target);
     }
     if (t < 1.0 && e.deviationMm < kSplitGrowBelow * budget) {  // clearly short: one longer try
       JointAngles q2;
-      const double t2 = std::min(1.0, t * growth(e.deviationMm, 1.0, 2.0));
-      const MoveEval e2 = tryAt(t2, q2);
-      if (e2.deviationMm <= budget) t = t2, e = e2, q = q2;
+      Vec2 target2;
+      const double t2 = std::min(1.0, t * towardsTarget(e, 1.0, 2.0));
+      const MoveEval e2 = tryAt(t2, q2, target2);
+      if (e2.deviationMm <= budget) t = t2, e = e2, q = q2, target = target2;
     }
     if (t >= 1.0) {  // the rest of the segment fits: the waypoint is vertex i+1 itself
       push(q, trigOf(b, q), b, e, length);
       ++i_;
       hintMm_ = kInfinity;
+      bowSide_ = 0;
       return true;
     }
-    push(q, trigOf(a + t * (b - a), q), a + t * (b - a), e, t * length);
+    push(q, trigOf(target, q), target, e, t * length);
+    cur_ = a + t * (b - a);  // the stroke goes on from the point on the line
     // The next piece is predicted to use kSplitTarget of the budget too.
-    hintMm_ = t * length * growth(e.deviationMm, 0.5, 1.5);
+    hintMm_ = t * length * towardsTarget(e, 0.5, 1.5);
+    bowSide_ = e.bowSide;
     return true;
   }
 
@@ -341,6 +371,7 @@ class Segmenter {
   MotorTrig trigCur_;
   std::vector<Vec2> chain_;
   double hintMm_ = kInfinity;  // length of the last split piece (mm), infinite after a vertex
+  int bowSide_ = 0;            // side the last split piece bowed to (MoveEval::bowSide)
 };
 
 }  // namespace

@@ -22,13 +22,22 @@ struct SegmentationOptions {
   // G-code will carry them, before its moves are measured, so the deviations are those of the
   // moves the machine is sent (the rounding is measured, not bounded). < 0: exact angles.
   int angleDecimalsDeg = -1;
+  // A long straight segment split into pieces: the waypoints inside it are set off the line, by
+  // this share of the budget, against the side the joint-linear moves bow to, so that each move's
+  // curve spans the band on both sides of the line (-offset at its ends, up to the budget in its
+  // middle) instead of one side only: pieces about sqrt(1 + share) longer. The deviation is still
+  // measured against the line itself. 0: every waypoint on the stroke. The segment's vertices
+  // (its ends) are never moved.
+  double waypointOffsetShare = 0.9;
 };
 
 // One waypoint of a segmented stroke: the end of a joint-linear move (the first waypoint is the
 // stroke's start). q is continuous (unwrapped near the previous waypoint).
 struct JointWaypoint {
   JointAngles q;
-  Vec2 p = Vec2::Zero();      // machine frame, mm (on the stroke)
+  // Machine frame, mm: where q puts the pen. On the stroke, except inside a long straight segment
+  // split into pieces (SegmentationOptions::waypointOffsetShare of the budget beside it).
+  Vec2 p = Vec2::Zero();
   double deviationMm = 0.0;   // max deviation of the move ending here (0 for the first)
   double pathLengthMm = 0.0;  // stroke length covered by the move ending here (mm)
   // Largest XY speed along the move ending here, mm per unit of the move parameter u in [0, 1],

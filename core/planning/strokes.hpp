@@ -17,6 +17,10 @@ struct Stroke {
   // The points approximate curves (Polyline::flattened): the flattening error at the placement
   // scale (PlanOptions::flatteningToleranceMm) is part of this stroke's deviation.
   bool flattened = false;
+  // Largest gap (mm) between the end of one piece and the start of the next that joining bridged
+  // inside this stroke (optimise.hpp): the bridge is drawn, so half of it (its middle is that far
+  // from both ends) is part of this stroke's deviation. 0 for exact joins.
+  double bridgedGapMm = 0.0;
 };
 
 }  // namespace fivebar

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <memory>
 #include <vector>
 
 #include "core/planning/job.hpp"
@@ -26,14 +27,19 @@ class Trajectory {
   Trajectory() = default;
   // Times the job with the GRBL model (also fills the job copy's durations).
   Trajectory(const PlannedJob& job, const MachineProfile& profile);
+  // A job the planner timed already: `timings` are its per-move GRBL timings
+  // (PlanOptions::keepBlockTimings, or estimateJobTime); the job is shared, not copied.
+  Trajectory(std::shared_ptr<const PlannedJob> job, std::vector<GrblBlockTiming> timings,
+             const MachineProfile& profile);
 
   double durationS() const { return durationS_; }
-  const PlannedJob& job() const { return job_; }
+  const PlannedJob& job() const { return *job_; }
   // Pose at time t (clamped to [0, durationS()]). Continuous in t.
   TrajectorySample at(double timeS) const;
 
  private:
-  PlannedJob job_;
+  void index();  // from_ and penDownAfter_
+  std::shared_ptr<const PlannedJob> job_ = std::make_shared<const PlannedJob>();
   Geometry geometry_;
   std::optional<PenOffset> pen_;  // the profile's calibrated pen offset
   std::vector<GrblBlockTiming> timings_;

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
+#include <stdexcept>
 
 #include "core/planning/planner.hpp"
 #include "core/planning/trajectory.hpp"
@@ -62,6 +64,43 @@ TEST(Trajectory, MoveEndsHitTheTargetsAndPenStateFollows) {
     EXPECT_EQ(mid.moveIndex, static_cast<int>(i));
     EXPECT_EQ(mid.penDown, m.kind == JobMoveKind::Draw);
   }
+}
+
+}  // namespace
+}  // namespace fivebar
+
+namespace fivebar {
+namespace {
+
+// The studio's trajectory reuses the planner's own timing (PlanOptions::keepBlockTimings) and
+// shares the job: it samples exactly as one that copies the job and times it again.
+TEST(Trajectory, PlannerTimingsGiveTheSameTrajectory) {
+  const MachineProfile p = *preset("maker-plotter");
+  Drawing d;
+  d.layers.resize(1);
+  d.layers[0].paths.push_back({{{0, 0}, {30, 0}, {30, 20}, {5, 25}}, false});
+  PlanOptions o;
+  o.atMm = Vec2(0, 170);
+  o.keepBlockTimings = true;
+  PlanResult r = planJob(d, p, o);
+  ASSERT_TRUE(r.ok()) << r.message;
+  ASSERT_EQ(r.blockTimings.size(), r.job.moves.size());
+  const Trajectory copied(r.job, p);
+  auto job = std::make_shared<const PlannedJob>(r.job);
+  const Trajectory shared(job, r.blockTimings, p);
+  EXPECT_EQ(&shared.job(), job.get());  // not copied
+  ASSERT_DOUBLE_EQ(shared.durationS(), copied.durationS());
+  for (int k = 0; k <= 500; ++k) {
+    const double t = copied.durationS() * k / 500.0;
+    const TrajectorySample a = copied.at(t), b = shared.at(t);
+    EXPECT_EQ(a.moveIndex, b.moveIndex);
+    EXPECT_DOUBLE_EQ(a.q.theta1, b.q.theta1);
+    EXPECT_DOUBLE_EQ(a.q.theta2, b.q.theta2);
+    EXPECT_EQ(a.penDown, b.penDown);
+  }
+  // A timing list that does not fit the job is refused, not read out of bounds.
+  r.blockTimings.pop_back();
+  EXPECT_THROW(Trajectory(job, r.blockTimings, p), std::invalid_argument);
 }
 
 }  // namespace

@@ -53,6 +53,49 @@ TEST(PathScene, LevelsOfDetailShrinkAndAreChosenByZoom) {
   EXPECT_NEAR(scene.maxSpeedMmPerS(), 40.0, 1e-3);
 }
 
+// The flat list the planning pipeline fills (no allocation per path) makes the same scene as
+// one ScenePath per path; a scene of two-point paths has nothing to simplify: one level.
+TEST(PathScene, FlatListMakesTheSameScene) {
+  std::mt19937_64 rng(test::seed());
+  std::uniform_real_distribution<double> x(-80.0, 80.0), y(100.0, 220.0), v(5.0, 60.0);
+  std::vector<ScenePath> paths;
+  ScenePathList list;
+  for (int i = 0; i < 3000; ++i) {
+    ScenePath p;
+    p.kind = i % 3 == 0 ? PathKind::Travel : PathKind::Draw;
+    p.flagged = i % 7 == 0;
+    p.firstOrder = 2 * i;
+    p.pointsMm = {QPointF(x(rng), y(rng)), QPointF(x(rng), y(rng)), QPointF(x(rng), y(rng))};
+    p.speedsMmPerS = {static_cast<float>(v(rng)), static_cast<float>(v(rng))};
+    list.beginPath(p.kind, p.flagged, p.firstOrder);
+    for (int k = 0; k < 3; ++k) list.addPoint(p.pointsMm[k], k < 2 ? p.speedsMmPerS[k] : 0.0f);
+    paths.push_back(p);
+  }
+  const PathScene fromPaths(paths), fromList(list);
+  ASSERT_EQ(fromList.levelCount(), fromPaths.levelCount());
+  for (int l = 0; l < fromList.levelCount(); ++l)
+    EXPECT_EQ(fromList.segmentCount(l), fromPaths.segmentCount(l));
+  EXPECT_EQ(fromList.maxSpeedMmPerS(), fromPaths.maxSpeedMmPerS());
+  const ViewTransform view(QPointF(0.0, 160.0), 2.5, QSizeF(400.0, 300.0));
+  QImage a = transparentImage(QSize(400, 300)), b = transparentImage(QSize(400, 300));
+  ScenePaintOptions o;
+  o.colourBySpeed = true;
+  {
+    QPainter pa(&a), pb(&b);
+    fromPaths.paint(pa, view, o);
+    fromList.paint(pb, view, o);
+  }
+  EXPECT_EQ(a, b);
+  EXPECT_GT(paintedPixels(a, a.rect()), 1000);
+  ScenePathList lines;
+  for (int i = 0; i < 100; ++i) {
+    lines.beginPath(PathKind::Draw, false, i);
+    lines.addPoint(QPointF(i, 100.0));
+    lines.addPoint(QPointF(i + 0.5, 110.0));
+  }
+  EXPECT_EQ(PathScene(lines).levelCount(), 1);
+}
+
 TEST(PathScene, PaintsWhereThePathIsAndNowhereElse) {
   ScenePath line;
   line.pointsMm = {QPointF(-50.0, 100.0), QPointF(50.0, 100.0)};

@@ -31,9 +31,11 @@ double distance2(const QPointF& q, const QPointF& a, const QPointF& b) {
 }
 
 // Level-of-detail simplification step: the farthest index j > from (at most kMaxMergedPoints
-// ahead) such that every point between `from` and j lies within sqrt(tol2) of the chord.
-std::size_t farthestWithin(const std::vector<QPointF>& pts, std::size_t from, double tol2) {
-  const std::size_t last = std::min(pts.size() - 1, from + kMaxMergedPoints);
+// ahead, at most `last`) such that every point between `from` and j lies within sqrt(tol2) of
+// the chord.
+std::size_t farthestWithin(const std::vector<QPointF>& pts, std::size_t from, std::size_t last,
+                           double tol2) {
+  last = std::min(last, from + kMaxMergedPoints);
   std::size_t best = from + 1;
   for (std::size_t j = from + 2; j <= last; ++j) {
     bool ok = true;
@@ -47,32 +49,30 @@ std::size_t farthestWithin(const std::vector<QPointF>& pts, std::size_t from, do
 // One pyramid step: each path's points simplified within toleranceMm; a kept segment carries
 // the order and colour class of the first segment it replaces (a path has one kind, so only the
 // speed shade, a sub-pixel detail at that level, can be approximated).
-std::vector<PathScene::LevelPath> simplifyLevel(const std::vector<PathScene::LevelPath>& in,
-                                                double toleranceMm) {
+PathScene::LevelPaths simplifyLevel(const PathScene::LevelPaths& in, double toleranceMm) {
   const double tol2 = toleranceMm * toleranceMm;
-  std::vector<PathScene::LevelPath> out(in.size());
-  for (std::size_t i = 0; i < in.size(); ++i) {
-    const auto& p = in[i];
-    auto& q = out[i];
-    const std::size_t n = p.points.size();
-    std::size_t kept = 0;
-    q.points.push_back(p.points[0]);
-    while (kept + 1 < n) {
-      const std::size_t next = farthestWithin(p.points, kept, tol2);
-      q.points.push_back(p.points[next]);
-      q.orders.push_back(p.orders[kept]);
-      q.classes.push_back(p.classes[kept]);
-      kept = next;
+  PathScene::LevelPaths out;
+  out.points.reserve(in.points.size());
+  out.orders.reserve(in.points.size());
+  out.classes.reserve(in.points.size());
+  out.begin.reserve(in.begin.size());
+  const auto keep = [&](std::size_t k) {
+    out.points.push_back(in.points[k]);
+    out.orders.push_back(in.orders[k]);
+    out.classes.push_back(in.classes[k]);
+  };
+  for (std::size_t i = 0; i < in.pathCount(); ++i) {
+    const std::size_t first = in.begin[i], last = in.begin[i + 1] - 1;
+    std::size_t kept = first;
+    keep(kept);
+    while (kept < last) {
+      kept = last - kept == 1 ? last : farthestWithin(in.points, kept, last, tol2);
+      keep(kept);
     }
+    out.begin.push_back(out.points.size());
   }
   return out;
 }
-
-struct Pending {
-  QLineF line;
-  int order;
-  int key;
-};
 
 }  // namespace
 
@@ -89,27 +89,57 @@ QColor PathScene::speedColour(double t) {
                 mix(stops[i].blue(), stops[i + 1].blue()));
 }
 
-PathScene::PathScene(const std::vector<ScenePath>& paths) {
+void ScenePathList::add(const ScenePath& path) {
+  beginPath(path.kind, path.flagged, path.firstOrder);
+  for (std::size_t k = 0; k < path.pointsMm.size(); ++k) {
+    if (path.speedsMmPerS.empty())
+      addPoint(path.pointsMm[k]);
+    else
+      addPoint(path.pointsMm[k], path.speedsMmPerS[std::min(k, path.speedsMmPerS.size() - 1)]);
+  }
+}
+
+namespace {
+ScenePathList listOf(const std::vector<ScenePath>& paths) {
+  ScenePathList list;
+  std::size_t points = 0;
+  for (const ScenePath& p : paths) points += p.pointsMm.size();
+  list.pointsMm.reserve(points);
+  list.paths.reserve(paths.size());
+  for (const ScenePath& p : paths) list.add(p);
+  return list;
+}
+}  // namespace
+
+PathScene::PathScene(const std::vector<ScenePath>& paths) : PathScene(listOf(paths)) {}
+
+PathScene::PathScene(const ScenePathList& paths) {
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
-  for (const ScenePath& p : paths) {
-    if (p.pointsMm.size() >= 2) {
-      segmentCount_ += p.pointsMm.size() - 1;
-      orderCount_ = std::max(orderCount_, p.firstOrder + static_cast<int>(p.pointsMm.size()) - 1);
-    }
-    for (const QPointF& q : p.pointsMm) {
+  for (std::size_t i = 0; i < paths.paths.size(); ++i) {
+    const std::size_t begin = paths.paths[i].pointBegin, end = paths.pointEnd(i);
+    if (end - begin < 2) continue;
+    segmentCount_ += end - begin - 1;
+    orderCount_ = std::max(orderCount_, paths.paths[i].firstOrder + static_cast<int>(end - begin) - 1);
+    for (std::size_t k = begin; k < end; ++k) {
+      const QPointF& q = paths.pointsMm[k];
       x0 = std::min(x0, q.x()), y0 = std::min(y0, q.y());
       x1 = std::max(x1, q.x()), y1 = std::max(y1, q.y());
+      if (!paths.speedsMmPerS.empty() && k + 1 < end) maxSpeed_ = std::max(maxSpeed_, paths.speedsMmPerS[k]);
     }
-    for (float s : p.speedsMmPerS) maxSpeed_ = std::max(maxSpeed_, s);
   }
   if (segmentCount_ == 0) return;
   boundsMm_ = QRectF(QPointF(x0, y0), QPointF(x1, y1));
   // A pyramid: each level simplifies the previous one's points with a 4x larger tolerance, so
   // every level merges at most kMaxMergedPoints of the previous level's points per segment.
-  std::vector<LevelPath> current = baseLevel(paths);
+  LevelPaths current = baseLevel(paths);
   double tolerance = 0.0;
   for (int l = 0; l < kMaxLevels; ++l) {
-    if (tolerance > 0.0) current = simplifyLevel(current, tolerance);
+    if (tolerance > 0.0) {
+      LevelPaths simpler = simplifyLevel(current, tolerance);
+      // Nothing merged (e.g. only two-point paths): the level would repeat the previous one.
+      if (simpler.points.size() == current.points.size()) break;
+      current = std::move(simpler);
+    }
     Level level;
     bucket(current, tolerance, level);
     const bool useless = !levels_.empty() &&
@@ -120,41 +150,52 @@ PathScene::PathScene(const std::vector<ScenePath>& paths) {
   }
 }
 
-std::vector<PathScene::LevelPath> PathScene::baseLevel(const std::vector<ScenePath>& paths) const {
+PathScene::LevelPaths PathScene::baseLevel(const ScenePathList& paths) const {
   const double speedScale = maxSpeed_ > 0.0f ? 1.0 / maxSpeed_ : 0.0;
-  const auto classOf = [&](const ScenePath& p, std::size_t segment) {
+  const bool speeds = !paths.speedsMmPerS.empty();
+  const auto classOf = [&](const ScenePathList::Info& p, std::size_t point) {
     if (p.kind == PathKind::Travel) return kTravelClass;
     if (p.flagged) return kProblemClass;
-    if (p.speedsMmPerS.empty()) return 2 + kSpeedClasses - 1;
-    const double t = p.speedsMmPerS[std::min(segment, p.speedsMmPerS.size() - 1)] * speedScale;
+    if (!speeds || std::isnan(paths.speedsMmPerS[point])) return 2 + kSpeedClasses - 1;
+    const double t = paths.speedsMmPerS[point] * speedScale;
     return 2 + std::clamp(static_cast<int>(t * kSpeedClasses), 0, kSpeedClasses - 1);
   };
-  // Paths in drawing order, so that a stable bucket sort keeps orders ascending.
-  std::vector<const ScenePath*> sorted;
-  sorted.reserve(paths.size());
-  for (const ScenePath& p : paths) {
-    if (p.pointsMm.size() >= 2) sorted.push_back(&p);
-  }
-  std::stable_sort(sorted.begin(), sorted.end(),
-                   [](auto* a, auto* b) { return a->firstOrder < b->firstOrder; });
-  std::vector<LevelPath> out(sorted.size());
-  for (std::size_t i = 0; i < sorted.size(); ++i) {
-    const ScenePath& p = *sorted[i];
-    LevelPath& lp = out[i];
-    lp.points = p.pointsMm;
-    const std::size_t segments = p.pointsMm.size() - 1;
-    lp.orders.resize(segments);
-    lp.classes.resize(segments);
-    for (std::size_t k = 0; k < segments; ++k) {
-      lp.orders[k] = p.firstOrder + static_cast<int>(k);
-      lp.classes[k] = static_cast<std::uint8_t>(classOf(p, k));
+  // Paths in drawing order, so that a stable bucket sort keeps orders ascending (the pipeline's
+  // paths come in that order already).
+  std::vector<std::size_t> sorted;
+  sorted.reserve(paths.paths.size());
+  std::size_t points = 0;
+  for (std::size_t i = 0; i < paths.paths.size(); ++i)
+    if (paths.pointEnd(i) - paths.paths[i].pointBegin >= 2) {
+      sorted.push_back(i);
+      points += paths.pointEnd(i) - paths.paths[i].pointBegin;
     }
+  const auto byOrder = [&](std::size_t a, std::size_t b) {
+    return paths.paths[a].firstOrder < paths.paths[b].firstOrder;
+  };
+  if (!std::is_sorted(sorted.begin(), sorted.end(), byOrder))
+    std::stable_sort(sorted.begin(), sorted.end(), byOrder);
+  LevelPaths out;
+  out.points.reserve(points);
+  out.orders.reserve(points);
+  out.classes.reserve(points);
+  out.begin.reserve(sorted.size() + 1);
+  for (const std::size_t i : sorted) {
+    const ScenePathList::Info& p = paths.paths[i];
+    const std::size_t end = paths.pointEnd(i);
+    out.points.insert(out.points.end(), paths.pointsMm.begin() + static_cast<std::ptrdiff_t>(p.pointBegin),
+                      paths.pointsMm.begin() + static_cast<std::ptrdiff_t>(end));
+    for (std::size_t k = p.pointBegin; k < end; ++k) {
+      const bool last = k + 1 == end;
+      out.orders.push_back(last ? 0 : p.firstOrder + static_cast<int>(k - p.pointBegin));
+      out.classes.push_back(static_cast<std::uint8_t>(last ? 0 : classOf(p, k)));
+    }
+    out.begin.push_back(out.points.size());
   }
   return out;
 }
 
-void PathScene::bucket(const std::vector<LevelPath>& paths, double toleranceMm,
-                       Level& level) const {
+void PathScene::bucket(const LevelPaths& paths, double toleranceMm, Level& level) const {
   level.toleranceMm = toleranceMm;
   const double cellW = std::max(boundsMm_.width() / kGrid, 1e-9);
   const double cellH = std::max(boundsMm_.height() / kGrid, 1e-9);
@@ -163,31 +204,31 @@ void PathScene::bucket(const std::vector<LevelPath>& paths, double toleranceMm,
     const int by = std::clamp(static_cast<int>((m.y() - boundsMm_.top()) / cellH), 0, kGrid - 1);
     return by * kGrid + bx;
   };
-  std::size_t total = 0;
-  for (const LevelPath& p : paths) total += p.orders.size();
-  std::vector<Pending> pending;
-  pending.reserve(total);
-  for (const LevelPath& p : paths) {
-    for (std::size_t k = 0; k < p.orders.size(); ++k) {
-      const QLineF line(p.points[k], p.points[k + 1]);
-      pending.push_back({line, p.orders[k], p.classes[k] * kGrid * kGrid + bucketOf(line.center())});
-    }
-  }
-  // Stable counting sort by key (class, bucket).
+  // Key (class, bucket) of each segment, by the index of its first point (-1: a path's end).
+  std::vector<int> keys(paths.points.size(), -1);
+  for (std::size_t i = 0; i < paths.pathCount(); ++i)
+    for (std::size_t k = paths.begin[i]; k + 1 < paths.begin[i + 1]; ++k)
+      keys[k] = paths.classes[k] * kGrid * kGrid +
+                bucketOf((paths.points[k] + paths.points[k + 1]) * 0.5);
+  // Stable counting sort by key.
   constexpr int kKeys = kClassCount * kGrid * kGrid;
   std::vector<std::size_t> start(kKeys + 1, 0);
-  for (const Pending& s : pending) ++start[s.key + 1];
+  for (const int key : keys)
+    if (key >= 0) ++start[static_cast<std::size_t>(key) + 1];
   std::partial_sum(start.begin(), start.end(), start.begin());
-  level.lines.resize(pending.size());
-  level.orders.resize(pending.size());
+  level.lines.resize(start.back());
+  level.orders.resize(start.back());
   level.bucketBounds.assign(kGrid * kGrid, QRectF());
   std::vector<std::size_t> next(start.begin(), start.end() - 1);
-  for (const Pending& s : pending) {
-    const std::size_t at = next[s.key]++;
-    level.lines[at] = s.line;
-    level.orders[at] = s.order;
-    QRectF& b = level.bucketBounds[s.key % (kGrid * kGrid)];
-    const QRectF r = QRectF(s.line.p1(), s.line.p2()).normalized();
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    const int key = keys[k];
+    if (key < 0) continue;
+    const std::size_t at = next[static_cast<std::size_t>(key)]++;
+    const QLineF line(paths.points[k], paths.points[k + 1]);
+    level.lines[at] = line;
+    level.orders[at] = paths.orders[k];
+    QRectF& b = level.bucketBounds[static_cast<std::size_t>(key % (kGrid * kGrid))];
+    const QRectF r = QRectF(line.p1(), line.p2()).normalized();
     b = b.isNull() ? r.adjusted(-1e-6, -1e-6, 1e-6, 1e-6) : b.united(r);
   }
   for (int key = 0; key < kKeys; ++key) {

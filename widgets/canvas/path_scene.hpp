@@ -16,6 +16,7 @@
 #include <QTransform>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "widgets/canvas/view_transform.hpp"
@@ -30,6 +31,41 @@ struct ScenePath {
   PathKind kind = PathKind::Draw;
   bool flagged = false;                // part of a pre-flight problem: painted red
   int firstOrder = 0;                  // drawing-order index of the first segment; one per segment
+};
+
+// Many paths in flat arrays: one allocation per array, not three per path, for the hundreds of
+// thousands of short paths a planned job or a hatched drawing has.
+struct ScenePathList {
+  struct Info {
+    std::size_t pointBegin = 0;  // index of the path's first point in pointsMm
+    PathKind kind = PathKind::Draw;
+    bool flagged = false;
+    int firstOrder = 0;
+  };
+  std::vector<QPointF> pointsMm;    // every path's points, path after path (machine frame, mm)
+  // Empty (no speeds), or one per point: the speed of the segment that starts at that point (a
+  // path's last entry is unused; NaN for a path without speeds).
+  std::vector<float> speedsMmPerS;
+  std::vector<Info> paths;
+
+  // Starts a path; its points follow with addPoint.
+  void beginPath(PathKind kind, bool flagged, int firstOrder) {
+    paths.push_back({pointsMm.size(), kind, flagged, firstOrder});
+  }
+  void addPoint(const QPointF& p) {
+    pointsMm.push_back(p);
+    if (!speedsMmPerS.empty()) speedsMmPerS.push_back(std::numeric_limits<float>::quiet_NaN());
+  }
+  // A point with the speed of the segment that starts at it (mm/s).
+  void addPoint(const QPointF& p, float speedMmPerS) {
+    speedsMmPerS.resize(pointsMm.size(), std::numeric_limits<float>::quiet_NaN());
+    pointsMm.push_back(p);
+    speedsMmPerS.push_back(speedMmPerS);
+  }
+  void add(const ScenePath& path);
+  std::size_t pointEnd(std::size_t i) const {
+    return i + 1 < paths.size() ? paths[i + 1].pointBegin : pointsMm.size();
+  }
 };
 
 struct ScenePaintOptions {
@@ -54,6 +90,7 @@ class PathScene {
 
   PathScene() = default;
   explicit PathScene(const std::vector<ScenePath>& paths);
+  explicit PathScene(const ScenePathList& paths);
 
   bool empty() const { return segmentCount_ == 0; }
   std::size_t segmentCount() const { return segmentCount_; }  // level 0 segments
@@ -70,11 +107,15 @@ class PathScene {
   // Speed ramp colour for t in [0, 1] (slow to fast), shared with the legend.
   static QColor speedColour(double t);
 
-  // A level's simplified paths: points, and per segment its order and colour class.
-  struct LevelPath {
+  // A level's simplified paths, flat: path i has the points [begin[i], begin[i + 1]); per point
+  // the order and colour class of the segment that starts there (a path's last entry unused).
+  struct LevelPaths {
     std::vector<QPointF> points;
+    std::vector<std::size_t> begin{0};
     std::vector<int> orders;
     std::vector<std::uint8_t> classes;
+    std::size_t pathCount() const { return begin.size() - 1; }
+    std::size_t segmentCount() const { return points.size() - pathCount(); }
   };
 
  private:
@@ -91,8 +132,8 @@ class PathScene {
     std::vector<Run> runs;         // sorted by class, then bucket
     std::vector<QRectF> bucketBounds;
   };
-  std::vector<LevelPath> baseLevel(const std::vector<ScenePath>& paths) const;
-  void bucket(const std::vector<LevelPath>& paths, double toleranceMm, Level& level) const;
+  LevelPaths baseLevel(const ScenePathList& paths) const;
+  void bucket(const LevelPaths& paths, double toleranceMm, Level& level) const;
 
   std::vector<Level> levels_;
   std::size_t segmentCount_ = 0;

@@ -22,17 +22,16 @@ std::shared_ptr<PathScene> drawingSceneOf(const std::vector<Stroke>& strokes,
                                           const std::vector<PreviewProblem>& problems) {
   std::set<std::pair<int, int>> flagged;
   for (const PreviewProblem& p : problems) flagged.insert({p.layerIndex, p.pathIndex});
-  std::vector<ScenePath> paths;
-  paths.reserve(strokes.size());
+  ScenePathList paths;
+  std::size_t points = 0;
+  for (const Stroke& s : strokes) points += s.points.size();
+  paths.pointsMm.reserve(points);
+  paths.paths.reserve(strokes.size());
   int order = 0;
   for (const Stroke& s : strokes) {
-    ScenePath path;
-    path.pointsMm.reserve(s.points.size());
-    for (const Vec2& p : s.points) path.pointsMm.push_back(toQ(p));
-    path.flagged = flagged.count({s.layerIndex, s.pathIndex}) > 0;
-    path.firstOrder = order;
+    paths.beginPath(PathKind::Draw, !flagged.empty() && flagged.count({s.layerIndex, s.pathIndex}) > 0, order);
+    for (const Vec2& p : s.points) paths.addPoint(toQ(p));
     order += static_cast<int>(s.points.size());
-    paths.push_back(std::move(path));
   }
   return std::make_shared<PathScene>(paths);
 }
@@ -40,31 +39,30 @@ std::shared_ptr<PathScene> drawingSceneOf(const std::vector<Stroke>& strokes,
 }  // namespace
 
 std::shared_ptr<PathScene> jobSceneOf(const PlannedJob& job) {
-  std::vector<ScenePath> paths;
-  ScenePath current;
+  ScenePathList paths;
+  paths.pointsMm.reserve(job.moves.size() + job.moves.size() / 2);
+  paths.speedsMmPerS.reserve(paths.pointsMm.capacity());
   Vec2 at = job.startXY;
-  const auto flush = [&] {
-    if (current.pointsMm.size() >= 2) paths.push_back(std::move(current));
-    current = ScenePath();
-  };
+  bool open = false;  // a path of `kind` is being built
+  PathKind kind = PathKind::Draw;
   for (std::size_t i = 0; i < job.moves.size(); ++i) {
     const JobMove& m = job.moves[i];
     if (!isMotion(m.kind)) {
-      flush();
+      open = false;
       continue;
     }
-    const PathKind kind = m.kind == JobMoveKind::Draw ? PathKind::Draw : PathKind::Travel;
-    if (current.pointsMm.empty() || current.kind != kind) {
-      flush();
-      current.kind = kind;
-      current.firstOrder = static_cast<int>(i);
-      current.pointsMm.push_back(toQ(at));
+    const PathKind k = m.kind == JobMoveKind::Draw ? PathKind::Draw : PathKind::Travel;
+    if (!open || k != kind) {
+      paths.beginPath(k, false, static_cast<int>(i));
+      paths.addPoint(toQ(at), 0.0f);
+      open = true;
+      kind = k;
     }
-    current.pointsMm.push_back(toQ(m.targetXY));
-    current.speedsMmPerS.push_back(static_cast<float>(m.feedMmPerS));
+    // The segment that ends at the target starts at the previous point: its speed goes there.
+    paths.speedsMmPerS.back() = static_cast<float>(m.feedMmPerS);
+    paths.addPoint(toQ(m.targetXY), 0.0f);
     at = m.targetXY;
   }
-  flush();
   return std::make_shared<PathScene>(paths);
 }
 
@@ -86,11 +84,29 @@ PlanOptions studioPlanOptions(const Placement& placement, ModeSelection mode, do
   return options;
 }
 
+namespace {
+
+bool hasVisiblePath(const Drawing& drawing) {
+  for (const Layer& layer : drawing.layers)
+    if (layer.visible)
+      for (const Polyline& path : layer.paths)
+        if (!path.points.empty()) return true;
+  return false;
+}
+
+bool cancelled(const PipelineInput& input) { return input.cancel && input.cancel->load(); }
+
+PreviewResult cancelledResult(PreviewResult out) {
+  out.status = PreviewStatus::Cancelled;
+  out.message = trPipe(QT_TRANSLATE_NOOP("JobPipeline", "Planning cancelled."));
+  return out;
+}
+
+}  // namespace
+
 PreviewResult runPipeline(const PipelineInput& input) {
   PreviewResult out;
-  Drawing drawing = input.drawing;
-  std::vector<Stroke> strokes = placeDrawing(drawing, input.placement);
-  if (strokes.empty()) {
+  if (!input.drawing || !hasVisiblePath(*input.drawing)) {
     out.status = PreviewStatus::Empty;
     out.message = trPipe(QT_TRANSLATE_NOOP("JobPipeline", "Nothing to plan: the drawing has no visible path."));
     out.drawingScene = std::make_shared<PathScene>();
@@ -99,12 +115,11 @@ PreviewResult runPipeline(const PipelineInput& input) {
   PlanOptions options = studioPlanOptions(input.placement, input.modeSelection, input.toleranceMm);
   options.maxListedProblems = kListedProblems;
   options.cancel = input.cancel.get();
+  options.keepBlockTimings = true;  // the trajectory reuses the planner's timing
   std::string importError;
-  PlanResult plan = planRefining(drawing, input.source, input.profile, options, importError);
-  if (drawing.flatteningToleranceMm != input.drawing.flatteningToleranceMm) {
-    out.refinedDrawing = std::make_shared<const Drawing>(drawing);
-    strokes = placeDrawing(drawing, input.placement);
-  }
+  std::optional<Drawing> refined;
+  PlanResult plan = planRefining(*input.drawing, input.source, input.profile, options, refined, importError);
+  if (refined) out.refinedDrawing = std::make_shared<const Drawing>(std::move(*refined));
   out.report = plan.report;
   out.mode = plan.report.mode;
   out.minMarginRad = radFromDeg(plan.report.minSingularityMarginDeg);
@@ -117,13 +132,14 @@ PreviewResult runPipeline(const PipelineInput& input) {
     q.pathIndex = p.pathIndex;
     out.problems.push_back(std::move(q));
   }
-  out.drawingScene = drawingSceneOf(strokes, out.problems);
+  out.timings = plan.timings;
+  if (plan.status == PlanStatus::Cancelled || cancelled(input)) return cancelledResult(std::move(out));
+  StageClock clock(out.timings);
+  out.drawingScene = drawingSceneOf(
+      placeDrawing(out.refinedDrawing ? *out.refinedDrawing : *input.drawing, input.placement), out.problems);
+  clock.lap("drawing scene");
   switch (plan.status) {
     case PlanStatus::Ok: break;
-    case PlanStatus::Cancelled:
-      out.status = PreviewStatus::Cancelled;
-      out.message = trPipe(QT_TRANSLATE_NOOP("JobPipeline", "Planning cancelled."));
-      return out;
     case PlanStatus::Infeasible:
       out.status = PreviewStatus::Infeasible;
       out.message = translated(plan.message);
@@ -137,10 +153,14 @@ PreviewResult runPipeline(const PipelineInput& input) {
       out.message = importError.empty() ? translated(plan.message) : QString::fromStdString(importError);
       return out;
   }
-  auto job = std::make_shared<PlannedJob>(std::move(plan.job));
-  out.trajectory = std::make_shared<Trajectory>(*job, input.profile);
+  if (cancelled(input)) return cancelledResult(std::move(out));
+  auto job = std::make_shared<const PlannedJob>(std::move(plan.job));
+  out.trajectory = std::make_shared<Trajectory>(job, std::move(plan.blockTimings), input.profile);
+  clock.lap("trajectory");
   out.jobScene = jobSceneOf(*job);
+  clock.lap("job scene");
   out.job = std::move(job);
+  if (cancelled(input)) return cancelledResult(std::move(out));
   out.status = PreviewStatus::Planned;
   out.message = trPipe(QT_TRANSLATE_NOOP("JobPipeline", "Planned in working mode %1.")).arg(QString::fromUtf8(toString(*out.mode).data(), static_cast<int>(toString(*out.mode).size())));
   return out;

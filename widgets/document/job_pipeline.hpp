@@ -16,6 +16,7 @@
 #include "core/planning/drawing.hpp"
 #include "core/planning/placement.hpp"
 #include "core/planning/planner.hpp"
+#include "core/planning/stage_times.hpp"
 #include "core/planning/trajectory.hpp"
 #include "widgets/document/job_source.hpp"
 #include "widgets/canvas/path_scene.hpp"
@@ -24,7 +25,7 @@
 namespace fivebar::widgets {
 
 struct PipelineInput {
-  Drawing drawing;
+  std::shared_ptr<const Drawing> drawing;  // shared with the document, never copied per plan
   DrawingSource source;  // to import the drawing again more finely when the planner asks
   Placement placement;
   MachineProfile profile;
@@ -60,6 +61,9 @@ struct PreviewResult {
   PlanReport report;
   // Set when the planner needed the drawing flattened more finely: the drawing planned.
   std::shared_ptr<const Drawing> refinedDrawing;
+  // Wall and CPU time of each stage: the planner's (PlanResult::timings), then the studio's own
+  // ("drawing scene", "trajectory", "job scene").
+  StageTimes timings;
 };
 
 PreviewResult runPipeline(const PipelineInput& input);

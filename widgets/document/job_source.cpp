@@ -1,6 +1,8 @@
 // Job sources shared by the studio and `fivebar plan`. Contract: job_source.hpp.
 #include "widgets/document/job_source.hpp"
 
+#include <utility>
+
 #include <QFile>
 #include <QFileInfo>
 #include <QTemporaryFile>
@@ -52,18 +54,28 @@ bool isPointBudgetError(const std::string& error) {
   return error.find("(the points budget)") != std::string::npos;
 }
 
-PlanResult planRefining(Drawing& drawing, const DrawingSource& source, const MachineProfile& profile,
-                        const PlanOptions& options, std::string& error) {
+PlanResult planRefining(const Drawing& drawing, const DrawingSource& source,
+                        const MachineProfile& profile, const PlanOptions& options,
+                        std::optional<Drawing>& refined, std::string& error) {
+  refined.reset();
   PlanResult r = planJob(drawing, profile, options);
   // One finer import is enough with a fixed placement; a second guards a moved bounding box.
   for (int attempt = 0; attempt < 2 && r.status == PlanStatus::CoarseDrawing; ++attempt) {
-    std::vector<ProjectLayer> layers = layerStatesOf(drawing);
+    std::vector<ProjectLayer> layers = layerStatesOf(refined ? *refined : drawing);
     auto finer = importSvgText(source, r.requiredFlatteningToleranceMm, error, options.cancel);
     if (!finer) return r;
     applyLayerStates(*finer, layers);
-    drawing = std::move(*finer);
-    r = planJob(drawing, profile, options);
+    refined = std::move(finer);
+    r = planJob(*refined, profile, options);
   }
+  return r;
+}
+
+PlanResult planRefining(Drawing& drawing, const DrawingSource& source, const MachineProfile& profile,
+                        const PlanOptions& options, std::string& error) {
+  std::optional<Drawing> refined;
+  PlanResult r = planRefining(std::as_const(drawing), source, profile, options, refined, error);
+  if (refined) drawing = std::move(*refined);
   return r;
 }
 

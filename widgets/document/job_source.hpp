@@ -51,6 +51,11 @@ std::optional<Drawing> importSvgText(const DrawingSource& source, double toleran
 // flattening.
 PlanResult planRefining(Drawing& drawing, const DrawingSource& source, const MachineProfile& profile,
                         const PlanOptions& options, std::string& error);
+// The same without touching `drawing`: `refined` is set to the finer import when one was
+// planned (the studio plans its document's drawing without copying it).
+PlanResult planRefining(const Drawing& drawing, const DrawingSource& source,
+                        const MachineProfile& profile, const PlanOptions& options,
+                        std::optional<Drawing>& refined, std::string& error);
 
 // A job read from DRAWING.svg or PROJECT.fivebar, ready for planRefining.
 struct LoadedJob {

@@ -40,7 +40,7 @@ void PreviewController::startPlanning() {
   if (cancel_) cancel_->store(true);  // an older run stops at its next chunk; its result is dropped
   cancel_ = std::make_shared<std::atomic<bool>>(false);
   const int generation = ++generation_;
-  PipelineInput input{doc_.drawing(), doc_.source(), doc_.placement(), doc_.profile(),
+  PipelineInput input{doc_.drawingSnapshot(), doc_.source(), doc_.placement(), doc_.profile(),
                       doc_.modeSelection(), doc_.toleranceMm(), cancel_};
   const Placement placement = input.placement;
   running_ = 1;

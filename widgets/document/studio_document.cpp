@@ -33,6 +33,12 @@ void StudioDocument::applyRefinedDrawing(const Drawing& drawing) {
     refined.layers[i].tool = drawing_.layers[i].tool;
   }
   drawing_ = std::move(refined);
+  snapshot_.reset();
+}
+
+std::shared_ptr<const Drawing> StudioDocument::drawingSnapshot() const {
+  if (!snapshot_) snapshot_ = std::make_shared<const Drawing>(drawing_);
+  return snapshot_;
 }
 
 void StudioDocument::markSaved(const QString& path) {
@@ -128,6 +134,7 @@ void StudioDocument::setAutoResolvedMode(std::optional<WorkingMode> mode) {
 void StudioDocument::applyDrawing(const Drawing& drawing, const QString& fileName,
                                   const DrawingSource& source) {
   drawing_ = drawing;
+  snapshot_.reset();
   fileName_ = fileName;
   source_ = source;
   emit drawingChanged();
@@ -161,6 +168,7 @@ void StudioDocument::applyLayers(const std::vector<int>& order,
     layers[i].hatch = settings[i].hatch;
   }
   drawing_.layers = std::move(layers);
+  snapshot_.reset();
   emit layersChanged();
   emit jobInputsChanged();
 }

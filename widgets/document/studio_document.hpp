@@ -7,6 +7,7 @@
 #include <QObject>
 #include <QString>
 #include <QUndoStack>
+#include <memory>
 #include <optional>
 
 #include "core/planning/drawing.hpp"
@@ -35,6 +36,10 @@ class StudioDocument : public QObject {
   explicit StudioDocument(MachineProfile profile, QObject* parent = nullptr);
 
   const Drawing& drawing() const { return drawing_; }
+  // The drawing as an immutable shared value for a planning run: copied once per change of the
+  // drawing (import, layers, refinement), not once per plan (a placement change plans again
+  // without copying hundreds of thousands of paths on the UI thread).
+  std::shared_ptr<const Drawing> drawingSnapshot() const;
   const Placement& placement() const { return placement_; }
   const MachineProfile& profile() const { return profile_; }
   // The SVG text the drawing was imported from (embedded in a saved project).
@@ -111,6 +116,7 @@ class StudioDocument : public QObject {
 
  private:
   Drawing drawing_;
+  mutable std::shared_ptr<const Drawing> snapshot_;  // of drawing_, null when outdated
   Placement placement_;
   MachineProfile profile_;
   ModeSelection modeSelection_;
