@@ -7,19 +7,31 @@
 
 namespace fivebar::sim {
 
-PenTrace::PenTrace(const MachineProfile& m) : assembly_(m.assembly) {
+namespace {
+JointAngles radOf(const std::array<double, 2>& deg) { return {radFromDeg(deg[0]), radFromDeg(deg[1])}; }
+}  // namespace
+
+PenTrace::PenTrace(const MachineProfile& m) { setMachine(m); }
+
+void PenTrace::setMachine(const MachineProfile& m) {
+  assembly_ = m.assembly;
+  params_ = {};
   params_.geometry = m.geometry;
+  play_ = {};
   if (m.calibration) {
     params_.zeroOffsetRad1 = m.calibration->zeroOffsetRad1;
     params_.zeroOffsetRad2 = m.calibration->zeroOffsetRad2;
     params_.penOffset = m.calibration->penOffset;
-    backlashDeg_ = {degFromRad(m.calibration->backlashRad1), degFromRad(m.calibration->backlashRad2)};
+    play_ = {std::max(0.0, m.calibration->backlashRad1), std::max(0.0, m.calibration->backlashRad2)};
   }
   maxPieceDeg_ = 1.0 / std::max({m.motors.stepsPerDeg1, m.motors.stepsPerDeg2, 1.0});
+  place(motor_);
 }
 
 void PenTrace::place(const std::array<double, 2>& commandedDeg) {
-  motor_ = out_ = commandedDeg;
+  motor_ = commandedDeg;
+  arms_ = PlayState(play_, radOf(commandedDeg), {0.5 * play_.motor1Rad, 0.5 * play_.motor2Rad});
+  out_ = {degFromRad(arms_.arm().theta1), degFromRad(arms_.arm().theta2)};
   open_ = false;
 }
 
@@ -31,11 +43,10 @@ void PenTrace::moveTo(const std::array<double, 2>& commandedDeg, bool penDown) {
   if (penDown && !open_) penAt(out_, true);  // the pen touches down where it stands
   for (int k = 1; k <= pieces; ++k) {
     const double u = double(k) / pieces;
-    for (size_t i = 0; i < 2; ++i) {
-      motor_[i] = from[i] + (commandedDeg[i] - from[i]) * u;
-      // The play: the output moves only when the motor pushes it at either side of the band.
-      out_[i] = std::clamp(out_[i], motor_[i] - 0.5 * backlashDeg_[i], motor_[i] + 0.5 * backlashDeg_[i]);
-    }
+    for (size_t i = 0; i < 2; ++i) motor_[i] = from[i] + (commandedDeg[i] - from[i]) * u;
+    // The play: the output moves only when the motor pushes it at either side of the band.
+    arms_.moveTo(radOf(motor_));
+    out_ = {degFromRad(arms_.arm().theta1), degFromRad(arms_.arm().theta2)};
     if (penDown) penAt(out_, k == pieces);
   }
   motor_ = commandedDeg;

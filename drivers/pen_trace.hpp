@@ -1,9 +1,11 @@
 // PenTrace: what the pen of a real, imperfect five-bar draws (issue 13), for the simulated
 // machine. It follows the motors' commanded angles (degrees, the G-code X/Y frame) and records
 // the pen's true path in the machine (base) frame, millimetres, while the pen is down:
-//   motor angle -> backlash (per motor: the drive's output follows the motor within a dead
-//   band of the backlash width, centred on the motor at the start) -> true angle = output +
-//   zero offset -> forward kinematics of the true geometry (and its pen offset, if any).
+//   motor angle -> backlash (per motor, core's play model, fivebar::PlayState of
+//   core/calibration/backlash.hpp, the model the planner's compensation assumes: the drive's
+//   output a stays within [m, m + b] of the motor m, pushed along at either side; at the start
+//   it stands in the middle of that band) -> true angle = output + zero offset -> forward
+//   kinematics of the true geometry (and its pen offset, if any).
 // The true machine is a profile whose geometry is the true geometry and whose `calibration`
 // section gives the true zero offsets, backlash and pen offset; without a calibration section
 // it is perfect. Pure logic.
@@ -13,6 +15,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/calibration/backlash.hpp"
 #include "core/calibration/model.hpp"
 #include "core/machine/profile.hpp"
 
@@ -22,8 +25,13 @@ class PenTrace {
  public:
   explicit PenTrace(const MachineProfile& trueMachine);
 
+  // Another true machine from now on (the studio's simulated-machine settings changed while the
+  // machine is open): what was drawn stays, the current polyline ends, the motors stay where
+  // they are and the play starts in the middle of its band again.
+  void setMachine(const MachineProfile& trueMachine);
+
   // The motors stand at `commandedDeg` without having moved there (power-up, a redefined
-  // position): the backlash play is centred there; nothing is drawn.
+  // position): each output stands in the middle of its play band there; nothing is drawn.
   void place(const std::array<double, 2>& commandedDeg);
   // A joint-linear move of the motors from the last point to `commandedDeg`; drawn when penDown.
   void moveTo(const std::array<double, 2>& commandedDeg, bool penDown);
@@ -45,7 +53,8 @@ class PenTrace {
 
   calibration::MachineParameters params_;
   AssemblyMode assembly_;
-  std::array<double, 2> backlashDeg_{0.0, 0.0};
+  MotorPlay play_;                          // rad
+  PlayState arms_{MotorPlay{}, JointAngles{}};  // the drive outputs, rad
   double maxPieceDeg_;                      // the longest piece a move is cut into (one step)
   std::array<double, 2> motor_{0.0, 0.0};   // commanded angles, deg
   std::array<double, 2> out_{0.0, 0.0};     // drive outputs, deg

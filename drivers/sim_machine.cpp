@@ -72,6 +72,11 @@ SimMachine::SimMachine(const SimConfig& config)
   trace_.place(physicalDeg(planner_.position()));
 }
 
+void SimMachine::setTrueMachine(std::optional<MachineProfile> trueMachine) {
+  config_.trueMachine = std::move(trueMachine);
+  trace_.setMachine(config_.trueMachine.value_or(config_.profile));
+}
+
 void SimMachine::redefinePosition(const Axes3& m) {
   const Axes3 before = planner_.position();
   for (size_t i = 0; i < 2; ++i) physicalOffsetDeg_[i] += before[i] - m[i];

@@ -88,6 +88,9 @@ class SimMachine {
   bool penDown() const { return penDown_; }
   // What the pen of the true machine really drew: polylines in the machine (base) frame, mm.
   const std::vector<std::vector<Vec2>>& drawnTrace() const { return trace_.polylines(); }
+  // The motors drive another true machine from now on (SimConfig::trueMachine; nullopt: the
+  // profile itself), as if the arms were swapped where they stand: the drawing so far stays.
+  void setTrueMachine(std::optional<MachineProfile> trueMachine);
 
  private:
   enum class LineResult { Done, Blocked };

@@ -7,6 +7,14 @@
         <source>Hoang's accuracy pattern (10 lines of 40 mm) does not fit in this machine's safe area.</source>
         <translation>Hoangs Genauigkeitsmuster (10 Linien zu 40 mm) passt nicht in den sicheren Bereich dieser Maschine.</translation>
     </message>
+    <message>
+        <source>The simulated machine drew %1 lines instead of %2.</source>
+        <translation>Die simulierte Maschine zeichnete %1 Linien statt %2.</translation>
+    </message>
+    <message>
+        <source>A simulated line is too short to measure.</source>
+        <translation>Eine simulierte Linie ist zu kurz zum Messen.</translation>
+    </message>
 </context>
 <context>
     <name>DesignPainter</name>
@@ -2660,7 +2668,9 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
     <message numerus="yes">
         <source>The board's settings differ from the profile in %n place(s): %1.</source>
         <translation>
-            <numerusform>Die Einstellungen der Steuerung weichen an %n Stelle vom Profil ab: %1.</numerusform><numerusform>Die Einstellungen der Steuerung weichen an %n Stellen vom Profil ab: %1.</numerusform></translation>
+            <numerusform>Die Einstellungen der Steuerung weichen an %n Stelle vom Profil ab: %1.</numerusform>
+            <numerusform>Die Einstellungen der Steuerung weichen an %n Stellen vom Profil ab: %1.</numerusform>
+        </translation>
     </message>
     <message>
         <source>A job would stop or move wrongly with them.</source>
@@ -2754,6 +2764,73 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
     <message>
         <source>Change layer fill</source>
         <translation>Füllung der Ebene ändern</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::AccuracyPage</name>
+    <message>
+        <source>Measure the accuracy lines</source>
+        <translation>Die Genauigkeitslinien messen</translation>
+    </message>
+    <message>
+        <source>Hoang's accuracy pattern is ten lines, each meant to be 40 mm long and straight, 10 mm apart. Lay a steel ruler along each line. &lt;b&gt;Length&lt;/b&gt;: from end to end, in the middle of the pen's stroke. &lt;b&gt;Straightness&lt;/b&gt;: the widest gap between the line and the ruler's edge when the ruler touches both ends (0 for a straight line). Type the lines drawn &lt;b&gt;before&lt;/b&gt; calibration in the first two columns and those of the verification sheet (drawn &lt;b&gt;after&lt;/b&gt;) in the last two; the figures below compare them.</source>
+        <translation>Hoangs Genauigkeitsmuster sind zehn Linien, jede soll 40 mm lang und gerade sein, 10 mm auseinander. Legen Sie ein Stahllineal an jede Linie. &lt;b&gt;Länge&lt;/b&gt;: von Ende zu Ende, in der Mitte des Stiftstrichs. &lt;b&gt;Geradheit&lt;/b&gt;: der größte Spalt zwischen Linie und Linealkante, wenn das Lineal beide Enden berührt (0 für eine gerade Linie). Tippen Sie die Linien, die &lt;b&gt;vor&lt;/b&gt; der Kalibrierung gezeichnet wurden, in die ersten beiden Spalten und die des Prüfblatts (&lt;b&gt;danach&lt;/b&gt; gezeichnet) in die letzten beiden; die Werte darunter vergleichen sie.</translation>
+    </message>
+    <message>
+        <source>Length before (mm)</source>
+        <translation>Länge vorher (mm)</translation>
+    </message>
+    <message>
+        <source>Straightness before (mm)</source>
+        <translation>Geradheit vorher (mm)</translation>
+    </message>
+    <message>
+        <source>Length after (mm)</source>
+        <translation>Länge nachher (mm)</translation>
+    </message>
+    <message>
+        <source>Straightness after (mm)</source>
+        <translation>Geradheit nachher (mm)</translation>
+    </message>
+    <message>
+        <source>Line %1</source>
+        <translation>Linie %1</translation>
+    </message>
+    <message>
+        <source>Simulation: measure the simulated lines</source>
+        <translation>Simulation: die simulierten Linien messen</translation>
+    </message>
+    <message>
+        <source>Fills the table with the lines as the simulated imperfect machine draws them: before with the profile the wizard started from, after with the calibrated profile.</source>
+        <translation>Füllt die Tabelle mit den Linien, wie die simulierte unvollkommene Maschine sie zeichnet: vorher mit dem Profil, mit dem der Assistent begann, nachher mit dem kalibrierten Profil.</translation>
+    </message>
+    <message>
+        <source>Line %1, %2: '%3' is not a length in mm.</source>
+        <translation>Linie %1, %2: „%3“ ist keine Länge in mm.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1:&lt;/b&gt; not measured yet (type a length and a straightness per line).</source>
+        <translation>&lt;b&gt;%1:&lt;/b&gt; noch nicht gemessen (tippen Sie je Linie eine Länge und eine Geradheit ein).</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1:&lt;/b&gt; straightness %2 mm at worst (RMS %3 mm); length off by %4 mm at worst (RMS %5 mm), over %6 lines.</source>
+        <translation>&lt;b&gt;%1:&lt;/b&gt; Geradheit schlechtestens %2 mm (RMS %3 mm); Länge schlechtestens %4 mm daneben (RMS %5 mm), über %6 Linien.</translation>
+    </message>
+    <message>
+        <source>Before calibration</source>
+        <translation>Vor der Kalibrierung</translation>
+    </message>
+    <message>
+        <source>After calibration</source>
+        <translation>Nach der Kalibrierung</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Worst straightness plus worst length error: %1 mm &amp;rarr; &lt;b&gt;%2 mm&lt;/b&gt;.</source>
+        <translation>&lt;br&gt;Schlechteste Geradheit plus schlechtester Längenfehler: %1 mm &amp;rarr; &lt;b&gt;%2 mm&lt;/b&gt;.</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;&lt;i&gt;Apply the calibration (step 5) to see the lines drawn after it.&lt;/i&gt;</source>
+        <translation>&lt;br&gt;&lt;i&gt;Wenden Sie die Kalibrierung an (Schritt 5), um die danach gezeichneten Linien zu sehen.&lt;/i&gt;</translation>
     </message>
 </context>
 <context>
@@ -2874,6 +2951,117 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
     </message>
 </context>
 <context>
+    <name>fivebar::widgets::calibration::DistancesBox</name>
+    <message>
+        <source>Only a ruler? Measure the distance between the centres of two marks and type both mark numbers and the distance. No corner or direction is needed. Measure long and short pairs across the whole sheet, each mark in several pairs: about four per mark (100 for 25 marks) calibrate as well as coordinates. Use the marks for the fit, not the backlash rows.</source>
+        <translation>Nur ein Lineal? Messen Sie den Abstand zwischen den Mitten zweier Marken und tippen Sie beide Markennummern und den Abstand ein. Keine Ecke und keine Richtung nötig. Messen Sie lange und kurze Paare über das ganze Blatt, jede Marke in mehreren Paaren: etwa vier je Marke (100 für 25 Marken) kalibrieren so gut wie Koordinaten. Nehmen Sie die Marken für den Fit, nicht die Spiel-Reihen.</translation>
+    </message>
+    <message>
+        <source>Mark A</source>
+        <translation>Marke A</translation>
+    </message>
+    <message>
+        <source>Mark B</source>
+        <translation>Marke B</translation>
+    </message>
+    <message>
+        <source>Distance (mm)</source>
+        <translation>Abstand (mm)</translation>
+    </message>
+    <message>
+        <source>Add a row</source>
+        <translation>Zeile hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove the row</source>
+        <translation>Zeile entfernen</translation>
+    </message>
+    <message>
+        <source>Load distances CSV...</source>
+        <translation>Abstände-CSV laden...</translation>
+    </message>
+    <message>
+        <source>A file with the columns id_a,id_b,distance_mm (as fivebar calibrate fit reads it)</source>
+        <translation>Eine Datei mit den Spalten id_a,id_b,distance_mm (wie fivebar calibrate fit sie liest)</translation>
+    </message>
+    <message>
+        <source>Simulation: measure distances on the simulated sheet</source>
+        <translation>Simulation: Abstände auf dem simulierten Blatt messen</translation>
+    </message>
+    <message>
+        <source>Fills the table with distances between where the simulated imperfect machine put the marks, plus ruler noise.</source>
+        <translation>Füllt die Tabelle mit Abständen zwischen den Stellen, an die die simulierte unvollkommene Maschine die Marken setzte, plus Linealrauschen.</translation>
+    </message>
+    <message>
+        <source>noise ±</source>
+        <translation>Rauschen ±</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Load distances</source>
+        <translation>Abstände laden</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Filled from the simulated sheet (simulation, not a measurement).</source>
+        <translation>Aus dem simulierten Blatt gefüllt (Simulation, keine Messung).</translation>
+    </message>
+    <message>
+        <source>mark A</source>
+        <translation>Marke A</translation>
+    </message>
+    <message>
+        <source>mark B</source>
+        <translation>Marke B</translation>
+    </message>
+    <message>
+        <source>distance</source>
+        <translation>Abstand</translation>
+    </message>
+    <message>
+        <source>Row %1: %2 is empty.</source>
+        <translation>Zeile %1: %2 ist leer.</translation>
+    </message>
+    <message>
+        <source>Row %1, %2: '%3' is not a number.</source>
+        <translation>Zeile %1, %2: „%3“ ist keine Zahl.</translation>
+    </message>
+    <message>
+        <source>Row %1: there is no mark %2 in the pattern.</source>
+        <translation>Zeile %1: Marke %2 gibt es im Muster nicht.</translation>
+    </message>
+    <message>
+        <source>Row %1: mark %2 is in a backlash row; measure distances between marks for the fit.</source>
+        <translation>Zeile %1: Marke %2 gehört zu einer Spiel-Reihe; messen Sie Abstände zwischen Marken für den Fit.</translation>
+    </message>
+    <message>
+        <source>Row %1: a distance from mark %2 to itself.</source>
+        <translation>Zeile %1: ein Abstand von Marke %2 zu sich selbst.</translation>
+    </message>
+    <message>
+        <source>Row %1: the distance must be more than 0 mm.</source>
+        <translation>Zeile %1: der Abstand muss größer als 0 mm sein.</translation>
+    </message>
+    <message>
+        <source>%1 holds mark coordinates, not distances: load it in the Coordinates tab.</source>
+        <translation>%1 enthält Markenkoordinaten, keine Abstände: laden Sie sie im Reiter Koordinaten.</translation>
+    </message>
+    <message>
+        <source>%1:%2: the pattern's marks are numbered; '%3' is not a mark number.</source>
+        <translation>%1:%2: die Marken des Musters sind nummeriert; „%3“ ist keine Markennummer.</translation>
+    </message>
+    <message>
+        <source>Loaded %1 distances from %2.</source>
+        <translation>%1 Abstände aus %2 geladen.</translation>
+    </message>
+</context>
+<context>
     <name>fivebar::widgets::calibration::DrawPage</name>
     <message>
         <source>2. Draw the pattern</source>
@@ -2902,54 +3090,6 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
     <message>
         <source>Simulate an imperfect machine (the sheet below is what it draws)</source>
         <translation>Eine unvollkommene Maschine simulieren (das Blatt unten zeigt, was sie zeichnet)</translation>
-    </message>
-    <message>
-        <source>The simulated machine differs by these amounts from the profile as it was when this wizard opened, as a real one would. The picture shows what its pen really draws (orange) beside the plan. The built-in simulated machine of the Machine panel takes these amounts the next time it connects.</source>
-        <translation>Die simulierte Maschine weicht um diese Beträge vom Profil ab, wie es beim Öffnen dieses Assistenten war, so wie eine echte Maschine. Das Bild zeigt, was ihr Stift wirklich zeichnet (orange), neben dem Plan. Die eingebaute simulierte Maschine im Maschinen-Panel übernimmt diese Beträge beim nächsten Verbinden.</translation>
-    </message>
-    <message>
-        <source>a1 longer by</source>
-        <translation>a1 länger um</translation>
-    </message>
-    <message>
-        <source> mm</source>
-        <translation> mm</translation>
-    </message>
-    <message>
-        <source>b1 longer by</source>
-        <translation>b1 länger um</translation>
-    </message>
-    <message>
-        <source>a2 longer by</source>
-        <translation>a2 länger um</translation>
-    </message>
-    <message>
-        <source>b2 longer by</source>
-        <translation>b2 länger um</translation>
-    </message>
-    <message>
-        <source>motors farther apart by</source>
-        <translation>Motorabstand größer um</translation>
-    </message>
-    <message>
-        <source>motor 1 zero off by</source>
-        <translation>Nullpunkt Motor 1 versetzt um</translation>
-    </message>
-    <message>
-        <source> °</source>
-        <translation> °</translation>
-    </message>
-    <message>
-        <source>motor 2 zero off by</source>
-        <translation>Nullpunkt Motor 2 versetzt um</translation>
-    </message>
-    <message>
-        <source>motor 1 backlash</source>
-        <translation>Umkehrspiel Motor 1</translation>
-    </message>
-    <message>
-        <source>motor 2 backlash</source>
-        <translation>Umkehrspiel Motor 2</translation>
     </message>
     <message>
         <source>The pattern is drawn. Take the sheet off and measure it.</source>
@@ -2986,6 +3126,18 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
     <message>
         <source>Connect a machine or the simulated machine in the Machine panel first</source>
         <translation>Verbinden Sie zuerst eine Maschine oder die simulierte Maschine in der Maschinen-Leiste</translation>
+    </message>
+    <message>
+        <source>The simulated machine differs from the profile by these amounts, as a real one would. The picture shows what its pen really draws (orange) beside the plan. The built-in simulated machine (Machine panel) becomes this machine at once, also when it is connected. When the wizard closes it goes back to the studio's setting (Machine &amp;gt; Simulated machine...), unless you keep it.</source>
+        <translation>Die simulierte Maschine weicht um diese Werte vom Profil ab, wie eine echte es täte. Das Bild zeigt, was ihr Stift wirklich zeichnet (orange), neben dem Plan. Die eingebaute simulierte Maschine (Maschinen-Panel) wird sofort zu dieser Maschine, auch wenn sie verbunden ist. Wenn der Assistent schließt, gilt wieder die Einstellung des Studios (Maschine &amp;gt; Simulierte Maschine...), außer Sie behalten sie.</translation>
+    </message>
+    <message>
+        <source>Keep this machine as the studio's simulated machine after the wizard</source>
+        <translation>Diese Maschine nach dem Assistenten als simulierte Maschine des Studios behalten</translation>
+    </message>
+    <message>
+        <source>Saved in Machine &gt; Simulated machine...; the status bar shows it while it is imperfect</source>
+        <translation>Gespeichert unter Maschine &gt; Simulierte Maschine...; die Statusleiste zeigt sie, solange sie unvollkommen ist</translation>
     </message>
 </context>
 <context>
@@ -3031,10 +3183,6 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
         <translation>&lt;span style='color:#b00000'&gt;Als falsch gemessen weggelassen: Marke %1. Prüfen Sie sie auf dem Blatt.&lt;/span&gt;</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Error before: %1 mm RMS&lt;/b&gt; (largest %2 mm) &amp;rarr; &lt;b&gt;after: %3 mm RMS&lt;/b&gt; (largest %4 mm) over %5 marks.&lt;br&gt;Held-out marks (%6): %7 mm before &amp;rarr; %8 mm after.&lt;br&gt;%9&lt;br&gt;%10&lt;br&gt;&lt;small&gt;Condition number %11 (below 10000 is fine).&lt;/small&gt;</source>
-        <translation>&lt;b&gt;Fehler vorher: %1 mm RMS&lt;/b&gt; (größter %2 mm) &amp;rarr; &lt;b&gt;nachher: %3 mm RMS&lt;/b&gt; (größter %4 mm) über %5 Marken.&lt;br&gt;Zurückgehaltene Marken (%6): %7 mm vorher &amp;rarr; %8 mm nachher.&lt;br&gt;%9&lt;br&gt;%10&lt;br&gt;&lt;small&gt;Konditionszahl %11 (unter 10000 ist gut).&lt;/small&gt;</translation>
-    </message>
-    <message>
         <source>°</source>
         <translation>°</translation>
     </message>
@@ -3046,16 +3194,32 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
         <source>%1 ± %2%3</source>
         <translation>%1 ± %2%3</translation>
     </message>
+    <message>
+        <source>Backlash is not measured from distances (it needs the positions of the backlash rows' marks); the profile's backlash is kept.</source>
+        <translation>Das Spiel wird aus Abständen nicht gemessen (dazu braucht es die Lagen der Marken der Spiel-Reihen); das Spiel des Profils bleibt.</translation>
+    </message>
+    <message>
+        <source>&lt;span style='color:#b00000'&gt;Left out as mis-measured: distance %1 (marks A-B). Measure it again.&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#b00000'&gt;Als falsch gemessen weggelassen: Abstand %1 (Marken A-B). Messen Sie ihn noch einmal.&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Distance error before: %1 mm RMS&lt;/b&gt; (largest %2 mm) &amp;rarr; &lt;b&gt;after: %3 mm RMS&lt;/b&gt; (largest %4 mm) over %5 distances.</source>
+        <translation>&lt;b&gt;Abstandsfehler vorher: %1 mm RMS&lt;/b&gt; (größter %2 mm) &amp;rarr; &lt;b&gt;nachher: %3 mm RMS&lt;/b&gt; (größter %4 mm) über %5 Abstände.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Error before: %1 mm RMS&lt;/b&gt; (largest %2 mm) &amp;rarr; &lt;b&gt;after: %3 mm RMS&lt;/b&gt; (largest %4 mm) over %5 marks.</source>
+        <translation>&lt;b&gt;Fehler vorher: %1 mm RMS&lt;/b&gt; (größter %2 mm) &amp;rarr; &lt;b&gt;nachher: %3 mm RMS&lt;/b&gt; (größter %4 mm) über %5 Marken.</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Held-out measurements (%1): %2 mm before &amp;rarr; %3 mm after.&lt;br&gt;%4&lt;br&gt;%5&lt;br&gt;&lt;small&gt;Condition number %6 (below 10000 is fine).&lt;/small&gt;</source>
+        <translation>&lt;br&gt;Zurückgehaltene Messungen (%1): %2 mm vorher &amp;rarr; %3 mm nachher.&lt;br&gt;%4&lt;br&gt;%5&lt;br&gt;&lt;small&gt;Konditionszahl %6 (unter 10000 ist gut).&lt;/small&gt;</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::calibration::MeasurePage</name>
     <message>
         <source>3. Measure the marks</source>
         <translation>3. Die Marken vermessen</translation>
-    </message>
-    <message>
-        <source>Measure the centre of each numbered dot with a ruler and type its x and y in millimetres. Any corner of the sheet can be the origin, and y may point up or down: the fit finds how the sheet lay. The mark you are typing is circled on the picture. Leave a row empty if a mark cannot be read; a mis-measured mark is found and named by the fit. With a scanner, import a scan instead: the marks are found and numbered for you.</source>
-        <translation>Messen Sie die Mitte jedes nummerierten Punkts mit einem Lineal und tippen Sie x und y in Millimetern ein. Jede Ecke des Blatts kann der Ursprung sein, und y darf nach oben oder unten zeigen: Die Anpassung findet heraus, wie das Blatt lag. Die Marke, die Sie gerade eintippen, ist im Bild eingekreist. Lassen Sie eine Zeile leer, wenn eine Marke nicht lesbar ist; eine falsch gemessene Marke findet und nennt die Anpassung. Mit einem Scanner importieren Sie stattdessen einen Scan: Die Marken werden für Sie gefunden und nummeriert.</translation>
     </message>
     <message>
         <source>Mark</source>
@@ -3177,16 +3341,28 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
         <source>Cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
+    <message>
+        <source>Measure the centre of each numbered dot with a ruler and type its x and y in millimetres. Any corner of the sheet can be the origin, and y may point up or down: the fit finds how the sheet lay. The mark you are typing is circled on the picture. Leave a row empty if a mark cannot be read; a mis-measured mark is found and named by the fit. With a scanner, import a scan instead: the marks are found and numbered for you. With a ruler alone, measure distances between marks in the second tab.</source>
+        <translation>Messen Sie die Mitte jedes nummerierten Punkts mit einem Lineal und tippen Sie x und y in Millimetern ein. Jede Ecke des Blatts kann der Ursprung sein, und y darf nach oben oder unten zeigen: der Fit findet, wie das Blatt lag. Die Marke, die Sie gerade eintippen, ist im Bild eingekreist. Lassen Sie eine Zeile leer, wenn eine Marke nicht lesbar ist; eine falsch gemessene Marke findet und nennt der Fit. Mit einem Scanner importieren Sie stattdessen einen Scan: die Marken werden für Sie gefunden und nummeriert. Mit einem Lineal allein messen Sie im zweiten Reiter Abstände zwischen Marken.</translation>
+    </message>
+    <message>
+        <source>Coordinates (x, y)</source>
+        <translation>Koordinaten (x, y)</translation>
+    </message>
+    <message>
+        <source>Distances between marks</source>
+        <translation>Abstände zwischen Marken</translation>
+    </message>
+    <message>
+        <source>Only %1 distances are measured; measure at least %2, about four for each mark (the fit finds 5 lengths and 2 motor zeros).</source>
+        <translation>Nur %1 Abstände sind gemessen; messen Sie mindestens %2, etwa vier je Marke (der Fit bestimmt 5 Längen und 2 Motor-Nullpunkte).</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::calibration::PatternPage</name>
     <message>
         <source>1. Choose the pattern</source>
         <translation>1. Das Muster wählen</translation>
-    </message>
-    <message>
-        <source>No machine is built exactly as drawn: a link cut half a millimetre long or a motor zero set by eye bends every drawing. The studio draws a &lt;b&gt;pattern&lt;/b&gt; of numbered marks, you measure where they really landed, and a fit finds the machine's true link lengths and motor zeros.&lt;br&gt;&lt;br&gt;&lt;b&gt;Calibration marks&lt;/b&gt;: numbered dots in rings spread over the whole working area, plus rows that show the slack (backlash) of each motor. Use these to calibrate.&lt;br&gt;&lt;b&gt;Accuracy pattern&lt;/b&gt; (Hoang): ten parallel lines, 40 mm long and 10 mm apart, to judge straightness and length before and after; nothing to measure.</source>
-        <translation>Keine Maschine ist genau so gebaut wie gezeichnet: Ein Glied einen halben Millimeter zu lang oder ein nach Augenmaß gesetzter Motornullpunkt verbiegt jede Zeichnung. Das Studio zeichnet ein &lt;b&gt;Muster&lt;/b&gt; aus nummerierten Marken, Sie messen, wo sie wirklich gelandet sind, und eine Anpassung findet die wahren Gliedlängen und Motornullpunkte der Maschine.&lt;br&gt;&lt;br&gt;&lt;b&gt;Kalibriermarken&lt;/b&gt;: nummerierte Punkte in Ringen über den ganzen Arbeitsbereich verteilt, dazu Reihen, die das Spiel (Umkehrspiel) jedes Motors zeigen. Damit wird kalibriert.&lt;br&gt;&lt;b&gt;Genauigkeitsmuster&lt;/b&gt; (Hoang): zehn parallele Linien, 40 mm lang und 10 mm voneinander, um Geradheit und Länge vorher und nachher zu beurteilen; nichts zu messen.</translation>
     </message>
     <message>
         <source>Calibration marks</source>
@@ -3224,6 +3400,10 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
         <source>For &lt;b&gt;%1&lt;/b&gt;: ten lines of 40 mm in the middle of the working area.</source>
         <translation>Für &lt;b&gt;%1&lt;/b&gt;: zehn Linien zu 40 mm in der Mitte des Arbeitsbereichs.</translation>
     </message>
+    <message>
+        <source>No machine is built exactly as drawn: a link cut half a millimetre long or a motor zero set by eye bends every drawing. The studio draws a &lt;b&gt;pattern&lt;/b&gt; of numbered marks, you measure where they really landed, and a fit finds the machine's true link lengths and motor zeros.&lt;br&gt;&lt;br&gt;&lt;b&gt;Calibration marks&lt;/b&gt;: numbered dots in rings spread over the whole working area, plus rows that show the slack (backlash) of each motor. Use these to calibrate.&lt;br&gt;&lt;b&gt;Accuracy pattern&lt;/b&gt; (Hoang): ten parallel lines, 40 mm long and 10 mm apart, to judge straightness and length before and after: you measure each line's length and straightness with a ruler in the wizard's last step.</source>
+        <translation>Keine Maschine ist genau so gebaut wie gezeichnet: ein Glied einen halben Millimeter zu lang oder ein Motor-Nullpunkt nach Augenmaß verbiegt jede Zeichnung. Das Studio zeichnet ein &lt;b&gt;Muster&lt;/b&gt; aus nummerierten Marken, Sie messen, wo sie wirklich gelandet sind, und ein Fit findet die wahren Gliederlängen und Motor-Nullpunkte der Maschine.&lt;br&gt;&lt;br&gt;&lt;b&gt;Kalibriermarken&lt;/b&gt;: nummerierte Punkte in Ringen über den ganzen Arbeitsbereich verteilt, dazu Reihen, die das Spiel jedes Motors zeigen. Damit kalibrieren Sie.&lt;br&gt;&lt;b&gt;Genauigkeitsmuster&lt;/b&gt; (Hoang): zehn parallele Linien, 40 mm lang und 10 mm auseinander, um Geradheit und Länge vorher und nachher zu beurteilen: Sie messen Länge und Geradheit jeder Linie mit einem Lineal im letzten Schritt des Assistenten.</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::calibration::PatternSender</name>
@@ -3256,14 +3436,141 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
     </message>
 </context>
 <context>
+    <name>fivebar::widgets::calibration::SimTraceLayer</name>
+    <message>
+        <source>Drawn by the simulated pen (imperfect machine)</source>
+        <translation>Vom simulierten Stift gezeichnet (unvollkommene Maschine)</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::SimulatedMachineDialog</name>
+    <message>
+        <source>Simulated machine</source>
+        <translation>Simulierte Maschine</translation>
+    </message>
+    <message>
+        <source>The built-in simulated machine can be built &lt;b&gt;imperfectly&lt;/b&gt;, as a real one is: its links a little longer or shorter than the profile says, its motor zeros off, play in its drives. It then draws what such a machine really draws (shown on the canvas beside the plan), so you can try calibration (Machine &amp;gt; Calibrate...) without hardware.&lt;br&gt;&lt;br&gt;The amounts apply at once, also to a simulated machine that is connected, and are kept until you change them here. The status bar says so while the machine is imperfect.</source>
+        <translation>Die eingebaute simulierte Maschine kann &lt;b&gt;unvollkommen&lt;/b&gt; gebaut werden, wie eine echte: ihre Glieder etwas länger oder kürzer, als das Profil sagt, ihre Motor-Nullpunkte verschoben, Spiel in den Antrieben. Sie zeichnet dann, was eine solche Maschine wirklich zeichnet (auf der Zeichenfläche neben dem Plan), so können Sie die Kalibrierung (Maschine &amp;gt; Kalibrieren...) ohne Hardware ausprobieren.&lt;br&gt;&lt;br&gt;Die Werte gelten sofort, auch für eine verbundene simulierte Maschine, und bleiben, bis Sie sie hier ändern. Die Statusleiste zeigt es an, solange die Maschine unvollkommen ist.</translation>
+    </message>
+    <message>
+        <source>Perfect machine</source>
+        <translation>Perfekte Maschine</translation>
+    </message>
+    <message>
+        <source>All amounts zero: the simulated machine is exactly the profile</source>
+        <translation>Alle Werte null: die simulierte Maschine ist genau das Profil</translation>
+    </message>
+    <message>
+        <source>Example</source>
+        <translation>Beispiel</translation>
+    </message>
+    <message>
+        <source>A typical home-built machine: links off by up to 0.5 mm, zeros by about 1°, some play</source>
+        <translation>Eine typische selbstgebaute Maschine: Glieder bis 0,5 mm daneben, Nullpunkte um etwa 1°, etwas Spiel</translation>
+    </message>
+    <message>
+        <source>Simulated &amp;machine...</source>
+        <translation>Simulierte &amp;Maschine...</translation>
+    </message>
+    <message>
+        <source>Build the simulated machine imperfectly, to try calibration without hardware</source>
+        <translation>Die simulierte Maschine unvollkommen bauen, um die Kalibrierung ohne Hardware auszuprobieren</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::SimulatedTruth</name>
+    <message>
+        <source>%1 %2 mm</source>
+        <translation>%1 %2 mm</translation>
+    </message>
+    <message>
+        <source>motor %1 zero %2°</source>
+        <translation>Motor %1 Nullpunkt %2°</translation>
+    </message>
+    <message>
+        <source>motor %1 backlash %2°</source>
+        <translation>Motor %1 Spiel %2°</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::SimulatedTruthBadge</name>
+    <message>
+        <source>Simulated machine: imperfect</source>
+        <translation>Simulierte Maschine: unvollkommen</translation>
+    </message>
+    <message>
+        <source>The built-in simulated machine differs from the profile: %1. Click to change it (Machine &gt; Simulated machine...).</source>
+        <translation>Die eingebaute simulierte Maschine weicht vom Profil ab: %1. Klicken, um das zu ändern (Maschine &gt; Simulierte Maschine...).</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::TrueMachineForm</name>
+    <message>
+        <source>How much longer the real part is than the profile says (negative: shorter).</source>
+        <translation>Um wie viel das echte Teil länger ist, als das Profil sagt (negativ: kürzer).</translation>
+    </message>
+    <message>
+        <source>a1 longer by</source>
+        <translation>a1 länger um</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>b1 longer by</source>
+        <translation>b1 länger um</translation>
+    </message>
+    <message>
+        <source>a2 longer by</source>
+        <translation>a2 länger um</translation>
+    </message>
+    <message>
+        <source>b2 longer by</source>
+        <translation>b2 länger um</translation>
+    </message>
+    <message>
+        <source>motors farther apart by</source>
+        <translation>Motorabstand größer um</translation>
+    </message>
+    <message>
+        <source>How much farther apart the real motor axes are.</source>
+        <translation>Um wie viel die echten Motorachsen weiter auseinander liegen.</translation>
+    </message>
+    <message>
+        <source>motor 1 zero off by</source>
+        <translation>Nullpunkt Motor 1 versetzt um</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>The real arm angle is the commanded one plus this.</source>
+        <translation>Der echte Armwinkel ist der befohlene plus dieser Wert.</translation>
+    </message>
+    <message>
+        <source>motor 2 zero off by</source>
+        <translation>Nullpunkt Motor 2 versetzt um</translation>
+    </message>
+    <message>
+        <source>motor 1 backlash</source>
+        <translation>Umkehrspiel Motor 1</translation>
+    </message>
+    <message>
+        <source>Play in the drive: the arm lags this much when the motor reverses.</source>
+        <translation>Spiel im Antrieb: der Arm bleibt so weit zurück, wenn der Motor die Richtung wechselt.</translation>
+    </message>
+    <message>
+        <source>motor 2 backlash</source>
+        <translation>Umkehrspiel Motor 2</translation>
+    </message>
+</context>
+<context>
     <name>fivebar::widgets::calibration::VerifyPage</name>
     <message>
         <source>6. Draw the verification pattern</source>
         <translation>6. Das Prüfmuster zeichnen</translation>
-    </message>
-    <message>
-        <source>Draw the pattern once more, now planned with the calibrated profile, on a fresh sheet. Its marks should land where they were meant, and the accuracy lines should be straight and 40 mm long. Measure it again in this wizard if you want numbers.</source>
-        <translation>Zeichnen Sie das Muster noch einmal, jetzt mit dem kalibrierten Profil geplant, auf ein frisches Blatt. Seine Marken sollten dort landen, wo sie hingehören, und die Genauigkeitslinien sollten gerade und 40 mm lang sein. Vermessen Sie es erneut in diesem Assistenten, wenn Sie Zahlen wollen.</translation>
     </message>
     <message>
         <source>Draw on the connected machine</source>
@@ -3304,6 +3611,10 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
     <message>
         <source> (the calibration is not applied)</source>
         <translation> (die Kalibrierung ist nicht übernommen)</translation>
+    </message>
+    <message>
+        <source>Draw the pattern once more, now planned with the calibrated profile, on a fresh sheet. Its marks should land where they were meant, and the accuracy lines should be straight and 40 mm long: &lt;b&gt;Next&lt;/b&gt; measures the lines with a ruler for a before/after figure.</source>
+        <translation>Zeichnen Sie das Muster noch einmal, nun mit dem kalibrierten Profil geplant, auf ein neues Blatt. Seine Marken sollten dort landen, wo sie gemeint sind, und die Genauigkeitslinien sollten gerade und 40 mm lang sein: &lt;b&gt;Weiter&lt;/b&gt; misst die Linien mit einem Lineal für einen Vorher-nachher-Wert.</translation>
     </message>
 </context>
 <context>

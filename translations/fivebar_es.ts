@@ -7,6 +7,14 @@
         <source>Hoang's accuracy pattern (10 lines of 40 mm) does not fit in this machine's safe area.</source>
         <translation>El patrón de precisión de Hoang (10 líneas de 40 mm) no cabe en el área segura de esta máquina.</translation>
     </message>
+    <message>
+        <source>The simulated machine drew %1 lines instead of %2.</source>
+        <translation>La máquina simulada dibujó %1 líneas en lugar de %2.</translation>
+    </message>
+    <message>
+        <source>A simulated line is too short to measure.</source>
+        <translation>Una línea simulada es demasiado corta para medirla.</translation>
+    </message>
 </context>
 <context>
     <name>DesignPainter</name>
@@ -2660,7 +2668,9 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     <message numerus="yes">
         <source>The board's settings differ from the profile in %n place(s): %1.</source>
         <translation>
-            <numerusform>Los ajustes de la placa difieren del perfil en %n punto: %1.</numerusform><numerusform>Los ajustes de la placa difieren del perfil en %n puntos: %1.</numerusform></translation>
+            <numerusform>Los ajustes de la placa difieren del perfil en %n punto: %1.</numerusform>
+            <numerusform>Los ajustes de la placa difieren del perfil en %n puntos: %1.</numerusform>
+        </translation>
     </message>
     <message>
         <source>A job would stop or move wrongly with them.</source>
@@ -2754,6 +2764,73 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     <message>
         <source>Change layer fill</source>
         <translation>Cambiar relleno de capa</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::AccuracyPage</name>
+    <message>
+        <source>Measure the accuracy lines</source>
+        <translation>Medir las líneas de precisión</translation>
+    </message>
+    <message>
+        <source>Hoang's accuracy pattern is ten lines, each meant to be 40 mm long and straight, 10 mm apart. Lay a steel ruler along each line. &lt;b&gt;Length&lt;/b&gt;: from end to end, in the middle of the pen's stroke. &lt;b&gt;Straightness&lt;/b&gt;: the widest gap between the line and the ruler's edge when the ruler touches both ends (0 for a straight line). Type the lines drawn &lt;b&gt;before&lt;/b&gt; calibration in the first two columns and those of the verification sheet (drawn &lt;b&gt;after&lt;/b&gt;) in the last two; the figures below compare them.</source>
+        <translation>El patrón de precisión de Hoang son diez líneas, cada una pensada para medir 40 mm y ser recta, a 10 mm entre sí. Apoye una regla de acero a lo largo de cada línea. &lt;b&gt;Longitud&lt;/b&gt;: de extremo a extremo, en el centro del trazo. &lt;b&gt;Rectitud&lt;/b&gt;: la mayor separación entre la línea y el borde de la regla cuando la regla toca ambos extremos (0 para una línea recta). Escriba las líneas dibujadas &lt;b&gt;antes&lt;/b&gt; de calibrar en las dos primeras columnas y las de la hoja de verificación (dibujadas &lt;b&gt;después&lt;/b&gt;) en las dos últimas; las cifras de abajo las comparan.</translation>
+    </message>
+    <message>
+        <source>Length before (mm)</source>
+        <translation>Longitud antes (mm)</translation>
+    </message>
+    <message>
+        <source>Straightness before (mm)</source>
+        <translation>Rectitud antes (mm)</translation>
+    </message>
+    <message>
+        <source>Length after (mm)</source>
+        <translation>Longitud después (mm)</translation>
+    </message>
+    <message>
+        <source>Straightness after (mm)</source>
+        <translation>Rectitud después (mm)</translation>
+    </message>
+    <message>
+        <source>Line %1</source>
+        <translation>Línea %1</translation>
+    </message>
+    <message>
+        <source>Simulation: measure the simulated lines</source>
+        <translation>Simulación: medir las líneas simuladas</translation>
+    </message>
+    <message>
+        <source>Fills the table with the lines as the simulated imperfect machine draws them: before with the profile the wizard started from, after with the calibrated profile.</source>
+        <translation>Rellena la tabla con las líneas tal como las dibuja la máquina simulada imperfecta: antes con el perfil con el que empezó el asistente, después con el perfil calibrado.</translation>
+    </message>
+    <message>
+        <source>Line %1, %2: '%3' is not a length in mm.</source>
+        <translation>Línea %1, %2: «%3» no es una longitud en mm.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1:&lt;/b&gt; not measured yet (type a length and a straightness per line).</source>
+        <translation>&lt;b&gt;%1:&lt;/b&gt; aún sin medir (escriba una longitud y una rectitud por línea).</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1:&lt;/b&gt; straightness %2 mm at worst (RMS %3 mm); length off by %4 mm at worst (RMS %5 mm), over %6 lines.</source>
+        <translation>&lt;b&gt;%1:&lt;/b&gt; rectitud %2 mm en el peor caso (RMS %3 mm); longitud desviada %4 mm en el peor caso (RMS %5 mm), en %6 líneas.</translation>
+    </message>
+    <message>
+        <source>Before calibration</source>
+        <translation>Antes de calibrar</translation>
+    </message>
+    <message>
+        <source>After calibration</source>
+        <translation>Después de calibrar</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Worst straightness plus worst length error: %1 mm &amp;rarr; &lt;b&gt;%2 mm&lt;/b&gt;.</source>
+        <translation>&lt;br&gt;Peor rectitud más peor error de longitud: %1 mm &amp;rarr; &lt;b&gt;%2 mm&lt;/b&gt;.</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;&lt;i&gt;Apply the calibration (step 5) to see the lines drawn after it.&lt;/i&gt;</source>
+        <translation>&lt;br&gt;&lt;i&gt;Aplique la calibración (paso 5) para ver las líneas dibujadas después.&lt;/i&gt;</translation>
     </message>
 </context>
 <context>
@@ -2874,6 +2951,117 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     </message>
 </context>
 <context>
+    <name>fivebar::widgets::calibration::DistancesBox</name>
+    <message>
+        <source>Only a ruler? Measure the distance between the centres of two marks and type both mark numbers and the distance. No corner or direction is needed. Measure long and short pairs across the whole sheet, each mark in several pairs: about four per mark (100 for 25 marks) calibrate as well as coordinates. Use the marks for the fit, not the backlash rows.</source>
+        <translation>¿Solo una regla? Mida la distancia entre los centros de dos marcas y escriba ambos números de marca y la distancia. No hace falta esquina ni dirección. Mida pares largos y cortos por toda la hoja, cada marca en varios pares: unas cuatro por marca (100 para 25 marcas) calibran tan bien como las coordenadas. Use las marcas para el ajuste, no las filas de holgura.</translation>
+    </message>
+    <message>
+        <source>Mark A</source>
+        <translation>Marca A</translation>
+    </message>
+    <message>
+        <source>Mark B</source>
+        <translation>Marca B</translation>
+    </message>
+    <message>
+        <source>Distance (mm)</source>
+        <translation>Distancia (mm)</translation>
+    </message>
+    <message>
+        <source>Add a row</source>
+        <translation>Añadir una fila</translation>
+    </message>
+    <message>
+        <source>Remove the row</source>
+        <translation>Quitar la fila</translation>
+    </message>
+    <message>
+        <source>Load distances CSV...</source>
+        <translation>Cargar CSV de distancias...</translation>
+    </message>
+    <message>
+        <source>A file with the columns id_a,id_b,distance_mm (as fivebar calibrate fit reads it)</source>
+        <translation>Un archivo con las columnas id_a,id_b,distance_mm (como lo lee fivebar calibrate fit)</translation>
+    </message>
+    <message>
+        <source>Simulation: measure distances on the simulated sheet</source>
+        <translation>Simulación: medir distancias en la hoja simulada</translation>
+    </message>
+    <message>
+        <source>Fills the table with distances between where the simulated imperfect machine put the marks, plus ruler noise.</source>
+        <translation>Rellena la tabla con distancias entre donde la máquina simulada imperfecta puso las marcas, más el ruido de la regla.</translation>
+    </message>
+    <message>
+        <source>noise ±</source>
+        <translation>ruido ±</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Load distances</source>
+        <translation>Cargar distancias</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Filled from the simulated sheet (simulation, not a measurement).</source>
+        <translation>Rellenado a partir de la hoja simulada (simulación, no una medición).</translation>
+    </message>
+    <message>
+        <source>mark A</source>
+        <translation>marca A</translation>
+    </message>
+    <message>
+        <source>mark B</source>
+        <translation>marca B</translation>
+    </message>
+    <message>
+        <source>distance</source>
+        <translation>distancia</translation>
+    </message>
+    <message>
+        <source>Row %1: %2 is empty.</source>
+        <translation>Fila %1: %2 está vacía.</translation>
+    </message>
+    <message>
+        <source>Row %1, %2: '%3' is not a number.</source>
+        <translation>Fila %1, %2: «%3» no es un número.</translation>
+    </message>
+    <message>
+        <source>Row %1: there is no mark %2 in the pattern.</source>
+        <translation>Fila %1: no hay ninguna marca %2 en el patrón.</translation>
+    </message>
+    <message>
+        <source>Row %1: mark %2 is in a backlash row; measure distances between marks for the fit.</source>
+        <translation>Fila %1: la marca %2 está en una fila de holgura; mida distancias entre marcas para el ajuste.</translation>
+    </message>
+    <message>
+        <source>Row %1: a distance from mark %2 to itself.</source>
+        <translation>Fila %1: una distancia de la marca %2 a sí misma.</translation>
+    </message>
+    <message>
+        <source>Row %1: the distance must be more than 0 mm.</source>
+        <translation>Fila %1: la distancia debe ser mayor que 0 mm.</translation>
+    </message>
+    <message>
+        <source>%1 holds mark coordinates, not distances: load it in the Coordinates tab.</source>
+        <translation>%1 contiene coordenadas de marcas, no distancias: cárguelo en la pestaña Coordenadas.</translation>
+    </message>
+    <message>
+        <source>%1:%2: the pattern's marks are numbered; '%3' is not a mark number.</source>
+        <translation>%1:%2: las marcas del patrón están numeradas; «%3» no es un número de marca.</translation>
+    </message>
+    <message>
+        <source>Loaded %1 distances from %2.</source>
+        <translation>%1 distancias cargadas de %2.</translation>
+    </message>
+</context>
+<context>
     <name>fivebar::widgets::calibration::DrawPage</name>
     <message>
         <source>2. Draw the pattern</source>
@@ -2902,54 +3090,6 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     <message>
         <source>Simulate an imperfect machine (the sheet below is what it draws)</source>
         <translation>Simular una máquina imperfecta (la hoja de abajo es lo que dibuja)</translation>
-    </message>
-    <message>
-        <source>The simulated machine differs by these amounts from the profile as it was when this wizard opened, as a real one would. The picture shows what its pen really draws (orange) beside the plan. The built-in simulated machine of the Machine panel takes these amounts the next time it connects.</source>
-        <translation>La máquina simulada difiere en estas cantidades del perfil tal como estaba al abrir este asistente, como lo haría una real. La imagen muestra lo que su pluma dibuja realmente (naranja) junto al plan. La máquina simulada integrada del panel Máquina toma estos valores la próxima vez que se conecta.</translation>
-    </message>
-    <message>
-        <source>a1 longer by</source>
-        <translation>a1 más largo en</translation>
-    </message>
-    <message>
-        <source> mm</source>
-        <translation> mm</translation>
-    </message>
-    <message>
-        <source>b1 longer by</source>
-        <translation>b1 más largo en</translation>
-    </message>
-    <message>
-        <source>a2 longer by</source>
-        <translation>a2 más largo en</translation>
-    </message>
-    <message>
-        <source>b2 longer by</source>
-        <translation>b2 más largo en</translation>
-    </message>
-    <message>
-        <source>motors farther apart by</source>
-        <translation>motores más separados en</translation>
-    </message>
-    <message>
-        <source>motor 1 zero off by</source>
-        <translation>cero del motor 1 desviado en</translation>
-    </message>
-    <message>
-        <source> °</source>
-        <translation> °</translation>
-    </message>
-    <message>
-        <source>motor 2 zero off by</source>
-        <translation>cero del motor 2 desviado en</translation>
-    </message>
-    <message>
-        <source>motor 1 backlash</source>
-        <translation>holgura del motor 1</translation>
-    </message>
-    <message>
-        <source>motor 2 backlash</source>
-        <translation>holgura del motor 2</translation>
     </message>
     <message>
         <source>The pattern is drawn. Take the sheet off and measure it.</source>
@@ -2986,6 +3126,18 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     <message>
         <source>Connect a machine or the simulated machine in the Machine panel first</source>
         <translation>Conecte primero una máquina o la máquina simulada en el panel Máquina</translation>
+    </message>
+    <message>
+        <source>The simulated machine differs from the profile by these amounts, as a real one would. The picture shows what its pen really draws (orange) beside the plan. The built-in simulated machine (Machine panel) becomes this machine at once, also when it is connected. When the wizard closes it goes back to the studio's setting (Machine &amp;gt; Simulated machine...), unless you keep it.</source>
+        <translation>La máquina simulada difiere del perfil en estos valores, como lo haría una real. La imagen muestra lo que su bolígrafo dibuja de verdad (naranja) junto al plan. La máquina simulada integrada (panel Máquina) pasa a ser esta máquina al momento, también conectada. Al cerrar el asistente vuelve el ajuste del estudio (Máquina &amp;gt; Máquina simulada...), salvo que la conserve.</translation>
+    </message>
+    <message>
+        <source>Keep this machine as the studio's simulated machine after the wizard</source>
+        <translation>Conservar esta máquina como máquina simulada del estudio tras el asistente</translation>
+    </message>
+    <message>
+        <source>Saved in Machine &gt; Simulated machine...; the status bar shows it while it is imperfect</source>
+        <translation>Guardada en Máquina &gt; Máquina simulada...; la barra de estado la muestra mientras sea imperfecta</translation>
     </message>
 </context>
 <context>
@@ -3031,10 +3183,6 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
         <translation>&lt;span style='color:#b00000'&gt;Excluida por mal medida: marca %1. Revísela en la hoja.&lt;/span&gt;</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Error before: %1 mm RMS&lt;/b&gt; (largest %2 mm) &amp;rarr; &lt;b&gt;after: %3 mm RMS&lt;/b&gt; (largest %4 mm) over %5 marks.&lt;br&gt;Held-out marks (%6): %7 mm before &amp;rarr; %8 mm after.&lt;br&gt;%9&lt;br&gt;%10&lt;br&gt;&lt;small&gt;Condition number %11 (below 10000 is fine).&lt;/small&gt;</source>
-        <translation>&lt;b&gt;Error antes: %1 mm RMS&lt;/b&gt; (máx. %2 mm) &amp;rarr; &lt;b&gt;después: %3 mm RMS&lt;/b&gt; (máx. %4 mm) en %5 marcas.&lt;br&gt;Marcas reservadas (%6): %7 mm antes &amp;rarr; %8 mm después.&lt;br&gt;%9&lt;br&gt;%10&lt;br&gt;&lt;small&gt;Número de condición %11 (por debajo de 10000 está bien).&lt;/small&gt;</translation>
-    </message>
-    <message>
         <source>°</source>
         <translation>°</translation>
     </message>
@@ -3046,16 +3194,32 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
         <source>%1 ± %2%3</source>
         <translation>%1 ± %2%3</translation>
     </message>
+    <message>
+        <source>Backlash is not measured from distances (it needs the positions of the backlash rows' marks); the profile's backlash is kept.</source>
+        <translation>La holgura no se mide a partir de distancias (hacen falta las posiciones de las marcas de las filas de holgura); se conserva la holgura del perfil.</translation>
+    </message>
+    <message>
+        <source>&lt;span style='color:#b00000'&gt;Left out as mis-measured: distance %1 (marks A-B). Measure it again.&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#b00000'&gt;Descartada por mal medida: distancia %1 (marcas A-B). Mídala de nuevo.&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Distance error before: %1 mm RMS&lt;/b&gt; (largest %2 mm) &amp;rarr; &lt;b&gt;after: %3 mm RMS&lt;/b&gt; (largest %4 mm) over %5 distances.</source>
+        <translation>&lt;b&gt;Error de distancia antes: %1 mm RMS&lt;/b&gt; (mayor %2 mm) &amp;rarr; &lt;b&gt;después: %3 mm RMS&lt;/b&gt; (mayor %4 mm) en %5 distancias.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Error before: %1 mm RMS&lt;/b&gt; (largest %2 mm) &amp;rarr; &lt;b&gt;after: %3 mm RMS&lt;/b&gt; (largest %4 mm) over %5 marks.</source>
+        <translation>&lt;b&gt;Error antes: %1 mm RMS&lt;/b&gt; (mayor %2 mm) &amp;rarr; &lt;b&gt;después: %3 mm RMS&lt;/b&gt; (mayor %4 mm) en %5 marcas.</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Held-out measurements (%1): %2 mm before &amp;rarr; %3 mm after.&lt;br&gt;%4&lt;br&gt;%5&lt;br&gt;&lt;small&gt;Condition number %6 (below 10000 is fine).&lt;/small&gt;</source>
+        <translation>&lt;br&gt;Mediciones reservadas (%1): %2 mm antes &amp;rarr; %3 mm después.&lt;br&gt;%4&lt;br&gt;%5&lt;br&gt;&lt;small&gt;Número de condición %6 (por debajo de 10000 está bien).&lt;/small&gt;</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::calibration::MeasurePage</name>
     <message>
         <source>3. Measure the marks</source>
         <translation>3. Medir las marcas</translation>
-    </message>
-    <message>
-        <source>Measure the centre of each numbered dot with a ruler and type its x and y in millimetres. Any corner of the sheet can be the origin, and y may point up or down: the fit finds how the sheet lay. The mark you are typing is circled on the picture. Leave a row empty if a mark cannot be read; a mis-measured mark is found and named by the fit. With a scanner, import a scan instead: the marks are found and numbered for you.</source>
-        <translation>Mida el centro de cada punto numerado con una regla y escriba su x e y en milímetros. Cualquier esquina de la hoja puede ser el origen, y la y puede apuntar hacia arriba o hacia abajo: el ajuste averigua cómo estaba la hoja. La marca que está escribiendo aparece rodeada con un círculo en la imagen. Deje una fila vacía si una marca no se puede leer; el ajuste detecta y señala una marca mal medida. Con un escáner, importe un escaneo en su lugar: las marcas se encuentran y numeran automáticamente.</translation>
     </message>
     <message>
         <source>Mark</source>
@@ -3177,16 +3341,28 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
         <source>Cannot write %1: %2</source>
         <translation>No se puede escribir %1: %2</translation>
     </message>
+    <message>
+        <source>Measure the centre of each numbered dot with a ruler and type its x and y in millimetres. Any corner of the sheet can be the origin, and y may point up or down: the fit finds how the sheet lay. The mark you are typing is circled on the picture. Leave a row empty if a mark cannot be read; a mis-measured mark is found and named by the fit. With a scanner, import a scan instead: the marks are found and numbered for you. With a ruler alone, measure distances between marks in the second tab.</source>
+        <translation>Mida el centro de cada punto numerado con una regla y escriba su x y su y en milímetros. Cualquier esquina de la hoja puede ser el origen, y la y puede apuntar hacia arriba o hacia abajo: el ajuste encuentra cómo estaba la hoja. La marca que está escribiendo aparece rodeada en la imagen. Deje una fila vacía si una marca no se puede leer; el ajuste encuentra y nombra una marca mal medida. Con un escáner, importe un escaneo: las marcas se encuentran y numeran solas. Con una regla sola, mida distancias entre marcas en la segunda pestaña.</translation>
+    </message>
+    <message>
+        <source>Coordinates (x, y)</source>
+        <translation>Coordenadas (x, y)</translation>
+    </message>
+    <message>
+        <source>Distances between marks</source>
+        <translation>Distancias entre marcas</translation>
+    </message>
+    <message>
+        <source>Only %1 distances are measured; measure at least %2, about four for each mark (the fit finds 5 lengths and 2 motor zeros).</source>
+        <translation>Solo hay %1 distancias medidas; mida al menos %2, unas cuatro por marca (el ajuste busca 5 longitudes y 2 ceros de motor).</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::calibration::PatternPage</name>
     <message>
         <source>1. Choose the pattern</source>
         <translation>1. Elegir el patrón</translation>
-    </message>
-    <message>
-        <source>No machine is built exactly as drawn: a link cut half a millimetre long or a motor zero set by eye bends every drawing. The studio draws a &lt;b&gt;pattern&lt;/b&gt; of numbered marks, you measure where they really landed, and a fit finds the machine's true link lengths and motor zeros.&lt;br&gt;&lt;br&gt;&lt;b&gt;Calibration marks&lt;/b&gt;: numbered dots in rings spread over the whole working area, plus rows that show the slack (backlash) of each motor. Use these to calibrate.&lt;br&gt;&lt;b&gt;Accuracy pattern&lt;/b&gt; (Hoang): ten parallel lines, 40 mm long and 10 mm apart, to judge straightness and length before and after; nothing to measure.</source>
-        <translation>Ninguna máquina está construida exactamente como en el plano: un eslabón medio milímetro más largo o un cero de motor fijado a ojo deforma cada dibujo. El estudio dibuja un &lt;b&gt;patrón&lt;/b&gt; de marcas numeradas, usted mide dónde cayeron realmente y un ajuste encuentra las longitudes de eslabón y los ceros de motor reales de la máquina.&lt;br&gt;&lt;br&gt;&lt;b&gt;Marcas de calibración&lt;/b&gt;: puntos numerados en anillos repartidos por toda el área de trabajo, más filas que muestran el juego (holgura) de cada motor. Úselas para calibrar.&lt;br&gt;&lt;b&gt;Patrón de precisión&lt;/b&gt; (Hoang): diez líneas paralelas de 40 mm de largo y separadas 10 mm, para juzgar rectitud y longitud antes y después; no hay nada que medir.</translation>
     </message>
     <message>
         <source>Calibration marks</source>
@@ -3224,6 +3400,10 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
         <source>For &lt;b&gt;%1&lt;/b&gt;: ten lines of 40 mm in the middle of the working area.</source>
         <translation>Para &lt;b&gt;%1&lt;/b&gt;: diez líneas de 40 mm en el centro del área de trabajo.</translation>
     </message>
+    <message>
+        <source>No machine is built exactly as drawn: a link cut half a millimetre long or a motor zero set by eye bends every drawing. The studio draws a &lt;b&gt;pattern&lt;/b&gt; of numbered marks, you measure where they really landed, and a fit finds the machine's true link lengths and motor zeros.&lt;br&gt;&lt;br&gt;&lt;b&gt;Calibration marks&lt;/b&gt;: numbered dots in rings spread over the whole working area, plus rows that show the slack (backlash) of each motor. Use these to calibrate.&lt;br&gt;&lt;b&gt;Accuracy pattern&lt;/b&gt; (Hoang): ten parallel lines, 40 mm long and 10 mm apart, to judge straightness and length before and after: you measure each line's length and straightness with a ruler in the wizard's last step.</source>
+        <translation>Ninguna máquina se construye exactamente como se dibujó: un eslabón cortado medio milímetro largo o un cero de motor ajustado a ojo deforma cada dibujo. El estudio dibuja un &lt;b&gt;patrón&lt;/b&gt; de marcas numeradas, usted mide dónde cayeron de verdad y un ajuste encuentra las longitudes reales de los eslabones y los ceros de los motores.&lt;br&gt;&lt;br&gt;&lt;b&gt;Marcas de calibración&lt;/b&gt;: puntos numerados en anillos repartidos por toda el área de trabajo, más filas que muestran la holgura de cada motor. Úselas para calibrar.&lt;br&gt;&lt;b&gt;Patrón de precisión&lt;/b&gt; (Hoang): diez líneas paralelas, de 40 mm de largo y a 10 mm entre sí, para juzgar la rectitud y la longitud antes y después: usted mide la longitud y la rectitud de cada línea con una regla en el último paso del asistente.</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::calibration::PatternSender</name>
@@ -3256,14 +3436,141 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     </message>
 </context>
 <context>
+    <name>fivebar::widgets::calibration::SimTraceLayer</name>
+    <message>
+        <source>Drawn by the simulated pen (imperfect machine)</source>
+        <translation>Dibujado por el bolígrafo simulado (máquina imperfecta)</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::SimulatedMachineDialog</name>
+    <message>
+        <source>Simulated machine</source>
+        <translation>Máquina simulada</translation>
+    </message>
+    <message>
+        <source>The built-in simulated machine can be built &lt;b&gt;imperfectly&lt;/b&gt;, as a real one is: its links a little longer or shorter than the profile says, its motor zeros off, play in its drives. It then draws what such a machine really draws (shown on the canvas beside the plan), so you can try calibration (Machine &amp;gt; Calibrate...) without hardware.&lt;br&gt;&lt;br&gt;The amounts apply at once, also to a simulated machine that is connected, and are kept until you change them here. The status bar says so while the machine is imperfect.</source>
+        <translation>La máquina simulada integrada puede construirse &lt;b&gt;imperfecta&lt;/b&gt;, como una real: sus eslabones algo más largos o cortos de lo que dice el perfil, sus ceros de motor desviados, holgura en sus transmisiones. Entonces dibuja lo que tal máquina dibuja de verdad (en el lienzo junto al plan), para probar la calibración (Máquina &amp;gt; Calibrar...) sin hardware.&lt;br&gt;&lt;br&gt;Los valores se aplican al momento, también a una máquina simulada conectada, y se mantienen hasta que los cambie aquí. La barra de estado lo indica mientras la máquina sea imperfecta.</translation>
+    </message>
+    <message>
+        <source>Perfect machine</source>
+        <translation>Máquina perfecta</translation>
+    </message>
+    <message>
+        <source>All amounts zero: the simulated machine is exactly the profile</source>
+        <translation>Todos los valores a cero: la máquina simulada es exactamente el perfil</translation>
+    </message>
+    <message>
+        <source>Example</source>
+        <translation>Ejemplo</translation>
+    </message>
+    <message>
+        <source>A typical home-built machine: links off by up to 0.5 mm, zeros by about 1°, some play</source>
+        <translation>Una máquina casera típica: eslabones desviados hasta 0,5 mm, ceros en torno a 1°, algo de holgura</translation>
+    </message>
+    <message>
+        <source>Simulated &amp;machine...</source>
+        <translation>&amp;Máquina simulada...</translation>
+    </message>
+    <message>
+        <source>Build the simulated machine imperfectly, to try calibration without hardware</source>
+        <translation>Construir la máquina simulada imperfecta, para probar la calibración sin hardware</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::SimulatedTruth</name>
+    <message>
+        <source>%1 %2 mm</source>
+        <translation>%1 %2 mm</translation>
+    </message>
+    <message>
+        <source>motor %1 zero %2°</source>
+        <translation>cero del motor %1 %2°</translation>
+    </message>
+    <message>
+        <source>motor %1 backlash %2°</source>
+        <translation>holgura del motor %1 %2°</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::SimulatedTruthBadge</name>
+    <message>
+        <source>Simulated machine: imperfect</source>
+        <translation>Máquina simulada: imperfecta</translation>
+    </message>
+    <message>
+        <source>The built-in simulated machine differs from the profile: %1. Click to change it (Machine &gt; Simulated machine...).</source>
+        <translation>La máquina simulada integrada difiere del perfil: %1. Haga clic para cambiarla (Máquina &gt; Máquina simulada...).</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::TrueMachineForm</name>
+    <message>
+        <source>How much longer the real part is than the profile says (negative: shorter).</source>
+        <translation>Cuánto más larga es la pieza real de lo que dice el perfil (negativo: más corta).</translation>
+    </message>
+    <message>
+        <source>a1 longer by</source>
+        <translation>a1 más largo en</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>b1 longer by</source>
+        <translation>b1 más largo en</translation>
+    </message>
+    <message>
+        <source>a2 longer by</source>
+        <translation>a2 más largo en</translation>
+    </message>
+    <message>
+        <source>b2 longer by</source>
+        <translation>b2 más largo en</translation>
+    </message>
+    <message>
+        <source>motors farther apart by</source>
+        <translation>motores más separados en</translation>
+    </message>
+    <message>
+        <source>How much farther apart the real motor axes are.</source>
+        <translation>Cuánto más separados están los ejes reales de los motores.</translation>
+    </message>
+    <message>
+        <source>motor 1 zero off by</source>
+        <translation>cero del motor 1 desviado en</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>The real arm angle is the commanded one plus this.</source>
+        <translation>El ángulo real del brazo es el ordenado más este valor.</translation>
+    </message>
+    <message>
+        <source>motor 2 zero off by</source>
+        <translation>cero del motor 2 desviado en</translation>
+    </message>
+    <message>
+        <source>motor 1 backlash</source>
+        <translation>holgura del motor 1</translation>
+    </message>
+    <message>
+        <source>Play in the drive: the arm lags this much when the motor reverses.</source>
+        <translation>Holgura en la transmisión: el brazo se retrasa esto cuando el motor invierte el sentido.</translation>
+    </message>
+    <message>
+        <source>motor 2 backlash</source>
+        <translation>holgura del motor 2</translation>
+    </message>
+</context>
+<context>
     <name>fivebar::widgets::calibration::VerifyPage</name>
     <message>
         <source>6. Draw the verification pattern</source>
         <translation>6. Dibujar el patrón de verificación</translation>
-    </message>
-    <message>
-        <source>Draw the pattern once more, now planned with the calibrated profile, on a fresh sheet. Its marks should land where they were meant, and the accuracy lines should be straight and 40 mm long. Measure it again in this wizard if you want numbers.</source>
-        <translation>Dibuje el patrón una vez más, ahora planificado con el perfil calibrado, en una hoja nueva. Sus marcas deberían caer donde corresponde y las líneas de precisión deberían ser rectas y de 40 mm. Mídalo de nuevo en este asistente si quiere cifras.</translation>
     </message>
     <message>
         <source>Draw on the connected machine</source>
@@ -3304,6 +3611,10 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     <message>
         <source> (the calibration is not applied)</source>
         <translation> (la calibración no está aplicada)</translation>
+    </message>
+    <message>
+        <source>Draw the pattern once more, now planned with the calibrated profile, on a fresh sheet. Its marks should land where they were meant, and the accuracy lines should be straight and 40 mm long: &lt;b&gt;Next&lt;/b&gt; measures the lines with a ruler for a before/after figure.</source>
+        <translation>Dibuje el patrón una vez más, ahora planificado con el perfil calibrado, en una hoja nueva. Sus marcas deberían caer donde se pretendía, y las líneas de precisión deberían ser rectas y de 40 mm: &lt;b&gt;Siguiente&lt;/b&gt; mide las líneas con una regla para una cifra de antes/después.</translation>
     </message>
 </context>
 <context>

@@ -7,6 +7,14 @@
         <source>Hoang's accuracy pattern (10 lines of 40 mm) does not fit in this machine's safe area.</source>
         <translation>Le motif de précision de Hoang (10 lignes de 40 mm) ne tient pas dans la zone sûre de cette machine.</translation>
     </message>
+    <message>
+        <source>The simulated machine drew %1 lines instead of %2.</source>
+        <translation>La machine simulée a tracé %1 lignes au lieu de %2.</translation>
+    </message>
+    <message>
+        <source>A simulated line is too short to measure.</source>
+        <translation>Une ligne simulée est trop courte pour être mesurée.</translation>
+    </message>
 </context>
 <context>
     <name>DesignPainter</name>
@@ -2660,7 +2668,9 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     <message numerus="yes">
         <source>The board's settings differ from the profile in %n place(s): %1.</source>
         <translation>
-            <numerusform>Les réglages de la carte diffèrent du profil en %n endroit : %1.</numerusform><numerusform>Les réglages de la carte diffèrent du profil en %n endroits : %1.</numerusform></translation>
+            <numerusform>Les réglages de la carte diffèrent du profil en %n endroit : %1.</numerusform>
+            <numerusform>Les réglages de la carte diffèrent du profil en %n endroits : %1.</numerusform>
+        </translation>
     </message>
     <message>
         <source>A job would stop or move wrongly with them.</source>
@@ -2754,6 +2764,73 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     <message>
         <source>Change layer fill</source>
         <translation>Modifier le remplissage du calque</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::AccuracyPage</name>
+    <message>
+        <source>Measure the accuracy lines</source>
+        <translation>Mesurer les lignes de précision</translation>
+    </message>
+    <message>
+        <source>Hoang's accuracy pattern is ten lines, each meant to be 40 mm long and straight, 10 mm apart. Lay a steel ruler along each line. &lt;b&gt;Length&lt;/b&gt;: from end to end, in the middle of the pen's stroke. &lt;b&gt;Straightness&lt;/b&gt;: the widest gap between the line and the ruler's edge when the ruler touches both ends (0 for a straight line). Type the lines drawn &lt;b&gt;before&lt;/b&gt; calibration in the first two columns and those of the verification sheet (drawn &lt;b&gt;after&lt;/b&gt;) in the last two; the figures below compare them.</source>
+        <translation>Le motif de précision de Hoang compte dix lignes, chacune censée être longue de 40 mm et droite, espacées de 10 mm. Posez une règle en acier le long de chaque ligne. &lt;b&gt;Longueur&lt;/b&gt; : d'un bout à l'autre, au milieu du trait du stylo. &lt;b&gt;Rectitude&lt;/b&gt; : le plus grand écart entre la ligne et le bord de la règle quand la règle touche les deux bouts (0 pour une ligne droite). Saisissez les lignes tracées &lt;b&gt;avant&lt;/b&gt; l'étalonnage dans les deux premières colonnes et celles de la feuille de vérification (tracées &lt;b&gt;après&lt;/b&gt;) dans les deux dernières ; les chiffres ci-dessous les comparent.</translation>
+    </message>
+    <message>
+        <source>Length before (mm)</source>
+        <translation>Longueur avant (mm)</translation>
+    </message>
+    <message>
+        <source>Straightness before (mm)</source>
+        <translation>Rectitude avant (mm)</translation>
+    </message>
+    <message>
+        <source>Length after (mm)</source>
+        <translation>Longueur après (mm)</translation>
+    </message>
+    <message>
+        <source>Straightness after (mm)</source>
+        <translation>Rectitude après (mm)</translation>
+    </message>
+    <message>
+        <source>Line %1</source>
+        <translation>Ligne %1</translation>
+    </message>
+    <message>
+        <source>Simulation: measure the simulated lines</source>
+        <translation>Simulation : mesurer les lignes simulées</translation>
+    </message>
+    <message>
+        <source>Fills the table with the lines as the simulated imperfect machine draws them: before with the profile the wizard started from, after with the calibrated profile.</source>
+        <translation>Remplit le tableau avec les lignes telles que la machine simulée imparfaite les trace : avant avec le profil de départ de l'assistant, après avec le profil étalonné.</translation>
+    </message>
+    <message>
+        <source>Line %1, %2: '%3' is not a length in mm.</source>
+        <translation>Ligne %1, %2 : « %3 » n'est pas une longueur en mm.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1:&lt;/b&gt; not measured yet (type a length and a straightness per line).</source>
+        <translation>&lt;b&gt;%1 :&lt;/b&gt; pas encore mesuré (saisissez une longueur et une rectitude par ligne).</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1:&lt;/b&gt; straightness %2 mm at worst (RMS %3 mm); length off by %4 mm at worst (RMS %5 mm), over %6 lines.</source>
+        <translation>&lt;b&gt;%1 :&lt;/b&gt; rectitude %2 mm au pire (RMS %3 mm) ; longueur décalée de %4 mm au pire (RMS %5 mm), sur %6 lignes.</translation>
+    </message>
+    <message>
+        <source>Before calibration</source>
+        <translation>Avant l'étalonnage</translation>
+    </message>
+    <message>
+        <source>After calibration</source>
+        <translation>Après l'étalonnage</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Worst straightness plus worst length error: %1 mm &amp;rarr; &lt;b&gt;%2 mm&lt;/b&gt;.</source>
+        <translation>&lt;br&gt;Pire rectitude plus pire erreur de longueur : %1 mm &amp;rarr; &lt;b&gt;%2 mm&lt;/b&gt;.</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;&lt;i&gt;Apply the calibration (step 5) to see the lines drawn after it.&lt;/i&gt;</source>
+        <translation>&lt;br&gt;&lt;i&gt;Appliquez l'étalonnage (étape 5) pour voir les lignes tracées après.&lt;/i&gt;</translation>
     </message>
 </context>
 <context>
@@ -2874,6 +2951,117 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     </message>
 </context>
 <context>
+    <name>fivebar::widgets::calibration::DistancesBox</name>
+    <message>
+        <source>Only a ruler? Measure the distance between the centres of two marks and type both mark numbers and the distance. No corner or direction is needed. Measure long and short pairs across the whole sheet, each mark in several pairs: about four per mark (100 for 25 marks) calibrate as well as coordinates. Use the marks for the fit, not the backlash rows.</source>
+        <translation>Seulement une règle ? Mesurez la distance entre les centres de deux repères et saisissez les deux numéros et la distance. Ni coin ni direction ne sont nécessaires. Mesurez des paires longues et courtes sur toute la feuille, chaque repère dans plusieurs paires : environ quatre par repère (100 pour 25 repères) étalonnent aussi bien que des coordonnées. Prenez les repères pour l'ajustement, pas les rangées de jeu.</translation>
+    </message>
+    <message>
+        <source>Mark A</source>
+        <translation>Repère A</translation>
+    </message>
+    <message>
+        <source>Mark B</source>
+        <translation>Repère B</translation>
+    </message>
+    <message>
+        <source>Distance (mm)</source>
+        <translation>Distance (mm)</translation>
+    </message>
+    <message>
+        <source>Add a row</source>
+        <translation>Ajouter une ligne</translation>
+    </message>
+    <message>
+        <source>Remove the row</source>
+        <translation>Supprimer la ligne</translation>
+    </message>
+    <message>
+        <source>Load distances CSV...</source>
+        <translation>Charger un CSV de distances...</translation>
+    </message>
+    <message>
+        <source>A file with the columns id_a,id_b,distance_mm (as fivebar calibrate fit reads it)</source>
+        <translation>Un fichier avec les colonnes id_a,id_b,distance_mm (comme fivebar calibrate fit le lit)</translation>
+    </message>
+    <message>
+        <source>Simulation: measure distances on the simulated sheet</source>
+        <translation>Simulation : mesurer des distances sur la feuille simulée</translation>
+    </message>
+    <message>
+        <source>Fills the table with distances between where the simulated imperfect machine put the marks, plus ruler noise.</source>
+        <translation>Remplit le tableau avec les distances entre les endroits où la machine simulée imparfaite a mis les repères, plus le bruit de la règle.</translation>
+    </message>
+    <message>
+        <source>noise ±</source>
+        <translation>bruit ±</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Load distances</source>
+        <translation>Charger des distances</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Filled from the simulated sheet (simulation, not a measurement).</source>
+        <translation>Rempli d'après la feuille simulée (simulation, pas une mesure).</translation>
+    </message>
+    <message>
+        <source>mark A</source>
+        <translation>repère A</translation>
+    </message>
+    <message>
+        <source>mark B</source>
+        <translation>repère B</translation>
+    </message>
+    <message>
+        <source>distance</source>
+        <translation>distance</translation>
+    </message>
+    <message>
+        <source>Row %1: %2 is empty.</source>
+        <translation>Ligne %1 : %2 est vide.</translation>
+    </message>
+    <message>
+        <source>Row %1, %2: '%3' is not a number.</source>
+        <translation>Ligne %1, %2 : « %3 » n'est pas un nombre.</translation>
+    </message>
+    <message>
+        <source>Row %1: there is no mark %2 in the pattern.</source>
+        <translation>Ligne %1 : il n'y a pas de repère %2 dans le motif.</translation>
+    </message>
+    <message>
+        <source>Row %1: mark %2 is in a backlash row; measure distances between marks for the fit.</source>
+        <translation>Ligne %1 : le repère %2 est dans une rangée de jeu ; mesurez des distances entre repères pour l'ajustement.</translation>
+    </message>
+    <message>
+        <source>Row %1: a distance from mark %2 to itself.</source>
+        <translation>Ligne %1 : une distance du repère %2 à lui-même.</translation>
+    </message>
+    <message>
+        <source>Row %1: the distance must be more than 0 mm.</source>
+        <translation>Ligne %1 : la distance doit dépasser 0 mm.</translation>
+    </message>
+    <message>
+        <source>%1 holds mark coordinates, not distances: load it in the Coordinates tab.</source>
+        <translation>%1 contient des coordonnées de repères, pas des distances : chargez-le dans l'onglet Coordonnées.</translation>
+    </message>
+    <message>
+        <source>%1:%2: the pattern's marks are numbered; '%3' is not a mark number.</source>
+        <translation>%1:%2 : les repères du motif sont numérotés ; « %3 » n'est pas un numéro de repère.</translation>
+    </message>
+    <message>
+        <source>Loaded %1 distances from %2.</source>
+        <translation>%1 distances chargées depuis %2.</translation>
+    </message>
+</context>
+<context>
     <name>fivebar::widgets::calibration::DrawPage</name>
     <message>
         <source>2. Draw the pattern</source>
@@ -2902,54 +3090,6 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     <message>
         <source>Simulate an imperfect machine (the sheet below is what it draws)</source>
         <translation>Simuler une machine imparfaite (la feuille ci-dessous est ce qu'elle trace)</translation>
-    </message>
-    <message>
-        <source>The simulated machine differs by these amounts from the profile as it was when this wizard opened, as a real one would. The picture shows what its pen really draws (orange) beside the plan. The built-in simulated machine of the Machine panel takes these amounts the next time it connects.</source>
-        <translation>La machine simulée diffère de ces valeurs par rapport au profil tel qu'il était à l'ouverture de cet assistant, comme le ferait une vraie. L'image montre ce que son stylo trace réellement (orange) à côté du plan. La machine simulée intégrée du panneau Machine prend ces valeurs à sa prochaine connexion.</translation>
-    </message>
-    <message>
-        <source>a1 longer by</source>
-        <translation>a1 plus long de</translation>
-    </message>
-    <message>
-        <source> mm</source>
-        <translation> mm</translation>
-    </message>
-    <message>
-        <source>b1 longer by</source>
-        <translation>b1 plus long de</translation>
-    </message>
-    <message>
-        <source>a2 longer by</source>
-        <translation>a2 plus long de</translation>
-    </message>
-    <message>
-        <source>b2 longer by</source>
-        <translation>b2 plus long de</translation>
-    </message>
-    <message>
-        <source>motors farther apart by</source>
-        <translation>moteurs plus écartés de</translation>
-    </message>
-    <message>
-        <source>motor 1 zero off by</source>
-        <translation>zéro moteur 1 décalé de</translation>
-    </message>
-    <message>
-        <source> °</source>
-        <translation> °</translation>
-    </message>
-    <message>
-        <source>motor 2 zero off by</source>
-        <translation>zéro moteur 2 décalé de</translation>
-    </message>
-    <message>
-        <source>motor 1 backlash</source>
-        <translation>jeu moteur 1</translation>
-    </message>
-    <message>
-        <source>motor 2 backlash</source>
-        <translation>jeu moteur 2</translation>
     </message>
     <message>
         <source>The pattern is drawn. Take the sheet off and measure it.</source>
@@ -2986,6 +3126,18 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     <message>
         <source>Connect a machine or the simulated machine in the Machine panel first</source>
         <translation>Connectez d'abord une machine ou la machine simulée dans le panneau Machine</translation>
+    </message>
+    <message>
+        <source>The simulated machine differs from the profile by these amounts, as a real one would. The picture shows what its pen really draws (orange) beside the plan. The built-in simulated machine (Machine panel) becomes this machine at once, also when it is connected. When the wizard closes it goes back to the studio's setting (Machine &amp;gt; Simulated machine...), unless you keep it.</source>
+        <translation>La machine simulée diffère du profil de ces valeurs, comme le ferait une vraie. L'image montre ce que son stylo trace vraiment (orange) à côté du plan. La machine simulée intégrée (panneau Machine) devient aussitôt cette machine, même connectée. À la fermeture de l'assistant, le réglage du studio revient (Machine &amp;gt; Machine simulée...), sauf si vous la gardez.</translation>
+    </message>
+    <message>
+        <source>Keep this machine as the studio's simulated machine after the wizard</source>
+        <translation>Garder cette machine comme machine simulée du studio après l'assistant</translation>
+    </message>
+    <message>
+        <source>Saved in Machine &gt; Simulated machine...; the status bar shows it while it is imperfect</source>
+        <translation>Enregistrée dans Machine &gt; Machine simulée... ; la barre d'état l'affiche tant qu'elle est imparfaite</translation>
     </message>
 </context>
 <context>
@@ -3031,10 +3183,6 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
         <translation>&lt;span style='color:#b00000'&gt;Écarté car mal mesuré : repère %1. Vérifiez-le sur la feuille.&lt;/span&gt;</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Error before: %1 mm RMS&lt;/b&gt; (largest %2 mm) &amp;rarr; &lt;b&gt;after: %3 mm RMS&lt;/b&gt; (largest %4 mm) over %5 marks.&lt;br&gt;Held-out marks (%6): %7 mm before &amp;rarr; %8 mm after.&lt;br&gt;%9&lt;br&gt;%10&lt;br&gt;&lt;small&gt;Condition number %11 (below 10000 is fine).&lt;/small&gt;</source>
-        <translation>&lt;b&gt;Erreur avant : %1 mm RMS&lt;/b&gt; (max. %2 mm) &amp;rarr; &lt;b&gt;après : %3 mm RMS&lt;/b&gt; (max. %4 mm) sur %5 repères.&lt;br&gt;Repères réservés (%6) : %7 mm avant &amp;rarr; %8 mm après.&lt;br&gt;%9&lt;br&gt;%10&lt;br&gt;&lt;small&gt;Conditionnement %11 (sous 10000, c'est bon).&lt;/small&gt;</translation>
-    </message>
-    <message>
         <source>°</source>
         <translation>°</translation>
     </message>
@@ -3046,16 +3194,32 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
         <source>%1 ± %2%3</source>
         <translation>%1 ± %2%3</translation>
     </message>
+    <message>
+        <source>Backlash is not measured from distances (it needs the positions of the backlash rows' marks); the profile's backlash is kept.</source>
+        <translation>Le jeu n'est pas mesuré à partir des distances (il faut les positions des repères des rangées de jeu) ; le jeu du profil est conservé.</translation>
+    </message>
+    <message>
+        <source>&lt;span style='color:#b00000'&gt;Left out as mis-measured: distance %1 (marks A-B). Measure it again.&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#b00000'&gt;Écartée comme mal mesurée : distance %1 (repères A-B). Mesurez-la à nouveau.&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Distance error before: %1 mm RMS&lt;/b&gt; (largest %2 mm) &amp;rarr; &lt;b&gt;after: %3 mm RMS&lt;/b&gt; (largest %4 mm) over %5 distances.</source>
+        <translation>&lt;b&gt;Erreur de distance avant : %1 mm RMS&lt;/b&gt; (plus grande %2 mm) &amp;rarr; &lt;b&gt;après : %3 mm RMS&lt;/b&gt; (plus grande %4 mm) sur %5 distances.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Error before: %1 mm RMS&lt;/b&gt; (largest %2 mm) &amp;rarr; &lt;b&gt;after: %3 mm RMS&lt;/b&gt; (largest %4 mm) over %5 marks.</source>
+        <translation>&lt;b&gt;Erreur avant : %1 mm RMS&lt;/b&gt; (plus grande %2 mm) &amp;rarr; &lt;b&gt;après : %3 mm RMS&lt;/b&gt; (plus grande %4 mm) sur %5 repères.</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Held-out measurements (%1): %2 mm before &amp;rarr; %3 mm after.&lt;br&gt;%4&lt;br&gt;%5&lt;br&gt;&lt;small&gt;Condition number %6 (below 10000 is fine).&lt;/small&gt;</source>
+        <translation>&lt;br&gt;Mesures mises de côté (%1) : %2 mm avant &amp;rarr; %3 mm après.&lt;br&gt;%4&lt;br&gt;%5&lt;br&gt;&lt;small&gt;Conditionnement %6 (sous 10000, c'est bien).&lt;/small&gt;</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::calibration::MeasurePage</name>
     <message>
         <source>3. Measure the marks</source>
         <translation>3. Mesurer les repères</translation>
-    </message>
-    <message>
-        <source>Measure the centre of each numbered dot with a ruler and type its x and y in millimetres. Any corner of the sheet can be the origin, and y may point up or down: the fit finds how the sheet lay. The mark you are typing is circled on the picture. Leave a row empty if a mark cannot be read; a mis-measured mark is found and named by the fit. With a scanner, import a scan instead: the marks are found and numbered for you.</source>
-        <translation>Mesurez le centre de chaque point numéroté avec une règle et saisissez ses x et y en millimètres. N'importe quel coin de la feuille peut servir d'origine, et y peut pointer vers le haut ou le bas : l'ajustement trouve comment la feuille était posée. Le repère en cours de saisie est entouré sur l'image. Laissez une ligne vide si un repère est illisible ; un repère mal mesuré est détecté et signalé par l'ajustement. Avec un scanner, importez plutôt une numérisation : les repères sont trouvés et numérotés pour vous.</translation>
     </message>
     <message>
         <source>Mark</source>
@@ -3177,16 +3341,28 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
         <source>Cannot write %1: %2</source>
         <translation>Impossible d'écrire %1 : %2</translation>
     </message>
+    <message>
+        <source>Measure the centre of each numbered dot with a ruler and type its x and y in millimetres. Any corner of the sheet can be the origin, and y may point up or down: the fit finds how the sheet lay. The mark you are typing is circled on the picture. Leave a row empty if a mark cannot be read; a mis-measured mark is found and named by the fit. With a scanner, import a scan instead: the marks are found and numbered for you. With a ruler alone, measure distances between marks in the second tab.</source>
+        <translation>Mesurez le centre de chaque point numéroté avec une règle et saisissez ses x et y en millimètres. N'importe quel coin de la feuille peut être l'origine, et y peut pointer vers le haut ou le bas : l'ajustement trouve comment la feuille était posée. Le repère en cours de saisie est entouré sur l'image. Laissez une ligne vide si un repère est illisible ; un repère mal mesuré est trouvé et nommé par l'ajustement. Avec un scanner, importez plutôt un scan : les repères sont trouvés et numérotés pour vous. Avec une règle seule, mesurez des distances entre repères dans le second onglet.</translation>
+    </message>
+    <message>
+        <source>Coordinates (x, y)</source>
+        <translation>Coordonnées (x, y)</translation>
+    </message>
+    <message>
+        <source>Distances between marks</source>
+        <translation>Distances entre repères</translation>
+    </message>
+    <message>
+        <source>Only %1 distances are measured; measure at least %2, about four for each mark (the fit finds 5 lengths and 2 motor zeros).</source>
+        <translation>Seulement %1 distances sont mesurées ; mesurez-en au moins %2, environ quatre par repère (l'ajustement trouve 5 longueurs et 2 zéros moteur).</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::calibration::PatternPage</name>
     <message>
         <source>1. Choose the pattern</source>
         <translation>1. Choisir le motif</translation>
-    </message>
-    <message>
-        <source>No machine is built exactly as drawn: a link cut half a millimetre long or a motor zero set by eye bends every drawing. The studio draws a &lt;b&gt;pattern&lt;/b&gt; of numbered marks, you measure where they really landed, and a fit finds the machine's true link lengths and motor zeros.&lt;br&gt;&lt;br&gt;&lt;b&gt;Calibration marks&lt;/b&gt;: numbered dots in rings spread over the whole working area, plus rows that show the slack (backlash) of each motor. Use these to calibrate.&lt;br&gt;&lt;b&gt;Accuracy pattern&lt;/b&gt; (Hoang): ten parallel lines, 40 mm long and 10 mm apart, to judge straightness and length before and after; nothing to measure.</source>
-        <translation>Aucune machine n'est construite exactement comme dessinée : un bras coupé un demi-millimètre trop long ou un zéro moteur réglé à l'œil déforme chaque dessin. Le studio trace un &lt;b&gt;motif&lt;/b&gt; de repères numérotés, vous mesurez où ils sont vraiment tombés, et un ajustement trouve les vraies longueurs de bras et zéros moteur de la machine.&lt;br&gt;&lt;br&gt;&lt;b&gt;Repères d'étalonnage&lt;/b&gt; : points numérotés en anneaux répartis sur toute la zone de travail, plus des rangées qui montrent le jeu de chaque moteur. À utiliser pour l'étalonnage.&lt;br&gt;&lt;b&gt;Motif de précision&lt;/b&gt; (Hoang) : dix lignes parallèles de 40 mm, espacées de 10 mm, pour juger rectitude et longueur avant et après ; rien à mesurer.</translation>
     </message>
     <message>
         <source>Calibration marks</source>
@@ -3224,6 +3400,10 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
         <source>For &lt;b&gt;%1&lt;/b&gt;: ten lines of 40 mm in the middle of the working area.</source>
         <translation>Pour &lt;b&gt;%1&lt;/b&gt; : dix lignes de 40 mm au milieu de la zone de travail.</translation>
     </message>
+    <message>
+        <source>No machine is built exactly as drawn: a link cut half a millimetre long or a motor zero set by eye bends every drawing. The studio draws a &lt;b&gt;pattern&lt;/b&gt; of numbered marks, you measure where they really landed, and a fit finds the machine's true link lengths and motor zeros.&lt;br&gt;&lt;br&gt;&lt;b&gt;Calibration marks&lt;/b&gt;: numbered dots in rings spread over the whole working area, plus rows that show the slack (backlash) of each motor. Use these to calibrate.&lt;br&gt;&lt;b&gt;Accuracy pattern&lt;/b&gt; (Hoang): ten parallel lines, 40 mm long and 10 mm apart, to judge straightness and length before and after: you measure each line's length and straightness with a ruler in the wizard's last step.</source>
+        <translation>Aucune machine n'est construite exactement comme dessinée : un bras coupé un demi-millimètre trop long ou un zéro moteur réglé à l'œil déforme chaque dessin. Le studio trace un &lt;b&gt;motif&lt;/b&gt; de repères numérotés, vous mesurez où ils sont vraiment tombés, et un ajustement trouve les vraies longueurs des bras et les zéros des moteurs.&lt;br&gt;&lt;br&gt;&lt;b&gt;Repères d'étalonnage&lt;/b&gt; : des points numérotés dans des anneaux répartis sur toute la zone de travail, plus des rangées qui montrent le jeu de chaque moteur. À utiliser pour étalonner.&lt;br&gt;&lt;b&gt;Motif de précision&lt;/b&gt; (Hoang) : dix lignes parallèles, longues de 40 mm et espacées de 10 mm, pour juger la rectitude et la longueur avant et après : vous mesurez la longueur et la rectitude de chaque ligne avec une règle à la dernière étape de l'assistant.</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::calibration::PatternSender</name>
@@ -3256,14 +3436,141 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     </message>
 </context>
 <context>
+    <name>fivebar::widgets::calibration::SimTraceLayer</name>
+    <message>
+        <source>Drawn by the simulated pen (imperfect machine)</source>
+        <translation>Tracé par le stylo simulé (machine imparfaite)</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::SimulatedMachineDialog</name>
+    <message>
+        <source>Simulated machine</source>
+        <translation>Machine simulée</translation>
+    </message>
+    <message>
+        <source>The built-in simulated machine can be built &lt;b&gt;imperfectly&lt;/b&gt;, as a real one is: its links a little longer or shorter than the profile says, its motor zeros off, play in its drives. It then draws what such a machine really draws (shown on the canvas beside the plan), so you can try calibration (Machine &amp;gt; Calibrate...) without hardware.&lt;br&gt;&lt;br&gt;The amounts apply at once, also to a simulated machine that is connected, and are kept until you change them here. The status bar says so while the machine is imperfect.</source>
+        <translation>La machine simulée intégrée peut être construite &lt;b&gt;imparfaitement&lt;/b&gt;, comme une vraie : ses bras un peu plus longs ou plus courts que ne le dit le profil, ses zéros moteur décalés, du jeu dans ses entraînements. Elle trace alors ce qu'une telle machine trace vraiment (affiché sur le canevas à côté du plan), pour essayer l'étalonnage (Machine &amp;gt; Étalonner...) sans matériel.&lt;br&gt;&lt;br&gt;Les valeurs s'appliquent aussitôt, aussi à une machine simulée connectée, et restent jusqu'à ce que vous les changiez ici. La barre d'état l'indique tant que la machine est imparfaite.</translation>
+    </message>
+    <message>
+        <source>Perfect machine</source>
+        <translation>Machine parfaite</translation>
+    </message>
+    <message>
+        <source>All amounts zero: the simulated machine is exactly the profile</source>
+        <translation>Toutes les valeurs à zéro : la machine simulée est exactement le profil</translation>
+    </message>
+    <message>
+        <source>Example</source>
+        <translation>Exemple</translation>
+    </message>
+    <message>
+        <source>A typical home-built machine: links off by up to 0.5 mm, zeros by about 1°, some play</source>
+        <translation>Une machine typique faite maison : bras décalés jusqu'à 0,5 mm, zéros d'environ 1°, un peu de jeu</translation>
+    </message>
+    <message>
+        <source>Simulated &amp;machine...</source>
+        <translation>&amp;Machine simulée...</translation>
+    </message>
+    <message>
+        <source>Build the simulated machine imperfectly, to try calibration without hardware</source>
+        <translation>Construire la machine simulée imparfaite, pour essayer l'étalonnage sans matériel</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::SimulatedTruth</name>
+    <message>
+        <source>%1 %2 mm</source>
+        <translation>%1 %2 mm</translation>
+    </message>
+    <message>
+        <source>motor %1 zero %2°</source>
+        <translation>zéro du moteur %1 %2°</translation>
+    </message>
+    <message>
+        <source>motor %1 backlash %2°</source>
+        <translation>jeu du moteur %1 %2°</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::SimulatedTruthBadge</name>
+    <message>
+        <source>Simulated machine: imperfect</source>
+        <translation>Machine simulée : imparfaite</translation>
+    </message>
+    <message>
+        <source>The built-in simulated machine differs from the profile: %1. Click to change it (Machine &gt; Simulated machine...).</source>
+        <translation>La machine simulée intégrée diffère du profil : %1. Cliquer pour la modifier (Machine &gt; Machine simulée...).</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::TrueMachineForm</name>
+    <message>
+        <source>How much longer the real part is than the profile says (negative: shorter).</source>
+        <translation>De combien la pièce réelle est plus longue que ne le dit le profil (négatif : plus courte).</translation>
+    </message>
+    <message>
+        <source>a1 longer by</source>
+        <translation>a1 plus long de</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>b1 longer by</source>
+        <translation>b1 plus long de</translation>
+    </message>
+    <message>
+        <source>a2 longer by</source>
+        <translation>a2 plus long de</translation>
+    </message>
+    <message>
+        <source>b2 longer by</source>
+        <translation>b2 plus long de</translation>
+    </message>
+    <message>
+        <source>motors farther apart by</source>
+        <translation>moteurs plus écartés de</translation>
+    </message>
+    <message>
+        <source>How much farther apart the real motor axes are.</source>
+        <translation>De combien les axes réels des moteurs sont plus éloignés.</translation>
+    </message>
+    <message>
+        <source>motor 1 zero off by</source>
+        <translation>zéro moteur 1 décalé de</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>The real arm angle is the commanded one plus this.</source>
+        <translation>L'angle réel du bras est l'angle commandé plus cette valeur.</translation>
+    </message>
+    <message>
+        <source>motor 2 zero off by</source>
+        <translation>zéro moteur 2 décalé de</translation>
+    </message>
+    <message>
+        <source>motor 1 backlash</source>
+        <translation>jeu moteur 1</translation>
+    </message>
+    <message>
+        <source>Play in the drive: the arm lags this much when the motor reverses.</source>
+        <translation>Jeu dans l'entraînement : le bras est en retard d'autant quand le moteur change de sens.</translation>
+    </message>
+    <message>
+        <source>motor 2 backlash</source>
+        <translation>jeu moteur 2</translation>
+    </message>
+</context>
+<context>
     <name>fivebar::widgets::calibration::VerifyPage</name>
     <message>
         <source>6. Draw the verification pattern</source>
         <translation>6. Tracer le motif de vérification</translation>
-    </message>
-    <message>
-        <source>Draw the pattern once more, now planned with the calibrated profile, on a fresh sheet. Its marks should land where they were meant, and the accuracy lines should be straight and 40 mm long. Measure it again in this wizard if you want numbers.</source>
-        <translation>Tracez le motif encore une fois, maintenant planifié avec le profil étalonné, sur une feuille neuve. Ses repères doivent tomber là où prévu, et les lignes de précision être droites et longues de 40 mm. Mesurez-le à nouveau dans cet assistant si vous voulez des chiffres.</translation>
     </message>
     <message>
         <source>Draw on the connected machine</source>
@@ -3304,6 +3611,10 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     <message>
         <source> (the calibration is not applied)</source>
         <translation> (l'étalonnage n'est pas appliqué)</translation>
+    </message>
+    <message>
+        <source>Draw the pattern once more, now planned with the calibrated profile, on a fresh sheet. Its marks should land where they were meant, and the accuracy lines should be straight and 40 mm long: &lt;b&gt;Next&lt;/b&gt; measures the lines with a ruler for a before/after figure.</source>
+        <translation>Tracez le motif une fois de plus, maintenant planifié avec le profil étalonné, sur une feuille neuve. Ses repères devraient tomber là où ils sont prévus, et les lignes de précision devraient être droites et longues de 40 mm : &lt;b&gt;Suivant&lt;/b&gt; mesure les lignes à la règle pour un chiffre avant/après.</translation>
     </message>
 </context>
 <context>

@@ -20,6 +20,7 @@
 #include "app/studio/language_menu.hpp"
 #include "core/kinematics/kinematics.hpp"
 #include "widgets/calibration/calibration_wizard.hpp"
+#include "widgets/calibration/simulated_machine.hpp"
 #include "widgets/canvas/canvas_view.hpp"
 #include "widgets/design/design_dialog.hpp"
 #include "widgets/document/import_controller.hpp"
@@ -75,6 +76,9 @@ MainWindow::MainWindow(const MachineProfile& profile, QWidget* parent) : QMainWi
   machineMenu_->addAction(machineUi->settingsAction());
   machineMenu_->addAction(DesignDialog::createAction(*doc_, *canvas_, this));
   machineMenu_->addAction(widgets::calibration::CalibrationWizard::createAction(*doc_, &machineUi->session(), canvas_, this));
+  // The simulated machine's true (imperfect) build: its menu entry, status badge and canvas trace.
+  widgets::calibration::installSimulatedMachine(*doc_, machineUi->session(), *canvas_, *machineMenu_,
+                                                *statusBar(), this);
   cursorLabel_ = new QLabel(this);
   statusBar()->addPermanentWidget(cursorLabel_);
   connect(canvas_, &CanvasView::cursorMoved, this, [this](QPointF mm) {

@@ -170,8 +170,9 @@ TEST(TrueMachine, BacklashLeavesACircleOpenByTheExpectedGap) {
   const auto drawn = drawOn(p, real, job);
   ASSERT_EQ(drawn.size(), 1u);
   const std::vector<Target> targets = targetsOf(p, job);
-  // Each drive output trails its motor by half the backlash against the motor's last direction:
-  // at the touch-down the direction of the travel there, at the end the stroke's last one.
+  // Each drive output stands at its motor after moving up and a backlash above it after moving
+  // down (core's PlayState): at the touch-down by the direction of the travel there, at the end
+  // by the stroke's last one.
   std::array<double, 2> before{0, 0}, last{0, 0};
   size_t first = 0;
   while (!targets[first + 1].penDown) ++first;
@@ -183,7 +184,7 @@ TEST(TrueMachine, BacklashLeavesACircleOpenByTheExpectedGap) {
       else if (targets[k].penDown) last[i] = d > 0 ? 1 : -1;
     }
   const auto trailing = [&](const std::array<double, 2>& m, const std::array<double, 2>& dir) {
-    return std::array<double, 2>{m[0] - dir[0] * 0.25, m[1] - dir[1] * 0.25};
+    return std::array<double, 2>{m[0] + (dir[0] < 0 ? 0.5 : 0.0), m[1] + (dir[1] < 0 ? 0.5 : 0.0)};
   };
   const std::array<double, 2> closeAt = targets[first].deg;
   const double expectedGap = (fk(p, trailing(closeAt, last)) - fk(p, trailing(closeAt, before))).norm();

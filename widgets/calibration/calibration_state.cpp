@@ -8,6 +8,8 @@
 #include "core/calibration/backlash.hpp"
 #include "core/calibration/rigid_fit.hpp"
 #include "core/kinematics/kinematics.hpp"
+#include "core/output/gcode.hpp"
+#include "drivers/sim_machine.hpp"
 
 namespace fivebar::widgets::calibration {
 
@@ -69,14 +71,39 @@ std::optional<CalibrationPattern> makePattern(const MachineProfile& profile, Pat
   return r.pattern;
 }
 
-std::vector<std::vector<Vec2>> trueTrace(const PlannedJob& job, const MachineProfile& profile,
-                                         const TrueMachine& truth) {
-  // The true motor angle is the commanded one plus the zero offset: shift every target.
-  PlannedJob shifted = job;
-  const JointAngles d{truth.zeroOffsetRad1, truth.zeroOffsetRad2};
-  shifted.start = {job.start.theta1 + d.theta1, job.start.theta2 + d.theta2};
-  for (JobMove& m : shifted.moves) m.target = {m.target.theta1 + d.theta1, m.target.theta2 + d.theta2};
-  return drawnWithPlay(shifted, truth.geometry(), profile.assembly, truth.play);
+std::vector<std::vector<Vec2>> simulatedTrace(const std::string& gcode, const MachineProfile& profile,
+                                              const TrueMachine& truth) {
+  sim::SimConfig config;
+  config.profile = profile;
+  config.instant = true;
+  config.setUp = true;
+  config.referenced = true;
+  config.trueMachine = trueMachineProfile(profile, truth);
+  sim::SimMachine machine(config);
+  // Line by line, each answered before the next (a line the board refuses is skipped: the
+  // wizard's G-code passed the planner's checks).
+  std::size_t from = 0;
+  while (from < gcode.size()) {
+    std::size_t end = gcode.find('\n', from);
+    if (end == std::string::npos) end = gcode.size();
+    machine.receive(std::string_view(gcode).substr(from, end - from));
+    machine.receive("\n");
+    from = end + 1;
+    std::string answer;
+    for (int i = 0; i < 200 && answer.find('\n') == std::string::npos; ++i) {
+      machine.advance(0.01);
+      answer += machine.takeOutput();
+    }
+  }
+  std::vector<std::vector<Vec2>> out;
+  for (const auto& line : machine.drawnTrace()) {
+    std::vector<Vec2> kept;
+    for (std::size_t i = 0; i < line.size(); ++i)
+      if (kept.empty() || i + 1 == line.size() || (line[i] - kept.back()).norm() >= kTracePreviewStepMm)
+        kept.push_back(line[i]);
+    out.push_back(std::move(kept));
+  }
+  return out;
 }
 
 std::optional<Vec2> trueMarkCentre(const PatternMark& mark, const MachineProfile& profile,
@@ -126,6 +153,80 @@ std::vector<TableMark> measureSimulatedSheet(const CalibrationPattern& pattern,
     t.paperMm = Vec2(std::round(p.x() * 100.0) / 100.0, std::round(p.y() * 100.0) / 100.0);
   }
   return out;
+}
+
+std::vector<DistanceRow> measureSimulatedDistances(const CalibrationPattern& pattern,
+                                                   const MachineProfile& profile,
+                                                   const TrueMachine& truth, double noiseMm,
+                                                   unsigned seed) {
+  std::vector<std::pair<int, Vec2>> centres;
+  for (const PatternMark& m : pattern.marks)
+    if (m.kind == MarkKind::Grid)
+      if (const auto c = trueMarkCentre(m, profile, truth)) centres.emplace_back(m.id, *c);
+  const std::size_t n = centres.size();
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> noise(0.0, std::max(0.0, noiseMm));
+  std::vector<DistanceRow> out;
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t step : {1u, 5u, 11u, 17u}) {
+      if (step >= n) continue;
+      const std::size_t j = (i + step) % n;
+      const std::pair<std::size_t, std::size_t> key{std::min(i, j), std::max(i, j)};
+      if (std::find(pairs.begin(), pairs.end(), key) != pairs.end()) continue;
+      pairs.push_back(key);
+      double d = (centres[i].second - centres[j].second).norm();
+      if (noiseMm > 0.0) d += noise(rng);
+      out.push_back({centres[i].first, centres[j].first, std::round(d * 100.0) / 100.0});
+    }
+  return out;
+}
+
+std::optional<AccuracySummary> summariseLines(const std::vector<LineMeasure>& lines) {
+  AccuracySummary a;
+  double sumS = 0.0, sumL = 0.0;
+  for (const LineMeasure& l : lines) {
+    if (!l.lengthMm || !l.straightnessMm) continue;
+    const double e = *l.lengthMm - kAccuracyLineLengthMm;
+    a.maxStraightnessMm = std::max(a.maxStraightnessMm, std::abs(*l.straightnessMm));
+    a.maxAbsLengthErrorMm = std::max(a.maxAbsLengthErrorMm, std::abs(e));
+    sumS += *l.straightnessMm * *l.straightnessMm;
+    sumL += e * e;
+    ++a.lines;
+  }
+  if (a.lines == 0) return std::nullopt;
+  a.rmsStraightnessMm = std::sqrt(sumS / a.lines);
+  a.rmsLengthErrorMm = std::sqrt(sumL / a.lines);
+  return a;
+}
+
+std::optional<AccuracyFigures> simulatedAccuracy(const MachineProfile& profile, const TrueMachine& truth,
+                                                 std::vector<std::vector<Vec2>>* trace, QString* error) {
+  const auto pattern = makePattern(profile, PatternKind::AccuracyOnly, 0, error);
+  if (!pattern) return std::nullopt;
+  PlanResult plan = planCalibrationPattern(*pattern, profile);
+  if (!plan.ok()) {
+    if (error) *error = QString::fromStdString(plan.message);
+    return std::nullopt;
+  }
+  std::string gcode;
+  try {
+    gcode = writeGcode(plan.job, profile);
+  } catch (const std::exception& e) {
+    if (error) *error = QString::fromUtf8(e.what());
+    return std::nullopt;
+  }
+  auto drawn = simulatedTrace(gcode, profile, truth);
+  if (drawn.size() != static_cast<std::size_t>(kAccuracyLineCount)) {
+    if (error)
+      *error = QCoreApplication::translate("CalibrationWizard", "The simulated machine drew %1 lines instead of %2.")
+                   .arg(drawn.size()).arg(kAccuracyLineCount);
+    return std::nullopt;
+  }
+  auto figures = accuracyFigures(drawn);
+  if (trace) *trace = std::move(drawn);
+  if (!figures && error) *error = QCoreApplication::translate("CalibrationWizard", "A simulated line is too short to measure.");
+  return figures;
 }
 
 ShapeFigures markShapeError(const CalibrationPattern& pattern, const MachineProfile& profile,

@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/calibration/accuracy_pattern.hpp"
 #include "core/calibration/pattern.hpp"
 #include "core/machine/profile.hpp"
 #include "core/planning/backlash_compensation.hpp"
@@ -47,13 +48,18 @@ struct TableMark {
 std::optional<CalibrationPattern> makePattern(const MachineProfile& profile, PatternKind kind,
                                               int gridMarks, QString* error);
 
-// What the true machine draws when it runs `job` (planned with `profile`): one polyline per
-// pen-down run, machine frame (the canvas's "drawn by the pen" layer).
-std::vector<std::vector<Vec2>> trueTrace(const PlannedJob& job, const MachineProfile& profile,
-                                         const TrueMachine& truth);
+// What the true machine draws when it runs `gcode` (written for `profile`): the G-code run on
+// the simulator itself (drivers/sim_machine: instant, set up and referenced, SimConfig::trueMachine
+// = trueMachineProfile(profile, truth)), so the play, zero offsets and geometry act exactly as on
+// the studio's simulated machine (drivers/pen_trace on core's PlayState). One polyline per pen-down
+// run, machine frame, points at least kTracePreviewStepMm apart (and every run's ends).
+inline constexpr double kTracePreviewStepMm = 0.05;
+std::vector<std::vector<Vec2>> simulatedTrace(const std::string& gcode, const MachineProfile& profile,
+                                              const TrueMachine& truth);
 
 // Where the true machine puts each mark's dot (after its approach, so backlash shows), machine
-// frame; nullopt for a pose the true machine cannot reach.
+// frame, by core's play model (PlayState, as the simulator's pen trace); nullopt for a pose the
+// true machine cannot reach.
 std::optional<Vec2> trueMarkCentre(const PatternMark& mark, const MachineProfile& profile,
                                    const TrueMachine& truth);
 
@@ -64,6 +70,42 @@ std::vector<TableMark> measureSimulatedSheet(const CalibrationPattern& pattern,
                                              const MachineProfile& profile,
                                              const TrueMachine& truth, double noiseMm,
                                              unsigned seed);
+
+// A ruler's distance between two marks, as typed into the distances table.
+struct DistanceRow {
+  int idA = 0, idB = 0;
+  double distanceMm = 0.0;
+};
+
+// The simulated sheet measured with a ruler alone: about four distances per fit mark (to marks
+// 1, 5, 11 and 17 places further in the pattern, pairs counted once), from the true mark centres,
+// plus Gaussian noise (seeded), read to 0.01 mm.
+std::vector<DistanceRow> measureSimulatedDistances(const CalibrationPattern& pattern,
+                                                   const MachineProfile& profile,
+                                                   const TrueMachine& truth, double noiseMm,
+                                                   unsigned seed);
+
+// One accuracy line as measured with a ruler: its length and its straightness (the widest gap
+// between the line and a straight edge), mm; empty when not measured.
+struct LineMeasure {
+  std::optional<double> lengthMm;
+  std::optional<double> straightnessMm;
+};
+// The figure of the accuracy lines: over the lines with both values, the largest and RMS
+// straightness and length error (against kAccuracyLineLengthMm). nullopt when no line has both.
+struct AccuracySummary {
+  int lines = 0;
+  double maxStraightnessMm = 0.0, rmsStraightnessMm = 0.0;
+  double maxAbsLengthErrorMm = 0.0, rmsLengthErrorMm = 0.0;
+};
+std::optional<AccuracySummary> summariseLines(const std::vector<LineMeasure>& lines);
+
+// Hoang's accuracy lines as the true machine draws them when planned with `profile`: the pattern
+// placed for `profile`, its G-code run on the simulator (simulatedTrace), each drawn line's
+// figures by core's accuracyFigures. *trace gets the drawing (may be null). nullopt with *error
+// when the pattern does not fit or does not come out as kAccuracyLineCount lines.
+std::optional<AccuracyFigures> simulatedAccuracy(const MachineProfile& profile, const TrueMachine& truth,
+                                                 std::vector<std::vector<Vec2>>* trace, QString* error);
 
 // The shape error (RMS and max, mm) of the true machine drawing the pattern's grid marks, after
 // the best rigid placement onto what was meant: the number calibration should make small.

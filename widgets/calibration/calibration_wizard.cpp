@@ -1,6 +1,7 @@
 #include "widgets/calibration/calibration_wizard.hpp"
 
 #include <QAction>
+#include <QCheckBox>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -10,6 +11,7 @@
 #include "core/output/gcode.hpp"
 #include "drivers/stream_session.hpp"
 #include "widgets/calibration/sheet_layer.hpp"
+#include "widgets/calibration/simulated_machine.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
 #include "widgets/document/core_message.hpp"
 #include "widgets/canvas/canvas_view.hpp"
@@ -32,19 +34,32 @@ CalibrationWizard::CalibrationWizard(StudioDocument& doc, MachineSession* sessio
   setOption(QWizard::NoBackButtonOnStartPage);
   nominal = doc.profile();
   builtFrom = nominal.geometry;
+  if (session_) {
+    simTruth_ = &SimulatedTruth::of(doc_, *session_);
+    builtFrom = simTruth_->builtFrom();
+  }
   patternPage_ = new PatternPage(*this);
   drawPage_ = new DrawPage(*this);
   measurePage_ = new MeasurePage(*this);
   fitPage_ = new FitPage(*this);
   applyPage_ = new ApplyPage(*this);
   verifyPage_ = new VerifyPage(*this);
+  accuracyPage_ = new AccuracyPage(*this);
   setPage(kPatternPage, patternPage_);
   setPage(kDrawPage, drawPage_);
   setPage(kMeasurePage, measurePage_);
   setPage(kFitPage, fitPage_);
   setPage(kApplyPage, applyPage_);
   setPage(kVerifyPage, verifyPage_);
+  setPage(kAccuracyPage, accuracyPage_);
   resize(980, 720);
+  // No hidden imperfect machine after the wizard: the studio's saved setting comes back, unless
+  // the maker ticked "keep" (then the wizard's machine becomes the saved setting).
+  connect(this, &QDialog::finished, this, [this] {
+    if (!simTruth_) return;
+    if (drawPage_->keepChoice()->isChecked() && simulated) simTruth_->setTruth(truth, true);
+    else simTruth_->setTruth(simTruth_->saved(), false);
+  });
 }
 
 CalibrationWizard::~CalibrationWizard() = default;

@@ -31,16 +31,18 @@ namespace fivebar::widgets::calibration {
 
 class PatternPage;
 class SheetLayer;
+class SimulatedTruth;
 class DrawPage;
 class MeasurePage;
 class FitPage;
 class ApplyPage;
 class VerifyPage;
+class AccuracyPage;
 
 class CalibrationWizard : public QWizard {
   Q_OBJECT
  public:
-  enum PageId { kPatternPage, kDrawPage, kMeasurePage, kFitPage, kApplyPage, kVerifyPage };
+  enum PageId { kPatternPage, kDrawPage, kMeasurePage, kFitPage, kApplyPage, kVerifyPage, kAccuracyPage };
 
   // `session` may be null (no machine side): drawing then means exporting the G-code.
   CalibrationWizard(StudioDocument& doc, MachineSession* session, QWidget* parent = nullptr);
@@ -55,6 +57,10 @@ class CalibrationWizard : public QWizard {
 
   StudioDocument& document() { return doc_; }
   MachineSession* session() { return session_; }
+  // The studio's simulated-machine setting (simulated_machine.hpp); null without a session. The
+  // draw step changes it for the time the wizard is open; closing the wizard puts the saved
+  // setting back unless the maker chose to keep the wizard's machine.
+  SimulatedTruth* simulatedTruth() const { return simTruth_; }
 
   // --- what the steps share ---
   MachineProfile nominal;                     // the profile the pattern was made for
@@ -63,9 +69,11 @@ class CalibrationWizard : public QWizard {
   PlannedJob job;                             // the pattern as planned
   std::string gcode;                          // and as G-code
   bool simulated = true;                      // the simulated sheet stands in for the machine
-  Geometry builtFrom;                         // the profile's geometry when the wizard opened
+  Geometry builtFrom;                         // what the simulated machine's amounts are measured from
   TrueMachine truth;                          // what the simulated machine really is
   std::vector<TableMark> measured;            // the measure step's table, checked
+  std::vector<DistanceRow> distances;         // or its distances, checked
+  bool useDistances = false;                  // the fit uses the distances, not the table
   std::optional<fivebar::calibration::CalibrationFit> fit;
   std::optional<BacklashEstimate> backlash;
   std::optional<MachineProfile> calibrated;   // the nominal profile with the fit applied
@@ -80,16 +88,19 @@ class CalibrationWizard : public QWizard {
   FitPage* fitPage() const { return fitPage_; }
   ApplyPage* applyPage() const { return applyPage_; }
   VerifyPage* verifyPage() const { return verifyPage_; }
+  AccuracyPage* accuracyPage() const { return accuracyPage_; }
 
  private:
   StudioDocument& doc_;
   MachineSession* session_;
+  SimulatedTruth* simTruth_ = nullptr;
   PatternPage* patternPage_ = nullptr;
   DrawPage* drawPage_ = nullptr;
   MeasurePage* measurePage_ = nullptr;
   FitPage* fitPage_ = nullptr;
   ApplyPage* applyPage_ = nullptr;
   VerifyPage* verifyPage_ = nullptr;
+  AccuracyPage* accuracyPage_ = nullptr;
   SheetLayer* sheetLayer_ = nullptr;
 };
 

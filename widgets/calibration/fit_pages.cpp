@@ -74,7 +74,7 @@ void FitPage::initializePage() {
   std::map<int, Vec2> byId;
   std::vector<Vec2> paper, nominal;
   std::vector<int> patternIndex;
-  for (std::size_t i = 0; i < w_.measured.size(); ++i) {
+  for (std::size_t i = 0; i < (w_.useDistances ? 0 : w_.measured.size()); ++i) {
     const TableMark& t = w_.measured[i];
     if (!t.paperMm) continue;
     byId[t.id] = *t.paperMm;
@@ -85,7 +85,20 @@ void FitPage::initializePage() {
     nominal.push_back(m.nominalMm);
     patternIndex.push_back(static_cast<int>(i));
   }
-  auto fit = fivebar::calibration::fitMarks(w_.nominal, marks);
+  fivebar::calibration::CalibrationFit fit;
+  if (w_.useDistances) {
+    std::vector<fivebar::calibration::MarkPose> poses;
+    for (const PatternMark& m : w_.pattern->marks)
+      if (m.kind == MarkKind::Grid) poses.push_back({std::to_string(m.id), m.q, 0});
+    std::vector<fivebar::calibration::DistanceMeasurement> distances;
+    for (std::size_t k = 0; k < w_.distances.size(); ++k) {
+      const DistanceRow& d = w_.distances[k];
+      distances.push_back({std::to_string(d.idA), std::to_string(d.idB), d.distanceMm, static_cast<int>(k) + 1});
+    }
+    fit = fivebar::calibration::fitDistances(w_.nominal, poses, distances);
+  } else {
+    fit = fivebar::calibration::fitMarks(w_.nominal, marks);
+  }
   if (!fit.ok()) {
     summary_->setText(tr("<span style='color:#b00000'><b>The fit failed:</b> %1</span><br>Go back, "
                          "check the table, or measure more marks.")
@@ -99,7 +112,10 @@ void FitPage::initializePage() {
   MachineProfile calibrated = fivebar::calibration::calibratedProfile(
       w_.nominal, fit, QDateTime::currentDateTimeUtc().toString(Qt::ISODate).toStdString());
   QString backlashText;
-  if (w_.pattern) {
+  if (w_.useDistances) {
+    backlashText = tr("Backlash is not measured from distances (it needs the positions of the "
+                      "backlash rows' marks); the profile's backlash is kept.");
+  } else if (w_.pattern) {
     BacklashEstimate b = estimateBacklash(w_.pattern->marks, byId);
     if (b.ok()) {
       calibrated.calibration->backlashRad1 = std::max(0.0, b.play.motor1Rad);
@@ -117,22 +133,29 @@ void FitPage::initializePage() {
 
   QString outliers = fit.outlierIds.empty()
                          ? tr("No mark looks mis-measured.")
-                         : tr("<span style='color:#b00000'>Left out as mis-measured: mark %1. "
-                              "Check it on the sheet.</span>")
+                         : (w_.useDistances ? tr("<span style='color:#b00000'>Left out as mis-measured: "
+                                                 "distance %1 (marks A-B). Measure it again.</span>")
+                                            : tr("<span style='color:#b00000'>Left out as mis-measured: mark %1. "
+                                                 "Check it on the sheet.</span>"))
                                .arg(QString::fromStdString([&] {
                                  std::string s;
                                  for (const auto& id : fit.outlierIds) s += (s.empty() ? "" : ", ") + id;
                                  return s;
                                }()));
-  summary_->setText(
-      tr("<b>Error before: %1 mm RMS</b> (largest %2 mm) &rarr; <b>after: %3 mm RMS</b> (largest %4 mm) "
-         "over %5 marks.<br>Held-out marks (%6): %7 mm before &rarr; %8 mm after.<br>%9<br>%10<br>"
-         "<small>Condition number %11 (below 10000 is fine).</small>")
+  const QString errors =
+      (w_.useDistances
+           ? tr("<b>Distance error before: %1 mm RMS</b> (largest %2 mm) &rarr; <b>after: %3 mm RMS</b> "
+                "(largest %4 mm) over %5 distances.")
+           : tr("<b>Error before: %1 mm RMS</b> (largest %2 mm) &rarr; <b>after: %3 mm RMS</b> (largest %4 mm) "
+                "over %5 marks."))
           .arg(mm(fit.beforeRmsMm), mm(fit.beforeMaxMm), mm(fit.afterRmsMm, 3), mm(fit.afterMaxMm, 3))
-          .arg(fit.used)
-          .arg(fit.heldOut)
-          .arg(mm(fit.heldOutBeforeRmsMm), mm(fit.heldOutRmsMm, 3), outliers, backlashText)
-          .arg(fit.conditionNumber, 0, 'f', 0));
+          .arg(fit.used);
+  summary_->setText(errors +
+                    tr("<br>Held-out measurements (%1): %2 mm before &rarr; %3 mm after.<br>%4<br>%5<br>"
+                       "<small>Condition number %6 (below 10000 is fine).</small>")
+                        .arg(fit.heldOut)
+                        .arg(mm(fit.heldOutBeforeRmsMm), mm(fit.heldOutRmsMm, 3), outliers, backlashText)
+                        .arg(fit.conditionNumber, 0, 'f', 0));
 
   parameters_->setRowCount(0);
   for (const auto& e : fit.estimates) {
@@ -245,7 +268,7 @@ VerifyPage::VerifyPage(CalibrationWizard& wizard) : w_(wizard) {
   left->addWidget(explanation(
       tr("Draw the pattern once more, now planned with the calibrated profile, on a fresh sheet. "
          "Its marks should land where they were meant, and the accuracy lines should be straight "
-         "and 40 mm long. Measure it again in this wizard if you want numbers.")));
+         "and 40 mm long: <b>Next</b> measures the lines with a ruler for a before/after figure.")));
   send_ = new QPushButton(tr("Draw on the connected machine"));
   auto* exportButton = new QPushButton(tr("Export G-code..."));
   auto* buttons = new QHBoxLayout;
@@ -311,7 +334,7 @@ void VerifyPage::initializePage() {
   if (pattern_)
     for (const Stroke& s : pattern_->strokes) plan.push_back(s.points);
   std::vector<std::vector<Vec2>> trace;
-  if (w_.simulated && !job_.moves.empty()) trace = trueTrace(job_, profile, w_.truth);
+  if (w_.simulated && !gcode_.empty()) trace = simulatedTrace(gcode_, profile, w_.truth);
   preview_->setPlan(plan);
   preview_->setTrueTrace(trace);
   w_.showOnCanvas(plan, trace);

@@ -10,6 +10,7 @@
 #include <QPushButton>
 #include <QSaveFile>
 #include <QTableWidget>
+#include <QTabWidget>
 #include <QVBoxLayout>
 #include <map>
 
@@ -17,6 +18,7 @@
 #include "core/calibration/rigid_fit.hpp"
 #include "core/calibration/scan/scan.hpp"
 #include "core/kinematics/units.hpp"
+#include "widgets/calibration/distances_box.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
 
 namespace fivebar::widgets::calibration {
@@ -50,7 +52,16 @@ MeasurePage::MeasurePage(CalibrationWizard& wizard) : w_(wizard) {
          "Any corner of the sheet can be the origin, and y may point up or down: the fit finds how "
          "the sheet lay. The mark you are typing is circled on the picture. Leave a row empty if "
          "a mark cannot be read; a mis-measured mark is found and named by the fit. With a "
-         "scanner, import a scan instead: the marks are found and numbered for you.")));
+         "scanner, import a scan instead: the marks are found and numbered for you. With a ruler "
+         "alone, measure distances between marks in the second tab.")));
+  // Two forms: coordinates (typed, loaded or from a scan) and distances (a ruler alone).
+  tabs_ = new QTabWidget;
+  auto* coordinates = new QWidget;
+  auto* coordinatesLayout = new QVBoxLayout(coordinates);
+  distances_ = new DistancesBox;
+  tabs_->addTab(coordinates, tr("Coordinates (x, y)"));
+  tabs_->addTab(distances_, tr("Distances between marks"));
+  left->addWidget(tabs_, 1);
   table_ = new QTableWidget(0, kColumns);
   table_->setHorizontalHeaderLabels({tr("Mark"), tr("Kind"), QStringLiteral("\u03b8\u2081 (\u00b0)"),
                                      QStringLiteral("\u03b8\u2082 (\u00b0)"),
@@ -58,10 +69,10 @@ MeasurePage::MeasurePage(CalibrationWizard& wizard) : w_(wizard) {
   table_->verticalHeader()->setVisible(false);
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   table_->horizontalHeader()->setStretchLastSection(true);
-  left->addWidget(table_, 1);
+  coordinatesLayout->addWidget(table_, 1);
   problem_ = explanation(QString());
   problem_->setStyleSheet(QStringLiteral("color:#b00000"));
-  left->addWidget(problem_);
+  coordinatesLayout->addWidget(problem_);
 
   auto* sim = new QHBoxLayout;
   fromSheet_ = new QPushButton(tr("Simulation: measure the simulated sheet"));
@@ -76,7 +87,7 @@ MeasurePage::MeasurePage(CalibrationWizard& wizard) : w_(wizard) {
   noise_->setSuffix(tr(" mm"));
   sim->addWidget(fromSheet_);
   sim->addWidget(noise_);
-  left->addLayout(sim);
+  coordinatesLayout->addLayout(sim);
   auto* scan = new QHBoxLayout;
   auto* scanButton = new QPushButton(tr("Import a scan..."));
   scanButton->setToolTip(tr("A scan or photo taken straight from above (PNG or JPEG): the marks are "
@@ -90,14 +101,14 @@ MeasurePage::MeasurePage(CalibrationWizard& wizard) : w_(wizard) {
   scan->addWidget(scanButton);
   scan->addWidget(dpi_);
   scan->addStretch(1);
-  left->addLayout(scan);
+  coordinatesLayout->addLayout(scan);
   auto* files = new QHBoxLayout;
   auto* load = new QPushButton(tr("Load MEASURED.csv..."));
   auto* save = new QPushButton(tr("Save MEASURED.csv..."));
   files->addWidget(load);
   files->addWidget(save);
   files->addStretch(1);
-  left->addLayout(files);
+  coordinatesLayout->addLayout(files);
   preview_ = new CalibrationPreview;
   layout->addLayout(left, 3);
   layout->addWidget(preview_, 3);
@@ -109,6 +120,14 @@ MeasurePage::MeasurePage(CalibrationWizard& wizard) : w_(wizard) {
     showMeasured();
   });
   connect(fromSheet_, &QPushButton::clicked, this, &MeasurePage::fillFromSimulatedSheet);
+  connect(distances_, &DistancesBox::currentMark, this, [this](int id) {
+    int index = -1;
+    if (w_.pattern)
+      for (std::size_t i = 0; i < w_.pattern->marks.size(); ++i)
+        if (w_.pattern->marks[i].id == id) index = static_cast<int>(i);
+    preview_->setHighlighted(index);
+  });
+  connect(tabs_, &QTabWidget::currentChanged, this, [this] { preview_->setMeasured({}); showMeasured(); });
   connect(scanButton, &QPushButton::clicked, this, [this] {
     const QString path = QFileDialog::getOpenFileName(this, tr("Import a scan of the sheet"), QString(),
                                                       tr("Images (*.png *.jpg *.jpeg *.tif *.tiff *.bmp)"));
@@ -132,6 +151,13 @@ MeasurePage::MeasurePage(CalibrationWizard& wizard) : w_(wizard) {
 void MeasurePage::initializePage() {
   fromSheet_->setEnabled(w_.simulated);
   noise_->setEnabled(w_.simulated);
+  distances_->setPattern(w_.pattern ? &*w_.pattern : nullptr);
+  if (w_.simulated && w_.pattern)
+    distances_->setSimulatedSource([this](double noiseMm, unsigned seed) {
+      return measureSimulatedDistances(*w_.pattern, w_.nominal, w_.truth, noiseMm, seed);
+    });
+  else
+    distances_->setSimulatedSource({});
   if (!w_.pattern) return;
   // Keep what was typed when the pattern is the same (Back and Next again).
   if (table_->rowCount() == static_cast<int>(w_.pattern->marks.size())) return;
@@ -209,6 +235,7 @@ bool MeasurePage::readTable(std::vector<TableMark>* out, QString* error) const {
 }
 
 void MeasurePage::showMeasured() {
+  if (tabs_->currentWidget() == distances_) return;  // distances place nothing on the sheet
   std::vector<TableMark> marks;
   QString error;
   if (!readTable(&marks, &error)) {
@@ -235,6 +262,23 @@ void MeasurePage::showMeasured() {
 }
 
 bool MeasurePage::validatePage() {
+  w_.useDistances = tabs_->currentWidget() == distances_;
+  if (w_.useDistances) {
+    std::vector<DistanceRow> rows;
+    QString error;
+    if (!distances_->read(&rows, &error)) {
+      distances_->showProblem(error, true);
+      return false;
+    }
+    if (static_cast<int>(rows.size()) < kMinDistances) {
+      distances_->showProblem(tr("Only %1 distances are measured; measure at least %2, about four "
+                                 "for each mark (the fit finds 5 lengths and 2 motor zeros).")
+                                  .arg(rows.size()).arg(kMinDistances), true);
+      return false;
+    }
+    w_.distances = rows;
+    return true;
+  }
   std::vector<TableMark> marks;
   QString error;
   if (!readTable(&marks, &error)) {

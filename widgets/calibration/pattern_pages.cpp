@@ -4,7 +4,6 @@
 #include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFormLayout>
-#include <QGridLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -66,7 +65,8 @@ PatternPage::PatternPage(CalibrationWizard& wizard) : w_(wizard) {
          "motor zeros.<br><br><b>Calibration marks</b>: numbered dots in rings spread over the "
          "whole working area, plus rows that show the slack (backlash) of each motor. Use these to "
          "calibrate.<br><b>Accuracy pattern</b> (Hoang): ten parallel lines, 40 mm long and 10 mm "
-         "apart, to judge straightness and length before and after; nothing to measure.")));
+         "apart, to judge straightness and length before and after: you measure each line's length "
+         "and straightness with a ruler in the wizard's last step.")));
   marks_ = new QRadioButton(tr("Calibration marks"));
   accuracy_ = new QRadioButton(tr("Accuracy pattern only (10 lines)"));
   marks_->setChecked(true);
@@ -152,35 +152,17 @@ DrawPage::DrawPage(CalibrationWizard& wizard) : w_(wizard) {
   simulate_->setChecked(true);
   boxLayout->addWidget(simulate_);
   boxLayout->addWidget(explanation(
-      tr("The simulated machine differs by these amounts from the profile as it was when this wizard opened, as a real one would. "
-         "The picture shows what its pen really draws (orange) beside the plan. The built-in simulated "
-         "machine of the Machine panel takes these amounts the next time it connects.")));
-  truthBox_ = new QWidget;
-  auto* grid = new QGridLayout(truthBox_);
-  grid->setContentsMargins(0, 0, 0, 0);
-  struct F { QString label; double value; double range; QString suffix; };
-  const std::vector<F> fields{
-      {tr("a1 longer by"), 0.4, 5.0, tr(" mm")},   {tr("b1 longer by"), -0.3, 5.0, tr(" mm")},
-      {tr("a2 longer by"), 0.5, 5.0, tr(" mm")},   {tr("b2 longer by"), 0.2, 5.0, tr(" mm")},
-      {tr("motors farther apart by"), -0.4, 5.0, tr(" mm")},
-      {tr("motor 1 zero off by"), 1.0, 5.0, tr(" \u00b0")},
-      {tr("motor 2 zero off by"), -0.8, 5.0, tr(" \u00b0")},
-      {tr("motor 1 backlash"), 0.3, 2.0, tr(" \u00b0")},
-      {tr("motor 2 backlash"), 0.2, 2.0, tr(" \u00b0")}};
-  for (std::size_t i = 0; i < fields.size(); ++i) {
-    auto* spin = new QDoubleSpinBox;
-    spin->setDecimals(2);
-    spin->setSingleStep(0.1);
-    spin->setRange(i >= 7 ? 0.0 : -fields[i].range, fields[i].range);
-    spin->setValue(fields[i].value);
-    spin->setSuffix(fields[i].suffix);
-    const int row = static_cast<int>(i % 5), col = static_cast<int>(i / 5) * 2;
-    grid->addWidget(new QLabel(fields[i].label), row, col);
-    grid->addWidget(spin, row, col + 1);
-    fields_.push_back(spin);
-    connect(spin, &QDoubleSpinBox::valueChanged, this, [this] { refresh(); });
-  }
-  boxLayout->addWidget(truthBox_);
+      tr("The simulated machine differs from the profile by these amounts, as a real one would. The "
+         "picture shows what its pen really draws (orange) beside the plan. The built-in simulated "
+         "machine (Machine panel) becomes this machine at once, also when it is connected. When the "
+         "wizard closes it goes back to the studio's setting (Machine &gt; Simulated machine...), "
+         "unless you keep it.")));
+  form_ = new TrueMachineForm;
+  boxLayout->addWidget(form_);
+  keep_ = new QCheckBox(tr("Keep this machine as the studio's simulated machine after the wizard"));
+  keep_->setToolTip(tr("Saved in Machine > Simulated machine...; the status bar shows it while it is imperfect"));
+  boxLayout->addWidget(keep_);
+  connect(form_, &TrueMachineForm::edited, this, [this] { refresh(); });
   left->addWidget(box);
   left->addStretch(1);
   preview_ = new CalibrationPreview;
@@ -238,38 +220,32 @@ void DrawPage::initializePage() {
   send_->setToolTip(connected ? tr("Streams the pattern with the same checks as the Run panel")
                               : tr("Connect a machine or the simulated machine in the Machine panel first"));
   if (w_.pattern) showPattern(*preview_, *w_.pattern);
+  if (!formFilled_) {
+    // The studio's imperfect machine when there is one, else an example of a maker's machine.
+    SimulatedTruth* studio = w_.simulatedTruth();
+    form_->setAmounts(studio && studio->active() ? studio->truth() : TrueMachineForm::example());
+    formFilled_ = true;
+  }
   refresh();
 }
 
-int DrawPage::nextId() const {
-  return w_.patternKind == PatternKind::AccuracyOnly ? -1 : CalibrationWizard::kMeasurePage;
-}
+QDoubleSpinBox* DrawPage::trueField(int index) const { return form_->field(index); }
 
-void DrawPage::readTruth() {
-  TrueMachine t;
-  t.builtFrom = w_.builtFrom;
-  t.da1Mm = fields_[0]->value();
-  t.db1Mm = fields_[1]->value();
-  t.da2Mm = fields_[2]->value();
-  t.db2Mm = fields_[3]->value();
-  t.dwMm = fields_[4]->value();
-  t.zeroOffsetRad1 = radFromDeg(fields_[5]->value());
-  t.zeroOffsetRad2 = radFromDeg(fields_[6]->value());
-  t.play.motor1Rad = radFromDeg(fields_[7]->value());
-  t.play.motor2Rad = radFromDeg(fields_[8]->value());
-  w_.truth = t;
+int DrawPage::nextId() const {
+  return w_.patternKind == PatternKind::AccuracyOnly ? CalibrationWizard::kAccuracyPage
+                                                   : CalibrationWizard::kMeasurePage;
 }
 
 void DrawPage::refresh() {
   w_.simulated = simulate_->isChecked();
-  truthBox_->setEnabled(w_.simulated);
-  readTruth();
-  // The built-in simulated machine becomes this imperfect machine (from its next connect).
-  if (w_.session())
-    w_.session()->setSimulatedTrueMachine(
-        w_.simulated ? std::optional<MachineProfile>(trueMachineProfile(w_.nominal, w_.truth)) : std::nullopt);
+  form_->setEnabled(w_.simulated);
+  keep_->setEnabled(w_.simulated && w_.simulatedTruth() != nullptr);
+  w_.truth = form_->amounts();
+  w_.truth.builtFrom = w_.builtFrom;
+  // The built-in simulated machine is this imperfect machine from now on (until the wizard closes).
+  if (SimulatedTruth* studio = w_.simulatedTruth()) studio->setTruth(w_.simulated ? w_.truth : TrueMachine{}, false);
   std::vector<std::vector<Vec2>> trace;
-  if (w_.simulated && !w_.job.moves.empty()) trace = trueTrace(w_.job, w_.nominal, w_.truth);
+  if (w_.simulated && !w_.gcode.empty()) trace = simulatedTrace(w_.gcode, w_.nominal, w_.truth);
   preview_->setTrueTrace(trace);
   if (w_.pattern) w_.showOnCanvas(planStrokes(*w_.pattern), trace);
 }

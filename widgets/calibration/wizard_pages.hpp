@@ -6,6 +6,7 @@
 
 #include "widgets/calibration/calibration_preview.hpp"
 #include "widgets/calibration/calibration_wizard.hpp"
+#include "widgets/calibration/simulated_machine.hpp"
 
 class QCheckBox;
 class QDoubleSpinBox;
@@ -14,8 +15,11 @@ class QPushButton;
 class QRadioButton;
 class QSpinBox;
 class QTableWidget;
+class QTabWidget;
 
 namespace fivebar::widgets::calibration {
+
+class DistancesBox;
 
 // A label with word wrap for the explanations.
 QLabel* explanation(const QString& text, QWidget* parent = nullptr);
@@ -48,20 +52,23 @@ class DrawPage : public QWizardPage {
   void initializePage() override;
   int nextId() const override;
   QCheckBox* simulateChoice() const { return simulate_; }
+  // Keep the wizard's imperfect machine as the studio's simulated machine after the wizard closes.
+  QCheckBox* keepChoice() const { return keep_; }
+  TrueMachineForm* truthForm() const { return form_; }
   // The true machine's fields: da1, db1, da2, db2, dw (mm), zero offsets (deg), backlash (deg).
-  QDoubleSpinBox* trueField(int index) const { return fields_.at(index); }
+  QDoubleSpinBox* trueField(int index) const;
   QPushButton* sendButton() const { return send_; }
   QLabel* status() const { return status_; }
   CalibrationPreview* preview() const { return preview_; }
   bool exportGcode(const QString& path, QString* error) const;
 
  private:
-  void readTruth();
   void refresh();
   CalibrationWizard& w_;
   QCheckBox* simulate_ = nullptr;
-  std::vector<QDoubleSpinBox*> fields_;
-  QWidget* truthBox_ = nullptr;
+  QCheckBox* keep_ = nullptr;
+  TrueMachineForm* form_ = nullptr;
+  bool formFilled_ = false;
   QPushButton* send_ = nullptr;
   QLabel* status_ = nullptr;
   CalibrationPreview* preview_ = nullptr;
@@ -89,11 +96,17 @@ class MeasurePage : public QWizardPage {
   bool importScan(const QString& path, double dpi, QString* message);
   QDoubleSpinBox* dpi() const { return dpi_; }
   bool saveCsv(const QString& path, QString* error) const;
+  // The two forms: coordinates (tab 0) and distances (tab 1, DistancesBox).
+  QTabWidget* tabs() const { return tabs_; }
+  DistancesBox* distances() const { return distances_; }
+  static constexpr int kMinDistances = 12;
 
  private:
   void onCurrentCell(int row);
   void showMeasured();
   CalibrationWizard& w_;
+  QTabWidget* tabs_ = nullptr;
+  DistancesBox* distances_ = nullptr;
   QTableWidget* table_ = nullptr;
   QPushButton* fromSheet_ = nullptr;
   QDoubleSpinBox* noise_ = nullptr;
@@ -159,6 +172,39 @@ class VerifyPage : public QWizardPage {
   PlannedJob job_;
   std::string gcode_;
   ShapeFigures before_, now_;
+};
+
+// Hoang's accuracy lines measured with a ruler (or on the simulated sheet): each line's length and
+// straightness, drawn before calibration and after it (the verification sheet), and the figures.
+class AccuracyPage : public QWizardPage {
+  Q_OBJECT
+ public:
+  explicit AccuracyPage(CalibrationWizard& wizard);
+  void initializePage() override;
+  int nextId() const override { return -1; }
+  enum Column { kLengthBefore, kStraightBefore, kLengthAfter, kStraightAfter, kColumns };
+  QTableWidget* table() const { return table_; }
+  QLabel* figures() const { return figures_; }
+  QPushButton* simulatedButton() const { return fromSheet_; }
+  CalibrationPreview* preview() const { return preview_; }
+  // Fills the table from the simulated sheets (before: the profile the wizard started from;
+  // after: the profile in use, when the calibration is applied).
+  void fillFromSimulatedSheet();
+  // The columns read back; false with *error naming the line and the column of a bad cell.
+  bool readColumns(bool after, std::vector<LineMeasure>* out, QString* error) const;
+  // Recomputes the figures from the table (called on every edit).
+  void updateFigures();
+  std::optional<AccuracySummary> before() const { return before_; }
+  std::optional<AccuracySummary> after() const { return after_; }
+
+ private:
+  CalibrationWizard& w_;
+  QTableWidget* table_ = nullptr;
+  QLabel* figures_ = nullptr;
+  QPushButton* fromSheet_ = nullptr;
+  CalibrationPreview* preview_ = nullptr;
+  std::optional<AccuracySummary> before_, after_;
+  bool filling_ = false;
 };
 
 }  // namespace fivebar::widgets::calibration

@@ -66,6 +66,7 @@ bool MachineSession::connectSimulated(double speedup, const sim::Fault& fault, Q
 
 void MachineSession::setSimulatedTrueMachine(std::optional<MachineProfile> trueMachine) {
   simTrueMachine_ = std::move(trueMachine);
+  if (simulated_) simulated_->machine().setTrueMachine(simTrueMachine_);
 }
 
 std::vector<std::vector<Vec2>> MachineSession::simulatedDrawnTrace() const {

@@ -69,7 +69,8 @@ class MachineSession : public QObject, private grbl::ProtocolListener {
   SimulatedTransport* simulatedTransport() const { return simulated_; }
   // The real machine the simulated motors drive (sim::SimConfig::trueMachine: its geometry and,
   // in its calibration section, the true zero offsets and backlash); nullopt: the document's
-  // profile itself. Applied the next time connectSimulated runs, not to a machine already open.
+  // profile itself. Applied at once to a simulated machine already open (SimMachine::
+  // setTrueMachine: the drawing so far stays) and to every later connectSimulated.
   void setSimulatedTrueMachine(std::optional<MachineProfile> trueMachine);
   const std::optional<MachineProfile>& simulatedTrueMachine() const { return simTrueMachine_; }
   // What the simulated machine's pen really drew (SimMachine::drawnTrace: one polyline per
