@@ -53,11 +53,8 @@ int main(int argc, char** argv) {
   fivebar::studio::MainWindow window(*fivebar::preset("maker-plotter"));
   window.resize(1500, 950);
   window.show();
-  QAction* action = window.findChild<QAction*>(QStringLiteral("calibrateAction"));
-  if (!action) return 1;
-  action->trigger();
-  using fivebar::widgets::calibration::CalibrationWizard;
-  auto* w = window.findChild<CalibrationWizard*>();
+  window.calibrateAction()->trigger();
+  auto* w = window.calibrationWizard();
   if (!w) return 1;
   w->resize(1060, 720);
   bool ok = grab(*w, out + QStringLiteral("/calibration-1-pattern") + suffix);

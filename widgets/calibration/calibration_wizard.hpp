@@ -22,9 +22,12 @@ namespace fivebar {
 class StreamSession;
 }
 
+namespace fivebar::session {
+class MachineSession;
+}
+
 namespace fivebar::widgets {
 class CanvasView;
-class MachineSession;
 }
 
 namespace fivebar::widgets::calibration {
@@ -43,10 +46,10 @@ class CalibrationWizard : public QWizard {
   enum PageId { kPatternPage, kDrawPage, kMeasurePage, kFitPage, kApplyPage, kVerifyPage };
 
   // `session` may be null (no machine side): drawing then means exporting the G-code.
-  CalibrationWizard(StudioDocument& doc, MachineSession* session, QWidget* parent = nullptr);
+  CalibrationWizard(StudioDocument& doc, session::MachineSession* session, QWidget* parent = nullptr);
   ~CalibrationWizard() override;
   // Machine > Calibrate...; the sheet is shown on `canvas` (may be null) while the wizard is open.
-  static QAction* createAction(StudioDocument& doc, MachineSession* session, CanvasView* canvas,
+  static QAction* createAction(StudioDocument& doc, session::MachineSession* session, CanvasView* canvas,
                                QWidget* parent);
   // Shows the sheet (plan and the simulated machine's true trace) on the studio's canvas.
   void attachCanvas(CanvasView* canvas);
@@ -54,7 +57,7 @@ class CalibrationWizard : public QWizard {
   SheetLayer* sheetLayer() const { return sheetLayer_; }
 
   StudioDocument& document() { return doc_; }
-  MachineSession* session() { return session_; }
+  session::MachineSession* session() { return session_; }
 
   // --- what the steps share ---
   MachineProfile nominal;                     // the profile the pattern was made for
@@ -83,7 +86,7 @@ class CalibrationWizard : public QWizard {
 
  private:
   StudioDocument& doc_;
-  MachineSession* session_;
+  session::MachineSession* session_;
   PatternPage* patternPage_ = nullptr;
   DrawPage* drawPage_ = nullptr;
   MeasurePage* measurePage_ = nullptr;
@@ -98,7 +101,7 @@ class CalibrationWizard : public QWizard {
 class PatternSender : public QObject {
   Q_OBJECT
  public:
-  PatternSender(MachineSession& session, QObject* parent = nullptr);
+  PatternSender(session::MachineSession& session, QObject* parent = nullptr);
   ~PatternSender() override;
   bool send(const std::string& gcode, const MachineProfile& profile, const QString& path,
             QString* error);
@@ -107,7 +110,7 @@ class PatternSender : public QObject {
   void finished(bool ok, const QString& message);
 
  private:
-  MachineSession& session_;
+  session::MachineSession& session_;
   std::unique_ptr<StreamSession> stream_;
   bool running_ = false;
 };
