@@ -147,6 +147,26 @@ JogPlan planMotorJog(const MachineProfile& p, const JointAngles& currentCommande
   return plan;
 }
 
+std::vector<Vec2> penPathMm(const MachineProfile& p, const JointAngles& currentCommanded, const JogPlan& plan,
+                            int samplesPerLeg) {
+  std::vector<Vec2> path;
+  JointAngles from = kinematicFromCommanded(p.calibration, currentCommanded);
+  const FkResult start = forward(p.geometry, from, p.assembly);
+  if (!start.ok()) return path;
+  path.push_back(start.p);
+  for (const JointAngles& commanded : plan.targets) {
+    const JointAngles to = kinematicFromCommanded(p.calibration, commanded);
+    for (int i = 1; i <= samplesPerLeg; ++i) {
+      const double t = double(i) / samplesPerLeg;
+      const FkResult fk = forward(p.geometry, {from.theta1 + (to.theta1 - from.theta1) * t,
+                                               from.theta2 + (to.theta2 - from.theta2) * t}, p.assembly);
+      if (fk.ok()) path.push_back(fk.p);
+    }
+    from = to;
+  }
+  return path;
+}
+
 JogPlan planGoTo(const MachineProfile& p, const JointAngles& currentCommanded, const Vec2& targetMm) {
   JogPlan plan;
   const JointAngles current = kinematicFromCommanded(p.calibration, currentCommanded);

@@ -54,6 +54,12 @@ JogPlan planMotorJog(const MachineProfile& profile, const JointAngles& current, 
 // Pen-up move to an XY point (machine frame, mm) in the current working mode by a safe travel.
 JogPlan planGoTo(const MachineProfile& profile, const JointAngles& current, const Vec2& targetMm);
 
+// The pen's path along a plan's joint-linear motion legs (machine frame, mm; first point = the
+// pose at `current`), samplesPerLeg FK samples per leg: the canvas preview of a jog or go-to.
+// Empty when `current` does not close the linkage.
+std::vector<Vec2> penPathMm(const MachineProfile& profile, const JointAngles& current, const JogPlan& plan,
+                            int samplesPerLeg = 24);
+
 // "$H" on machines with homing switches; otherwise the reference-pose command that declares the
 // current pose to be profile.homeAngles: "G10L20P0X<theta1>Y<theta2>" (deg).
 std::string homeCommand(const MachineProfile& profile);

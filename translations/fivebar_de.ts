@@ -1183,7 +1183,7 @@ Planen und Zeichnen können sehr lange dauern. Trotzdem ganz importieren?</trans
     </message>
 </context>
 <context>
-    <name>fivebar::widgets::JogController</name>
+    <name>fivebar::session::JogController</name>
     <message>
         <source>Jog refused: the machine is not connected, not idle, or a job is running.</source>
         <translation>Verfahren abgelehnt: Die Maschine ist nicht verbunden, nicht bereit, oder ein Auftrag läuft.</translation>
@@ -1615,7 +1615,7 @@ Bestätigen Sie nur, wenn die Arme jetzt genau in dieser Stellung stehen. Stehen
     </message>
 </context>
 <context>
-    <name>fivebar::widgets::MachineSession</name>
+    <name>fivebar::session::MachineSession</name>
     <message>
         <source>Cannot open %1.</source>
         <translation>%1 kann nicht geöffnet werden.</translation>
@@ -1846,7 +1846,7 @@ Bestätigen Sie nur, wenn die Arme jetzt genau in dieser Stellung stehen. Stehen
     </message>
 </context>
 <context>
-    <name>fivebar::widgets::MachineUi</name>
+    <name>fivebar::widgets::MachinePanels</name>
     <message>
         <source>Machine</source>
         <translation>Maschine</translation>
@@ -2402,7 +2402,11 @@ Anhalten, stoppen und beenden: Die Maschine hält sauber an und der Fortschritt 
     </message>
 </context>
 <context>
-    <name>fivebar::widgets::RunController</name>
+    <name>fivebar::session::RunController</name>
+    <message>
+        <source>Not started: the board's soft limits would stop this job with an alarm (ALARM:2): %1. The board checks its travel ($130, $131) in machine coordinates, which the reference pose shifted against the drawing's. Home the machine, or make the board's settings match the profile (Machine settings...), then start again.</source>
+        <translation>Nicht gestartet: Die Software-Endlagen der Steuerung würden diesen Auftrag mit einem Alarm (ALARM:2) anhalten: %1. Die Steuerung prüft ihren Verfahrweg ($130, $131) in Maschinenkoordinaten, und die Referenzpose hat diese gegenüber denen der Zeichnung verschoben. Die Maschine referenzieren (Referenzfahrt) oder die Einstellungen der Steuerung an das Profil angleichen (Maschineneinstellungen...), dann erneut starten.</translation>
+    </message>
     <message>
         <source>The connection was closed during the run. The progress is saved beside the job: reconnect and resume.</source>
         <translation>Die Verbindung wurde während des Auftrags getrennt. Der Fortschritt ist neben dem Auftrag gespeichert: Verbinden Sie erneut und setzen Sie fort.</translation>
@@ -2596,7 +2600,7 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
     </message>
 </context>
 <context>
-    <name>fivebar::widgets::SettingsAdvice</name>
+    <name>fivebar::session::SettingsAdvice</name>
     <message>
         <source>soft limits are on, but this machine has no homing switches: the board measures its travel from where it was switched on, not from the reference pose, and stops the job with ALARM:2 when a move leaves that range.</source>
         <translation>Software-Endlagen sind an, aber diese Maschine hat keine Referenzschalter: Die Steuerung misst ihren Verfahrweg ab der Einschaltstellung, nicht ab der Referenzstellung, und stoppt den Auftrag mit ALARM:2, sobald eine Bewegung diesen Bereich verlässt.</translation>

@@ -1183,7 +1183,7 @@ Planificarlo y plotearlo puede tardar mucho. ¿Importarlo entero de todos modos?
     </message>
 </context>
 <context>
-    <name>fivebar::widgets::JogController</name>
+    <name>fivebar::session::JogController</name>
     <message>
         <source>Jog refused: the machine is not connected, not idle, or a job is running.</source>
         <translation>Movimiento rechazado: la máquina no está conectada, no está en reposo o hay un trabajo en curso.</translation>
@@ -1615,7 +1615,7 @@ Confirme solo si los brazos están ahora exactamente en esa pose. Si están en o
     </message>
 </context>
 <context>
-    <name>fivebar::widgets::MachineSession</name>
+    <name>fivebar::session::MachineSession</name>
     <message>
         <source>Cannot open %1.</source>
         <translation>No se puede abrir %1.</translation>
@@ -1846,7 +1846,7 @@ Confirme solo si los brazos están ahora exactamente en esa pose. Si están en o
     </message>
 </context>
 <context>
-    <name>fivebar::widgets::MachineUi</name>
+    <name>fivebar::widgets::MachinePanels</name>
     <message>
         <source>Machine</source>
         <translation>Máquina</translation>
@@ -2402,7 +2402,11 @@ Pausar, detener y salir: la máquina se detiene limpiamente y el progreso se gua
     </message>
 </context>
 <context>
-    <name>fivebar::widgets::RunController</name>
+    <name>fivebar::session::RunController</name>
+    <message>
+        <source>Not started: the board's soft limits would stop this job with an alarm (ALARM:2): %1. The board checks its travel ($130, $131) in machine coordinates, which the reference pose shifted against the drawing's. Home the machine, or make the board's settings match the profile (Machine settings...), then start again.</source>
+        <translation>No iniciado: los límites por software de la placa detendrían este trabajo con una alarma (ALARM:2): %1. La placa comprueba su recorrido ($130, $131) en coordenadas de máquina, que la pose de referencia desplazó respecto a las del dibujo. Haga el homing de la máquina o ajuste la configuración de la placa al perfil (Ajustes de la máquina…) y vuelva a iniciar.</translation>
+    </message>
     <message>
         <source>The connection was closed during the run. The progress is saved beside the job: reconnect and resume.</source>
         <translation>La conexión se cerró durante la ejecución. El progreso se guarda junto al trabajo: vuelve a conectar y reanuda.</translation>
@@ -2596,7 +2600,7 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     </message>
 </context>
 <context>
-    <name>fivebar::widgets::SettingsAdvice</name>
+    <name>fivebar::session::SettingsAdvice</name>
     <message>
         <source>soft limits are on, but this machine has no homing switches: the board measures its travel from where it was switched on, not from the reference pose, and stops the job with ALARM:2 when a move leaves that range.</source>
         <translation>los límites por software están activados, pero esta máquina no tiene finales de carrera para homing: la placa mide su recorrido desde donde se encendió, no desde la pose de referencia, y detiene el trabajo con ALARM:2 cuando un movimiento sale de ese rango.</translation>

@@ -1183,7 +1183,7 @@ La planification et le traçage peuvent être très longs. L'importer quand mêm
     </message>
 </context>
 <context>
-    <name>fivebar::widgets::JogController</name>
+    <name>fivebar::session::JogController</name>
     <message>
         <source>Jog refused: the machine is not connected, not idle, or a job is running.</source>
         <translation>Déplacement refusé : la machine n'est pas connectée, pas au repos, ou une tâche est en cours.</translation>
@@ -1615,7 +1615,7 @@ Confirmez seulement si les bras sont exactement dans cette pose. S'ils sont aill
     </message>
 </context>
 <context>
-    <name>fivebar::widgets::MachineSession</name>
+    <name>fivebar::session::MachineSession</name>
     <message>
         <source>Cannot open %1.</source>
         <translation>Impossible d'ouvrir %1.</translation>
@@ -1846,7 +1846,7 @@ Confirmez seulement si les bras sont exactement dans cette pose. S'ils sont aill
     </message>
 </context>
 <context>
-    <name>fivebar::widgets::MachineUi</name>
+    <name>fivebar::widgets::MachinePanels</name>
     <message>
         <source>Machine</source>
         <translation>Machine</translation>
@@ -2402,7 +2402,11 @@ Pause, arrêter et quitter : la machine s'arrête proprement et la progression e
     </message>
 </context>
 <context>
-    <name>fivebar::widgets::RunController</name>
+    <name>fivebar::session::RunController</name>
+    <message>
+        <source>Not started: the board's soft limits would stop this job with an alarm (ALARM:2): %1. The board checks its travel ($130, $131) in machine coordinates, which the reference pose shifted against the drawing's. Home the machine, or make the board's settings match the profile (Machine settings...), then start again.</source>
+        <translation>Non démarré : les limites logicielles de la carte arrêteraient ce travail par une alarme (ALARM:2) : %1. La carte vérifie sa course ($130, $131) en coordonnées machine, que la pose de référence a décalées par rapport à celles du dessin. Faites la prise d'origine de la machine, ou alignez les réglages de la carte sur le profil (Réglages de la machine…), puis relancez.</translation>
+    </message>
     <message>
         <source>The connection was closed during the run. The progress is saved beside the job: reconnect and resume.</source>
         <translation>La connexion a été fermée pendant l'exécution. La progression est enregistrée à côté de la tâche : reconnectez et reprenez.</translation>
@@ -2596,7 +2600,7 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     </message>
 </context>
 <context>
-    <name>fivebar::widgets::SettingsAdvice</name>
+    <name>fivebar::session::SettingsAdvice</name>
     <message>
         <source>soft limits are on, but this machine has no homing switches: the board measures its travel from where it was switched on, not from the reference pose, and stops the job with ALARM:2 when a move leaves that range.</source>
         <translation>les limites logicielles sont actives, mais cette machine n'a pas de fins de course de homing : la carte mesure sa course depuis sa position à la mise sous tension, pas depuis la pose de référence, et arrête la tâche avec ALARM:2 quand un déplacement sort de cette plage.</translation>

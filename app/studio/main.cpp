@@ -21,7 +21,7 @@
 #include "app/studio/startup.hpp"
 #include "widgets/panels/fill_options_box.hpp"
 #include "widgets/document/import_controller.hpp"
-#include "widgets/machine/machine_ui.hpp"
+#include "session/machine_side.hpp"
 
 using fivebar::studio::MainWindow;
 

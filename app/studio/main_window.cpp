@@ -29,7 +29,9 @@
 #include "widgets/canvas/job_layer.hpp"
 #include "widgets/panels/layers_panel.hpp"
 #include "widgets/canvas/machine_layer.hpp"
-#include "widgets/machine/machine_ui.hpp"
+#include "session/machine_side.hpp"
+#include "widgets/machine/document_inputs.hpp"
+#include "widgets/machine/machine_panels.hpp"
 #include "widgets/panels/mode_panel.hpp"
 #include "widgets/panels/placement_panel.hpp"
 #include "widgets/canvas/placement_tool.hpp"
@@ -68,16 +70,20 @@ MainWindow::MainWindow(const MachineProfile& profile, QWidget* parent) : QMainWi
   createCanvas();
   createDocks();
   createMenus();
-  // The machine side (connection, jog, run, console, profile editor): widgets/machine/machine_ui.hpp.
-  auto* machineUi = machineUi_ = new MachineUi(*doc_, *preview_, *canvas_, *machineLayer_, this);
-  machineUi->addPanels([this](QWidget* panel, const QString& title, const QString& name,
-                              Qt::DockWidgetArea area) { return addMachinePanel(panel, title, name, area); });
+  // The machine side: the session layer (session/machine_side.hpp) over the document and its
+  // plan, and its panels (widgets/machine/machine_panels.hpp).
+  inputs_ = new DocumentInputs(*doc_, preview_, this);
+  machine_ = new session::MachineSide(*inputs_, this);
+  machinePanels_ = new MachinePanels(*machine_, *doc_, *canvas_, *machineLayer_, this);
+  machinePanels_->addPanels([this](QWidget* panel, const QString& title, const QString& name,
+                                   Qt::DockWidgetArea area) { return addMachinePanel(panel, title, name, area); });
   machineMenu_->addSeparator();
-  machineMenu_->addAction(machineUi->settingsAction());
+  machineMenu_->addAction(machinePanels_->settingsAction());
   machineMenu_->addAction(DesignDialog::createAction(*doc_, *canvas_, this));
-  machineMenu_->addAction(widgets::calibration::CalibrationWizard::createAction(*doc_, &machineUi->session(), canvas_, this));
+  calibrateAction_ = widgets::calibration::CalibrationWizard::createAction(*doc_, &machine_->session(), canvas_, this);
+  machineMenu_->addAction(calibrateAction_);
   // The simulated machine's true (imperfect) build: its menu entry, status badge and canvas trace.
-  widgets::calibration::installSimulatedMachine(*doc_, machineUi->session(), *canvas_, *machineMenu_,
+  widgets::calibration::installSimulatedMachine(*doc_, machine_->session(), *canvas_, *machineMenu_,
                                                 *statusBar(), this);
   cursorLabel_ = new QLabel(this);
   statusBar()->addPermanentWidget(cursorLabel_);
@@ -93,7 +99,7 @@ MainWindow::MainWindow(const MachineProfile& profile, QWidget* parent) : QMainWi
       updateTitle();
       fitView();
       preview_->replanNow();
-      if (auto* panel = findChild<PlacementPanel*>()) panel->setNote(message);
+      placementPanel_->setNote(message);
       if (!message.isEmpty()) statusBar()->showMessage(message, 10000);
     } else {
       statusBar()->showMessage(message, 10000);
@@ -112,6 +118,17 @@ MainWindow::MainWindow(const MachineProfile& profile, QWidget* parent) : QMainWi
 MainWindow::~MainWindow() {
   // The canvas keeps raw pointers to the layers and the tool: detach them before they go.
   canvas_->setTool(nullptr);
+}
+
+QDockWidget* MainWindow::dock(const QString& objectName) const {
+  for (QDockWidget* d : docks_)
+    if (d->objectName() == objectName) return d;
+  return nullptr;
+}
+
+widgets::calibration::CalibrationWizard* MainWindow::calibrationWizard() const {
+  // Created by the Calibrate action on first use (widgets/calibration/calibration_wizard.cpp).
+  return findChild<widgets::calibration::CalibrationWizard*>(QString(), Qt::FindDirectChildrenOnly);
 }
 
 void MainWindow::createCanvas() {
@@ -147,6 +164,7 @@ QDockWidget* MainWindow::addDock(QWidget* panel, const QString& title, const QSt
   scroll->setMinimumWidth(std::min(panel->sizeHint().width(), kSideDockWidthPx) + 16);
   dock->setWidget(scroll);
   addDockWidget(area, dock);
+  docks_.push_back(dock);
   return dock;
 }
 
@@ -165,7 +183,8 @@ QDockWidget* MainWindow::addMachinePanel(QWidget* panel, const QString& title,
 void MainWindow::createDocks() {
   auto* mode = addDock(new ModePanel(*doc_, *workspaceLayer_, *preview_, this),
                        tr("Workspace"), QStringLiteral("dockWorkspace"), Qt::LeftDockWidgetArea);
-  auto* placement = addDock(new PlacementPanel(*doc_, this), tr("Placement"),
+  placementPanel_ = new PlacementPanel(*doc_, this);
+  auto* placement = addDock(placementPanel_, tr("Placement"),
                             QStringLiteral("dockPlacement"), Qt::LeftDockWidgetArea);
   auto* layers = addDock(new LayersPanel(*doc_, this), tr("Layers"), QStringLiteral("dockLayers"),
                          Qt::LeftDockWidgetArea);
@@ -224,13 +243,9 @@ void MainWindow::createMenus() {
   edit->addAction(undo);
   edit->addAction(redo);
   edit->addSeparator();
-  QAction* fit = edit->addAction(tr("&Fit drawing to workspace"), this, [this] {
-    if (auto* panel = findChild<PlacementPanel*>()) panel->fitToWorkspace();
-  });
+  QAction* fit = edit->addAction(tr("&Fit drawing to workspace"), placementPanel_, &PlacementPanel::fitToWorkspace);
   fit->setShortcut(QKeySequence(tr("Ctrl+F")));
-  edit->addAction(tr("&Actual size (100 %)"), this, [this] {
-    if (auto* panel = findChild<PlacementPanel*>()) panel->actualSize();
-  })->setShortcut(QKeySequence(tr("Ctrl+1")));
+  edit->addAction(tr("&Actual size (100 %)"), placementPanel_, &PlacementPanel::actualSize)->setShortcut(QKeySequence(tr("Ctrl+1")));
 
   viewMenu_ = menuBar()->addMenu(tr("&View"));
   QAction* zoomIn = viewMenu_->addAction(tr("Zoom &in"), canvas_, &CanvasView::zoomIn);
@@ -241,9 +256,7 @@ void MainWindow::createMenus() {
   zoomFit->setShortcut(QKeySequence(tr("Ctrl+0")));
   new LanguageMenu(viewMenu_, this);
   viewMenu_->addSeparator();
-  for (QDockWidget* dock : findChildren<QDockWidget*>()) {
-    viewMenu_->addAction(dock->toggleViewAction());
-  }
+  for (QDockWidget* d : docks_) viewMenu_->addAction(d->toggleViewAction());
 
   QMenu* simulate = menuBar()->addMenu(tr("&Simulation"));
   QAction* play = simulate->addAction(tr("&Play / pause"), simulation_,
@@ -327,10 +340,10 @@ void MainWindow::restoreLayout() {
     // First start: the studio's own panels in front of their tab groups, docks wide enough
     // for their forms.
     for (const char* name : {"dockPlacement", "dockSimulation"}) {
-      if (auto* dock = findChild<QDockWidget*>(QLatin1String(name))) dock->raise();
+      if (auto* d = dock(QLatin1String(name))) d->raise();
     }
-    auto* left = findChild<QDockWidget*>(QStringLiteral("dockWorkspace"));
-    auto* right = findChild<QDockWidget*>(QStringLiteral("dockPreview"));
+    auto* left = dock(QStringLiteral("dockWorkspace"));
+    auto* right = dock(QStringLiteral("dockPreview"));
     if (left != nullptr && right != nullptr) {
       resizeDocks({left, right}, {kSideDockWidthPx, kSideDockWidthPx}, Qt::Horizontal);
     }
@@ -339,7 +352,7 @@ void MainWindow::restoreLayout() {
 
 void MainWindow::closeEvent(QCloseEvent* event) {
   // A running job first: quitting would cut the machine's stream mid-drawing.
-  if (!machineUi_->confirmClose() || !files_->maybeSave()) {
+  if (!machinePanels_->confirmClose() || !files_->maybeSave()) {
     event->ignore();
     return;
   }

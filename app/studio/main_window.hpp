@@ -1,25 +1,35 @@
 // The studio's main window: a composition root only. It creates the document, the controllers,
 // the canvas with its layers and tool, and the panels in dock widgets, wires them together, and
 // offers the menus and shortcuts. Dock layout and window geometry are remembered (QSettings).
-// Machine panels (connection, status, console, jog, run, profile editor) are added by
-// addMachinePanel(); the machine side drives the canvas pose through machineLayer().
+// The machine side is two parts composed here: session::MachineSide (session, run and jog
+// controllers; Qt Core only) and widgets::MachinePanels (its panels, docked by addMachinePanel()).
+// Everything a test or a screenshot needs has an accessor: nothing is looked up by findChild.
 #pragma once
 
 #include <QMainWindow>
+#include <QString>
+#include <vector>
 #include <memory>
 
 #include "core/machine/profile.hpp"
 
+class QAction;
 class QDockWidget;
 class QLabel;
 class QMenu;
+
+namespace fivebar::session {
+class MachineSide;
+}
 
 namespace fivebar::widgets {
 class CanvasView;
 class ImportController;
 class JobLayer;
+class DocumentInputs;
 class MachineLayer;
-class MachineUi;
+class MachinePanels;
+class PlacementPanel;
 class PlacementTool;
 class PreviewController;
 class SimulationController;
@@ -27,6 +37,9 @@ class StudioDocument;
 class WorkspaceCache;
 class WorkspaceLayer;
 class WorkspaceLegendLayer;
+namespace calibration {
+class CalibrationWizard;
+}
 }  // namespace fivebar::widgets
 
 namespace fivebar::studio {
@@ -49,8 +62,15 @@ class MainWindow : public QMainWindow {
   widgets::JobLayer& jobLayer() { return *jobLayer_; }
   widgets::WorkspaceLayer& workspaceLayer() { return *workspaceLayer_; }
   FileActions& files() { return *files_; }
-  // The machine side (session, run, panels).
-  widgets::MachineUi& machine() { return *machineUi_; }
+  // The machine side: session, run and jog controllers (Qt Core), and their panels.
+  session::MachineSide& machine() { return *machine_; }
+  widgets::MachinePanels& machinePanels() { return *machinePanels_; }
+  widgets::PlacementPanel& placementPanel() { return *placementPanel_; }
+  // A dock by its object name ("dockPlacement", "dockJog", ...); nullptr when there is none.
+  QDockWidget* dock(const QString& objectName) const;
+  // Machine > Calibrate..., and the wizard it opened (nullptr before the first use).
+  QAction* calibrateAction() const { return calibrateAction_; }
+  widgets::calibration::CalibrationWizard* calibrationWizard() const;
 
   // The machine side's place in the window: the panel goes into a dock (restored with the
   // others), its toggle into the Machine menu.
@@ -87,7 +107,12 @@ class MainWindow : public QMainWindow {
   widgets::MachineLayer* machineLayer_ = nullptr;
   widgets::PlacementTool* placementTool_ = nullptr;
   FileActions* files_ = nullptr;
-  widgets::MachineUi* machineUi_ = nullptr;
+  widgets::PlacementPanel* placementPanel_ = nullptr;
+  widgets::DocumentInputs* inputs_ = nullptr;
+  session::MachineSide* machine_ = nullptr;
+  widgets::MachinePanels* machinePanels_ = nullptr;
+  QAction* calibrateAction_ = nullptr;
+  std::vector<QDockWidget*> docks_;  // in the order they were created
   std::unique_ptr<widgets::WorkspaceLegendLayer> legendLayer_;
   QDockWidget* leftTabs_ = nullptr;   // tab group machine panels join on each side
   QDockWidget* rightTabs_ = nullptr;

@@ -24,7 +24,7 @@
 #include "widgets/calibration/calibration_wizard.hpp"
 #include "widgets/calibration/distances_box.hpp"
 #include "widgets/calibration/simulated_machine.hpp"
-#include "widgets/machine/machine_ui.hpp"
+#include "session/machine_side.hpp"
 #include "widgets/document/preview_controller.hpp"
 #include "widgets/document/import_controller.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
@@ -65,11 +65,8 @@ int main(int argc, char** argv) {
   fivebar::studio::MainWindow window(*fivebar::preset("maker-plotter"));
   window.resize(1500, 950);
   window.show();
-  QAction* action = window.findChild<QAction*>(QStringLiteral("calibrateAction"));
-  if (!action) return 1;
-  action->trigger();
-  using fivebar::widgets::calibration::CalibrationWizard;
-  auto* w = window.findChild<CalibrationWizard*>();
+  window.calibrateAction()->trigger();
+  auto* w = window.calibrationWizard();
   if (!w) return 1;
   w->resize(1060, 720);
   bool ok = grab(*w, out + QStringLiteral("/calibration-1-pattern") + suffix);
@@ -103,8 +100,8 @@ int main(int argc, char** argv) {
   // The studio's simulated-machine setting, and the demo drawn by the imperfect simulated machine.
   using fivebar::widgets::calibration::SimulatedMachineDialog;
   auto* dialog = window.findChild<SimulatedMachineDialog*>();
-  auto* machine = window.findChild<fivebar::widgets::MachineUi*>();
-  if (!dialog || !machine) return 1;
+  fivebar::session::MachineSide* machine = &window.machine();
+  if (!dialog) return 1;
   QTemporaryDir jobs;
   machine->run().setJobDirectory(jobs.filePath(QStringLiteral("jobs")));
   dialog->form()->setAmounts(fivebar::widgets::calibration::TrueMachineForm::example());

@@ -30,9 +30,9 @@
 #include "widgets/document/import_controller.hpp"
 #include "widgets/document/preview_controller.hpp"
 #include "widgets/document/studio_document.hpp"
-#include "widgets/machine/machine_session.hpp"
+#include "session/machine_side.hpp"
 #include "widgets/machine/machine_settings_dialog.hpp"
-#include "widgets/machine/machine_ui.hpp"
+#include "widgets/machine/machine_panels.hpp"
 #include "widgets/panels/preview_panel.hpp"
 #include "widgets/panels/profile_editor.hpp"
 
@@ -90,8 +90,7 @@ int main(int argc, char** argv) {
   studio::MainWindow window(*preset("maker-plotter"));
   window.resize(1500, 950);
   window.show();
-  auto* machine = window.findChild<widgets::MachineUi*>();
-  if (machine == nullptr) return 1;
+  session::MachineSide* machine = &window.machine();
   bool ok = true;
 
   // The profile editor, in its dock.
@@ -117,9 +116,9 @@ int main(int argc, char** argv) {
   }
 
   // Machine > Calibrate..., first page.
-  if (QAction* calibrate = window.findChild<QAction*>(QStringLiteral("calibrateAction"))) {
+  if (QAction* calibrate = window.calibrateAction()) {
     calibrate->trigger();
-    if (auto* wizard = window.findChild<widgets::calibration::CalibrationWizard*>()) {
+    if (auto* wizard = window.calibrationWizard()) {
       wizard->resize(1060, 720);
       ok = grab(*wizard, out + "/dialog-calibration" + suffix) && ok;
       wizard->hide();
@@ -128,9 +127,9 @@ int main(int argc, char** argv) {
 
   // Machine settings, read from the simulated machine.
   machine->connectSimulated(6.0);
-  widgets::MachineSession& session = machine->session();
+  session::MachineSession& session = machine->session();
   waitUntil([&] { return session.state() == grbl::MachineState::Idle; }, 20000);
-  widgets::MachineSettingsDialog* settings = machine->openSettingsDialog();
+  widgets::MachineSettingsDialog* settings = window.machinePanels().openSettingsDialog();
   waitUntil([&] { return settings->table()->rowCount() > 0; }, 10000);
   waitUntil([] { return false; }, 500);
   ok = grab(*settings, out + "/dialog-settings" + suffix) && ok;

@@ -16,7 +16,7 @@
 #include "drivers/simulated_transport.hpp"
 #include "machine_test_support.hpp"
 #include "widgets/document/preview_controller.hpp"
-#include "widgets/machine/run_controller.hpp"
+#include "session/run_controller.hpp"
 #include "widgets/machine/run_layer.hpp"
 #include "widgets/machine/run_panel.hpp"
 
@@ -51,7 +51,7 @@ Drawing testDrawing() {
 }
 
 struct RunRig : MachineRig {
-  RunRig() : preview(doc), run(doc, preview, session) {
+  RunRig() : run(inputs, session) {
     run.setJobDirectory(dir.path());
     Placement placement;
     placement.centerMm = Vec2(0.0, 170.0);
@@ -64,8 +64,7 @@ struct RunRig : MachineRig {
                      30000);
   }
   QTemporaryDir dir;
-  widgets::PreviewController preview;
-  widgets::RunController run;
+  session::RunController run;
 };
 
 TEST(RunPanel, RunsThePlannedJobToCompletionAndColoursWhatIsDone) {
@@ -78,7 +77,7 @@ TEST(RunPanel, RunsThePlannedJobToCompletionAndColoursWhatIsDone) {
   ASSERT_TRUE(panel.startButton()->isEnabled());
   // Connected before Start: a fast run may end while the test waits for its first strokes.
   bool finished = false, ok = false;
-  QObject::connect(&rig.run, &widgets::RunController::finished, [&](bool success, const QString&) {
+  QObject::connect(&rig.run, &session::RunController::finished, [&](bool success, const QString&) {
     finished = true;
     ok = success;
   });
@@ -128,7 +127,7 @@ TEST(RunPanel, ResumesAfterTheLinkDropsAlsoAfterARestart) {
   EXPECT_LT(saved->lastCompletedLine, saved->totalLines + 100);
 
   // "Restart": a new controller and panel on the same job folder offer the resume.
-  widgets::RunController restarted(rig.doc, rig.preview, rig.session);
+  session::RunController restarted(rig.inputs, rig.session);
   restarted.setJobDirectory(rig.dir.path());
   widgets::RunPanel panel(restarted, rig.session);
   ASSERT_TRUE(restarted.savedProgress().has_value());
@@ -202,7 +201,7 @@ TEST(RunPanel, EtaFollowsThePlanAndStandsStillOnHold) {
   ASSERT_TRUE(waitUntil([&] { return rig.run.snapshot().lastCompleted && *rig.run.snapshot().lastCompleted > 20; }, 30000));
   rig.run.hold();
   ASSERT_TRUE(waitUntil([&] { return rig.run.state() == job::RunState::Held; }, 10000));
-  waitUntil([] { return false; }, 2 * widgets::RunController::kRefreshMs);  // the held snapshot
+  waitUntil([] { return false; }, 2 * session::RunController::kRefreshMs);  // the held snapshot
   const double held = rig.run.etaS();
   EXPECT_LT(held, total);
   EXPECT_TRUE(panel.etaLabel()->text().contains(QStringLiteral("hold"))) << panel.etaLabel()->text().toStdString();
@@ -255,6 +254,46 @@ TEST(RunPanel, AlarmThenUnlockThenResumeFinishesAndNewJobsClearTheOldOverlay) {
   EXPECT_EQ(rig.run.job(), nullptr);
   EXPECT_EQ(layer.doneSegments(), 0u);
   EXPECT_TRUE(rig.run.lastMessage().isEmpty());
+}
+
+// After "set reference pose" the board checks its soft limits in machine coordinates, shifted
+// against the drawing's: Start refuses a job the board would stop with ALARM:2, before any line
+// is sent, and says why.
+TEST(RunPanel, StartRefusesAJobTheBoardsSoftLimitsWouldStop) {
+  RunRig rig;
+  ASSERT_TRUE(rig.planned()) << rig.preview.result().message.toStdString();
+  ASSERT_TRUE(rig.connect(25.0));
+  ASSERT_TRUE(rig.waitIdle());
+  // The board: homing and soft limits on, with a travel of 1 deg per motor below the machine's
+  // zero (the pose the reference was declared at: the home pose).
+  for (const char* line : {"$22=1", "$20=1", "$130=1", "$131=1"})
+    ASSERT_TRUE(rig.session.link()->protocol().enqueue(line).ok());
+  ASSERT_TRUE(rig.waitIdle());
+  rig.session.readBoardSettings();
+  ASSERT_TRUE(waitUntil([&] {
+    const auto& b = rig.session.boardSettings();
+    return !rig.session.readingBoardSettings() && b && b->count(131) && b->at(131) == 1.0 && b->at(20) == 1.0;
+  }, 5000));
+  ASSERT_TRUE(rig.session.workOffsetDeg().has_value());
+  QString why;
+  EXPECT_FALSE(rig.run.start(&why));
+  EXPECT_FALSE(rig.run.running());
+  EXPECT_TRUE(why.contains(QStringLiteral("ALARM:2"))) << why.toStdString();
+  EXPECT_TRUE(why.contains(QStringLiteral("machine coordinates"))) << why.toStdString();
+  EXPECT_EQ(rig.run.lastMessage(), why);
+  waitUntil([] { return false; }, 300);
+  EXPECT_NE(rig.session.state(), grbl::MachineState::Alarm) << "nothing was sent";
+  // With the profile's travel and soft limits off again, the same job starts.
+  for (const char* line : {"$20=0"}) ASSERT_TRUE(rig.session.link()->protocol().enqueue(line).ok());
+  ASSERT_TRUE(rig.waitIdle());
+  rig.session.readBoardSettings();
+  ASSERT_TRUE(waitUntil([&] {
+    const auto& b = rig.session.boardSettings();
+    return !rig.session.readingBoardSettings() && b && b->at(20) == 0.0;
+  }, 5000));
+  EXPECT_TRUE(rig.run.start(&why)) << why.toStdString();
+  rig.run.stop();
+  waitUntil([&] { return !rig.run.running(); }, 10000);
 }
 
 }  // namespace

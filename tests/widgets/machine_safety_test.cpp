@@ -21,7 +21,7 @@
 #include "widgets/machine/jog_panel.hpp"
 #include "widgets/machine/machine_dialogs.hpp"
 #include "widgets/machine/machine_panel.hpp"
-#include "widgets/machine/settings_advice.hpp"
+#include "session/settings_advice.hpp"
 
 namespace fivebar {
 namespace {
@@ -44,7 +44,7 @@ TEST(ConsoleCheck, RefusesTheSwingAcrossTheBaseAndSaysWhy) {
   MachineRig rig;
   ASSERT_TRUE(rig.connect(8.0));
   ASSERT_TRUE(rig.waitIdle());
-  widgets::ConsolePanel console(rig.session);
+  widgets::ConsolePanel console(rig.consolePort);
   EXPECT_FALSE(console.uncheckedSwitch()->isChecked());  // checked by default
   EXPECT_TRUE(console.uncheckedBanner()->isHidden());
   EXPECT_FALSE(console.input()->placeholderText().contains(QStringLiteral("G0 X10 Y20")));
@@ -79,7 +79,7 @@ TEST(ConsoleCheck, ExpertSwitchSendsUncheckedUnderAWarningBanner) {
   MachineRig rig;
   ASSERT_TRUE(rig.connect(8.0));
   ASSERT_TRUE(rig.waitIdle());
-  widgets::ConsolePanel console(rig.session);
+  widgets::ConsolePanel console(rig.consolePort);
   console.show();
   console.uncheckedSwitch()->setChecked(true);
   EXPECT_TRUE(rig.session.uncheckedConsole());
@@ -99,11 +99,11 @@ TEST(ReferencePose, IsSetOnlyAfterConfirmationAndGoHomeReturnsByACheckedMove) {
   MachineRig rig;
   ASSERT_TRUE(rig.connect(8.0));
   ASSERT_TRUE(rig.waitIdle());
-  widgets::JogPanel jog(rig.session);
+  widgets::JogPanel jog(rig.session, rig.jog);
   const MachineProfile& p = rig.doc.profile();
   // Move away from the home pose by 5 degrees of motor 1.
-  const widgets::JogPlan plan =
-      widgets::planMotorJog(p, *rig.session.motorAngles(), 1, radFromDeg(5.0), radFromDeg(20.0));
+  const jog::JogPlan plan =
+      jog::planMotorJog(p, *rig.session.motorAngles(), 1, 5.0, 20.0 * 60.0);
   ASSERT_TRUE(rig.session.sendJog(plan));
   ASSERT_TRUE(waitUntil([&] { return !rig.session.jogSettled(); }, 1000));
   ASSERT_TRUE(rig.waitIdle());
@@ -124,10 +124,9 @@ TEST(ReferencePose, IsSetOnlyAfterConfirmationAndGoHomeReturnsByACheckedMove) {
   ASSERT_TRUE(waitUntil([&] { return !rig.session.jogSettled(); }, 1000));
   ASSERT_TRUE(rig.waitIdle(15000));
   EXPECT_TRUE(near(*rig.session.motorAngles(), p.homeAngles, 0.05));
-  EXPECT_EQ(rig.session.penState(), widgets::PenState::Up);
+  EXPECT_EQ(rig.session.penState(), session::PenState::Up);
   // Away again, then confirm: the pose where the machine stands becomes the home pose.
-  ASSERT_TRUE(rig.session.sendJog(widgets::planMotorJog(p, *rig.session.motorAngles(), 1,
-                                                         radFromDeg(5.0), radFromDeg(20.0))));
+  ASSERT_TRUE(rig.session.sendJog(jog::planMotorJog(p, *rig.session.motorAngles(), 1, 5.0, 20.0 * 60.0)));
   ASSERT_TRUE(waitUntil([&] { return !rig.session.jogSettled(); }, 1000));
   ASSERT_TRUE(rig.waitIdle());
   answerBox(QStringLiteral("referencePoseQuestion"), QStringLiteral("confirmReference"));
@@ -142,13 +141,13 @@ TEST(Connection, IsNotConnectedWithoutGrblAndNamesPortAndBaud) {
   ASSERT_EQ(openpty(&master, &slave, name, nullptr, nullptr), 0);
   MachineRig rig;
   widgets::MachinePanel panel(rig.session);
-  QSignalSpy failed(&rig.session, &widgets::MachineSession::connectFailed);
+  QSignalSpy failed(&rig.session, &session::MachineSession::connectFailed);
   QString error;
   ASSERT_TRUE(rig.session.connectSerial(QString::fromLatin1(name), 115200, &error)) << error.toStdString();
   EXPECT_FALSE(rig.session.isConnected());
   EXPECT_TRUE(rig.session.isConnecting());
   EXPECT_FALSE(panel.linkLabel()->text().startsWith(QStringLiteral("Connected")));
-  ASSERT_TRUE(waitUntil([&] { return failed.count() > 0; }, widgets::MachineSession::kConnectTimeoutMs + 3000));
+  ASSERT_TRUE(waitUntil([&] { return failed.count() > 0; }, session::MachineSession::kConnectTimeoutMs + 3000));
   const QString message = failed.front().front().toString();
   EXPECT_TRUE(message.contains(QString::fromLatin1(name))) << message.toStdString();
   EXPECT_TRUE(message.contains(QStringLiteral("115200")));
@@ -161,14 +160,14 @@ TEST(Connection, IsNotConnectedWithoutGrblAndNamesPortAndBaud) {
 
 TEST(SettingsAdvice, SoftLimitsOnWithoutSwitchesStopTheJob) {
   const std::vector<setup::SettingDiff> diffs = {{20, 1.0, 0.0}, {110, 3000.0, 6000.0}};
-  const auto advice = widgets::adviseOnSettings(diffs);
+  const auto advice = session::adviseOnSettings(diffs);
   ASSERT_EQ(advice.size(), 2u);
   EXPECT_TRUE(advice[0].stopsJob);
   EXPECT_TRUE(advice[0].text.contains(QStringLiteral("ALARM:2")));
   EXPECT_FALSE(advice[1].stopsJob);
-  EXPECT_TRUE(widgets::anyStopsJob(advice));
-  EXPECT_TRUE(widgets::settingsWarningText(diffs).contains(QStringLiteral("$20, $110")));
-  EXPECT_FALSE(widgets::anyStopsJob(widgets::adviseOnSettings({{110, 3000.0, 6000.0}})));
+  EXPECT_TRUE(session::anyStopsJob(advice));
+  EXPECT_TRUE(session::settingsWarningText(diffs).contains(QStringLiteral("$20, $110")));
+  EXPECT_FALSE(session::anyStopsJob(session::adviseOnSettings({{110, 3000.0, 6000.0}})));
 }
 
 TEST(MachineLayer, FollowsTheMachineWithTheSimulationAsAGhost) {
@@ -180,8 +179,8 @@ TEST(MachineLayer, FollowsTheMachineWithTheSimulationAsAGhost) {
   EXPECT_FALSE(layer.ghost().has_value());
   ASSERT_TRUE(rig.connect(8.0));
   ASSERT_TRUE(rig.waitIdle());
-  const widgets::JogPlan plan =
-      widgets::planMotorJog(p, *rig.session.motorAngles(), 2, radFromDeg(-6.0), radFromDeg(20.0));
+  const jog::JogPlan plan =
+      jog::planMotorJog(p, *rig.session.motorAngles(), 2, -6.0, 20.0 * 60.0);
   ASSERT_TRUE(rig.session.sendJog(plan));
   ASSERT_TRUE(waitUntil([&] { return !rig.session.jogSettled(); }, 1000));
   ASSERT_TRUE(rig.waitIdle());

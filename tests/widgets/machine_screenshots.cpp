@@ -30,7 +30,7 @@
 #include "app/studio/main_window.hpp"
 #include "widgets/document/import_controller.hpp"
 #include "widgets/machine/jog_panel.hpp"
-#include "widgets/machine/machine_ui.hpp"
+#include "widgets/machine/machine_panels.hpp"
 #include "widgets/document/preview_controller.hpp"
 #include "widgets/panels/profile_editor.hpp"
 
@@ -73,8 +73,8 @@ void grabNextBox(const QString& name, const QString& path, int tries = 300) {
   });
 }
 
-void raiseDock(QWidget& window, const char* name) {
-  if (auto* dock = window.findChild<QDockWidget*>(QString::fromLatin1(name))) dock->raise();
+void raiseDock(fivebar::studio::MainWindow& window, const char* name) {
+  if (auto* dock = window.dock(QString::fromLatin1(name))) dock->raise();
 }
 
 }  // namespace
@@ -96,18 +96,15 @@ int main(int argc, char** argv) {
   studio::MainWindow window(*preset("maker-plotter"));
   window.resize(1600, 1000);
   window.show();
-  auto* machine = window.findChild<widgets::MachineUi*>();
-  if (machine == nullptr) {
-    std::fprintf(stderr, "the main window has no machine panels\n");
-    return 1;
-  }
+  session::MachineSide* machine = &window.machine();
+  widgets::MachinePanels& panels = window.machinePanels();
   machine->run().setJobDirectory(settingsDir.filePath(QStringLiteral("jobs")));
   QFile demo(QStringLiteral(FIVEBAR_DEMO_SVG));
   if (!demo.open(QIODevice::ReadOnly)) return 1;
   window.importer().setInteractive(false);
   window.importer().openData(demo.readAll(), QStringLiteral("fivebar-demo.svg"));
   machine->connectSimulated(6.0);
-  widgets::MachineSession& session = machine->session();
+  session::MachineSession& session = machine->session();
   const bool ready = waitUntil([&] {
     return window.preview().result().status == widgets::PreviewStatus::Planned && !window.preview().busy() &&
            session.state() == grbl::MachineState::Idle;
@@ -142,13 +139,13 @@ int main(int argc, char** argv) {
   if (!grab(window, outDir + QStringLiteral("/machine-settings-warning.png"))) status = 1;
   raiseDock(window, "dockRun");
   grabNextBox(QStringLiteral("settingsMismatch"), outDir + QStringLiteral("/machine-settings-mismatch.png"));
-  machine->runPanel()->startButton()->click();
+  panels.runPanel()->startButton()->click();
   session.sendLine(QStringLiteral("$100=%1").arg(session.profile().motors.stepsPerDeg1, 0, 'f', 4));
   waitUntil([&] { return session.state() == grbl::MachineState::Idle; }, 5000);
 
   // 2. A go-to previewed on the canvas.
   raiseDock(window, "dockJog");
-  widgets::JogPanel* jog = machine->jogPanel();
+  widgets::JogPanel* jog = panels.jogPanel();
   jog->goToButton()->setChecked(true);
   if (const auto pen = session.penMm()) jog->goToTool().pick(QPointF(pen->x() - 45.0, pen->y() - 60.0));
   if (!grab(window, outDir + QStringLiteral("/machine-goto.png"))) status = 1;
@@ -160,10 +157,10 @@ int main(int argc, char** argv) {
   session.connectSimulated(6.0, sim::Fault{sim::FaultKind::AlarmAfter, 0}, &error);
   waitUntil([&] { return session.state() != grbl::MachineState::Unknown; }, 5000);
   session.sendLine(QStringLiteral("G4P0.01"));
-  waitUntil([&] { return session.problem().kind == widgets::MachineProblem::Kind::Alarm; }, 5000);
+  waitUntil([&] { return session.problem().kind == session::MachineProblem::Kind::Alarm; }, 5000);
   raiseDock(window, "dockMachine");
   raiseDock(window, "dockProfile");
-  if (auto* editor = window.findChild<widgets::ProfileEditor*>()) {
+  if (auto* editor = panels.profileEditor()) {
     if (auto* a1 = editor->numberField("geometry.a1")) a1->setValue(0.0);
   }
   if (!grab(window, outDir + QStringLiteral("/machine-alarm.png"))) status = 1;

@@ -65,7 +65,7 @@ TEST(MachineBanner, AlarmShowsTheExplanationAndResetThenUnlockClearsIt) {
   widgets::MachineBanner banner(rig.session);
   EXPECT_TRUE(banner.isHidden());
   ASSERT_TRUE(rig.session.sendLine(QStringLiteral("G4P0.01")));
-  ASSERT_TRUE(waitUntil([&] { return rig.session.problem().kind == widgets::MachineProblem::Kind::Alarm; }, 5000));
+  ASSERT_TRUE(waitUntil([&] { return rig.session.problem().kind == session::MachineProblem::Kind::Alarm; }, 5000));
   EXPECT_FALSE(banner.isHidden());
   const grbl::CodeInfo* info = grbl::findAlarm(1);
   ASSERT_NE(info, nullptr);
@@ -81,7 +81,7 @@ TEST(MachineBanner, AlarmShowsTheExplanationAndResetThenUnlockClearsIt) {
   banner.unlockButton()->click();
   ASSERT_TRUE(waitUntil([&] { return rig.session.state() == grbl::MachineState::Idle; }, 5000));
   EXPECT_TRUE(banner.isHidden());
-  EXPECT_EQ(rig.session.problem().kind, widgets::MachineProblem::Kind::None);
+  EXPECT_EQ(rig.session.problem().kind, session::MachineProblem::Kind::None);
 }
 
 TEST(MachineBanner, RejectedLineShowsTheErrorTextAndCanBeDismissed) {
@@ -91,7 +91,7 @@ TEST(MachineBanner, RejectedLineShowsTheErrorTextAndCanBeDismissed) {
   widgets::MachineBanner banner(rig.session);
   // A move without a feed rate: GRBL answers error:22 and nothing moves.
   ASSERT_TRUE(rig.session.sendLine(QStringLiteral("G1X150")));
-  ASSERT_TRUE(waitUntil([&] { return rig.session.problem().kind == widgets::MachineProblem::Kind::Error; }, 5000));
+  ASSERT_TRUE(waitUntil([&] { return rig.session.problem().kind == session::MachineProblem::Kind::Error; }, 5000));
   EXPECT_EQ(rig.session.problem().code, 22);
   EXPECT_TRUE(banner.message()->text().contains(QString::fromStdString(grbl::describeError(22))));
   EXPECT_FALSE(banner.isHidden());
@@ -103,7 +103,7 @@ TEST(ConsolePanel, ShowsSentAndReceivedLinesAndWalksTheHistory) {
   MachineRig rig;
   ASSERT_TRUE(rig.connect(4.0));
   ASSERT_TRUE(rig.waitIdle());
-  widgets::ConsolePanel console(rig.session);
+  widgets::ConsolePanel console(rig.consolePort);
   QLineEdit* input = console.input();
   input->setText(QStringLiteral("$I"));
   pressKey(input, Qt::Key_Return);
@@ -131,8 +131,7 @@ TEST(MachineSession, SetReferencePoseMakesTheCurrentPoseTheHomePose) {
   ASSERT_TRUE(rig.connect(8.0));
   ASSERT_TRUE(rig.waitIdle());
   // Move motor 1 by 5 degrees, then declare that pose to be the home pose.
-  const widgets::JogPlan plan = widgets::planMotorJog(rig.doc.profile(), *rig.session.motorAngles(), 1,
-                                                  radFromDeg(5.0), radFromDeg(20.0));
+  const jog::JogPlan plan = jog::planMotorJog(rig.doc.profile(), *rig.session.motorAngles(), 1, 5.0, 20.0 * 60.0);
   ASSERT_TRUE(rig.session.sendJog(plan));
   ASSERT_TRUE(waitUntil([&] { return !rig.session.jogSettled(); }, 1000));
   ASSERT_TRUE(rig.waitIdle());

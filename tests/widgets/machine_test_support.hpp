@@ -10,8 +10,12 @@
 #include <memory>
 
 #include "core/machine/profile.hpp"
-#include "widgets/machine/machine_session.hpp"
+#include "session/machine_session.hpp"
+#include "session/console_port.hpp"
+#include "session/jog_controller.hpp"
+#include "widgets/document/preview_controller.hpp"
 #include "widgets/document/studio_document.hpp"
+#include "widgets/machine/document_inputs.hpp"
 
 namespace fivebar::test {
 
@@ -29,10 +33,11 @@ inline bool waitUntil(const std::function<bool()>& pred, int timeoutMs) {
 
 inline MachineProfile makerPlotter() { return *preset("maker-plotter"); }
 
-// A document and a session; connect() opens the simulated machine and waits for it to report.
+// A document, its preview, the session layer's view of both, a session and a jog controller;
+// connect() opens the simulated machine and waits for it to report.
 struct MachineRig {
   explicit MachineRig(MachineProfile profile = makerPlotter())
-      : doc(std::move(profile)), session(doc) {}
+      : doc(std::move(profile)), preview(doc), inputs(doc, &preview), session(inputs), jog(session), consolePort(session) {}
   bool connect(double speedup, sim::Fault fault = {}) {
     QString error;
     if (!session.connectSimulated(speedup, fault, &error)) return false;
@@ -58,7 +63,11 @@ struct MachineRig {
                      timeoutMs);
   }
   widgets::StudioDocument doc;
-  widgets::MachineSession session;
+  widgets::PreviewController preview;
+  widgets::DocumentInputs inputs;
+  session::MachineSession session;
+  session::JogController jog;
+  session::ConsolePort consolePort;
 };
 
 }  // namespace fivebar::test

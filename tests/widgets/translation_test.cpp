@@ -31,22 +31,22 @@
 #include "widgets/document/import_controller.hpp"
 #include "widgets/document/job_pipeline.hpp"
 #include "widgets/panels/import_warnings_panel.hpp"
-#include "widgets/machine/jog_controller.hpp"
+#include "session/jog_controller.hpp"
 #include "widgets/machine/jog_goto_tool.hpp"
 #include "widgets/machine/jog_panel.hpp"
 #include "widgets/panels/layers_panel.hpp"
 #include "widgets/machine/machine_banner.hpp"
 #include "widgets/machine/machine_panel.hpp"
-#include "widgets/machine/machine_session.hpp"
+#include "session/machine_session.hpp"
 #include "widgets/machine/machine_settings_dialog.hpp"
-#include "widgets/machine/machine_ui.hpp"
+#include "widgets/machine/machine_panels.hpp"
 #include "widgets/panels/mode_panel.hpp"
 #include "widgets/panels/placement_panel.hpp"
 #include "widgets/panels/preview_panel.hpp"
 #include "widgets/panels/profile_editor.hpp"
 #include "app/studio/file_actions.hpp"
 #include "widgets/canvas/job_layer.hpp"
-#include "widgets/machine/run_controller.hpp"
+#include "session/run_controller.hpp"
 #include "widgets/machine/run_panel.hpp"
 #include "widgets/panels/simulation_panel.hpp"
 #include "widgets/document/studio_document.hpp"
@@ -61,14 +61,14 @@ std::set<QString> runtimeContexts() {
   for (const QMetaObject* m :
        {&fivebar::studio::MainWindow::staticMetaObject, &fivebar::studio::FileActions::staticMetaObject,
         &ConsolePanel::staticMetaObject, &JobLayer::staticMetaObject,
-        &ImportController::staticMetaObject, &JogController::staticMetaObject,
+        &ImportController::staticMetaObject, &fivebar::session::JogController::staticMetaObject,
         &GoToTool::staticMetaObject, &JogPanel::staticMetaObject, &LayersPanel::staticMetaObject,
         &MachineBanner::staticMetaObject, &MachinePanel::staticMetaObject,
-        &MachineSession::staticMetaObject, &MachineSettingsDialog::staticMetaObject,
-        &MachineUi::staticMetaObject,
+        &fivebar::session::MachineSession::staticMetaObject, &MachineSettingsDialog::staticMetaObject,
+        &MachinePanels::staticMetaObject,
         &ModePanel::staticMetaObject, &PlacementPanel::staticMetaObject,
         &PreviewPanel::staticMetaObject, &SpeedLegend::staticMetaObject,
-        &ProfileEditor::staticMetaObject, &RunController::staticMetaObject,
+        &ProfileEditor::staticMetaObject, &fivebar::session::RunController::staticMetaObject,
         &RunPanel::staticMetaObject, &SimulationPanel::staticMetaObject,
         &StudioDocument::staticMetaObject, &FillOptionsBox::staticMetaObject,
         &ImportWarningsPanel::staticMetaObject, &DesignDialog::staticMetaObject,
@@ -82,7 +82,7 @@ std::set<QString> runtimeContexts() {
     names.insert(QString::fromLatin1(m->className()));
   for (const char* c : {"QObject", "main", "DocumentCommands", "JobPipeline", "MapPainter",
                         "WorkspaceLegend", "ImportWarningsPanel", "DesignPainter", "ImportWarning",
-                        "fivebar::widgets::MachineDialogs", "fivebar::widgets::SettingsAdvice",
+                        "fivebar::widgets::MachineDialogs", "fivebar::session::SettingsAdvice",
                         "CalibrationWizard",
                         // the core's messages (core/support/message.hpp, widgets::translated)
                         "Placement", "Planner", "Preflight", "Safety"})
@@ -117,7 +117,7 @@ TEST(Translations, RuntimeTrReturnsGerman) {
   using namespace fivebar::widgets;
   EXPECT_EQ(ModePanel::tr("Working mode"), QStringLiteral("Arbeitsmodus"));
   EXPECT_EQ(fivebar::studio::MainWindow::tr("&File"), QStringLiteral("&Datei"));
-  EXPECT_EQ(MachineUi::tr("Jog"), QStringLiteral("Verfahren"));
+  EXPECT_EQ(MachinePanels::tr("Jog"), QStringLiteral("Verfahren"));
   EXPECT_EQ(calibration::MeasurePage::tr("3. Measure the marks"), QStringLiteral("3. Die Marken vermessen"));
   EXPECT_EQ(LayersPanel::tr("%n path(s)", nullptr, 2), QStringLiteral("2 Pfade"));
   EXPECT_EQ(QCoreApplication::translate("WorkspaceLegend", "reach boundary"),

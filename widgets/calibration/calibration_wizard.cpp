@@ -15,7 +15,7 @@
 #include "widgets/calibration/wizard_pages.hpp"
 #include "widgets/document/core_message.hpp"
 #include "widgets/canvas/canvas_view.hpp"
-#include "widgets/machine/machine_session.hpp"
+#include "session/machine_session.hpp"
 
 namespace fivebar::widgets::calibration {
 
@@ -26,7 +26,7 @@ QLabel* explanation(const QString& text, QWidget* parent) {
   return label;
 }
 
-CalibrationWizard::CalibrationWizard(StudioDocument& doc, MachineSession* session, QWidget* parent)
+CalibrationWizard::CalibrationWizard(StudioDocument& doc, session::MachineSession* session, QWidget* parent)
     : QWizard(parent), doc_(doc), session_(session) {
   setObjectName(QStringLiteral("calibrationWizard"));
   setWindowTitle(tr("Calibrate the machine"));
@@ -64,7 +64,7 @@ CalibrationWizard::CalibrationWizard(StudioDocument& doc, MachineSession* sessio
 
 CalibrationWizard::~CalibrationWizard() = default;
 
-QAction* CalibrationWizard::createAction(StudioDocument& doc, MachineSession* session,
+QAction* CalibrationWizard::createAction(StudioDocument& doc, session::MachineSession* session,
                                          CanvasView* canvas, QWidget* parent) {
   auto* action = new QAction(tr("&Calibrate..."), parent);
   action->setObjectName(QStringLiteral("calibrateAction"));
@@ -116,10 +116,10 @@ bool CalibrationWizard::planPattern(const MachineProfile& profile, QString* erro
   return true;
 }
 
-PatternSender::PatternSender(MachineSession& session, QObject* parent)
+PatternSender::PatternSender(session::MachineSession& session, QObject* parent)
     : QObject(parent), session_(session) {
   // The stream holds the link: drop it before the link goes.
-  connect(&session_, &MachineSession::aboutToDisconnect, this, [this] {
+  connect(&session_, &session::MachineSession::aboutToDisconnect, this, [this] {
     const bool was = running_;
     running_ = false;
     stream_.reset();

@@ -22,9 +22,12 @@ namespace fivebar {
 class StreamSession;
 }
 
+namespace fivebar::session {
+class MachineSession;
+}
+
 namespace fivebar::widgets {
 class CanvasView;
-class MachineSession;
 }
 
 namespace fivebar::widgets::calibration {
@@ -45,10 +48,10 @@ class CalibrationWizard : public QWizard {
   enum PageId { kPatternPage, kDrawPage, kMeasurePage, kFitPage, kApplyPage, kVerifyPage, kAccuracyPage };
 
   // `session` may be null (no machine side): drawing then means exporting the G-code.
-  CalibrationWizard(StudioDocument& doc, MachineSession* session, QWidget* parent = nullptr);
+  CalibrationWizard(StudioDocument& doc, session::MachineSession* session, QWidget* parent = nullptr);
   ~CalibrationWizard() override;
   // Machine > Calibrate...; the sheet is shown on `canvas` (may be null) while the wizard is open.
-  static QAction* createAction(StudioDocument& doc, MachineSession* session, CanvasView* canvas,
+  static QAction* createAction(StudioDocument& doc, session::MachineSession* session, CanvasView* canvas,
                                QWidget* parent);
   // Shows the sheet (plan and the simulated machine's true trace) on the studio's canvas.
   void attachCanvas(CanvasView* canvas);
@@ -56,7 +59,7 @@ class CalibrationWizard : public QWizard {
   SheetLayer* sheetLayer() const { return sheetLayer_; }
 
   StudioDocument& document() { return doc_; }
-  MachineSession* session() { return session_; }
+  session::MachineSession* session() { return session_; }
   // The studio's simulated-machine setting (simulated_machine.hpp); null without a session. The
   // draw step changes it for the time the wizard is open; closing the wizard puts the saved
   // setting back unless the maker chose to keep the wizard's machine.
@@ -92,7 +95,7 @@ class CalibrationWizard : public QWizard {
 
  private:
   StudioDocument& doc_;
-  MachineSession* session_;
+  session::MachineSession* session_;
   SimulatedTruth* simTruth_ = nullptr;
   PatternPage* patternPage_ = nullptr;
   DrawPage* drawPage_ = nullptr;
@@ -109,7 +112,7 @@ class CalibrationWizard : public QWizard {
 class PatternSender : public QObject {
   Q_OBJECT
  public:
-  PatternSender(MachineSession& session, QObject* parent = nullptr);
+  PatternSender(session::MachineSession& session, QObject* parent = nullptr);
   ~PatternSender() override;
   bool send(const std::string& gcode, const MachineProfile& profile, const QString& path,
             QString* error);
@@ -118,7 +121,7 @@ class PatternSender : public QObject {
   void finished(bool ok, const QString& message);
 
  private:
-  MachineSession& session_;
+  session::MachineSession& session_;
   std::unique_ptr<StreamSession> stream_;
   bool running_ = false;
 };

@@ -18,7 +18,7 @@
 #include "core/kinematics/units.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
 #include "widgets/document/core_message.hpp"
-#include "widgets/machine/machine_session.hpp"
+#include "session/machine_session.hpp"
 
 namespace fivebar::widgets::calibration {
 

@@ -17,7 +17,7 @@
 #include "core/calibration/marks_csv.hpp"
 #include "core/kinematics/units.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
-#include "widgets/machine/machine_session.hpp"
+#include "session/machine_session.hpp"
 
 namespace fivebar::widgets::calibration {
 

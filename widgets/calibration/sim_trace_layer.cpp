@@ -4,7 +4,7 @@
 #include <QPainterPath>
 
 #include "widgets/calibration/simulated_machine.hpp"
-#include "widgets/machine/machine_session.hpp"
+#include "session/machine_session.hpp"
 
 namespace fivebar::widgets::calibration {
 
@@ -12,10 +12,10 @@ namespace {
 const QColor kTrace(200, 70, 0);
 }
 
-SimTraceLayer::SimTraceLayer(MachineSession& session, SimulatedTruth& truth, QObject* parent)
+SimTraceLayer::SimTraceLayer(session::MachineSession& session, SimulatedTruth& truth, QObject* parent)
     : QObject(parent), session_(session), truth_(truth) {
-  connect(&session_, &MachineSession::statusUpdated, this, &SimTraceLayer::refresh);
-  connect(&session_, &MachineSession::connectionChanged, this, [this](bool connected) {
+  connect(&session_, &session::MachineSession::statusUpdated, this, &SimTraceLayer::refresh);
+  connect(&session_, &session::MachineSession::connectionChanged, this, [this](bool connected) {
     if (connected) {
       trace_.clear();
       points_ = 0;

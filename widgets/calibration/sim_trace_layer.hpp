@@ -11,8 +11,11 @@
 #include "core/kinematics/geometry.hpp"
 #include "widgets/canvas/canvas_layer.hpp"
 
-namespace fivebar::widgets {
+namespace fivebar::session {
 class MachineSession;
+}  // namespace fivebar::session
+
+namespace fivebar::widgets {
 }
 
 namespace fivebar::widgets::calibration {
@@ -22,7 +25,7 @@ class SimulatedTruth;
 class SimTraceLayer : public QObject, public CanvasLayer {
   Q_OBJECT
  public:
-  SimTraceLayer(MachineSession& session, SimulatedTruth& truth, QObject* parent = nullptr);
+  SimTraceLayer(session::MachineSession& session, SimulatedTruth& truth, QObject* parent = nullptr);
   void paint(QPainter& painter, const ViewTransform& view) override;
   // What is shown (empty while the simulated machine is perfect).
   const std::vector<std::vector<Vec2>>& trace() const { return trace_; }
@@ -34,7 +37,7 @@ class SimTraceLayer : public QObject, public CanvasLayer {
   void changed();
 
  private:
-  MachineSession& session_;
+  session::MachineSession& session_;
   SimulatedTruth& truth_;
   std::vector<std::vector<Vec2>> trace_;
   std::size_t points_ = 0;

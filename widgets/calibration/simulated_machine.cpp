@@ -17,7 +17,7 @@
 #include "widgets/calibration/sim_trace_layer.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
 #include "widgets/canvas/canvas_view.hpp"
-#include "widgets/machine/machine_session.hpp"
+#include "session/machine_session.hpp"
 
 namespace fivebar::widgets::calibration {
 
@@ -44,7 +44,7 @@ TrueMachine fromValues(const std::array<double, TrueMachineForm::kFields>& v) {
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
-SimulatedTruth::SimulatedTruth(const StudioDocument& doc, MachineSession& session)
+SimulatedTruth::SimulatedTruth(const StudioDocument& doc, session::MachineSession& session)
     : QObject(&session), doc_(doc), session_(session) {
   setObjectName(QStringLiteral("simulatedTruth"));
   truth_.builtFrom = doc.profile().geometry;
@@ -52,7 +52,7 @@ SimulatedTruth::SimulatedTruth(const StudioDocument& doc, MachineSession& sessio
   connect(&doc_, &StudioDocument::profileChanged, this, &SimulatedTruth::onProfileChanged);
 }
 
-SimulatedTruth& SimulatedTruth::of(const StudioDocument& doc, MachineSession& session) {
+SimulatedTruth& SimulatedTruth::of(const StudioDocument& doc, session::MachineSession& session) {
   if (auto* existing = session.findChild<SimulatedTruth*>(QString(), Qt::FindDirectChildrenOnly))
     return *existing;
   return *new SimulatedTruth(doc, session);
@@ -250,7 +250,7 @@ void SimulatedTruthBadge::mousePressEvent(QMouseEvent* event) {
 }
 
 // ---------------------------------------------------------------------------------------------
-void installSimulatedMachine(const StudioDocument& doc, MachineSession& session, CanvasView& canvas,
+void installSimulatedMachine(const StudioDocument& doc, session::MachineSession& session, CanvasView& canvas,
                              QMenu& menu, QStatusBar& statusBar, QWidget* window) {
   SimulatedTruth& truth = SimulatedTruth::of(doc, session);
   truth.load();

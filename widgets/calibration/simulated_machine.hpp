@@ -24,9 +24,12 @@ class QMenu;
 class QSettings;
 class QStatusBar;
 
+namespace fivebar::session {
+class MachineSession;
+}  // namespace fivebar::session
+
 namespace fivebar::widgets {
 class CanvasView;
-class MachineSession;
 }  // namespace fivebar::widgets
 
 namespace fivebar::widgets::calibration {
@@ -35,9 +38,9 @@ class SimulatedTruth : public QObject {
   Q_OBJECT
  public:
   // Created as a child of `session` (see of()); starts perfect, the saved setting is read by load().
-  SimulatedTruth(const StudioDocument& doc, MachineSession& session);
+  SimulatedTruth(const StudioDocument& doc, session::MachineSession& session);
   // The session's setting, created (perfect) on first use.
-  static SimulatedTruth& of(const StudioDocument& doc, MachineSession& session);
+  static SimulatedTruth& of(const StudioDocument& doc, session::MachineSession& session);
 
   const TrueMachine& truth() const { return truth_; }
   bool active() const { return !truth_.perfect(); }
@@ -66,7 +69,7 @@ class SimulatedTruth : public QObject {
   void onProfileChanged();
 
   const StudioDocument& doc_;
-  MachineSession& session_;
+  session::MachineSession& session_;
   TrueMachine truth_;
   std::string baseName_;  // the profile builtFrom belongs to
   QString settingsFile_;
@@ -127,7 +130,7 @@ class SimulatedTruthBadge : public QLabel {
 
 // The studio's composition of the above: the saved setting loaded, "Simulated machine..." in
 // `menu`, the badge in `statusBar`, the pen's true trace on `canvas`.
-void installSimulatedMachine(const StudioDocument& doc, MachineSession& session, CanvasView& canvas,
+void installSimulatedMachine(const StudioDocument& doc, session::MachineSession& session, CanvasView& canvas,
                              QMenu& menu, QStatusBar& statusBar, QWidget* window);
 
 }  // namespace fivebar::widgets::calibration

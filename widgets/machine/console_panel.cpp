@@ -15,20 +15,20 @@
 namespace fivebar::widgets {
 namespace {
 
-QColor colourOf(ConsoleKind kind) {
+QColor colourOf(session::ConsoleKind kind) {
   switch (kind) {
-    case ConsoleKind::Sent: return palette::drawing();
-    case ConsoleKind::Received: return QColor(0x1f, 0x29, 0x37);
-    case ConsoleKind::Info: return palette::gridLabel();
-    case ConsoleKind::Problem: return palette::problem();
+    case session::ConsoleKind::Sent: return palette::drawing();
+    case session::ConsoleKind::Received: return QColor(0x1f, 0x29, 0x37);
+    case session::ConsoleKind::Info: return palette::gridLabel();
+    case session::ConsoleKind::Problem: return palette::problem();
   }
   return Qt::black;
 }
 
 }  // namespace
 
-ConsolePanel::ConsolePanel(MachineSession& session, QWidget* parent)
-    : QWidget(parent), session_(session) {
+ConsolePanel::ConsolePanel(session::ConsolePort& port, QWidget* parent)
+    : QWidget(parent), port_(port) {
   setObjectName(QStringLiteral("consolePanel"));
   log_ = new QPlainTextEdit(this);
   log_->setReadOnly(true);
@@ -72,22 +72,21 @@ ConsolePanel::ConsolePanel(MachineSession& session, QWidget* parent)
   layout->addWidget(log_, 1);
   layout->addWidget(refusal_);
   layout->addLayout(row);
-  connect(unchecked_, &QCheckBox::toggled, &session_, &MachineSession::setUncheckedConsole);
-  connect(&session_, &MachineSession::uncheckedConsoleChanged, this, [this](bool on) {
+  connect(unchecked_, &QCheckBox::toggled, &port_, &session::ConsolePort::setUncheckedConsole);
+  connect(&port_, &session::ConsolePort::uncheckedConsoleChanged, this, [this](bool on) {
     unchecked_->setChecked(on);
     uncheckedBanner_->setVisible(on);
   });
 
   connect(input_, &QLineEdit::returnPressed, this, &ConsolePanel::submit);
   connect(send_, &QPushButton::clicked, this, &ConsolePanel::submit);
-  connect(&session_, &MachineSession::consoleLine, this, &ConsolePanel::appendLine);
-  connect(&session_, &MachineSession::connectionChanged, this, &ConsolePanel::updateEnabled);
-  connect(&session_, &MachineSession::jobActiveChanged, this, &ConsolePanel::updateEnabled);
+  connect(&port_, &session::ConsolePort::consoleLine, this, &ConsolePanel::appendLine);
+  connect(&port_, &session::ConsolePort::canSendChanged, this, &ConsolePanel::updateEnabled);
   updateEnabled();
 }
 
-void ConsolePanel::appendLine(const QString& text, ConsoleKind kind) {
-  const QString prefix = kind == ConsoleKind::Sent ? QStringLiteral("&gt; ") : QString();
+void ConsolePanel::appendLine(const QString& text, session::ConsoleKind kind) {
+  const QString prefix = kind == session::ConsoleKind::Sent ? QStringLiteral("&gt; ") : QString();
   log_->appendHtml(QStringLiteral("<span style=\"color:%1\">%2%3</span>")
                        .arg(colourOf(kind).name(), prefix, text.toHtmlEscaped()));
 }
@@ -100,7 +99,7 @@ void ConsolePanel::submit() {
   historyPos_ = int(history_.size());
   draft_.clear();
   QString refusal;
-  if (session_.sendLine(line, &refusal)) {
+  if (port_.sendLine(line, &refusal)) {
     input_->clear();
     refusal_->hide();
   } else {
@@ -133,7 +132,7 @@ void ConsolePanel::showHistory(int step) {
 }
 
 void ConsolePanel::updateEnabled() {
-  const bool usable = session_.isConnected() && !session_.jobActive();
+  const bool usable = port_.canSend();
   input_->setEnabled(usable);
   send_->setEnabled(usable);
 }

@@ -1,6 +1,7 @@
 // The machine console: the lines sent to and received from the board (status reports left out,
 // and the job's thousands of "ok"s while a job streams), and an input line with a history
-// walked with the up and down arrow keys. Everything goes through MachineSession, which runs
+// walked with the up and down arrow keys. Everything goes through the session's ConsolePort
+// (session/console_port.hpp: the panel sees only that), and MachineSession runs
 // every line through the motion check (a refused line is not sent; the panel shows why) unless
 // the expert switch "send unchecked" is on (a red banner says so while it is).
 #pragma once
@@ -8,7 +9,7 @@
 #include <QStringList>
 #include <QWidget>
 
-#include "widgets/machine/machine_session.hpp"
+#include "session/console_port.hpp"
 
 class QCheckBox;
 class QLabel;
@@ -24,7 +25,7 @@ class ConsolePanel : public QWidget {
   static constexpr int kMaxLogLines = 2000;
   static constexpr int kMaxHistory = 100;
 
-  explicit ConsolePanel(MachineSession& session, QWidget* parent = nullptr);
+  explicit ConsolePanel(session::ConsolePort& port, QWidget* parent = nullptr);
 
   QLineEdit* input() const { return input_; }
   // "Send unchecked (expert)": off by default; a warning banner shows while it is on.
@@ -36,7 +37,7 @@ class ConsolePanel : public QWidget {
   const QStringList& history() const { return history_; }
 
  public slots:
-  void appendLine(const QString& text, fivebar::widgets::ConsoleKind kind);
+  void appendLine(const QString& text, fivebar::session::ConsoleKind kind);
   void submit();
 
  protected:
@@ -46,7 +47,7 @@ class ConsolePanel : public QWidget {
   void showHistory(int step);
   void updateEnabled();
 
-  MachineSession& session_;
+  session::ConsolePort& port_;
   QPlainTextEdit* log_ = nullptr;
   QLineEdit* input_ = nullptr;
   QPushButton* send_ = nullptr;

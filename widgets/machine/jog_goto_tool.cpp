@@ -7,8 +7,8 @@
 
 namespace fivebar::widgets {
 
-GoToTool::GoToTool(MachineSession& session, QObject* parent) : QObject(parent), session_(session) {
-  connect(&session_, &MachineSession::connectionChanged, this, [this] { cancel(); });
+GoToTool::GoToTool(session::MachineSession& session, QObject* parent) : QObject(parent), session_(session) {
+  connect(&session_, &session::MachineSession::connectionChanged, this, [this] { cancel(); });
 }
 
 void GoToTool::pick(QPointF machineMm) {
@@ -16,11 +16,13 @@ void GoToTool::pick(QPointF machineMm) {
   const auto start = session_.jogStart();
   if (!start || !session_.isConnected()) {
     pending_.reset();
+    pendingPathMm_.clear();
     emit picked(false, tr("Connect the machine first: its position is not known."));
     emit repaintNeeded();
     return;
   }
-  pending_ = planGoTo(session_.profile(), *start, Vec2(machineMm.x(), machineMm.y()));
+  pending_ = jog::planGoTo(session_.profile(), *start, Vec2(machineMm.x(), machineMm.y()));
+  pendingPathMm_ = jog::penPathMm(session_.profile(), *start, *pending_);
   if (pending_->ok()) {
     emit picked(true, tr("Go to %1, %2 mm? The dashed path is the pen's travel (%3 checked moves).")
                           .arg(QLocale().toString(machineMm.x(), 'f', 1))
@@ -74,10 +76,10 @@ void GoToTool::paintOverlay(QPainter& painter, const ViewTransform& view) {
   if (target_) {
     const bool ok = pending_ && pending_->ok();
     const QColor colour = ok ? palette::selection() : palette::problem();
-    if (pending_ && pending_->pathMm.size() > 1) {
+    if (pending_ && pendingPathMm_.size() > 1) {
       QPainterPath path;
-      path.moveTo(view.widgetFromMachine(QPointF(pending_->pathMm[0].x(), pending_->pathMm[0].y())));
-      for (const Vec2& p : pending_->pathMm) path.lineTo(view.widgetFromMachine(QPointF(p.x(), p.y())));
+      path.moveTo(view.widgetFromMachine(QPointF(pendingPathMm_[0].x(), pendingPathMm_[0].y())));
+      for (const Vec2& p : pendingPathMm_) path.lineTo(view.widgetFromMachine(QPointF(p.x(), p.y())));
       painter.setPen(QPen(colour, 2.0, Qt::DashLine));
       painter.drawPath(path);
     }

@@ -1,5 +1,5 @@
 // Canvas tool for "go to": a click on the canvas plans a checked move of the pen to that point
-// (jog_planner planGoTo: pen up and a safe travel at rapid rate, every leg checked) and draws the path the pen will take;
+// (drivers/jog planGoTo: pen up and a safe travel at rapid rate, every leg checked) and draws the path the pen will take;
 // nothing moves until the move is confirmed (confirm(), Enter in the jog panel). A refused target
 // is drawn in red with the reason.
 #pragma once
@@ -8,19 +8,19 @@
 #include <optional>
 
 #include "widgets/canvas/canvas_layer.hpp"
-#include "widgets/machine/jog_planner.hpp"
-#include "widgets/machine/machine_session.hpp"
+#include "drivers/jog.hpp"
+#include "session/machine_session.hpp"
 
 namespace fivebar::widgets {
 
 class GoToTool : public QObject, public CanvasTool {
   Q_OBJECT
  public:
-  explicit GoToTool(MachineSession& session, QObject* parent = nullptr);
+  explicit GoToTool(session::MachineSession& session, QObject* parent = nullptr);
 
   // Plans a go-to to a machine-frame point (what a click does).
   void pick(QPointF machineMm);
-  const std::optional<JogPlan>& pending() const { return pending_; }
+  const std::optional<jog::JogPlan>& pending() const { return pending_; }
   std::optional<QPointF> target() const { return target_; }
 
   bool mousePress(QMouseEvent* event, const ViewTransform& view) override;
@@ -41,9 +41,10 @@ class GoToTool : public QObject, public CanvasTool {
   void repaintNeeded();
 
  private:
-  MachineSession& session_;
+  session::MachineSession& session_;
   std::optional<QPointF> target_;
-  std::optional<JogPlan> pending_;
+  std::optional<jog::JogPlan> pending_;
+  std::vector<Vec2> pendingPathMm_;  // the pen's path of pending_ (machine frame)
   std::optional<QPointF> hoverMm_;
 };
 

@@ -28,20 +28,20 @@ namespace {
 constexpr double kSteps[] = {0.1, 1.0, 10.0};
 constexpr double kDefaultSpeedMmPerS = 20.0;
 
-std::optional<JogDirection> directionOfKey(int key) {
+std::optional<session::JogDirection> directionOfKey(int key) {
   switch (key) {
-    case Qt::Key_Left: return JogDirection::cartesian(-1, 0);
-    case Qt::Key_Right: return JogDirection::cartesian(1, 0);
-    case Qt::Key_Up: return JogDirection::cartesian(0, 1);
-    case Qt::Key_Down: return JogDirection::cartesian(0, -1);
+    case Qt::Key_Left: return session::JogDirection::cartesian(-1, 0);
+    case Qt::Key_Right: return session::JogDirection::cartesian(1, 0);
+    case Qt::Key_Up: return session::JogDirection::cartesian(0, 1);
+    case Qt::Key_Down: return session::JogDirection::cartesian(0, -1);
     default: return std::nullopt;
   }
 }
 
 }  // namespace
 
-JogPanel::JogPanel(MachineSession& session, QWidget* parent)
-    : QWidget(parent), session_(session), controller_(session), goTo_(session) {
+JogPanel::JogPanel(session::MachineSession& session, session::JogController& controller, QWidget* parent)
+    : QWidget(parent), session_(session), controller_(controller), goTo_(session) {
   setObjectName(QStringLiteral("jogPanel"));
   // XY arrows: row 0 is +Y (the machine frame's y points toward the work area, up on screen).
   const QString arrowText[3][3] = {{QStringLiteral("↖"), QStringLiteral("↑"), QStringLiteral("↗")},
@@ -54,7 +54,7 @@ JogPanel::JogPanel(MachineSession& session, QWidget* parent)
       const int dx = col - 1, dy = 1 - row;
       const QString tip = tr("Jog the pen %1 mm in X, %2 mm in Y per step; hold for a continuous jog")
                               .arg(dx).arg(dy);
-      arrows_[row][col] = makeJogButton(arrowText[row][col], tip, JogDirection::cartesian(dx, dy));
+      arrows_[row][col] = makeJogButton(arrowText[row][col], tip, session::JogDirection::cartesian(dx, dy));
       grid->addWidget(arrows_[row][col], row, col);
     }
   }
@@ -71,7 +71,7 @@ JogPanel::JogPanel(MachineSession& session, QWidget* parent)
       const QString text = QStringLiteral("θ%1 %2").arg(motor).arg(sign < 0 ? QStringLiteral("−") : QStringLiteral("+"));
       const QString tip = sign < 0 ? tr("Turn motor %1 clockwise by one step").arg(motor)
                                    : tr("Turn motor %1 counter-clockwise by one step").arg(motor);
-      motors_[motor - 1][s] = makeJogButton(text, tip, JogDirection::motorJog(motor, sign));
+      motors_[motor - 1][s] = makeJogButton(text, tip, session::JogDirection::motorJog(motor, sign));
       motorRow->addWidget(motors_[motor - 1][s]);
     }
   }
@@ -148,8 +148,8 @@ JogPanel::JogPanel(MachineSession& session, QWidget* parent)
     QString why;
     if (!session_.goToHomePose(&why)) message_->setText(why);
   });
-  connect(penUp_, &QPushButton::clicked, &session_, &MachineSession::penUp);
-  connect(penDown_, &QPushButton::clicked, &session_, &MachineSession::penDown);
+  connect(penUp_, &QPushButton::clicked, &session_, &session::MachineSession::penUp);
+  connect(penDown_, &QPushButton::clicked, &session_, &session::MachineSession::penDown);
   connect(goToButton_, &QPushButton::toggled, this, &JogPanel::setGoToActive);
   connect(confirm_, &QPushButton::clicked, &goTo_, &GoToTool::confirm);
   connect(cancel_, &QPushButton::clicked, &goTo_, &GoToTool::cancel);
@@ -158,14 +158,14 @@ JogPanel::JogPanel(MachineSession& session, QWidget* parent)
   connect(&goTo_, &GoToTool::repaintNeeded, this, [this] {
     if (canvas_) canvas_->update();
   });
-  connect(&controller_, &JogController::message, message_, &QLabel::setText);
-  connect(&session_, &MachineSession::connectionChanged, this, &JogPanel::refreshEnabled);
-  connect(&session_, &MachineSession::statusUpdated, this, &JogPanel::refreshEnabled);
-  connect(&session_, &MachineSession::jobActiveChanged, this, &JogPanel::refreshEnabled);
+  connect(&controller_, &session::JogController::message, message_, &QLabel::setText);
+  connect(&session_, &session::MachineSession::connectionChanged, this, &JogPanel::refreshEnabled);
+  connect(&session_, &session::MachineSession::statusUpdated, this, &JogPanel::refreshEnabled);
+  connect(&session_, &session::MachineSession::jobActiveChanged, this, &JogPanel::refreshEnabled);
   refreshEnabled();
 }
 
-QPushButton* JogPanel::makeJogButton(const QString& text, const QString& tip, const JogDirection& dir) {
+QPushButton* JogPanel::makeJogButton(const QString& text, const QString& tip, const session::JogDirection& dir) {
   auto* b = new QPushButton(text, this);
   b->setToolTip(tip);
   b->setMinimumSize(40, 32);

@@ -2,13 +2,13 @@
 // (0.1, 1, 10 mm or degrees), a tap jogs one step and holding jogs continuously until release;
 // keyboard jogging on the canvas (arrow keys; Page Up / Page Down lift and lower the pen; Enter
 // confirms a go-to, Escape cancels it); go-to by clicking the canvas with the path previewed;
-// home ($H) or "set reference pose"; pen up and down. All moves are checked (jog_planner).
+// home ($H) or "set reference pose"; pen up and down. All moves are checked (drivers/jog).
 #pragma once
 
 #include <QWidget>
 #include <vector>
 
-#include "widgets/machine/jog_controller.hpp"
+#include "session/jog_controller.hpp"
 #include "widgets/machine/jog_goto_tool.hpp"
 
 class QAbstractButton;
@@ -24,7 +24,8 @@ class CanvasView;
 class JogPanel : public QWidget {
   Q_OBJECT
  public:
-  explicit JogPanel(MachineSession& session, QWidget* parent = nullptr);
+  // The controller (session::MachineSide::jog()) plans and sends the moves; both must outlive the panel.
+  JogPanel(session::MachineSession& session, session::JogController& controller, QWidget* parent = nullptr);
   ~JogPanel() override;
 
   // The go-to tool on the canvas, and keyboard jogging: arrow keys anywhere in the panel's
@@ -32,7 +33,7 @@ class JogPanel : public QWidget {
   // canvas. The canvas must outlive the panel's use.
   void attachCanvas(CanvasView* canvas);
 
-  JogController& controller() { return controller_; }
+  session::JogController& controller() { return controller_; }
   GoToTool& goToTool() { return goTo_; }
   // The button for a direction, e.g. arrowButton(1, 0) is "+X", arrowButton(-1, 1) "up-left".
   QPushButton* arrowButton(int dx, int dy) const;
@@ -47,13 +48,13 @@ class JogPanel : public QWidget {
   bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
-  QPushButton* makeJogButton(const QString& text, const QString& tip, const JogDirection& dir);
+  QPushButton* makeJogButton(const QString& text, const QString& tip, const session::JogDirection& dir);
   void setGoToActive(bool active);
   void refreshEnabled();
   void onPicked(bool ok, const QString& text);
 
-  MachineSession& session_;
-  JogController controller_;
+  session::MachineSession& session_;
+  session::JogController& controller_;
   GoToTool goTo_;
   CanvasView* canvas_ = nullptr;
   CanvasTool* previousTool_ = nullptr;

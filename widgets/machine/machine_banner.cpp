@@ -9,7 +9,7 @@
 
 namespace fivebar::widgets {
 
-MachineBanner::MachineBanner(MachineSession& session, QWidget* parent)
+MachineBanner::MachineBanner(session::MachineSession& session, QWidget* parent)
     : QFrame(parent), session_(session) {
   setObjectName(QStringLiteral("machineBanner"));
   setFrameShape(QFrame::StyledPanel);
@@ -41,19 +41,19 @@ MachineBanner::MachineBanner(MachineSession& session, QWidget* parent)
   layout->addWidget(message_);
   layout->addLayout(buttons);
 
-  connect(reset_, &QPushButton::clicked, &session_, &MachineSession::softReset);
-  connect(unlock_, &QPushButton::clicked, &session_, &MachineSession::unlock);
+  connect(reset_, &QPushButton::clicked, &session_, &session::MachineSession::softReset);
+  connect(unlock_, &QPushButton::clicked, &session_, &session::MachineSession::unlock);
   connect(home_, &QPushButton::clicked, this, [this] { requestHome(this, session_); });
-  connect(dismiss_, &QPushButton::clicked, &session_, &MachineSession::dismissProblem);
-  connect(&session_, &MachineSession::problemChanged, this, &MachineBanner::refresh);
-  connect(&session_, &MachineSession::connectionChanged, this, &MachineBanner::refresh);
+  connect(dismiss_, &QPushButton::clicked, &session_, &session::MachineSession::dismissProblem);
+  connect(&session_, &session::MachineSession::problemChanged, this, &MachineBanner::refresh);
+  connect(&session_, &session::MachineSession::connectionChanged, this, &MachineBanner::refresh);
   refresh();
 }
 
 void MachineBanner::refresh() {
-  const MachineProblem& p = session_.problem();
-  const bool alarm = p.kind == MachineProblem::Kind::Alarm;
-  setVisible(p.kind != MachineProblem::Kind::None);
+  const session::MachineProblem& p = session_.problem();
+  const bool alarm = p.kind == session::MachineProblem::Kind::Alarm;
+  setVisible(p.kind != session::MachineProblem::Kind::None);
   setStyleSheet(alarm ? QStringLiteral("#machineBanner { background: #fee2e2; border: 1px solid #dc2626; "
                                        "border-radius: 4px; }")
                       : QStringLiteral("#machineBanner { background: #fef3c7; border: 1px solid #d97706; "

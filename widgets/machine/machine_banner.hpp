@@ -5,7 +5,7 @@
 
 #include <QFrame>
 
-#include "widgets/machine/machine_session.hpp"
+#include "session/machine_session.hpp"
 
 class QLabel;
 class QPushButton;
@@ -15,7 +15,7 @@ namespace fivebar::widgets {
 class MachineBanner : public QFrame {
   Q_OBJECT
  public:
-  explicit MachineBanner(MachineSession& session, QWidget* parent = nullptr);
+  explicit MachineBanner(session::MachineSession& session, QWidget* parent = nullptr);
 
   QLabel* message() const { return message_; }
   QPushButton* unlockButton() const { return unlock_; }
@@ -27,7 +27,7 @@ class MachineBanner : public QFrame {
   void refresh();
 
  private:
-  MachineSession& session_;
+  session::MachineSession& session_;
   QLabel* title_ = nullptr;
   QLabel* message_ = nullptr;
   QPushButton* unlock_ = nullptr;

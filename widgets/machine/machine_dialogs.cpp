@@ -5,7 +5,7 @@
 #include <QPushButton>
 
 #include "core/kinematics/units.hpp"
-#include "widgets/machine/machine_session.hpp"
+#include "session/machine_session.hpp"
 
 namespace fivebar::widgets {
 namespace {
@@ -38,11 +38,11 @@ bool confirmReferencePose(QWidget* parent, const MachineProfile& profile) {
   return box.clickedButton() == yes;
 }
 
-void requestReferencePose(QWidget* parent, MachineSession& session) {
+void requestReferencePose(QWidget* parent, session::MachineSession& session) {
   if (confirmReferencePose(parent, session.profile())) session.setReferencePose();
 }
 
-void requestHome(QWidget* parent, MachineSession& session) {
+void requestHome(QWidget* parent, session::MachineSession& session) {
   if (session.profile().hasHomingSwitches) {
     session.home();
     return;

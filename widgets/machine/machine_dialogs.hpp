@@ -12,17 +12,20 @@ namespace fivebar {
 struct MachineProfile;
 }
 
+namespace fivebar::session {
+class MachineSession;
+}
+
 namespace fivebar::widgets {
 
-class MachineSession;
 
 // The confirmation text for the reference pose of this profile (home angles in degrees).
 QString referencePoseQuestion(const MachineProfile& profile);
 // Asks; true when the user confirmed. Object name of the box: "referencePoseQuestion".
 bool confirmReferencePose(QWidget* parent, const MachineProfile& profile);
 // The home button: $H with homing switches; otherwise the reference pose after confirmation.
-void requestHome(QWidget* parent, MachineSession& session);
+void requestHome(QWidget* parent, session::MachineSession& session);
 // "Set reference pose" after confirmation.
-void requestReferencePose(QWidget* parent, MachineSession& session);
+void requestReferencePose(QWidget* parent, session::MachineSession& session);
 
 }  // namespace fivebar::widgets

@@ -14,7 +14,7 @@
 #include "core/kinematics/units.hpp"
 #include "drivers/serial_transport.hpp"
 #include "widgets/machine/machine_banner.hpp"
-#include "widgets/machine/settings_advice.hpp"
+#include "session/settings_advice.hpp"
 
 namespace fivebar::widgets {
 namespace {
@@ -55,7 +55,7 @@ QString stateName(grbl::MachineState state) {
   return QCoreApplication::translate("fivebar::widgets::MachinePanel", "Unknown");
 }
 
-MachinePanel::MachinePanel(MachineSession& session, QWidget* parent)
+MachinePanel::MachinePanel(session::MachineSession& session, QWidget* parent)
     : QWidget(parent), session_(session) {
   setObjectName(QStringLiteral("machinePanel"));
   ports_ = new QComboBox(this);
@@ -139,14 +139,14 @@ MachinePanel::MachinePanel(MachineSession& session, QWidget* parent)
 
   connect(refresh_, &QPushButton::clicked, this, &MachinePanel::refreshPorts);
   connect(connect_, &QPushButton::clicked, this, &MachinePanel::connectSelected);
-  connect(disconnect_, &QPushButton::clicked, &session_, &MachineSession::disconnectMachine);
+  connect(disconnect_, &QPushButton::clicked, &session_, &session::MachineSession::disconnectMachine);
   connect(ports_, &QComboBox::currentIndexChanged, this, &MachinePanel::refreshConnection);
-  connect(&session_, &MachineSession::connectionChanged, this, &MachinePanel::refreshConnection);
-  connect(&session_, &MachineSession::connectionChanged, this, &MachinePanel::refreshStatus);
-  connect(&session_, &MachineSession::statusUpdated, this, &MachinePanel::refreshStatus);
-  connect(&session_, &MachineSession::penStateChanged, this, &MachinePanel::refreshStatus);
-  connect(&session_, &MachineSession::boardSettingsChanged, this, &MachinePanel::refreshSettings);
-  connect(&session_, &MachineSession::connectFailed, this, &MachinePanel::onConnectFailed);
+  connect(&session_, &session::MachineSession::connectionChanged, this, &MachinePanel::refreshConnection);
+  connect(&session_, &session::MachineSession::connectionChanged, this, &MachinePanel::refreshStatus);
+  connect(&session_, &session::MachineSession::statusUpdated, this, &MachinePanel::refreshStatus);
+  connect(&session_, &session::MachineSession::penStateChanged, this, &MachinePanel::refreshStatus);
+  connect(&session_, &session::MachineSession::boardSettingsChanged, this, &MachinePanel::refreshSettings);
+  connect(&session_, &session::MachineSession::connectFailed, this, &MachinePanel::onConnectFailed);
   refreshPorts();
   refreshStatus();
   refreshSettings();
@@ -166,7 +166,7 @@ void MachinePanel::refreshSettings() {
   const auto diffs = session_.settingDifferences();
   settingsWarning_->setVisible(session_.isConnected() && !diffs.empty());
   if (diffs.empty()) return;
-  settingsText_->setText(widgets::settingsWarningText(diffs));
+  settingsText_->setText(session::settingsWarningText(diffs));
 }
 
 void MachinePanel::refreshPorts() {
@@ -215,10 +215,10 @@ void MachinePanel::refreshStatus() {
   const grbl::MachineState s = session_.isConnected() ? session_.state() : grbl::MachineState::Unknown;
   state_->setText(session_.isConnected() ? stateName(s) : tr("Offline"));
   state_->setStyleSheet(QStringLiteral("color: %1").arg(colourOfState(s)));
-  switch (session_.isConnected() ? session_.penState() : PenState::Unknown) {
-    case PenState::Up: pen_->setText(tr("up")); break;
-    case PenState::Down: pen_->setText(tr("down (drawing)")); break;
-    case PenState::Unknown: pen_->setText(session_.isConnected() ? tr("not known yet") : QStringLiteral("–")); break;
+  switch (session_.isConnected() ? session_.penState() : session::PenState::Unknown) {
+    case session::PenState::Up: pen_->setText(tr("up")); break;
+    case session::PenState::Down: pen_->setText(tr("down (drawing)")); break;
+    case session::PenState::Unknown: pen_->setText(session_.isConnected() ? tr("not known yet") : QStringLiteral("–")); break;
   }
   const auto pen = session_.penMm();
   xy_->setText(pen ? tr("%1, %2 mm").arg(QLocale().toString(pen->x(), 'f', 2)).arg(QLocale().toString(pen->y(), 'f', 2))

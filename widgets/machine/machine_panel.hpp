@@ -6,7 +6,7 @@
 
 #include <QWidget>
 
-#include "widgets/machine/machine_session.hpp"
+#include "session/machine_session.hpp"
 
 #include <functional>
 
@@ -22,7 +22,7 @@ class MachineBanner;
 class MachinePanel : public QWidget {
   Q_OBJECT
  public:
-  explicit MachinePanel(MachineSession& session, QWidget* parent = nullptr);
+  explicit MachinePanel(session::MachineSession& session, QWidget* parent = nullptr);
 
   // Speed-up of the simulated machine connected from this panel (1 = real time).
   void setSimulationSpeedup(double speedup) { simSpeedup_ = speedup; }
@@ -50,7 +50,7 @@ class MachinePanel : public QWidget {
   void refreshSettings();
   void onConnectFailed(const QString& message);
 
-  MachineSession& session_;
+  session::MachineSession& session_;
   double simSpeedup_ = 1.0;
   QComboBox* ports_ = nullptr;
   QComboBox* baud_ = nullptr;

@@ -15,7 +15,7 @@
 #include <cstdio>
 #include <set>
 
-#include "widgets/machine/machine_session.hpp"
+#include "session/machine_session.hpp"
 
 namespace fivebar::widgets {
 namespace {
@@ -28,7 +28,7 @@ QString valueText(double v) {
 
 }  // namespace
 
-MachineSettingsDialog::MachineSettingsDialog(MachineSession& session, QString backupDir,
+MachineSettingsDialog::MachineSettingsDialog(session::MachineSession& session, QString backupDir,
                                              QWidget* parent)
     : QDialog(parent), session_(session), backupDir_(std::move(backupDir)) {
   setObjectName(QStringLiteral("machineSettingsDialog"));
@@ -59,7 +59,7 @@ MachineSettingsDialog::MachineSettingsDialog(MachineSession& session, QString ba
   connect(writeButton_, &QPushButton::clicked, this, &MachineSettingsDialog::confirmAndWrite);
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
   // The sync listens on the link's protocol: drop it before the link goes away.
-  connect(&session_, &MachineSession::aboutToDisconnect, this, [this] {
+  connect(&session_, &session::MachineSession::aboutToDisconnect, this, [this] {
     sync_.reset();
     writing_ = false;
     status_->setText(tr("The machine was disconnected."));

@@ -15,15 +15,18 @@ class QLabel;
 class QPushButton;
 class QTableWidget;
 
+namespace fivebar::session {
+class MachineSession;
+}
+
 namespace fivebar::widgets {
 
-class MachineSession;
 
 class MachineSettingsDialog : public QDialog {
   Q_OBJECT
  public:
   // backupDir: folder of the backup files written before any change (created when missing).
-  MachineSettingsDialog(MachineSession& session, QString backupDir, QWidget* parent = nullptr);
+  MachineSettingsDialog(session::MachineSession& session, QString backupDir, QWidget* parent = nullptr);
   ~MachineSettingsDialog() override;
 
   // Sends $$; false (with the reason in statusLabel) when the machine is not connected, a job
@@ -51,7 +54,7 @@ class MachineSettingsDialog : public QDialog {
   void confirmAndWrite();
   std::string saveBackup(const std::string& text);
 
-  MachineSession& session_;
+  session::MachineSession& session_;
   QString backupDir_;
   std::unique_ptr<setup::SettingsSync> sync_;
   setup::Settings wanted_;

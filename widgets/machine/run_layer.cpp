@@ -8,12 +8,12 @@ namespace fivebar::widgets {
 
 QColor runDoneColour() { return QColor(0x16, 0xa3, 0x4a); }  // green: apart from the speed colours
 
-RunLayer::RunLayer(const RunController& run, const MachineSession& session, QObject* parent)
+RunLayer::RunLayer(const session::RunController& run, const session::MachineSession& session, QObject* parent)
     : QObject(parent), run_(run), session_(session) {
-  connect(&run_, &RunController::runChanged, this, &RunLayer::rebuild);
-  connect(&run_, &RunController::progressChanged, this, &RunLayer::changed);
-  connect(&session_, &MachineSession::statusUpdated, this, &RunLayer::changed);
-  connect(&session_, &MachineSession::connectionChanged, this, &RunLayer::changed);
+  connect(&run_, &session::RunController::runChanged, this, &RunLayer::rebuild);
+  connect(&run_, &session::RunController::progressChanged, this, &RunLayer::changed);
+  connect(&session_, &session::MachineSession::statusUpdated, this, &RunLayer::changed);
+  connect(&session_, &session::MachineSession::connectionChanged, this, &RunLayer::changed);
 }
 
 void RunLayer::rebuild() {

@@ -11,14 +11,14 @@
 #include <vector>
 
 #include "widgets/canvas/canvas_layer.hpp"
-#include "widgets/machine/run_controller.hpp"
+#include "session/run_controller.hpp"
 
 namespace fivebar::widgets {
 
 class RunLayer : public QObject, public CanvasLayer {
   Q_OBJECT
  public:
-  RunLayer(const RunController& run, const MachineSession& session, QObject* parent = nullptr);
+  RunLayer(const session::RunController& run, const session::MachineSession& session, QObject* parent = nullptr);
 
   void paint(QPainter& painter, const ViewTransform& view) override;
   // Pen-down segments (machine frame, mm) executed so far.
@@ -35,8 +35,8 @@ class RunLayer : public QObject, public CanvasLayer {
     std::size_t lineIndex;  // the job line that draws it
     QLineF mm;
   };
-  const RunController& run_;
-  const MachineSession& session_;
+  const session::RunController& run_;
+  const session::MachineSession& session_;
   const job::GcodeJob* builtFor_ = nullptr;
   std::vector<Segment> segments_;  // in line order
 };

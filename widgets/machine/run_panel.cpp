@@ -3,7 +3,7 @@
 #include <QMessageBox>
 
 #include "widgets/document/job_pipeline.hpp"
-#include "widgets/machine/settings_advice.hpp"
+#include "session/settings_advice.hpp"
 
 #include <QCoreApplication>
 #include <QGridLayout>
@@ -44,7 +44,7 @@ QString formatTimeLeft(double seconds) {
   return QCoreApplication::translate("fivebar::widgets::RunPanel", "%1 s").arg(s);
 }
 
-RunPanel::RunPanel(RunController& run, MachineSession& session, QWidget* parent)
+RunPanel::RunPanel(session::RunController& run, session::MachineSession& session, QWidget* parent)
     : QWidget(parent), run_(run), session_(session) {
   setObjectName(QStringLiteral("runPanel"));
   start_ = new QPushButton(tr("Start"), this);
@@ -96,11 +96,11 @@ RunPanel::RunPanel(RunController& run, MachineSession& session, QWidget* parent)
 
   connect(start_, &QPushButton::clicked, this, &RunPanel::startClicked);
   connect(resume_, &QPushButton::clicked, this, &RunPanel::resumeClicked);
-  connect(hold_, &QPushButton::clicked, &run_, &RunController::hold);
-  connect(continue_, &QPushButton::clicked, &run_, &RunController::continueRun);
-  connect(stop_, &QPushButton::clicked, &run_, &RunController::stop);
-  connect(&run_, &RunController::runChanged, this, &RunPanel::refresh);
-  connect(&run_, &RunController::progressChanged, this, &RunPanel::refreshProgress);
+  connect(hold_, &QPushButton::clicked, &run_, &session::RunController::hold);
+  connect(continue_, &QPushButton::clicked, &run_, &session::RunController::continueRun);
+  connect(stop_, &QPushButton::clicked, &run_, &session::RunController::stop);
+  connect(&run_, &session::RunController::runChanged, this, &RunPanel::refresh);
+  connect(&run_, &session::RunController::progressChanged, this, &RunPanel::refreshProgress);
   refresh();
 }
 
@@ -145,7 +145,7 @@ bool RunPanel::confirmSettings() {
   }
   const auto diffs = session_.settingDifferences();
   if (diffs.empty()) return true;
-  QMessageBox box(QMessageBox::Warning, tr("The board's settings differ"), settingsMismatchText(diffs),
+  QMessageBox box(QMessageBox::Warning, tr("The board's settings differ"), session::settingsMismatchText(diffs),
                   QMessageBox::NoButton, this);
   box.setObjectName(QStringLiteral("settingsMismatch"));
   box.setTextFormat(Qt::RichText);

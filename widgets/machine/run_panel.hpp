@@ -5,7 +5,7 @@
 
 #include <QWidget>
 
-#include "widgets/machine/run_controller.hpp"
+#include "session/run_controller.hpp"
 
 #include <functional>
 
@@ -18,7 +18,7 @@ namespace fivebar::widgets {
 class RunPanel : public QWidget {
   Q_OBJECT
  public:
-  RunPanel(RunController& run, MachineSession& session, QWidget* parent = nullptr);
+  RunPanel(session::RunController& run, session::MachineSession& session, QWidget* parent = nullptr);
 
   QPushButton* startButton() const { return start_; }
   QPushButton* holdButton() const { return hold_; }
@@ -44,8 +44,8 @@ class RunPanel : public QWidget {
   bool confirmDiscardResume();
   bool confirmSettings();
 
-  RunController& run_;
-  MachineSession& session_;
+  session::RunController& run_;
+  session::MachineSession& session_;
   QPushButton* start_ = nullptr;
   QPushButton* hold_ = nullptr;
   QPushButton* continue_ = nullptr;

@@ -1,11 +1,11 @@
-#include "widgets/machine/jog_controller.hpp"
+#include "session/jog_controller.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "core/kinematics/units.hpp"
 
-namespace fivebar::widgets {
+namespace fivebar::session {
 
 JogController::JogController(MachineSession& session, QObject* parent)
     : QObject(parent), session_(session) {
@@ -28,24 +28,23 @@ JogController::JogController(MachineSession& session, QObject* parent)
   });
 }
 
-JogPlan JogController::plan(const JogDirection& direction, double amount) const {
+jog::JogPlan JogController::plan(const JogDirection& direction, double amount) const {
   const auto start = session_.jogStart();
   if (!start) {
-    JogPlan refused;
+    jog::JogPlan refused;
+    refused.status = jog::JogStatus::NoPosition;
     refused.reason = "the machine position is not known yet";
     return refused;
   }
   const MachineProfile& profile = session_.profile();
   if (direction.kind == JogDirection::Kind::Cartesian) {
-    const double norm = direction.xy.norm();
-    if (norm <= 0.0) return {};
-    return planCartesianJog(profile, *start, direction.xy / norm * amount, speedMmPerS_);
+    return jog::planCartesianJog(profile, *start, direction.xy, amount, speedMmPerS_);
   }
   const double maxRadPerS = direction.motor == 1 ? profile.motors.maxSpeedRadPerS1
                                                  : profile.motors.maxSpeedRadPerS2;
   const double speedRadPerS = std::min(radFromDeg(kMotorSpeedDegPerS), maxRadPerS);
-  return planMotorJog(profile, *start, direction.motor, direction.sign * radFromDeg(amount),
-                      speedRadPerS);
+  return jog::planMotorJog(profile, *start, direction.motor, direction.sign * amount,
+                           degFromRad(speedRadPerS) * 60.0);
 }
 
 bool JogController::jogStep(const JogDirection& direction) {
@@ -53,7 +52,7 @@ bool JogController::jogStep(const JogDirection& direction) {
     emit message(tr("Jog refused: the machine is not connected, not idle, or a job is running."));
     return false;
   }
-  const JogPlan p = plan(direction, step_);
+  const jog::JogPlan p = plan(direction, step_);
   report(p);
   return p.ok() && session_.sendJog(p);
 }
@@ -89,12 +88,12 @@ void JogController::topUp() {
          leadS(*streaming_) < kLeadS) {
     double amount = speedMmPerS_ * kChunkS;
     if (streaming_->kind == JogDirection::Kind::Motor) amount = kMotorSpeedDegPerS * kChunkS;
-    const JogPlan p = plan(*streaming_, amount);
+    const jog::JogPlan p = plan(*streaming_, amount);
     if (p.ok() && !session_.sendJog(p)) {
       streaming_.reset();
       break;
     }
-    if (p.status != JogStatus::Full) {
+    if (p.status != jog::JogStatus::Ok) {
       // The edge of the safe region: the machine stops at the last safe point by itself.
       report(p);
       streaming_.reset();
@@ -119,16 +118,17 @@ double JogController::leadS(const JogDirection& direction) const {
   return (b.p - a.p).norm() / std::max(speedMmPerS_, 1e-6);
 }
 
-void JogController::report(const JogPlan& p) {
+void JogController::report(const jog::JogPlan& p) {
   switch (p.status) {
-    case JogStatus::Full: emit message(QString()); break;
-    case JogStatus::Clipped:
+    case jog::JogStatus::Ok: emit message(QString()); break;
+    case jog::JogStatus::Clipped:
       emit message(tr("Jog stopped at the last safe point: %1").arg(QString::fromStdString(p.reason)));
       break;
-    case JogStatus::Refused:
+    case jog::JogStatus::Blocked:
+    case jog::JogStatus::NoPosition:
       emit message(tr("Jog refused: %1").arg(QString::fromStdString(p.reason)));
       break;
   }
 }
 
-}  // namespace fivebar::widgets
+}  // namespace fivebar::session

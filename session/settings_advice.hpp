@@ -1,7 +1,7 @@
 // What a difference between the board's GRBL $ settings and the profile's means for a maker:
 // one sentence per differing setting, and whether it would stop (or spoil) a job, so the machine
 // panel can warn on connect and Start can explain a mismatch before the machine moves.
-// Pure (Qt strings only, translated in the context "fivebar::widgets::SettingsAdvice").
+// Pure (Qt strings only, translated in the context "fivebar::session::SettingsAdvice").
 #pragma once
 
 #include <QString>
@@ -9,7 +9,7 @@
 
 #include "drivers/machine_setup.hpp"
 
-namespace fivebar::widgets {
+namespace fivebar::session {
 
 struct SettingAdvice {
   int id = 0;
@@ -24,4 +24,4 @@ QString settingsWarningText(const std::vector<setup::SettingDiff>& diffs);
 // The explanation Start shows (rich text, one bullet per difference).
 QString settingsMismatchText(const std::vector<setup::SettingDiff>& diffs);
 
-}  // namespace fivebar::widgets
+}  // namespace fivebar::session

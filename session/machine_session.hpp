@@ -7,6 +7,7 @@
 
 #include <QObject>
 #include <QString>
+#include <array>
 #include <memory>
 #include <optional>
 #include <set>
@@ -14,18 +15,19 @@
 
 #include "core/kinematics/kinematics.hpp"
 #include "drivers/grbl_protocol.hpp"
+#include "drivers/jog_settle.hpp"
 #include "drivers/machine_link.hpp"
 #include "drivers/machine_setup.hpp"
 #include "drivers/sim_machine.hpp"
-#include "widgets/machine/jog_planner.hpp"
-#include "widgets/document/studio_document.hpp"
+#include "drivers/jog.hpp"
+#include "session/studio_inputs.hpp"
 
 namespace fivebar {
 class SimulatedTransport;
 }
 class QTimer;
 
-namespace fivebar::widgets {
+namespace fivebar::session {
 
 enum class ConsoleKind { Sent, Received, Info, Problem };
 
@@ -51,7 +53,7 @@ class MachineSession : public QObject, private grbl::ProtocolListener {
   // "Connected" only once the board answered like GRBL (a status report) within this time.
   static constexpr int kConnectTimeoutMs = 4000;
 
-  explicit MachineSession(const StudioDocument& doc, QObject* parent = nullptr);
+  explicit MachineSession(const StudioInputs& inputs, QObject* parent = nullptr);
   ~MachineSession() override;
 
   // --- connection ---
@@ -84,12 +86,12 @@ class MachineSession : public QObject, private grbl::ProtocolListener {
   std::optional<Vec2> penMm() const;             // FK of motorAngles, machine frame
   int bytesInFlight() const;
   const MachineProblem& problem() const { return problem_; }
-  const MachineProfile& profile() const { return doc_.profile(); }
+  const MachineProfile& profile() const { return inputs_.profile(); }
   // Where a new jog starts: the end of the jog still in progress, else the reported angles.
   std::optional<JointAngles> jogStart() const;
   bool jobActive() const { return jobActive_; }
   // True when no jog of ours may still be moving (its end confirmed by quiet status reports).
-  bool jogSettled() const { return !jogEnd_ && !settleBlocked_; }
+  bool jogSettled() const { return settle_.settled(); }
   // True when jogging and console commands may be sent now (connected, no job, not in alarm).
   bool canJog() const;
   PenState penState() const { return pen_; }
@@ -99,6 +101,11 @@ class MachineSession : public QObject, private grbl::ProtocolListener {
   void readBoardSettings();
   bool boardSettingsKnown() const { return boardSettings_.has_value(); }
   bool readingBoardSettings() const;
+  // The board's settings as last read (nullopt while unknown).
+  const std::optional<setup::Settings>& boardSettings() const { return boardSettings_; }
+  // The board's work offset (machine = work + WCO), X and Y in deg; nullopt before a status
+  // report carried one.
+  std::optional<std::array<double, 2>> workOffsetDeg() const;
   // The board's settings that differ from what the profile expects (empty while unknown).
   std::vector<setup::SettingDiff> settingDifferences() const;
 
@@ -112,7 +119,7 @@ class MachineSession : public QObject, private grbl::ProtocolListener {
   // --- commands (each returns false and logs why when it cannot be sent) ---
   // A console line: checked (see setUncheckedConsole); false with *refusal when refused.
   bool sendLine(const QString& line, QString* refusal = nullptr);
-  bool sendJog(const JogPlan& plan);
+  bool sendJog(const jog::JogPlan& plan);
   void cancelJog();
   void unlock();
   // $H with homing switches; otherwise ($X when in alarm and) the reference pose.
@@ -137,7 +144,7 @@ class MachineSession : public QObject, private grbl::ProtocolListener {
   void aboutToDisconnect();  // the link is still valid: stop using it
   void statusUpdated();      // a status report arrived
   void problemChanged();
-  void consoleLine(const QString& text, fivebar::widgets::ConsoleKind kind);
+  void consoleLine(const QString& text, fivebar::session::ConsoleKind kind);
   void jobActiveChanged(bool active);
   void lineRefused(const QString& reason);  // a console line the motion check refused
   void uncheckedConsoleChanged(bool on);
@@ -160,22 +167,14 @@ class MachineSession : public QObject, private grbl::ProtocolListener {
   void onLine(const grbl::ParsedLine& line) override;
   void onDisconnected(const std::string& reason) override;
 
-  const StudioDocument& doc_;
+  const StudioInputs& inputs_;
   std::unique_ptr<Transport> transport_;
   std::unique_ptr<MachineLink> link_;
   SimulatedTransport* simulated_ = nullptr;
   std::optional<MachineProfile> simTrueMachine_;
   std::set<std::uint64_t> userLines_;  // ids of lines sent by the user (errors go to the banner)
-  std::set<std::uint64_t> jogLines_;  // lines of jog / go-to plans not yet answered
-  // Jog lines already in the board's buffer at a cancel: once they are answered they have entered
-  // the planner, and a second cancel stops them (GRBL's 0x85 does not flush its serial buffer).
-  std::set<std::uint64_t> cancelAfter_;
-  std::optional<JointAngles> jogEnd_;  // end of the jog that may still be running
-  int settleReports_ = 0;     // quiet reports still needed before jogEnd_ is forgotten
-  bool settleBlocked_ = false;  // after a cancel / new reference: no jog until settled
-  // After G10 L20 the position is known again only from a report with the new WCO.
-  std::optional<std::uint64_t> referenceLine_;
-  bool awaitWco_ = false;
+  // Jogs, cancels and new references until the reports confirm the machine stands still.
+  jog::JogSettle settle_;
   MachineProblem problem_;
   bool answered_ = false;  // the board sent a status report since the link opened
   QString connectTarget_;  // "PORT at BAUD baud" for the timeout message
@@ -189,4 +188,4 @@ class MachineSession : public QObject, private grbl::ProtocolListener {
   bool tearingDown_ = false;
 };
 
-}  // namespace fivebar::widgets
+}  // namespace fivebar::session

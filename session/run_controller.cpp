@@ -1,4 +1,4 @@
-#include "widgets/machine/run_controller.hpp"
+#include "session/run_controller.hpp"
 
 #include <QDir>
 #include <QFile>
@@ -7,8 +7,9 @@
 #include <QStandardPaths>
 
 #include "core/output/gcode.hpp"
+#include "drivers/soft_limits.hpp"
 
-namespace fivebar::widgets {
+namespace fivebar::session {
 namespace {
 
 QString defaultJobDirectory() {
@@ -27,9 +28,8 @@ QString writeAtomically(const QString& path, const std::string& text) {
 
 }  // namespace
 
-RunController::RunController(const StudioDocument& doc, const PreviewController& preview,
-                             MachineSession& session, QObject* parent)
-    : QObject(parent), doc_(doc), preview_(preview), session_(session), jobDir_(defaultJobDirectory()) {
+RunController::RunController(const StudioInputs& inputs, MachineSession& session, QObject* parent)
+    : QObject(parent), inputs_(inputs), session_(session), jobDir_(defaultJobDirectory()) {
   refresh_.setInterval(kRefreshMs);
   connect(&refresh_, &QTimer::timeout, this, &RunController::refresh);
   connect(&session_, &MachineSession::aboutToDisconnect, this, [this] {
@@ -44,13 +44,11 @@ RunController::RunController(const StudioDocument& doc, const PreviewController&
   connect(&session_, &MachineSession::statusUpdated, this, [this] {
     if (!running()) emit runChanged();
   });
-  connect(&preview_, &PreviewController::resultChanged, this, &RunController::runChanged);
-  connect(&doc_, &StudioDocument::drawingChanged, this, &RunController::runChanged);
+  connect(&inputs_, &StudioInputs::plannedJobChanged, this, &RunController::runChanged);
+  connect(&inputs_, &StudioInputs::drawingChanged, this, &RunController::runChanged);
   // A finished or stopped run belongs to the job it ran: when the job, its placement or the
   // profile change, its overlay and status go (its saved progress stays, for Resume).
-  for (auto signal : {&StudioDocument::drawingChanged, &StudioDocument::placementChanged,
-                      &StudioDocument::profileChanged, &StudioDocument::jobInputsChanged})
-    connect(&doc_, signal, this, &RunController::clearPreviousRun);
+  connect(&inputs_, &StudioInputs::jobChanged, this, &RunController::clearPreviousRun);
 }
 
 void RunController::clearPreviousRun() {
@@ -75,7 +73,7 @@ QString RunController::resumeOffer() const {
   if (file.open(QIODevice::ReadOnly)) {
     const QByteArray bytes = file.readAll();
     const job::GcodeJob j =
-        job::parseJob(std::string_view(bytes.constData(), std::size_t(bytes.size())), job::rulesFor(doc_.profile()));
+        job::parseJob(std::string_view(bytes.constData(), std::size_t(bytes.size())), job::rulesFor(inputs_.profile()));
     std::size_t done = 0;
     for (const job::JobLine& line : j.lines)
       if (line.fileLine <= saved->lastCompletedLine) ++done;
@@ -107,13 +105,27 @@ QString RunController::guiMessage(const QString& message) const {
 
 RunController::~RunController() { dropStream(); }
 
+QString RunController::boardLimitProblem(const std::string& gcode) const {
+  const auto& board = session_.boardSettings();
+  const auto wco = session_.workOffsetDeg();
+  if (!board || !wco || !setup::softLimitsOn(*board)) return {};
+  const job::GcodeJob parsed = job::parseJob(gcode, job::rulesFor(inputs_.profile()));
+  const auto hit = setup::firstSoftLimitHit(parsed, *board, *wco);
+  if (!hit) return {};
+  return tr("Not started: the board's soft limits would stop this job with an alarm (ALARM:2): %1. "
+            "The board checks its travel ($130, $131) in machine coordinates, which the reference "
+            "pose shifted against the drawing's. Home the machine, or make the board's settings "
+            "match the profile (Machine settings...), then start again.")
+      .arg(QString::fromStdString(setup::describe(*hit)));
+}
+
 void RunController::setJobDirectory(const QString& dir) {
   jobDir_ = dir;
   emit runChanged();
 }
 
 QString RunController::jobPath() const {
-  QString base = QFileInfo(doc_.fileName()).completeBaseName();
+  QString base = QFileInfo(inputs_.drawingFileName()).completeBaseName();
   if (base.isEmpty()) base = QStringLiteral("drawing");
   return QDir(jobDir_).filePath(base + QStringLiteral(".gcode"));
 }
@@ -122,11 +134,11 @@ bool RunController::running() const { return stream_ != nullptr && !finished_; }
 
 bool RunController::canStart() const {
   return session_.isConnected() && !running() && session_.state() == grbl::MachineState::Idle &&
-         preview_.result().status == PreviewStatus::Planned && preview_.result().job != nullptr;
+         inputs_.plannedJob() != nullptr;
 }
 
 const PlannedJob* RunController::plannedJob() const {
-  return preview_.result().status == PreviewStatus::Planned ? preview_.result().job.get() : nullptr;
+  return inputs_.plannedJob();
 }
 
 bool RunController::canResume() const {
@@ -154,8 +166,9 @@ bool RunController::start(QString* error) {
   } else if (!QDir().mkpath(jobDir_)) {
     why = tr("Cannot create the job folder %1.").arg(jobDir_);
   } else {
-    const std::string gcode = writeGcode(*preview_.result().job, doc_.profile());
-    why = writeAtomically(jobPath(), gcode);
+    const std::string gcode = writeGcode(*inputs_.plannedJob(), inputs_.profile());
+    why = boardLimitProblem(gcode);
+    if (why.isEmpty()) why = writeAtomically(jobPath(), gcode);
     if (why.isEmpty()) {
       QFile::remove(QString::fromStdString(job::progressPathFor(jobPath().toStdString())));
       if (launch(false, &why)) return true;
@@ -185,8 +198,8 @@ bool RunController::launch(bool resume, QString* error) {
   StreamOptions options;
   options.jobPath = jobPath().toStdString();
   options.resume = resume;
-  options.profile = doc_.profile();
-  options.machineName = doc_.profile().name;
+  options.profile = inputs_.profile();
+  options.machineName = inputs_.profile().name;
   stream_ = std::make_unique<StreamSession>(*session_.link(), options);
   connect(stream_.get(), &StreamSession::finished, this, &RunController::onFinished);
   std::string why;
@@ -196,7 +209,7 @@ bool RunController::launch(bool resume, QString* error) {
     return false;
   }
   job_ = std::make_shared<const job::GcodeJob>(stream_->job());
-  timeline_ = job::timelineOf(*job_, doc_.profile());
+  timeline_ = job::timelineOf(*job_, inputs_.profile());
   snapshot_ = {};
   snapshot_.totalLines = job_->lines.size();
   snapshot_.etaS = timeline_.totalS();
@@ -264,4 +277,4 @@ void RunController::dropStream() {
   stream_.reset();
 }
 
-}  // namespace fivebar::widgets
+}  // namespace fivebar::session

@@ -1,4 +1,4 @@
-#include "widgets/machine/machine_session.hpp"
+#include "session/machine_session.hpp"
 
 #include <QTimer>
 
@@ -10,13 +10,9 @@
 #include "drivers/serial_transport.hpp"
 #include "drivers/simulated_transport.hpp"
 
-namespace fivebar::widgets {
+namespace fivebar::session {
 namespace {
 
-// Status reports (Idle, nothing in flight) that must arrive after a jog before its end is
-// forgotten and jogs start from the reported position again. Two, because at most one '?' is
-// outstanding: the second report was certainly requested after the last jog answer.
-constexpr int kReportsToSettle = 2;
 constexpr int kSimClockMs = 5;
 
 QString fromStd(const std::string& s) { return QString::fromStdString(s); }
@@ -33,13 +29,13 @@ QString inStudioWords(const std::string& reason) {
 
 }  // namespace
 
-MachineSession::MachineSession(const StudioDocument& doc, QObject* parent)
-    : QObject(parent), doc_(doc) {
+MachineSession::MachineSession(const StudioInputs& inputs, QObject* parent)
+    : QObject(parent), inputs_(inputs) {
   connectTimer_ = new QTimer(this);
   connectTimer_->setSingleShot(true);
   connect(connectTimer_, &QTimer::timeout, this, &MachineSession::onConnectTimeout);
   // Another profile expects other settings: compare again.
-  connect(&doc_, &StudioDocument::profileChanged, this, &MachineSession::boardSettingsChanged);
+  connect(&inputs_, &StudioInputs::profileChanged, this, &MachineSession::boardSettingsChanged);
 }
 
 MachineSession::~MachineSession() {
@@ -52,7 +48,7 @@ MachineSession::~MachineSession() {
 
 bool MachineSession::connectSimulated(double speedup, const sim::Fault& fault, QString* error) {
   sim::SimConfig config;
-  config.profile = doc_.profile();
+  config.profile = inputs_.profile();
   config.fault = fault;
   config.trueMachine = simTrueMachine_;
   config.setUp = true;  // a board set up for the profile; it starts at MPos 0,0 (no reference)
@@ -133,13 +129,7 @@ void MachineSession::teardown(const QString& reason) {
   transport_.reset();
   simulated_ = nullptr;
   userLines_.clear();
-  jogLines_.clear();
-  cancelAfter_.clear();
-  jogEnd_.reset();
-  settleReports_ = 0;
-  settleBlocked_ = false;
-  referenceLine_.reset();
-  awaitWco_ = false;
+  settle_.clear();
   problem_ = {};
   tearingDown_ = false;
   emit consoleLine(reason, ConsoleKind::Info);
@@ -174,7 +164,7 @@ std::optional<JointAngles> MachineSession::motorAngles() const {
 std::optional<Vec2> MachineSession::penMm() const {
   const auto q = motorAngles();
   if (!q) return std::nullopt;
-  const FkResult fk = forward(doc_.profile().geometry, *q, doc_.profile().assembly);
+  const FkResult fk = forward(inputs_.profile().geometry, *q, inputs_.profile().assembly);
   if (!fk.ok()) return std::nullopt;
   return fk.p;
 }
@@ -182,12 +172,12 @@ std::optional<Vec2> MachineSession::penMm() const {
 int MachineSession::bytesInFlight() const { return link_ ? link_->protocol().bytesInFlight() : 0; }
 
 std::optional<JointAngles> MachineSession::jogStart() const {
-  if (jogEnd_) return jogEnd_;
+  if (settle_.pendingEnd()) return settle_.pendingEnd();
   return motorAngles();
 }
 
 bool MachineSession::canJog() const {
-  if (!isConnected() || jobActive_ || settleBlocked_) return false;
+  if (!isConnected() || jobActive_ || settle_.blocked()) return false;
   const grbl::MachineState s = state();
   return (s == grbl::MachineState::Idle || s == grbl::MachineState::Jog) && motorAngles().has_value();
 }
@@ -255,7 +245,7 @@ bool MachineSession::checkConsoleLine(const std::string& line, QString* refusal)
                     "(Idle), so it can be checked from where the machine really is.");
       return false;
     }
-    const motion::LineCheck checked = motion::checkLine(doc_.profile(), line, pose);
+    const motion::LineCheck checked = motion::checkLine(inputs_.profile(), line, pose);
     if (!checked.ok()) {
       *refusal = inStudioWords(checked.reason);
       return false;
@@ -301,12 +291,18 @@ bool MachineSession::readingBoardSettings() const {
                            settingsSync_->state() == setup::SetupState::Writing);
 }
 
-std::vector<setup::SettingDiff> MachineSession::settingDifferences() const {
-  if (!boardSettings_) return {};
-  return setup::compare(*boardSettings_, setup::expectedSettings(doc_.profile()));
+std::optional<std::array<double, 2>> MachineSession::workOffsetDeg() const {
+  if (!link_ || !link_->protocol().workOffset()) return std::nullopt;
+  const grbl::Axes& wco = *link_->protocol().workOffset();
+  return std::array<double, 2>{wco.x(), wco.y()};
 }
 
-bool MachineSession::sendJog(const JogPlan& plan) {
+std::vector<setup::SettingDiff> MachineSession::settingDifferences() const {
+  if (!boardSettings_) return {};
+  return setup::compare(*boardSettings_, setup::expectedSettings(inputs_.profile()));
+}
+
+bool MachineSession::sendJog(const jog::JogPlan& plan) {
   if (!canJog()) {
     emit consoleLine(tr("Jog refused: the machine is not idle, not connected or a job is running."),
                      ConsoleKind::Problem);
@@ -314,38 +310,34 @@ bool MachineSession::sendJog(const JogPlan& plan) {
   }
   if (!plan.ok()) return false;
   const bool logEach = plan.lines.size() <= 3;
+  std::vector<std::uint64_t> ids;
+  bool sent = true;
   for (const std::string& line : plan.lines) {
-    if (!enqueueUserLine(line, logEach)) return false;
-    jogLines_.insert(*userLines_.rbegin());
+    if (!(sent = enqueueUserLine(line, logEach))) break;
+    ids.push_back(*userLines_.rbegin());
   }
-  if (!plan.targets.empty()) jogEnd_ = plan.targets.back();
+  settle_.jogSent(ids, sent && !plan.targets.empty() ? std::optional(plan.targets.back()) : std::nullopt);
+  if (!sent) return false;
   if (!logEach)
     emit consoleLine(tr("%1 (jog in %2 checked moves)")
                          .arg(QString::fromStdString(plan.lines.back()))
                          .arg(plan.lines.size()),
                      ConsoleKind::Sent);
-  settleReports_ = kReportsToSettle;
   return true;
 }
 
 void MachineSession::cancelJog() {
   if (!link_) return;
-  for (std::uint64_t id : link_->protocol().dropQueued()) {
-    userLines_.erase(id);
-    jogLines_.erase(id);
-  }
+  const std::vector<std::uint64_t> dropped = link_->protocol().dropQueued();
+  for (std::uint64_t id : dropped) userLines_.erase(id);
   link_->protocol().sendRealtime(grbl::realtime::kJogCancel);
-  cancelAfter_ = jogLines_;
-  // Where the machine stops is known only from the next reports: no jog until then.
-  jogEnd_.reset();
-  settleBlocked_ = true;
-  settleReports_ = kReportsToSettle;
+  settle_.cancelled(dropped);
 }
 
 void MachineSession::unlock() { enqueueUserLine("$X", true); }
 
 void MachineSession::home() {
-  if (doc_.profile().hasHomingSwitches) {
+  if (inputs_.profile().hasHomingSwitches) {
     enqueueUserLine("$H", true);
   } else {
     // Without switches the reference is declared; G10 is refused in alarm, so unlock first.
@@ -360,13 +352,13 @@ bool MachineSession::goToHomePose(QString* why) {
     if (why) *why = tr("The machine must be connected, idle and its position known.");
     return false;
   }
-  const MachineProfile& p = doc_.profile();
+  const MachineProfile& p = inputs_.profile();
   const FkResult home = forward(p.geometry, p.homeAngles, p.assembly);
   if (!home.ok()) {
     if (why) *why = tr("The profile's home pose does not close the linkage.");
     return false;
   }
-  const JogPlan plan = planGoTo(p, *from, home.p);
+  const jog::JogPlan plan = jog::planGoTo(p, *from, home.p);
   if (!plan.ok()) {
     if (why) *why = tr("No checked move to the home pose: %1").arg(fromStd(plan.reason));
     return false;
@@ -381,13 +373,8 @@ bool MachineSession::goToHomePose(QString* why) {
 }
 
 void MachineSession::setReferencePose() {
-  if (enqueueUserLine(jog::referencePoseCommand(doc_.profile()), true)) {
-    referenceLine_ = *userLines_.rbegin();
-    awaitWco_ = true;
-    jogEnd_.reset();
-    settleBlocked_ = true;
-    settleReports_ = kReportsToSettle;
-  }
+  if (enqueueUserLine(jog::referencePoseCommand(inputs_.profile()), true))
+    settle_.referenceSent(*userLines_.rbegin());
 }
 
 void MachineSession::softReset() {
@@ -410,7 +397,7 @@ void MachineSession::cycleStart() {
 
 bool MachineSession::penUp() {
   if (!canJog()) return false;
-  for (const std::string& line : job::penUpCommands(doc_.profile().tool))
+  for (const std::string& line : job::penUpCommands(inputs_.profile().tool))
     if (!enqueueUserLine(line, true)) return false;
   setPenState(PenState::Up);
   return true;
@@ -418,7 +405,7 @@ bool MachineSession::penUp() {
 
 bool MachineSession::penDown() {
   if (!canJog()) return false;
-  for (const std::string& line : job::penDownCommands(doc_.profile().tool))
+  for (const std::string& line : job::penDownCommands(inputs_.profile().tool))
     if (!enqueueUserLine(line, true)) return false;
   setPenState(PenState::Down);
   return true;
@@ -440,20 +427,14 @@ void MachineSession::setProblem(MachineProblem problem) {
 }
 
 void MachineSession::onAck(const grbl::Ack& ack) {
-  if (referenceLine_ && ack.id == *referenceLine_) {
-    referenceLine_.reset();
-    if (!ack.ok()) awaitWco_ = false;
-  }
-  const bool user = userLines_.erase(ack.id) > 0;
-  const bool jog = jogLines_.erase(ack.id) > 0;
-  if (cancelAfter_.erase(ack.id) > 0 && cancelAfter_.empty() && link_)
+  if (settle_.answered(ack.id, ack.ok()) == jog::JogSettle::AckAction::CancelAgain && link_)
     link_->protocol().sendRealtime(grbl::realtime::kJogCancel);
+  const bool user = userLines_.erase(ack.id) > 0;
   if (!user) return;
   if (ack.ok()) {
     if (problem_.kind == MachineProblem::Kind::Error) setProblem({});
     return;
   }
-  if (jog) jogEnd_.reset();
   MachineProblem p;
   p.kind = MachineProblem::Kind::Error;
   p.code = ack.errorCode;
@@ -471,12 +452,7 @@ void MachineSession::onStatus(const grbl::StatusReport& report) {
     // the differences; Start explains them).
     readBoardSettings();
   }
-  if (awaitWco_ && !referenceLine_ && report.wco) awaitWco_ = false;
-  const bool quiet = report.state == grbl::MachineState::Idle && jogLines_.empty() && !awaitWco_;
-  if (quiet && settleReports_ > 0 && --settleReports_ == 0) {
-    jogEnd_.reset();
-    settleBlocked_ = false;
-  }
+  settle_.reported(report.state, report.wco.has_value());
   if (report.state == grbl::MachineState::Alarm && problem_.kind != MachineProblem::Kind::Alarm) {
     MachineProblem p;
     p.kind = MachineProblem::Kind::Alarm;
@@ -492,16 +468,8 @@ void MachineSession::onStatus(const grbl::StatusReport& report) {
 }
 
 void MachineSession::onAlarm(int code, const std::vector<std::uint64_t>& lostIds) {
-  for (std::uint64_t id : lostIds) {
-    userLines_.erase(id);
-    jogLines_.erase(id);
-  }
-  cancelAfter_.clear();
-  jogEnd_.reset();
-  settleBlocked_ = false;
-  settleReports_ = 0;
-  referenceLine_.reset();
-  awaitWco_ = false;
+  for (std::uint64_t id : lostIds) userLines_.erase(id);
+  settle_.interrupted(lostIds);
   MachineProblem p;
   p.kind = MachineProblem::Kind::Alarm;
   p.code = code;
@@ -511,18 +479,10 @@ void MachineSession::onAlarm(int code, const std::vector<std::uint64_t>& lostIds
 
 void MachineSession::onReset(const std::string& version, const std::vector<std::uint64_t>& lostIds,
                              const std::vector<std::uint64_t>& dropped) {
-  for (const auto* ids : {&lostIds, &dropped}) {
-    for (std::uint64_t id : *ids) {
-      userLines_.erase(id);
-      jogLines_.erase(id);
-    }
-  }
-  cancelAfter_.clear();
-  jogEnd_.reset();
-  settleBlocked_ = false;
-  settleReports_ = 0;
-  referenceLine_.reset();
-  awaitWco_ = false;
+  std::vector<std::uint64_t> lost = lostIds;
+  lost.insert(lost.end(), dropped.begin(), dropped.end());
+  for (std::uint64_t id : lost) userLines_.erase(id);
+  settle_.interrupted(lost);
   consoleAbsolute_ = true;
   setPenState(PenState::Unknown);
   emit consoleLine(tr("The board reset (Grbl %1).").arg(fromStd(version)), ConsoleKind::Info);
@@ -565,4 +525,4 @@ void MachineSession::onDisconnected(const std::string& reason) {
   QTimer::singleShot(0, this, [this, why] { teardown(why); });
 }
 
-}  // namespace fivebar::widgets
+}  // namespace fivebar::session

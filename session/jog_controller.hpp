@@ -1,7 +1,7 @@
 // Jog logic behind the jog panel and the keyboard, without widgets: a tap is one step, holding
 // starts a continuous jog streamed as short checked "$J=" moves (a few planner blocks ahead, so
 // the machine never runs far past the release), and releasing cancels it with 0x85. Every move is
-// planned by jog_planner (checked sub-moves) and sent through MachineSession.
+// planned by drivers/jog (checked sub-moves) and sent through MachineSession.
 #pragma once
 
 #include <QElapsedTimer>
@@ -9,10 +9,10 @@
 #include <QTimer>
 #include <optional>
 
-#include "widgets/machine/jog_planner.hpp"
-#include "widgets/machine/machine_session.hpp"
+#include "drivers/jog.hpp"
+#include "session/machine_session.hpp"
 
-namespace fivebar::widgets {
+namespace fivebar::session {
 
 // One jog direction: a unit XY direction (Cartesian) or one motor and a sign.
 struct JogDirection {
@@ -56,11 +56,11 @@ class JogController : public QObject {
   void message(const QString& text);  // what happened: clipped, refused (empty: all fine)
 
  private:
-  JogPlan plan(const JogDirection& direction, double amount) const;
+  jog::JogPlan plan(const JogDirection& direction, double amount) const;
   void topUp();
   // Seconds of motion between the reported position and the end of what was sent.
   double leadS(const JogDirection& direction) const;
-  void report(const JogPlan& plan);
+  void report(const jog::JogPlan& plan);
 
   MachineSession& session_;
   double step_ = 1.0;
@@ -72,4 +72,4 @@ class JogController : public QObject {
   QTimer streamTimer_;
 };
 
-}  // namespace fivebar::widgets
+}  // namespace fivebar::session

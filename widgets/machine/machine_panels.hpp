@@ -1,14 +1,14 @@
-// The machine side of the studio, composed in one place so the main window needs only a few
-// lines: the MachineSession (the only door to the machine), the run controller, the canvas layer
-// of the executed job, the keyboard jog and go-to on the canvas, the machine pose on the canvas,
-// and the panels (machine, jog, run, console, profile editor) handed to the window's docks.
+// MachinePanels: the widgets of the machine side, built over a session::MachineSide (the session,
+// run and jog controllers, app/studio composes both): the panels handed to the window's docks
+// (machine, run, jog, console, profile editor), the canvas layer of the executed job, the canvas
+// linkage following the machine's reported pose, the machine settings dialog and the quit
+// prompt while a job runs. It owns no machine state.
 #pragma once
 
 #include <QObject>
 #include <functional>
 
-#include "widgets/machine/machine_session.hpp"
-#include "widgets/machine/run_controller.hpp"
+#include "session/machine_side.hpp"
 
 class QAction;
 class QDockWidget;
@@ -24,26 +24,25 @@ class MachineSettingsDialog;
 class ProfileEditor;
 class RunLayer;
 class RunPanel;
+class StudioDocument;
 
-class MachineUi : public QObject {
+class MachinePanels : public QObject {
   Q_OBJECT
  public:
   // Docks a panel in the window: (panel, title, objectName, area) -> the dock.
   using AddDock = std::function<QDockWidget*(QWidget*, const QString&, const QString&, Qt::DockWidgetArea)>;
 
-  MachineUi(StudioDocument& doc, PreviewController& preview, CanvasView& canvas,
-            MachineLayer& machineLayer, QWidget* window);
+  MachinePanels(session::MachineSide& machine, StudioDocument& doc, CanvasView& canvas,
+                MachineLayer& machineLayer, QWidget* window);
 
   // Creates the panels and hands them to addDock.
   void addPanels(const AddDock& addDock);
-  // Connects the built-in simulated machine (the --demo start); false with a console message.
-  bool connectSimulated(double speedup = 1.0);
 
-  MachineSession& session() { return session_; }
-  RunController& run() { return run_; }
   JogPanel* jogPanel() const { return jog_; }
   RunPanel* runPanel() const { return runPanel_; }
   MachinePanel* machinePanel() const { return machinePanel_; }
+  ConsolePanel* consolePanel() const { return console_; }
+  ProfileEditor* profileEditor() const { return profile_; }
   // "Machine settings...": opens the dialog comparing the board's $$ with the profile (created
   // by addPanels; the window puts it in its Machine menu).
   QAction* settingsAction() const { return settingsAction_; }
@@ -52,15 +51,13 @@ class MachineUi : public QObject {
   // Asked before the window closes: while a job runs, "Hold, stop and quit" (the run is stopped
   // cleanly and its progress saved, then true) or "Keep running" (false). True when no job runs.
   bool confirmClose();
-  static constexpr int kStopWaitMs = 8000;  // longest wait for the stop sequence on quit
 
  private:
+  session::MachineSide& machine_;
   StudioDocument& doc_;
   CanvasView& canvas_;
   MachineLayer& machineLayer_;
   QWidget* window_;
-  MachineSession session_;
-  RunController run_;
   RunLayer* runLayer_ = nullptr;
   MachinePanel* machinePanel_ = nullptr;
   JogPanel* jog_ = nullptr;

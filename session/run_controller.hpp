@@ -16,18 +16,17 @@
 #include "drivers/job_runner.hpp"
 #include "drivers/job_timeline.hpp"
 #include "drivers/stream_session.hpp"
-#include "widgets/machine/machine_session.hpp"
-#include "widgets/document/preview_controller.hpp"
+#include "session/machine_session.hpp"
+#include "session/studio_inputs.hpp"
 
-namespace fivebar::widgets {
+namespace fivebar::session {
 
 class RunController : public QObject {
   Q_OBJECT
  public:
   static constexpr int kRefreshMs = 200;  // progress refresh while streaming
 
-  RunController(const StudioDocument& doc, const PreviewController& preview,
-                MachineSession& session, QObject* parent = nullptr);
+  RunController(const StudioInputs& inputs, MachineSession& session, QObject* parent = nullptr);
   ~RunController() override;
 
   // Where job files (NAME.gcode and NAME.gcode.progress) live; created on demand.
@@ -80,9 +79,11 @@ class RunController : public QObject {
   void dropStream();
   void clearPreviousRun();
   QString guiMessage(const QString& message) const;
+  // Pre-flight against the board itself: "" when the board's soft limits ($20, $130/$131, checked
+  // in machine coordinates = work + WCO) let every line of gcode through, else why not.
+  QString boardLimitProblem(const std::string& gcode) const;
 
-  const StudioDocument& doc_;
-  const PreviewController& preview_;
+  const StudioInputs& inputs_;
   MachineSession& session_;
   QString jobDir_;
   std::unique_ptr<StreamSession> stream_;
@@ -95,4 +96,4 @@ class RunController : public QObject {
   QTimer refresh_;
 };
 
-}  // namespace fivebar::widgets
+}  // namespace fivebar::session
