@@ -246,7 +246,9 @@ JogPlan planFrame(const MachineProfile& p, const JointAngles& current, const job
     corners = {lo, {hi.x(), lo.y()}, hi, {lo.x(), hi.y()}};
   }
   const auto first = ikNear(p, corners[0], *mode, kinematicFromCommanded(p.calibration, current));
-  const JogPlan travel = first ? planGoTo(p, current, corners[0]) : JogPlan{JogStatus::Blocked};
+  JogPlan travel;
+  if (first) travel = planGoTo(p, current, corners[0]);
+  else travel.status = JogStatus::Blocked;
   if (!travel.ok()) {
     plan.status = JogStatus::Blocked;
     plan.reason = "cannot reach the frame's first corner: " + travel.reason;

@@ -24,14 +24,6 @@ constexpr int kMaxDetourSearches = 16;
 // Full preflight verifications a fix search may spend.
 constexpr int kMaxFixVerifications = 3;
 
-// The representative of `angle` near `ref`, shifted by a turn when that keeps it in [lo, hi].
-double nearWithinLimits(double angle, double ref, double lo, double hi) {
-  const double a = unwrapNear(angle, ref);
-  for (double shift : {0.0, 2.0 * kPi, -2.0 * kPi})
-    if (a + shift >= lo && a + shift <= hi) return a + shift;
-  return a;
-}
-
 Message pointText(const Stroke& s, int k, const Vec2& p) {
   return FB_TR("Preflight", "layer %1 path %2 point %3 at (%4, %5) mm")
       .arg(s.layerIndex).arg(s.pathIndex).arg(k).arg(p.x(), 2).arg(p.y(), 2);

@@ -178,10 +178,10 @@ TEST(PenOffsetPlanning, PreflightJudgesReachForThePen) {
   o.suggestFixes = false;
   const FeasibilityReport a = preflight({s}, plain, plain.defaultMode, o);
   ASSERT_FALSE(a.feasible);
-  EXPECT_NE(a.problems.front().reason.find("out of reach of leg 1"), std::string::npos) << a.problems.front().reason;
+  EXPECT_NE(a.problems.front().reason.text().find("out of reach of leg 1"), std::string::npos) << a.problems.front().reason.text();
   const FeasibilityReport b = preflight({s}, ahead, ahead.defaultMode, o);
   for (const PreflightProblem& pr : b.problems)
-    EXPECT_EQ(pr.reason.find("out of reach"), std::string::npos) << pr.reason;
+    EXPECT_EQ(pr.reason.text().find("out of reach"), std::string::npos) << pr.reason.text();
 }
 
 // Joint limits are on commanded angles (GRBL's soft limits count commanded steps). With motor 1's

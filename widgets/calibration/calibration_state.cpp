@@ -1,5 +1,7 @@
 #include "widgets/calibration/calibration_state.hpp"
 
+#include "widgets/document/core_message.hpp"
+
 #include <QCoreApplication>
 #include <algorithm>
 #include <cmath>
@@ -206,7 +208,7 @@ std::optional<AccuracyFigures> simulatedAccuracy(const MachineProfile& profile, 
   if (!pattern) return std::nullopt;
   PlanResult plan = planCalibrationPattern(*pattern, profile);
   if (!plan.ok()) {
-    if (error) *error = QString::fromStdString(plan.message);
+    if (error) *error = translated(plan.message);
     return std::nullopt;
   }
   std::string gcode;
