@@ -3480,6 +3480,14 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
         <source>Build the simulated machine imperfectly, to try calibration without hardware</source>
         <translation>Die simulierte Maschine unvollkommen bauen, um die Kalibrierung ohne Hardware auszuprobieren</translation>
     </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::calibration::SimulatedTruth</name>

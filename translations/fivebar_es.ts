@@ -3480,6 +3480,14 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
         <source>Build the simulated machine imperfectly, to try calibration without hardware</source>
         <translation>Construir la máquina simulada imperfecta, para probar la calibración sin hardware</translation>
     </message>
+    <message>
+        <source>OK</source>
+        <translation>Aceptar</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::calibration::SimulatedTruth</name>

@@ -3480,6 +3480,14 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
         <source>Build the simulated machine imperfectly, to try calibration without hardware</source>
         <translation>Construire la machine simulée imparfaite, pour essayer l'étalonnage sans matériel</translation>
     </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::calibration::SimulatedTruth</name>

@@ -18,7 +18,9 @@
 #include <set>
 
 #include "app/studio/language_menu.hpp"
+#include "widgets/calibration/distances_box.hpp"
 #include "widgets/calibration/sheet_layer.hpp"
+#include "widgets/calibration/sim_trace_layer.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
 #include "app/studio/main_window.hpp"
 #include "core/machine/profile.hpp"
@@ -78,7 +80,10 @@ std::set<QString> runtimeContexts() {
         &calibration::MeasurePage::staticMetaObject, &calibration::FitPage::staticMetaObject,
         &calibration::ApplyPage::staticMetaObject, &calibration::VerifyPage::staticMetaObject,
         &calibration::PatternSender::staticMetaObject, &calibration::CalibrationPreview::staticMetaObject,
-        &calibration::SheetLayer::staticMetaObject})
+        &calibration::SheetLayer::staticMetaObject, &calibration::AccuracyPage::staticMetaObject,
+        &calibration::DistancesBox::staticMetaObject, &calibration::SimTraceLayer::staticMetaObject,
+        &calibration::SimulatedMachineDialog::staticMetaObject, &calibration::SimulatedTruth::staticMetaObject,
+        &calibration::SimulatedTruthBadge::staticMetaObject, &calibration::TrueMachineForm::staticMetaObject})
     names.insert(QString::fromLatin1(m->className()));
   for (const char* c : {"QObject", "main", "DocumentCommands", "JobPipeline", "MapPainter",
                         "WorkspaceLegend", "ImportWarningsPanel", "DesignPainter", "ImportWarning",

@@ -60,8 +60,8 @@ AccuracyPage::AccuracyPage(CalibrationWizard& wizard) : w_(wizard) {
   buttons->addStretch(1);
   left->addLayout(buttons);
   preview_ = new CalibrationPreview;
-  layout->addLayout(left, 3);
-  layout->addWidget(preview_, 2);
+  layout->addLayout(left, 2);
+  layout->addWidget(preview_, 1);
   connect(fromSheet_, &QPushButton::clicked, this, &AccuracyPage::fillFromSimulatedSheet);
   connect(table_, &QTableWidget::cellChanged, this, [this] {
     if (!filling_) updateFigures();

@@ -206,7 +206,9 @@ SimulatedMachineDialog::SimulatedMachineDialog(SimulatedTruth& truth, QWidget* p
   form_ = new TrueMachineForm(this);
   form_->setAmounts(truth_.truth());
   layout->addWidget(form_);
-  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+  auto* buttons = new QDialogButtonBox(this);
+  buttons->addButton(tr("OK"), QDialogButtonBox::AcceptRole)->setDefault(true);
+  buttons->addButton(tr("Cancel"), QDialogButtonBox::RejectRole);
   QPushButton* perfect = buttons->addButton(tr("Perfect machine"), QDialogButtonBox::ResetRole);
   perfect->setObjectName(QStringLiteral("perfectMachine"));
   perfect->setToolTip(tr("All amounts zero: the simulated machine is exactly the profile"));
