@@ -105,11 +105,12 @@ QString RunController::guiMessage(const QString& message) const {
 
 RunController::~RunController() { dropStream(); }
 
-QString RunController::boardLimitProblem(const std::string& gcode) const {
+QString RunController::boardLimitProblem(const std::string& gcode, int afterLine) const {
   const auto& board = session_.boardSettings();
   const auto wco = session_.workOffsetDeg();
   if (!board || !wco || !setup::softLimitsOn(*board)) return {};
-  const job::GcodeJob parsed = job::parseJob(gcode, job::rulesFor(inputs_.profile()));
+  job::GcodeJob parsed = job::parseJob(gcode, job::rulesFor(inputs_.profile()));
+  std::erase_if(parsed.lines, [afterLine](const job::JobLine& l) { return l.fileLine <= afterLine; });
   const auto hit = setup::firstSoftLimitHit(parsed, *board, *wco);
   if (!hit) return {};
   return tr("Not started: the board's soft limits would stop this job with an alarm (ALARM:2): %1. "
@@ -184,8 +185,13 @@ bool RunController::resume(QString* error) {
   QString why;
   if (!canResume()) {
     why = tr("Nothing to resume: there is no saved progress beside %1.").arg(jobPath());
-  } else if (launch(true, &why)) {
-    return true;
+  } else {
+    // The rest of the job against the board's soft limits first (after an alarm the reference
+    // may have changed).
+    QFile file(jobPath());
+    const QByteArray bytes = file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+    why = boardLimitProblem(bytes.toStdString(), savedProgress()->lastCompletedLine);
+    if (why.isEmpty() && launch(true, &why)) return true;
   }
   lastMessage_ = why;
   if (error) *error = why;

@@ -80,8 +80,9 @@ class RunController : public QObject {
   void clearPreviousRun();
   QString guiMessage(const QString& message) const;
   // Pre-flight against the board itself: "" when the board's soft limits ($20, $130/$131, checked
-  // in machine coordinates = work + WCO) let every line of gcode through, else why not.
-  QString boardLimitProblem(const std::string& gcode) const;
+  // in machine coordinates = work + WCO) let every line of gcode after file line afterLine
+  // through, else why not.
+  QString boardLimitProblem(const std::string& gcode, int afterLine = 0) const;
 
   const StudioInputs& inputs_;
   MachineSession& session_;

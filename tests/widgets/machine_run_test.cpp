@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "core/kinematics/units.hpp"
+#include "core/output/gcode.hpp"
 #include "drivers/job_progress.hpp"
 #include "drivers/simulated_transport.hpp"
 #include "machine_test_support.hpp"
@@ -283,6 +284,26 @@ TEST(RunPanel, StartRefusesAJobTheBoardsSoftLimitsWouldStop) {
   EXPECT_EQ(rig.run.lastMessage(), why);
   waitUntil([] { return false; }, 300);
   EXPECT_NE(rig.session.state(), grbl::MachineState::Alarm) << "nothing was sent";
+  // Resume checks the rest of a saved run the same way: the job file and a progress after its
+  // first line.
+  {
+    const std::string gcode = writeGcode(*rig.preview.result().job, rig.doc.profile());
+    QFile file(rig.run.jobPath());
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write(gcode.data(), qint64(gcode.size()));
+    file.close();
+    job::JobProgress progress;
+    progress.jobHash = job::sha256Hex(gcode);
+    progress.totalLines = 10;
+    progress.lastAckedLine = progress.lastCompletedLine = 1;
+    progress.reason = "stopped by the user";
+    ASSERT_EQ(job::saveProgress(progress, job::progressPathFor(rig.run.jobPath().toStdString())), "");
+    ASSERT_TRUE(rig.run.canResume());
+    QString resumeWhy;
+    EXPECT_FALSE(rig.run.resume(&resumeWhy));
+    EXPECT_TRUE(resumeWhy.contains(QStringLiteral("ALARM:2"))) << resumeWhy.toStdString();
+    EXPECT_FALSE(rig.run.running());
+  }
   // With the profile's travel and soft limits off again, the same job starts.
   for (const char* line : {"$20=0"}) ASSERT_TRUE(rig.session.link()->protocol().enqueue(line).ok());
   ASSERT_TRUE(rig.waitIdle());
