@@ -86,7 +86,7 @@ void BM_StudioPipeline(benchmark::State& state) {
   for (auto _ : state) {
     cliS += seconds([&] {
       const PlanResult r = planJob(lines(), machine(), o);
-      if (!r.ok()) state.SkipWithError(r.message.c_str());
+      if (!r.ok()) state.SkipWithError(r.message.text().c_str());
     });
     studioS += seconds([&] {
       const widgets::PreviewResult r = widgets::runPipeline(in);

@@ -2,6 +2,8 @@
 // time from the embedded .qm (the contexts must be the qualified class names).
 #include <gtest/gtest.h>
 
+#include <memory>
+
 #include <QAbstractButton>
 #include <QAction>
 #include <QCoreApplication>
@@ -181,8 +183,10 @@ TEST(Translations, PreflightProblemIsShownInGermanWithDecimalComma) {
   fivebar::Layer layer;
   layer.id = layer.name = "ink";
   layer.paths.push_back({{fivebar::Vec2(0.0, 0.0), fivebar::Vec2(10.5, 0.0)}});
-  input.drawing.layers.push_back(layer);
-  input.drawing.source = "far.svg";
+  auto drawing = std::make_shared<fivebar::Drawing>();
+  drawing->layers.push_back(layer);
+  drawing->source = "far.svg";
+  input.drawing = drawing;
   input.placement.centerMm = fivebar::Vec2(0.0, 700.0);  // far beyond every leg's reach
   input.profile = *profile;
   const fivebar::widgets::PreviewResult r = fivebar::widgets::runPipeline(input);
