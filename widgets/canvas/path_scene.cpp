@@ -135,16 +135,21 @@ PathScene::PathScene(const ScenePathList& paths) {
   double tolerance = 0.0;
   for (int l = 0; l < kMaxLevels; ++l) {
     if (tolerance > 0.0) {
+      // A simplified path keeps at least one segment: with that many paths no level can be
+      // useful, so the points are not even simplified (a job or drawing of short lines).
+      if (static_cast<double>(current.pathCount()) >
+          kUselessLevelShare * static_cast<double>(current.segmentCount()))
+        break;
       LevelPaths simpler = simplifyLevel(current, tolerance);
-      // Nothing merged (e.g. only two-point paths): the level would repeat the previous one.
-      if (simpler.points.size() == current.points.size()) break;
+      // A level that keeps nearly every segment (e.g. of two-point paths, where nothing merges)
+      // is not worth its memory: the previous one is painted instead.
+      if (static_cast<double>(simpler.segmentCount()) >
+          kUselessLevelShare * static_cast<double>(current.segmentCount()))
+        break;
       current = std::move(simpler);
     }
     Level level;
     bucket(current, tolerance, level);
-    const bool useless = !levels_.empty() &&
-        level.lines.size() > kUselessLevelShare * static_cast<double>(levels_.back().lines.size());
-    if (useless && l > 1) break;
     levels_.push_back(std::move(level));
     tolerance = (tolerance == 0.0) ? kFirstToleranceMm : tolerance * kLevelFactor;
   }
@@ -218,19 +223,28 @@ void PathScene::bucket(const LevelPaths& paths, double toleranceMm, Level& level
   std::partial_sum(start.begin(), start.end(), start.begin());
   level.lines.resize(start.back());
   level.orders.resize(start.back());
-  level.bucketBounds.assign(kGrid * kGrid, QRectF());
+  struct Box {
+    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  };
+  std::vector<Box> boxes(kGrid * kGrid);
   std::vector<std::size_t> next(start.begin(), start.end() - 1);
   for (std::size_t k = 0; k < keys.size(); ++k) {
     const int key = keys[k];
     if (key < 0) continue;
     const std::size_t at = next[static_cast<std::size_t>(key)]++;
-    const QLineF line(paths.points[k], paths.points[k + 1]);
-    level.lines[at] = line;
+    const QPointF& p1 = paths.points[k];
+    const QPointF& p2 = paths.points[k + 1];
+    level.lines[at] = QLineF(p1, p2);
     level.orders[at] = paths.orders[k];
-    QRectF& b = level.bucketBounds[static_cast<std::size_t>(key % (kGrid * kGrid))];
-    const QRectF r = QRectF(line.p1(), line.p2()).normalized();
-    b = b.isNull() ? r.adjusted(-1e-6, -1e-6, 1e-6, 1e-6) : b.united(r);
+    Box& b = boxes[static_cast<std::size_t>(key % (kGrid * kGrid))];
+    b.x0 = std::min({b.x0, p1.x(), p2.x()}), b.x1 = std::max({b.x1, p1.x(), p2.x()});
+    b.y0 = std::min({b.y0, p1.y(), p2.y()}), b.y1 = std::max({b.y1, p1.y(), p2.y()});
   }
+  level.bucketBounds.assign(kGrid * kGrid, QRectF());
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+    if (boxes[i].x0 <= boxes[i].x1)
+      level.bucketBounds[i] = QRectF(QPointF(boxes[i].x0 - 1e-6, boxes[i].y0 - 1e-6),
+                                     QPointF(boxes[i].x1 + 1e-6, boxes[i].y1 + 1e-6));
   for (int key = 0; key < kKeys; ++key) {
     if (start[key] == start[key + 1]) continue;
     level.runs.push_back({key / (kGrid * kGrid), key % (kGrid * kGrid), start[key], start[key + 1]});

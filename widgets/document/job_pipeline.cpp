@@ -2,6 +2,7 @@
 
 #include <QCoreApplication>
 #include <QLocale>
+#include <future>
 #include <set>
 #include <utility>
 
@@ -135,9 +136,24 @@ PreviewResult runPipeline(const PipelineInput& input) {
   out.timings = plan.timings;
   if (plan.status == PlanStatus::Cancelled || cancelled(input)) return cancelledResult(std::move(out));
   StageClock clock(out.timings);
+  // The job's scene and trajectory are built on a second thread while this one builds the
+  // drawing's scene (both only read the plan).
+  std::shared_ptr<const PlannedJob> job;
+  std::future<void> jobSide;
+  if (plan.status == PlanStatus::Ok) {
+    job = std::make_shared<const PlannedJob>(std::move(plan.job));
+    jobSide = std::async(std::launch::async, [&out, &plan, &input, job] {
+      out.trajectory = std::make_shared<Trajectory>(job, std::move(plan.blockTimings), input.profile);
+      out.jobScene = jobSceneOf(*job);
+    });
+  }
   out.drawingScene = drawingSceneOf(
       placeDrawing(out.refinedDrawing ? *out.refinedDrawing : *input.drawing, input.placement), out.problems);
   clock.lap("drawing scene");
+  if (jobSide.valid()) {
+    jobSide.get();
+    clock.lap("job scene and trajectory");
+  }
   switch (plan.status) {
     case PlanStatus::Ok: break;
     case PlanStatus::Infeasible:
@@ -153,12 +169,6 @@ PreviewResult runPipeline(const PipelineInput& input) {
       out.message = importError.empty() ? translated(plan.message) : QString::fromStdString(importError);
       return out;
   }
-  if (cancelled(input)) return cancelledResult(std::move(out));
-  auto job = std::make_shared<const PlannedJob>(std::move(plan.job));
-  out.trajectory = std::make_shared<Trajectory>(job, std::move(plan.blockTimings), input.profile);
-  clock.lap("trajectory");
-  out.jobScene = jobSceneOf(*job);
-  clock.lap("job scene");
   out.job = std::move(job);
   if (cancelled(input)) return cancelledResult(std::move(out));
   out.status = PreviewStatus::Planned;

@@ -62,7 +62,7 @@ struct PreviewResult {
   // Set when the planner needed the drawing flattened more finely: the drawing planned.
   std::shared_ptr<const Drawing> refinedDrawing;
   // Wall and CPU time of each stage: the planner's (PlanResult::timings), then the studio's own
-  // ("drawing scene", "trajectory", "job scene").
+  // ("drawing scene"; "job scene and trajectory", built meanwhile on a second thread: the wait).
   StageTimes timings;
 };
 
