@@ -199,9 +199,8 @@ TEST(TrueMachine, BacklashLeavesACircleOpenByTheExpectedGap) {
 }
 
 // The check on the simulated machine: a true machine with play 0.5 deg on motor 1 and
-// 0.3 deg on motor 2, and a profile calibrated for it (that play, and the zero offsets a fit of
-// marks approached with the motors moving up finds there: the drive trails a motor that pushes
-// it by half its play, pen_trace.hpp, so -play/2). With the planner's compensation a circle
+// 0.3 deg on motor 2, and a profile calibrated for it (that play; the simulator's drive follows
+// core's PlayState, the model the compensation assumes, so no zero shift). With the planner's compensation a circle
 // closes and a square's corners meet, within 0.05 mm (the drawn line within the plan's tolerance
 // plus one motor step); without compensation they miss by about half a millimetre.
 TEST(TrueMachine, BacklashCompensationClosesACircleAndASquaresCornersMeet) {
@@ -213,10 +212,7 @@ TEST(TrueMachine, BacklashCompensationClosesACircleAndASquaresCornersMeet) {
   truth.backlashRad2 = radFromDeg(play2Deg);
   real.calibration = truth;
   MachineProfile calibrated = p;
-  MachineCalibration c = truth;
-  c.zeroOffsetRad1 = -0.5 * truth.backlashRad1;
-  c.zeroOffsetRad2 = -0.5 * truth.backlashRad2;
-  calibrated.calibration = c;
+  calibrated.calibration = truth;  // the simulator's play is core's PlayState: no zero shift
   MachineProfile uncompensated = calibrated;
   uncompensated.calibration->backlashRad1 = uncompensated.calibration->backlashRad2 = 0.0;
   const double stepMm = 0.06;  // one motor step at the pen, at most (see above)
