@@ -137,7 +137,10 @@ void SimMachine::realtimeByte(char c) {
     if (homing_) return;  // a '?' behind "$H": the cycle started first and serves none
     reportStatus();
   } else if (c == rt::kFeedHold) {
-    if (state_ == MachineState::Run) {
+    // GRBL 1.1h protocol.c, EXEC_FEED_HOLD: a cycle decelerates to a hold; in IDLE (e.g. a
+    // stream starved for a moment) "Grbl is not in motion. Simply indicate suspend state and
+    // hold is complete": Hold:0 at once, and queued lines wait for the cycle start.
+    if (state_ == MachineState::Run || state_ == MachineState::Idle) {
       holding_ = true;
       state_ = MachineState::Hold;
     } else if (state_ == MachineState::Jog) {

@@ -139,6 +139,27 @@ TEST(SimMachine, ProgramPauseHoldsAfterTheMovesBeforeItUntilCycleStart) {
                                          link.sim.state() == MachineState::Idle; }, 5.0));
 }
 
+// GRBL 1.1h (protocol.c, EXEC_FEED_HOLD): a feed hold while Idle (a stream starved for a moment)
+// is a completed hold at once, Hold:0; a line sent then waits until the cycle start.
+TEST(SimMachine, FeedHoldWhileIdleIsACompletedHoldAndLinesWaitForCycleStart) {
+  const MachineProfile p = testProfile();
+  SimLink link(p);
+  ASSERT_TRUE(link.runUntil([&] { return link.protocol.lastStatus().state == MachineState::Idle; }, 2.0));
+  link.protocol.sendRealtime(grbl::realtime::kFeedHold);
+  ASSERT_TRUE(link.runUntil([&] { return link.protocol.lastStatus().state == MachineState::Hold &&
+                                         link.protocol.lastStatus().subState == 0; }, 2.0));
+  const double x0 = link.sim.workPosition()[0];
+  const std::string target = fmt(degFromRad(p.homeAngles.theta1) + 5.0);
+  link.protocol.enqueue("G1X" + target + "F600");
+  link.runUntil([] { return false; }, 1.0);
+  EXPECT_EQ(link.sim.state(), MachineState::Hold);
+  EXPECT_EQ(link.sim.workPosition()[0], x0);
+  link.protocol.sendRealtime(grbl::realtime::kCycleStart);
+  const double halfStep = 0.5 / p.motors.stepsPerDeg1 + 1e-9;
+  ASSERT_TRUE(link.runUntil([&] { return std::abs(link.sim.workPosition()[0] - std::stod(target)) < halfStep &&
+                                         link.sim.state() == MachineState::Idle; }, 5.0));
+}
+
 TEST(SimMachine, BadLinesGetErrorCodes) {
   const MachineProfile p = testProfile();
   SimLink link(p);
@@ -217,7 +238,10 @@ std::vector<std::string> wcoFieldsOf(const std::string& out) {
 // Real GRBL 1.1 sends WCO in the first status report after the offset changes (G10 L20 / L2),
 // not only on its periodic refresh.
 TEST(SimMachine, ChangedWorkOffsetIsInTheNextStatusReport) {
-  sim::SimMachine sim({testProfile(), {}, true});
+  sim::SimConfig config;
+  config.profile = testProfile();
+  config.instant = true;
+  sim::SimMachine sim(config);
   EXPECT_EQ(sim.takeOutput(), "") << "GRBL sends nothing when the port opens";
   const auto status = [&] {
     sim.receive("?");
@@ -275,7 +299,8 @@ TEST(SimMachine, RealSpeedStreamingNeverStarvesThePlannerInAStroke) {
 // in + direction; $H moves there (Z, then X and Y), answers no status request meanwhile, and
 // ends at the pull-off position -$27 on every axis, Idle, then answers ok.
 TEST(SimMachine, HomingWithSwitchesEndsAtThePullOffPosition) {
-  sim::SimConfig config{testProfile(), {}, false, false, false};
+  sim::SimConfig config;  // a factory-fresh board with switches
+  config.profile = testProfile();
   config.homingSwitches = true;
   sim::SimMachine m(config);
   std::string out;
