@@ -91,7 +91,9 @@ Vec2 fk(const MachineProfile& m, const std::array<double, 2>& deg) {
 // Runs the job on a set-up, referenced simulated board driving `trueMachine`; returns the trace.
 std::vector<std::vector<Vec2>> drawOn(const MachineProfile& profile, const MachineProfile& trueMachine,
                                       const std::string& gcode) {
-  sim::SimConfig config{profile, {}, true, true, true};
+  sim::SimConfig config;  // instant, set up and referenced at the home pose
+  config.profile = profile;
+  config.instant = config.setUp = config.referenced = true;
   config.trueMachine = trueMachine;
   sim::SimMachine m(config);
   std::istringstream in(gcode);

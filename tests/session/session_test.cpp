@@ -8,22 +8,15 @@
 #include <QThread>
 #include <functional>
 
+#include "tests/widgets/event_wait.hpp"
+
 #include "core/kinematics/units.hpp"
 #include "session/machine_side.hpp"
 
 namespace fivebar {
 namespace {
 
-bool waitUntil(const std::function<bool()>& pred, int timeoutMs) {
-  QElapsedTimer clock;
-  clock.start();
-  while (!pred()) {
-    if (clock.elapsed() > timeoutMs) return false;
-    QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
-    QThread::msleep(1);
-  }
-  return true;
-}
+using test::waitUntil;
 
 // The smallest StudioInputs: a profile, no drawing, no planned job.
 class FixedInputs : public session::StudioInputs {

@@ -20,6 +20,8 @@
 #include <cstdio>
 #include <functional>
 
+#include "tests/widgets/event_wait.hpp"
+
 #include "app/studio/main_window.hpp"
 #include "widgets/calibration/calibration_wizard.hpp"
 #include "widgets/calibration/distances_box.hpp"
@@ -31,21 +33,9 @@
 
 namespace {
 
-void settle(int ms) {
-  QElapsedTimer clock;
-  clock.start();
-  while (clock.elapsed() < ms) {
-    QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
-    QThread::msleep(2);
-  }
-}
-
-bool grab(QWidget& w, const QString& path) {
-  settle(300);
-  const bool ok = w.grab().save(path);
-  std::printf("%s %s\n", ok ? "wrote" : "FAILED", qPrintable(path));
-  return ok;
-}
+using fivebar::test::grab;
+using fivebar::test::settle;
+using fivebar::test::waitUntil;
 
 }  // namespace
 
@@ -115,15 +105,6 @@ int main(int argc, char** argv) {
   window.importer().openData(demo.readAll(), QStringLiteral("fivebar-demo.svg"));
   machine->connectSimulated(40.0);
   auto& session = machine->session();
-  const auto waitUntil = [](const std::function<bool()>& pred, int ms) {
-    QElapsedTimer clock;
-    clock.start();
-    while (!pred() && clock.elapsed() < ms) {
-      QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
-      QThread::msleep(2);
-    }
-    return pred();
-  };
   if (!waitUntil([&] {
         return window.preview().result().status == fivebar::widgets::PreviewStatus::Planned &&
                !window.preview().busy() && session.state() == fivebar::grbl::MachineState::Idle;

@@ -13,28 +13,15 @@
 #include <cstdio>
 #include <functional>
 
+#include "tests/widgets/event_wait.hpp"
+
 #include "app/studio/main_window.hpp"
 #include "widgets/design/design_dialog.hpp"
 
 namespace {
 
-bool waitUntil(const std::function<bool()>& pred, int timeoutMs) {
-  QElapsedTimer clock;
-  clock.start();
-  while (!pred()) {
-    if (clock.elapsed() > timeoutMs) return false;
-    QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
-    QThread::msleep(2);
-  }
-  return true;
-}
-
-bool grab(QWidget& w, const QString& path) {
-  waitUntil([] { return false; }, 400);
-  const bool ok = w.grab().save(path);
-  std::printf("%s %s\n", ok ? "wrote" : "FAILED", qPrintable(path));
-  return ok;
-}
+using fivebar::test::grab;
+using fivebar::test::waitUntil;
 
 }  // namespace
 

@@ -23,6 +23,8 @@
 #include <cstdio>
 #include <functional>
 
+#include "tests/widgets/event_wait.hpp"
+
 #include "app/studio/data_files.hpp"
 #include "app/studio/main_window.hpp"
 #include "widgets/calibration/calibration_wizard.hpp"
@@ -38,23 +40,8 @@
 
 namespace {
 
-bool waitUntil(const std::function<bool()>& pred, int timeoutMs) {
-  QElapsedTimer clock;
-  clock.start();
-  while (!pred()) {
-    if (clock.elapsed() > timeoutMs) return false;
-    QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
-    QThread::msleep(2);
-  }
-  return true;
-}
-
-bool grab(QWidget& w, const QString& path) {
-  waitUntil([] { return false; }, 400);
-  const bool ok = w.grab().save(path);
-  std::printf("%s %s\n", ok ? "wrote" : "FAILED", qPrintable(path));
-  return ok;
-}
+using fivebar::test::grab;
+using fivebar::test::waitUntil;
 
 // The dock holding `widget`, raised and shown.
 QDockWidget* raisedDockOf(QWidget* widget) {

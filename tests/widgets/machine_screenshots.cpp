@@ -27,6 +27,8 @@
 #include <cstdio>
 #include <functional>
 
+#include "tests/widgets/event_wait.hpp"
+
 #include "app/studio/main_window.hpp"
 #include "widgets/document/import_controller.hpp"
 #include "widgets/machine/jog_panel.hpp"
@@ -36,25 +38,9 @@
 
 namespace {
 
-bool waitUntil(const std::function<bool()>& pred, int timeoutMs) {
-  QElapsedTimer clock;
-  clock.start();
-  while (!pred()) {
-    if (clock.elapsed() > timeoutMs) return false;
-    QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
-    QThread::msleep(2);
-  }
-  return true;
-}
-
-void settle(int ms) { waitUntil([] { return false; }, ms); }
-
-bool grab(QWidget& window, const QString& path) {
-  settle(300);
-  const bool ok = window.grab().save(path);
-  std::printf("%s %s\n", ok ? "wrote" : "FAILED", qPrintable(path));
-  return ok;
-}
+using fivebar::test::grab;
+using fivebar::test::settle;
+using fivebar::test::waitUntil;
 
 // Grabs the next modal message box with this object name into path, then cancels it.
 void grabNextBox(const QString& name, const QString& path, int tries = 300) {

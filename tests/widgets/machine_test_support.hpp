@@ -11,6 +11,7 @@
 
 #include "core/machine/profile.hpp"
 #include "session/machine_session.hpp"
+#include "tests/widgets/event_wait.hpp"
 #include "session/console_port.hpp"
 #include "session/jog_controller.hpp"
 #include "widgets/document/preview_controller.hpp"
@@ -18,18 +19,6 @@
 #include "widgets/machine/document_inputs.hpp"
 
 namespace fivebar::test {
-
-// Processes events until pred() holds or timeoutMs passes; returns pred().
-inline bool waitUntil(const std::function<bool()>& pred, int timeoutMs) {
-  QElapsedTimer clock;
-  clock.start();
-  while (!pred()) {
-    if (clock.elapsed() > timeoutMs) return false;
-    QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
-    QThread::msleep(1);
-  }
-  return true;
-}
 
 inline MachineProfile makerPlotter() { return *preset("maker-plotter"); }
 

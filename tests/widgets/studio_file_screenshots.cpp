@@ -23,24 +23,16 @@
 #include <cstdio>
 #include <functional>
 
+#include "tests/widgets/event_wait.hpp"
+
 #include "app/studio/main_window.hpp"
 #include "widgets/document/import_controller.hpp"
 #include "widgets/document/preview_controller.hpp"
 
 namespace {
 
-bool waitUntil(const std::function<bool()>& pred, int timeoutMs) {
-  QElapsedTimer clock;
-  clock.start();
-  while (!pred()) {
-    if (clock.elapsed() > timeoutMs) return false;
-    QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
-    QThread::msleep(2);
-  }
-  return true;
-}
-
-void settle(int ms) { waitUntil([] { return false; }, ms); }
+using fivebar::test::settle;
+using fivebar::test::waitUntil;
 
 bool save(const QPixmap& pixmap, const QString& path) {
   const bool ok = pixmap.save(path);
