@@ -264,7 +264,9 @@ bool SimMachine::fireFault(FaultKind kind) const {
 }
 
 void SimMachine::serviceLines() {
-  while (!criticalAlarm_ && !linkDropped_) {
+  // protocol.c: while a hold lasts (a feed hold, or M0) protocol_exec_rt_suspend() loops until
+  // the cycle start: no line is read, parsed or acknowledged; the received bytes wait.
+  while (!criticalAlarm_ && !linkDropped_ && !holding_) {
     if (!haveCurrent_) {
       const size_t end = rx_.find_first_of("\r\n");
       if (end == std::string::npos) return;

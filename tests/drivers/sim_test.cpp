@@ -140,10 +140,18 @@ TEST(SimMachine, ProgramPauseHoldsAfterTheMovesBeforeItUntilCycleStart) {
 }
 
 // GRBL 1.1h (protocol.c, EXEC_FEED_HOLD): a feed hold while Idle (a stream starved for a moment)
-// is a completed hold at once, Hold:0; a line sent then waits until the cycle start.
+// is a completed hold at once, Hold:0; a line sent then waits, unacknowledged, until the cycle
+// start (protocol_exec_rt_suspend reads no line), as the real firmware does (grbl-sim).
 TEST(SimMachine, FeedHoldWhileIdleIsACompletedHoldAndLinesWaitForCycleStart) {
   const MachineProfile p = testProfile();
   SimLink link(p);
+  int oks = 0;
+  struct Acks : grbl::ProtocolListener {
+    int* oks;
+    void onAck(const grbl::Ack& a) override { *oks += a.errorCode == 0; }
+  } acks;
+  acks.oks = &oks;
+  link.protocol.addListener(&acks);
   ASSERT_TRUE(link.runUntil([&] { return link.protocol.lastStatus().state == MachineState::Idle; }, 2.0));
   link.protocol.sendRealtime(grbl::realtime::kFeedHold);
   ASSERT_TRUE(link.runUntil([&] { return link.protocol.lastStatus().state == MachineState::Hold &&
@@ -154,10 +162,13 @@ TEST(SimMachine, FeedHoldWhileIdleIsACompletedHoldAndLinesWaitForCycleStart) {
   link.runUntil([] { return false; }, 1.0);
   EXPECT_EQ(link.sim.state(), MachineState::Hold);
   EXPECT_EQ(link.sim.workPosition()[0], x0);
+  EXPECT_EQ(oks, 0) << "no ok while the hold lasts";
   link.protocol.sendRealtime(grbl::realtime::kCycleStart);
   const double halfStep = 0.5 / p.motors.stepsPerDeg1 + 1e-9;
   ASSERT_TRUE(link.runUntil([&] { return std::abs(link.sim.workPosition()[0] - std::stod(target)) < halfStep &&
                                          link.sim.state() == MachineState::Idle; }, 5.0));
+  EXPECT_EQ(oks, 1);
+  link.protocol.removeListener(&acks);
 }
 
 TEST(SimMachine, BadLinesGetErrorCodes) {
