@@ -14,13 +14,6 @@
 namespace fivebar::widgets::calibration {
 
 namespace {
-std::optional<double> number(QString text) {
-  text = text.trimmed().replace(QLatin1Char(','), QLatin1Char('.'));
-  bool ok = false;
-  const double v = QLocale::c().toDouble(text, &ok);
-  if (!ok || !std::isfinite(v)) return std::nullopt;
-  return v;
-}
 QString mm(double v, int decimals = 2) { return QString::number(v, 'f', decimals); }
 }  // namespace
 
@@ -89,7 +82,7 @@ bool AccuracyPage::readColumns(bool after, std::vector<LineMeasure>* out, QStrin
     for (int c = c0; c < c0 + 2; ++c) {
       const QString text = table_->item(r, c)->text().trimmed();
       if (text.isEmpty()) continue;
-      const auto v = number(text);
+      const auto v = typedNumber(text);
       if (!v || *v < 0.0) {
         *error = tr("Line %1, %2: '%3' is not a length in mm.")
                      .arg(r + 1)

@@ -6,6 +6,8 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QLabel>
+#include <cmath>
+#include <QLocale>
 #include <QSaveFile>
 
 #include "core/output/gcode.hpp"
@@ -24,6 +26,14 @@ QLabel* explanation(const QString& text, QWidget* parent) {
   label->setWordWrap(true);
   label->setTextFormat(Qt::RichText);
   return label;
+}
+
+std::optional<double> typedNumber(QString text) {
+  text = text.trimmed().replace(QLatin1Char(','), QLatin1Char('.'));
+  bool ok = false;
+  const double v = QLocale::c().toDouble(text, &ok);
+  if (!ok || !std::isfinite(v)) return std::nullopt;
+  return v;
 }
 
 CalibrationWizard::CalibrationWizard(StudioDocument& doc, session::MachineSession* session, QWidget* parent)

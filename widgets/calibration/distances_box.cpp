@@ -18,14 +18,6 @@ namespace fivebar::widgets::calibration {
 
 namespace {
 enum Column { kA, kB, kDistance, kColumns };
-
-std::optional<double> number(QString text) {
-  text = text.trimmed().replace(QLatin1Char(','), QLatin1Char('.'));
-  bool ok = false;
-  const double v = QLocale::c().toDouble(text, &ok);
-  if (!ok || !std::isfinite(v)) return std::nullopt;
-  return v;
-}
 }  // namespace
 
 DistancesBox::DistancesBox(QWidget* parent) : QWidget(parent) {
@@ -90,7 +82,7 @@ DistancesBox::DistancesBox(QWidget* parent) : QWidget(parent) {
   connect(fromSheet_, &QPushButton::clicked, this, &DistancesBox::fillFromSimulatedSheet);
   connect(table_, &QTableWidget::currentCellChanged, this, [this](int row) {
     const QTableWidgetItem* item = row >= 0 ? table_->item(row, kA) : nullptr;
-    const auto id = item ? number(item->text()) : std::nullopt;
+    const auto id = item ? typedNumber(item->text()) : std::nullopt;
     emit currentMark(id ? static_cast<int>(*id) : -1);
   });
 }
@@ -140,7 +132,7 @@ bool DistancesBox::read(std::vector<DistanceRow>* out, QString* error) const {
         *error = tr("Row %1: %2 is empty.").arg(r + 1).arg(names[c]);
         return false;
       }
-      v[c] = number(fields[c]);
+      v[c] = typedNumber(fields[c]);
       if (!v[c] || (c < kDistance && *v[c] != std::round(*v[c]))) {
         *error = tr("Row %1, %2: '%3' is not a number.").arg(r + 1).arg(names[c], fields[c]);
         return false;

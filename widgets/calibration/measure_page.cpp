@@ -33,14 +33,6 @@ QTableWidgetItem* fixedItem(const QString& text) {
   return item;
 }
 
-// A number as typed: "12.5", "12,5", " 12.5 ". nullopt when it is not one.
-std::optional<double> number(QString text) {
-  text = text.trimmed().replace(QLatin1Char(','), QLatin1Char('.'));
-  bool ok = false;
-  const double v = QLocale::c().toDouble(text, &ok);
-  if (!ok || !std::isfinite(v)) return std::nullopt;
-  return v;
-}
 }  // namespace
 
 MeasurePage::MeasurePage(CalibrationWizard& wizard) : w_(wizard) {
@@ -222,7 +214,7 @@ bool MeasurePage::readTable(std::vector<TableMark>* out, QString* error) const {
                    .arg(m.id).arg(xs.isEmpty() ? QStringLiteral("x") : QStringLiteral("y"));
       return false;
     }
-    const auto x = number(xs), y = number(ys);
+    const auto x = typedNumber(xs), y = typedNumber(ys);
     if (!x || !y) {
       *error = tr("Mark %1, %2: '%3' is not a number.")
                    .arg(m.id).arg(!x ? QStringLiteral("x") : QStringLiteral("y"), !x ? xs : ys);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <QWizardPage>
+#include <optional>
 
 #include "widgets/calibration/calibration_preview.hpp"
 #include "widgets/calibration/calibration_wizard.hpp"
@@ -23,6 +24,9 @@ class DistancesBox;
 
 // A label with word wrap for the explanations.
 QLabel* explanation(const QString& text, QWidget* parent = nullptr);
+
+// A number as typed in the measuring tables: "12.5", "12,5", " 12.5 ". nullopt when it is not one.
+std::optional<double> typedNumber(QString text);
 
 class PatternPage : public QWizardPage {
   Q_OBJECT
