@@ -57,7 +57,9 @@ TEST(CalibrationGcode, CommandedAnglesDifferFromThePlanExactlyByTheOffset) {
   for (std::size_t i = 0, j = 0; i < a.size(); ++i, ++j) {
     if (b[j].rfind("; calibrated:", 0) == 0) ++j;
     if (a[i].rfind("G1 ", 0) != 0) {
-      if (a[i].rfind("; start pose", 0) != 0) EXPECT_EQ(a[i], b[j]);
+      if (a[i].rfind("; start pose", 0) != 0) {
+        EXPECT_EQ(a[i], b[j]);
+      }
       continue;
     }
     const auto wa = wordsOf(a[i]), wb = wordsOf(b[j]);

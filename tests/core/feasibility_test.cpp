@@ -244,7 +244,9 @@ TEST(Feasibility, ManyStrokesReportProblemsInJobOrderAndRepeatably) {
   std::vector<int> named;
   for (std::size_t k = 0; k < r.problems.size(); ++k) {
     const PreflightProblem& p = r.problems[k];
-    if (k > 0) EXPECT_GE(p.strokeIndex, r.problems[k - 1].strokeIndex);
+    if (k > 0) {
+      EXPECT_GE(p.strokeIndex, r.problems[k - 1].strokeIndex);
+    }
     if (p.kind == MoveKind::Point && p.status == MoveStatus::CannotClose) {
       named.push_back(p.strokeIndex);
       EXPECT_EQ(p.pathIndex, p.strokeIndex);

@@ -68,8 +68,9 @@ std::size_t checkHatch(const Rings& rings, FillRule rule, double spacing, double
       // Inside: every sample, by the independent test (or on the boundary).
       for (int s = 0; s <= 20; ++s) {
         const Vec2 p = a + (b - a) * (s / 20.0);
-        if (distanceToBoundary(rings, p) > kOnBoundaryMm)
+        if (distanceToBoundary(rings, p) > kOnBoundaryMm) {
           EXPECT_TRUE(inside(rings, rule, p)) << "(" << p.x() << ", " << p.y() << ") outside";
+        }
       }
       const Vec2 ab = b - a;
       const bool alongHatch = std::abs(ab.x() * dir.y() - ab.y() * dir.x()) < 1e-9 * ab.norm();

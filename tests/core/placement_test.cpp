@@ -82,8 +82,12 @@ TEST(Placement, FitPutsTheBoundsInsideTheRectangle) {
       const bool touchesX = std::abs(b->width() - inner.width()) < 1e-6;
       const bool touchesY = std::abs(b->height() - inner.height()) < 1e-6;
       EXPECT_TRUE(touchesX || touchesY);
-      if (keep) EXPECT_DOUBLE_EQ(pl->stretchY, 1.0);
-      if (!keep && rot == 0.0) EXPECT_TRUE(touchesX && touchesY);
+      if (keep) {
+        EXPECT_DOUBLE_EQ(pl->stretchY, 1.0);
+      }
+      if (!keep && rot == 0.0) {
+        EXPECT_TRUE(touchesX && touchesY);
+      }
     }
   }
   EXPECT_FALSE(fitPlacement(d, RectMm{0, 0, 8, 8}, true, 5.0).has_value());

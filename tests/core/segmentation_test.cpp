@@ -289,7 +289,9 @@ TEST_F(SegmentationTest, MoveSamplesAreForwardKinematicsAtEqualSteps) {
                                    a.angles.theta2 + u * (b.angles.theta2 - a.angles.theta2)},
                                   p.assembly);
       allClose = allClose && fk.ok();
-      if (closes && fk.ok()) ASSERT_LT((fk.p - out[static_cast<size_t>(k)]).norm(), 1e-9) << k << " of " << n;
+      if (closes && fk.ok()) {
+        ASSERT_LT((fk.p - out[static_cast<size_t>(k)]).norm(), 1e-9) << k << " of " << n;
+      }
     }
     EXPECT_EQ(closes, allClose) << "trial " << trial;
   }

@@ -92,8 +92,9 @@ TEST(WorkspacePoint, MatchesReferenceKinematicsInEveryMode) {
       EXPECT_NEAR(x.muRad, r.mu, 1e-9);
       EXPECT_NEAR(std::asin(std::min(1.0, std::abs(x.signedTypeII))), r.margins.typeII, 1e-7);
       EXPECT_NEAR(x.inverseCondition, r.inverseCondition, 1e-7);
-      if (r.resolutionMm > 0.0 && std::isfinite(x.resolutionMm))
+      if (r.resolutionMm > 0.0 && std::isfinite(x.resolutionMm)) {
         EXPECT_NEAR(x.resolutionMm / r.resolutionMm, 1.0, 1e-7);
+      }
     }
   }
   EXPECT_GT(reachableCount, 2000);  // the sample really exercised reachable points

@@ -18,7 +18,7 @@ std::optional<JointAngles> parseJogTarget(const std::string& line) {
 TEST(CartesianJog, SubMovesStayOnTheStraightLineAndAreChecked) {
   const MachineProfile p = testProfile();
   const Vec2 start = forward(p.geometry, p.homeAngles, p.assembly).p;
-  for (const Vec2 dir : {Vec2(1, 0), Vec2(-1, 0), Vec2(0, 1), Vec2(1, 1), Vec2(-1, -1)}) {
+  for (const Vec2& dir : {Vec2(1, 0), Vec2(-1, 0), Vec2(0, 1), Vec2(1, 1), Vec2(-1, -1)}) {
     const jog::JogPlan plan = jog::planCartesianJog(p, p.homeAngles, dir, 20.0, 30.0);
     ASSERT_TRUE(plan.ok()) << plan.reason;
     ASSERT_FALSE(plan.lines.empty());
@@ -40,7 +40,9 @@ TEST(CartesianJog, SubMovesStayOnTheStraightLineAndAreChecked) {
       prev = *q;
     }
     const Vec2 end = forward(p.geometry, prev, p.assembly).p;
-    if (plan.status == jog::JogStatus::Ok) EXPECT_NEAR((end - start).dot(u), 20.0, 0.01);
+    if (plan.status == jog::JogStatus::Ok) {
+      EXPECT_NEAR((end - start).dot(u), 20.0, 0.01);
+    }
   }
 }
 

@@ -44,9 +44,10 @@ TEST(StockBoardProgress, ExecutedLinesEtaAndResumePointWithoutBf) {
     if (r.state() == RunState::Running && s.linesCompleted > 0) sawProgressWhileRunning = true;
     if (r.state() == RunState::Running && s.etaS >= 0.0) sawEta = true;
     // Never ahead of the machine: the resume point has been drawn already.
-    if (s.lastPenDownPoint && f.job.lines[*s.lastPenDownPoint].penDownDuring)
+    if (s.lastPenDownPoint && f.job.lines[*s.lastPenDownPoint].penDownDuring) {
       EXPECT_TRUE(drawnNear(link.sim.strokes(), f.job.lines[*s.lastPenDownPoint].endDeg, tol))
           << "line " << f.job.lines[*s.lastPenDownPoint].fileLine << " counted before it was drawn";
+    }
     return r.state() == RunState::Finished || r.state() == RunState::Paused;
   }, 300.0);
   ASSERT_EQ(r.state(), RunState::Finished) << r.problem();

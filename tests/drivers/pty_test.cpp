@@ -193,8 +193,8 @@ INSTANTIATE_TEST_SUITE_P(Faults, PtyEndToEndFault,
                                            PtyFault{"alarm-after=40", "ALARM:1"},
                                            PtyFault{"error-on=40", "error:20"},
                                            PtyFault{"drop-after=40", "Connection lost"}),
-                         [](const auto& info) {
-                           std::string s = info.param.spec;
+                         [](const auto& instance) {
+                           std::string s = instance.param.spec;
                            return s.substr(0, s.find('-'));
                          });
 

@@ -70,7 +70,9 @@ TEST(JobRunner, ExecutedProgressTrailsAcknowledgedProgress) {
     const auto s = r.snapshot();
     EXPECT_LE(s.linesCompleted, s.linesAcked);
     if (s.linesAcked > s.linesCompleted + 5) sawGap = true;
-    if (s.linesCompleted > 10 && r.state() == RunState::Running) EXPECT_GE(s.etaS, 0.0);
+    if (s.linesCompleted > 10 && r.state() == RunState::Running) {
+      EXPECT_GE(s.etaS, 0.0);
+    }
     return r.state() == RunState::Finished;
   }, 300.0);
   EXPECT_TRUE(sawGap) << "the planner holds acknowledged lines not yet executed";
@@ -174,8 +176,8 @@ INSTANTIATE_TEST_SUITE_P(
                       FaultCase{sim::FaultKind::AlarmAfter, "ALARM:1"},
                       FaultCase{sim::FaultKind::ErrorOn, "error:20"},
                       FaultCase{sim::FaultKind::DropAfter, "Connection lost"}),
-    [](const auto& info) {
-      switch (info.param.kind) {
+    [](const auto& instance) {
+      switch (instance.param.kind) {
         case sim::FaultKind::ResetAfter: return std::string("Reset");
         case sim::FaultKind::AlarmAfter: return std::string("Alarm");
         case sim::FaultKind::ErrorOn: return std::string("Error");

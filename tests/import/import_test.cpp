@@ -138,7 +138,8 @@ TEST(ImportTolerance, CurvesAreMarkedFlattenedStraightLinesAreNot) {
     EXPECT_TRUE(paths[1].flattened);   // the subpath with a cubic
     EXPECT_FALSE(paths[2].flattened);  // polyline
     EXPECT_FALSE(paths[3].flattened);  // line
-    if (!extra.empty()) EXPECT_TRUE(paths[4].flattened);  // circle
+    if (!extra.empty()) {
+      EXPECT_TRUE(paths[4].flattened);  // circle
   }
 }
 
@@ -146,6 +147,7 @@ TEST(ImportTolerance, CurvesAreMarkedFlattenedStraightLinesAreNot) {
 // path alike), naming the budget.
 TEST(ImportHostile, ThePointsBudgetStopsTheImportEarly) {
   std::string many;
+    }
   for (int i = 0; i < 400; ++i)
     many += "<path d=\"M0 " + std::to_string(i % 50) + " L100 " + std::to_string(i % 50) +
             "\" stroke=\"#000\"/>";
