@@ -9,24 +9,14 @@
 #include "calibration_scenario.hpp"
 #include "core/output/gcode.hpp"
 #include "core/planning/planner.hpp"
+#include "gcode_text.hpp"
 #include "test_support.hpp"
 
 namespace fivebar {
 namespace {
 
-std::vector<std::string> linesOf(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string l; std::getline(in, l);) lines.push_back(l);
-  return lines;
-}
-
-std::map<char, double> wordsOf(const std::string& line) {
-  std::map<char, double> w;
-  std::istringstream in(line.substr(0, line.find(';')));
-  for (std::string word; in >> word;) w[word[0]] = std::stod(word.substr(1));
-  return w;
-}
+using test::linesOf;
+using test::wordsOf;
 
 Drawing square60() {
   Drawing d;
