@@ -84,8 +84,13 @@ void appendFlattenedPath(const QPainterPath& path, const QTransform& transform,
       const QPainterPath::Element& c2 = path.elementAt(i + 1);
       const QPainterPath::Element& p3 = path.elementAt(i + 2);
       const Vec2 start = scratch.back();
-      flattenCubic(start, mapped(transform, e.x, e.y), mapped(transform, c2.x, c2.y),
-                   mapped(transform, p3.x, p3.y), toleranceMm, scratch);
+      const Vec2 a = mapped(transform, e.x, e.y), b = mapped(transform, c2.x, c2.y);
+      const Vec2 end = mapped(transform, p3.x, p3.y);
+      // A piece of an arc (path_data.hpp) is flattened within what its own error leaves of the
+      // tolerance, so that the polyline stays within the tolerance of the true arc. The floor
+      // (half the tolerance) is out of reach in practice: the error is <= 1.1e-9 x radius.
+      const double arcErrorMm = arcPieceErrorBound(start, a, b, end);
+      flattenCubic(start, a, b, end, std::max(0.5 * toleranceMm, toleranceMm - arcErrorMm), scratch);
       curved = true;
       i += 2;
     }

@@ -52,6 +52,25 @@ void flattenCubic(const Vec2& p0, const Vec2& c1, const Vec2& c2, const Vec2& p3
   }
 }
 
+double arcPieceErrorBound(const Vec2& p0, const Vec2& c1, const Vec2& c2, const Vec2& p3) {
+  constexpr double kMaxSweepRad = 0.19634954084936207 * (1.0 + 1e-6);  // kArcPieceMaxRad
+  const Vec2 sum = (c1 - p0) + (p3 - c2);
+  const Vec2 chord = p3 - p0;
+  const double sum2 = sum.squaredNorm();
+  if (!(sum2 > 0.0)) return 0.0;
+  const double rho = chord.dot(sum) / sum2;
+  if (!(rho > 1.5) || (chord - rho * sum).norm() > 1e-9 * (chord.norm() + std::sqrt(sum2)))
+    return 0.0;
+  const double sweep = 4.0 * std::atan(std::sqrt(1.0 - 1.5 / rho));
+  if (sweep > kMaxSweepRad) return 0.0;  // not one of ours: the cubic is the geometry
+  const double k = 4.0 / 3.0 * std::tan(sweep / 4.0);
+  const double halfSin = std::sin(sweep / 2.0);
+  if (!(k > 0.0) || !(halfSin > 0.0)) return 0.0;
+  const Vec2 w = (c1 - p0) - (p3 - c2);
+  const double radiusBound = w.norm() / (2.0 * k * halfSin) + 0.5 * chord.norm();
+  return 1.82e-5 * std::pow(sweep, 6) * radiusBound;
+}
+
 void flattenEllipse(const Vec2& centre, const Vec2& u, const Vec2& v, double toleranceMm,
                     std::vector<Vec2>& out) {
   // Largest singular value of the 2x2 matrix [u v].

@@ -17,6 +17,15 @@ namespace fivebar::svg {
 void flattenCubic(const Vec2& p0, const Vec2& c1, const Vec2& c2, const Vec2& p3,
                   double toleranceMm, std::vector<Vec2>& out);
 
+// Bound (same unit as the points) of the distance between a cubic and the elliptical arc it
+// stands for, when it is one piece of our arc conversion (path_data.hpp appendArcAsCubics: any
+// affine image of the standard cubic of a circular arc of sweep <= kArcPieceMaxRad); 0 for any
+// other cubic, whose points are its geometry. Such a piece satisfies p3 - p0 = rho (c1 - p0 +
+// p3 - c2), rho = 3 / (2 (1 - tan^2(sweep / 4))), which gives the sweep; the circle's radial error
+// e(sweep) <= 1.82e-5 sweep^6 is then scaled by the largest radius of the ellipse over the piece,
+// <= |w| / (2 k sin(sweep / 2)) + |p3 - p0| / 2 (w = c1 - p0 - (p3 - c2), k = 4/3 tan(sweep / 4)).
+double arcPieceErrorBound(const Vec2& p0, const Vec2& c1, const Vec2& c2, const Vec2& p3);
+
 // Points of the closed ellipse centre + u cos t + v sin t (u, v: conjugate semi-axes after any
 // affine map), starting at t = 0, without repeating the first point. The step h satisfies
 // h^2 / 8 * max|P''| <= tolerance (linear interpolation error bound), max|P''| = the largest

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <numbers>
 
 namespace fivebar::svg {
 namespace {
@@ -193,6 +194,90 @@ ParsedPath parsePathData(QStringView d) {
     result.errorOffset = scan.pos();
   }
   return result;
+}
+
+void appendArcAsCubics(double x0, double y0, const PathCommand& arc, std::vector<PathCommand>& out) {
+  const double x = arc.v[5], y = arc.v[6];
+  if (x == x0 && y == y0) return;
+  double rx = std::abs(arc.v[0]), ry = std::abs(arc.v[1]);
+  if (rx == 0.0 || ry == 0.0) {
+    out.push_back({'L', {x, y}});
+    return;
+  }
+  const double phi = arc.v[2] * std::numbers::pi / 180.0;
+  const double cosPhi = std::cos(phi), sinPhi = std::sin(phi);
+  const bool large = arc.v[3] != 0.0, sweep = arc.v[4] != 0.0;
+  // F.6.5 step 1: the end points in the ellipse's axes, relative to their midpoint.
+  const double dx2 = 0.5 * (x0 - x), dy2 = 0.5 * (y0 - y);
+  const double x1p = cosPhi * dx2 + sinPhi * dy2;
+  const double y1p = -sinPhi * dx2 + cosPhi * dy2;
+  // F.6.6: radii too small to join the end points are scaled up.
+  const double lambda = (x1p * x1p) / (rx * rx) + (y1p * y1p) / (ry * ry);
+  if (lambda > 1.0) {
+    rx *= std::sqrt(lambda);
+    ry *= std::sqrt(lambda);
+  }
+  // Step 2: the centre in the ellipse's axes.
+  const double rx2 = rx * rx, ry2 = ry * ry;
+  const double den = rx2 * y1p * y1p + ry2 * x1p * x1p;
+  const double num = rx2 * ry2 - den;
+  double coef = den > 0.0 ? std::sqrt(std::max(0.0, num / den)) : 0.0;
+  if (large == sweep) coef = -coef;
+  const double cxp = coef * rx * y1p / ry, cyp = -coef * ry * x1p / rx;
+  // Step 3: the centre; step 4: the start angle and the sweep.
+  const double cx = cosPhi * cxp - sinPhi * cyp + 0.5 * (x0 + x);
+  const double cy = sinPhi * cxp + cosPhi * cyp + 0.5 * (y0 + y);
+  const double theta1 = std::atan2((y1p - cyp) / ry, (x1p - cxp) / rx);
+  const double theta2 = std::atan2((-y1p - cyp) / ry, (-x1p - cxp) / rx);
+  double delta = theta2 - theta1;
+  const double twoPi = 2.0 * std::numbers::pi;
+  if (!sweep && delta > 0.0) delta -= twoPi;
+  else if (sweep && delta < 0.0) delta += twoPi;
+  const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(delta) / kArcPieceMaxRad - 1e-9)));
+  const double step = delta / pieces;
+  const double k = 4.0 / 3.0 * std::tan(step / 4.0);
+  auto point = [&](double t, double& px, double& py) {
+    const double c = std::cos(t), s = std::sin(t);
+    px = cx + rx * cosPhi * c - ry * sinPhi * s;
+    py = cy + rx * sinPhi * c + ry * cosPhi * s;
+  };
+  auto tangent = [&](double t, double& tx, double& ty) {  // d point / dt
+    const double c = std::cos(t), s = std::sin(t);
+    tx = -rx * cosPhi * s - ry * sinPhi * c;
+    ty = -rx * sinPhi * s + ry * cosPhi * c;
+  };
+  // Computed piece ends differ from the given end points by rounding only: the first cubic
+  // starts at the current point, the last one ends exactly at (x, y).
+  for (int i = 0; i < pieces; ++i) {
+    const double t0 = theta1 + step * i, t1 = theta1 + step * (i + 1);
+    double sx, sy, ex, ey, tx0, ty0, tx1, ty1;
+    point(t0, sx, sy);
+    point(t1, ex, ey);
+    tangent(t0, tx0, ty0);
+    tangent(t1, tx1, ty1);
+    const double bx = ex - k * tx1, by = ey - k * ty1;
+    if (i + 1 == pieces) ex = x, ey = y;
+    out.push_back({'C', {sx + k * tx0, sy + k * ty0, bx, by, ex, ey}});
+  }
+}
+
+std::vector<PathCommand> arcsAsCubics(const std::vector<PathCommand>& commands) {
+  std::vector<PathCommand> out;
+  out.reserve(commands.size());
+  double x = 0, y = 0, sx = 0, sy = 0;
+  for (const PathCommand& c : commands) {
+    if (c.op == 'A') appendArcAsCubics(x, y, c, out);
+    else out.push_back(c);
+    switch (c.op) {
+      case 'M': sx = x = c.v[0]; sy = y = c.v[1]; break;
+      case 'Z': x = sx; y = sy; break;
+      case 'C': x = c.v[4]; y = c.v[5]; break;
+      case 'Q': x = c.v[2]; y = c.v[3]; break;
+      case 'A': x = c.v[5]; y = c.v[6]; break;
+      default: x = c.v[0]; y = c.v[1]; break;
+    }
+  }
+  return out;
 }
 
 int qtElementEstimate(const PathCommand& command) {

@@ -26,6 +26,22 @@ struct ParsedPath {
 
 ParsedPath parsePathData(QStringView d);
 
+// Largest sweep of one cubic our arc conversion makes (11.25 deg). Qt SVG 6.4 turns an arc into
+// cubics of up to 90 deg (error 2.7e-4 x radius: 0.027 mm on r = 100 mm); the sanitiser hands Qt
+// our cubics instead, whose error (<= 1.1e-9 x radius) the flattening takes from its tolerance
+// (flatten.hpp arcPieceErrorBound).
+inline constexpr double kArcPieceMaxRad = 0.19634954084936207;  // pi / 16
+
+// Appends the cubics (op 'C') of the elliptical arc `arc` (op 'A', absolute) from (x0, y0): the
+// SVG endpoint parametrisation (implementation notes F.6.5/F.6.6: radii scaled up when too small,
+// a zero radius is a line, equal endpoints draw nothing), in equal pieces of at most
+// kArcPieceMaxRad, each the standard cubic of its piece (control length 4/3 tan(sweep / 4)); the
+// last one ends exactly at the arc's end point.
+void appendArcAsCubics(double x0, double y0, const PathCommand& arc, std::vector<PathCommand>& out);
+
+// The commands with every arc replaced by appendArcAsCubics.
+std::vector<PathCommand> arcsAsCubics(const std::vector<PathCommand>& commands);
+
 // Upper bound of the QPainterPath elements Qt SVG makes for a command (an arc becomes up to
 // four cubics of three elements each).
 int qtElementEstimate(const PathCommand& command);

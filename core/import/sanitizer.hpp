@@ -39,6 +39,7 @@ class Sanitizer {
   QXmlStreamAttributes cleanAttributes(QStringView tag);
   bool checkNumbers(QStringView tag, const QXmlStreamAttributes& attributes);
   bool writeSplitPath(const QXmlStreamAttributes& attributes);
+  bool writeRoundedRect(const QXmlStreamAttributes& attributes);
   void writeSentinel(int index);
   void recordRoot(const QXmlStreamAttributes& attributes);
   void writeNamespaces();
@@ -83,6 +84,8 @@ class Sanitizer {
 
  public:
   void setMarkerSheet(MarkerSheet sheet) { markerSheet_ = std::move(sheet); }
+  // A style sheet selects <rect> by type: rounded rectangles stay <rect> (Qt's own arcs).
+  void setRectStyled(bool styled) { rectStyled_ = styled; }
 
  private:
   struct MarkerState {
@@ -94,6 +97,7 @@ class Sanitizer {
   std::vector<MarkerState> markerStates_;  // one per open written element
   int markerContentDepth_ = 0;             // > 0 inside a <marker>: its depth (no markers drawn)
   std::size_t markerInstances_ = 0;        // written so far (bounded)
+  bool rectStyled_ = false;
 };
 
 }  // namespace fivebar::svg::detail

@@ -41,6 +41,22 @@ bool isGeometryAttribute(QStringView name) {
 }
 
 
+// True when a <style> sheet may select <rect> by its type (a "rect" selector token).
+bool styleSheetSelectsRect(const QByteArray& document) {
+  if (!document.contains("<style") || !document.contains("rect")) return false;
+  QXmlStreamReader reader(document);
+  QString css;
+  bool inStyle = false;
+  while (!reader.atEnd()) {
+    const QXmlStreamReader::TokenType t = reader.readNext();
+    if (t == QXmlStreamReader::StartElement) inStyle = reader.name() == u"style";
+    else if (t == QXmlStreamReader::EndElement) inStyle = false;
+    else if (t == QXmlStreamReader::Characters && inStyle) css += reader.text().toString() + u'\n';
+  }
+  static const QRegularExpression selector(QStringLiteral("(^|[^-\\w#.])rect($|[^-\\w])"));
+  return css.contains(selector);
+}
+
 }  // namespace
 
 std::string Sanitizer::where() const {
@@ -196,19 +212,30 @@ void Sanitizer::writeSentinel(int index) {
   writer_.writeEndElement();
 }
 
+// Rewrites the path data when Qt SVG would not draw it as SVG means it: elliptical arcs become
+// our cubics (path_data.hpp appendArcAsCubics; Qt's own are up to 0.027 mm off on r = 100 mm),
+// and data beyond Qt's 32,767-element limit is split into several <path>s.
 bool Sanitizer::writeSplitPath(const QXmlStreamAttributes& attributes) {
   const QStringView d = attributes.value(QStringLiteral("d"));
-  if (d.size() <= kPathScanChars) return false;
-  const ParsedPath parsed = parsePathData(d);
+  const bool arcs = d.contains(u'a') || d.contains(u'A');  // no other command has these letters
+  if (!arcs && d.size() <= kPathScanChars) return false;
+  ParsedPath parsed = parsePathData(d);
+  if (arcs) parsed.commands = arcsAsCubics(parsed.commands);
   long long estimate = 0;
   for (const PathCommand& c : parsed.commands) estimate += qtElementEstimate(c);
-  if (estimate <= kMaxPathElements) return false;
-  const std::vector<QString> parts = splitPathData(parsed.commands, kMaxPathElements);
-  warn(FB_TR("ImportWarning", "long <path> split into %1 parts to avoid Qt SVG's 32,767-element truncation")
-           .arg(parts.size()));
-  if (parsed.error)
-    warnAt(attributes, FB_TR("ImportWarning", "attribute d: invalid path data at character %1: drawn up to the error")
-                           .arg(static_cast<long long>(parsed.errorOffset + 1)));
+  const bool split = estimate > kMaxPathElements;
+  if (!split && !arcs) return false;
+  std::vector<QString> parts = splitPathData(parsed.commands, kMaxPathElements);
+  if (parts.empty()) parts.emplace_back();
+  if (split) {
+    warn(FB_TR("ImportWarning", "long <path> split into %1 parts to avoid Qt SVG's 32,767-element truncation")
+             .arg(parts.size()));
+    if (parsed.error)
+      warnAt(attributes, FB_TR("ImportWarning", "attribute d: invalid path data at character %1: drawn up to the error")
+                             .arg(static_cast<long long>(parsed.errorOffset + 1)));
+  } else {
+    checkPathData(attributes);
+  }
   for (std::size_t i = 0; i < parts.size(); ++i) {
     if (i > 0) writer_.writeStartElement(reader_.namespaceUri().toString(), QStringLiteral("path"));
     for (const QXmlStreamAttribute& a : attributes) {
@@ -216,9 +243,62 @@ bool Sanitizer::writeSplitPath(const QXmlStreamAttributes& attributes) {
       if (i > 0 && a.name() == u"id") continue;  // ids must stay unique
       writer_.writeAttribute(a);
     }
-    writer_.writeAttribute(QStringLiteral("d"), parts[i]);
+    if (!parts[i].isEmpty()) writer_.writeAttribute(QStringLiteral("d"), parts[i]);
     if (i + 1 < parts.size()) writer_.writeEndElement();
   }
+  return true;
+}
+
+// A <rect> with rounded corners becomes the <path> SVG defines for it (rx/ry: one stands in for
+// a missing other, each at most half the side), its corners our arcs: Qt SVG would round them
+// with its own (drawRoundedRect: 90 deg cubics). Only plain numbers (user units) are converted;
+// anything else (units, %, auto spelled out) is left to Qt SVG.
+bool Sanitizer::writeRoundedRect(const QXmlStreamAttributes& attributes) {
+  if (rectStyled_) return false;
+  auto number = [&](const char* name, double fallback, bool& ok) {
+    const QStringView v = attributes.value(QLatin1String(name)).trimmed();
+    if (v.isEmpty()) return fallback;
+    const std::optional<Length> length = parseLength(v);
+    if (!length || (length->unit != LengthUnit::None && length->unit != LengthUnit::Px)) ok = false;
+    return length ? length->value : 0.0;
+  };
+  bool ok = true;
+  const double x = number("x", 0.0, ok), y = number("y", 0.0, ok);
+  const double w = number("width", 0.0, ok), h = number("height", 0.0, ok);
+  double rx = number("rx", -1.0, ok), ry = number("ry", -1.0, ok);
+  if (!ok || !(w > 0.0) || !(h > 0.0)) return false;
+  if (rx < 0.0 && ry < 0.0) return false;  // no radius given: square corners
+  if (rx < 0.0) rx = ry;
+  if (ry < 0.0) ry = rx;
+  if (rx == 0.0 || ry == 0.0) return false;  // square corners
+  if (attributes.value(QStringLiteral("rx")).trimmed().startsWith(u'-') ||
+      attributes.value(QStringLiteral("ry")).trimmed().startsWith(u'-'))
+    return false;
+  rx = std::min(rx, 0.5 * w);
+  ry = std::min(ry, 0.5 * h);
+  std::vector<PathCommand> c;
+  const double r = x + w, b = y + h;
+  auto arc = [&](double ex, double ey) { c.push_back({'A', {rx, ry, 0, 0, 1, ex, ey}}); };
+  c.push_back({'M', {x + rx, y}});
+  c.push_back({'L', {r - rx, y}});
+  arc(r, y + ry);
+  c.push_back({'L', {r, b - ry}});
+  arc(r - rx, b);
+  c.push_back({'L', {x + rx, b}});
+  arc(x, b - ry);
+  c.push_back({'L', {x, y + ry}});
+  arc(x + rx, y);
+  c.push_back({'Z', {}});
+  const std::vector<QString> parts = splitPathData(arcsAsCubics(c), kMaxPathElements);
+  writer_.writeStartElement(reader_.namespaceUri().toString(), QStringLiteral("path"));
+  for (const QXmlStreamAttribute& a : attributes) {
+    const QStringView n = a.name();
+    if (a.namespaceUri().isEmpty() && (n == u"x" || n == u"y" || n == u"width" || n == u"height" ||
+                                       n == u"rx" || n == u"ry" || n == u"d"))
+      continue;
+    writer_.writeAttribute(a);
+  }
+  writer_.writeAttribute(QStringLiteral("d"), parts.front());
   return true;
 }
 
@@ -316,6 +396,7 @@ void Sanitizer::startElement() {
   writeNamespaces();
   if (depth_ > 1 && tag == u"svg") return writeNestedSvgAsGroup(attributes);
   if (writeSymbolOrUse(tag, attributes) || writeMarkerDefinition(tag, attributes)) return;
+  if (tag == u"rect" && writeRoundedRect(attributes)) return;
   writer_.writeStartElement(reader_.namespaceUri().toString(), tag);
   if (tag == u"path") {
     if (writeSplitPath(attributes)) return;
@@ -367,13 +448,16 @@ SanitizeResult sanitizeSvg(QIODevice& input, double dpi,
   std::map<QString, SymbolInfo> symbols;
   std::map<QString, MarkerInfo> markers;
   MarkerSheet sheet;
+  bool rectStyled = false;
   if (const auto* buffer = qobject_cast<const QBuffer*>(&input)) {
     symbols = scanSymbols(buffer->data());
     markers = scanMarkers(buffer->data());
     sheet = scanMarkerSheet(buffer->data());
+    rectStyled = detail::styleSheetSelectsRect(buffer->data());
   }
   detail::Sanitizer sanitizer(input, dpi, progress, std::move(symbols), std::move(markers));
   sanitizer.setMarkerSheet(std::move(sheet));
+  sanitizer.setRectStyled(rectStyled);
   return sanitizer.run();
 }
 
