@@ -377,11 +377,11 @@
     </message>
     <message>
         <source>set Scale to %1 % in the Placement panel</source>
-        <translation>im Bereich Platzierung den Maßstab auf %1 % setzen</translation>
+        <translation>im Bereich Platzierung „Maßstab“ auf %1 % setzen</translation>
     </message>
     <message>
         <source>set Centre X to %1 mm and Centre Y to %2 mm in the Placement panel</source>
-        <translation>im Bereich Platzierung Mitte X auf %1 mm und Mitte Y auf %2 mm setzen</translation>
+        <translation>im Bereich Platzierung „Mitte X“ auf %1 mm und „Mitte Y“ auf %2 mm setzen</translation>
     </message>
     <message>
         <source>choose working mode %1 in the Workspace panel</source>
@@ -2159,6 +2159,10 @@ Anhalten, stoppen und beenden: Die Maschine hält sauber an und der Fortschritt 
         <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Working mode:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Estimated time:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%8&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen down:&lt;/td&gt;&lt;td&gt;%3 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen up:&lt;/td&gt;&lt;td&gt;%4 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Segments:&lt;/td&gt;&lt;td&gt;%5&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Max deviation:&lt;/td&gt;&lt;td&gt;%6 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Singularity margin:&lt;/td&gt;&lt;td&gt;%7 deg&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
         <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Arbeitsmodus:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Geschätzte Zeit:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%8&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Stift unten:&lt;/td&gt;&lt;td&gt;%3 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Stift oben:&lt;/td&gt;&lt;td&gt;%4 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Segmente:&lt;/td&gt;&lt;td&gt;%5&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Größte Abweichung:&lt;/td&gt;&lt;td&gt;%6 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Singularitätsabstand:&lt;/td&gt;&lt;td&gt;%7 Grad&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>
+    <message>
+        <source>; </source>
+        <translation>; </translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::ProfileEditor</name>
@@ -2304,7 +2308,7 @@ Anhalten, stoppen und beenden: Die Maschine hält sauber an und der Fortschritt 
     </message>
     <message>
         <source>Pen servo (M3 S / M5)</source>
-        <translation>Stift-Servo (M3 S / M5)</translation>
+        <translation>Stiftservo (M3 S/M5)</translation>
     </message>
     <message>
         <source>Z axis</source>
