@@ -359,6 +359,38 @@
         <source>the drawing was flattened within %1 mm, too coarse at %2 %: import it again within %3 mm</source>
         <translation>die Zeichnung wurde auf %1 mm genau angenähert, zu grob bei %2 %: erneut auf %3 mm genau importieren</translation>
     </message>
+    <message>
+        <source>move or shrink the drawing in the Placement panel</source>
+        <translation>die Zeichnung im Bereich Platzierung verschieben oder verkleinern</translation>
+    </message>
+    <message>
+        <source>try another working mode in the Workspace panel</source>
+        <translation>im Bereich Arbeitsraum einen anderen Arbeitsmodus versuchen</translation>
+    </message>
+    <message>
+        <source>move the drawing away from singular regions in the Placement panel</source>
+        <translation>die Zeichnung im Bereich Platzierung von singulären Bereichen wegschieben</translation>
+    </message>
+    <message>
+        <source>move the drawing away from the workspace edge in the Placement panel</source>
+        <translation>die Zeichnung im Bereich Platzierung vom Rand des Arbeitsraums wegschieben</translation>
+    </message>
+    <message>
+        <source>set Scale to %1 % in the Placement panel</source>
+        <translation>im Bereich Platzierung „Maßstab“ auf %1 % setzen</translation>
+    </message>
+    <message>
+        <source>set Centre X to %1 mm and Centre Y to %2 mm in the Placement panel</source>
+        <translation>im Bereich Platzierung „Mitte X“ auf %1 mm und „Mitte Y“ auf %2 mm setzen</translation>
+    </message>
+    <message>
+        <source>choose working mode %1 in the Workspace panel</source>
+        <translation>im Bereich Arbeitsraum den Arbeitsmodus %1 wählen</translation>
+    </message>
+    <message>
+        <source>press Fit to workspace in the Placement panel</source>
+        <translation>im Bereich Platzierung auf „In Arbeitsraum einpassen“ klicken</translation>
+    </message>
 </context>
 <context>
     <name>Preflight</name>
@@ -425,6 +457,10 @@
     <message>
         <source>%1; fix: move the centre to (%2, %3) mm</source>
         <translation>%1; Abhilfe: die Mitte nach (%2; %3) mm verschieben</translation>
+    </message>
+    <message>
+        <source>point %1 at (%2, %3) mm</source>
+        <translation>Punkt %1 bei (%2; %3) mm</translation>
     </message>
 </context>
 <context>
@@ -2123,6 +2159,10 @@ Anhalten, stoppen und beenden: Die Maschine hält sauber an und der Fortschritt 
         <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Working mode:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Estimated time:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%8&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen down:&lt;/td&gt;&lt;td&gt;%3 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen up:&lt;/td&gt;&lt;td&gt;%4 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Segments:&lt;/td&gt;&lt;td&gt;%5&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Max deviation:&lt;/td&gt;&lt;td&gt;%6 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Singularity margin:&lt;/td&gt;&lt;td&gt;%7 deg&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
         <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Arbeitsmodus:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Geschätzte Zeit:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%8&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Stift unten:&lt;/td&gt;&lt;td&gt;%3 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Stift oben:&lt;/td&gt;&lt;td&gt;%4 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Segmente:&lt;/td&gt;&lt;td&gt;%5&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Größte Abweichung:&lt;/td&gt;&lt;td&gt;%6 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Singularitätsabstand:&lt;/td&gt;&lt;td&gt;%7 Grad&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>
+    <message>
+        <source>; </source>
+        <translation>; </translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::ProfileEditor</name>
@@ -2268,7 +2308,7 @@ Anhalten, stoppen und beenden: Die Maschine hält sauber an und der Fortschritt 
     </message>
     <message>
         <source>Pen servo (M3 S / M5)</source>
-        <translation>Stift-Servo (M3 S / M5)</translation>
+        <translation>Stiftservo (M3 S/M5)</translation>
     </message>
     <message>
         <source>Z axis</source>
@@ -3670,6 +3710,189 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
     <message>
         <source>User interface language: de, en, es or fr (default: View &gt; Language, else the system's).</source>
         <translation>Sprache der Oberfläche: de, en, es oder fr (Vorgabe: Ansicht &gt; Sprache, sonst die des Systems).</translation>
+    </message>
+</context>
+<context>
+    <name>Profile</name>
+    <message>
+        <source>%1 must be a finite number of millimetres</source>
+        <translation>%1 muss eine endliche Zahl in Millimetern sein</translation>
+    </message>
+    <message>
+        <source>%1 is %2 mm; it must be zero or positive</source>
+        <translation>%1 ist %2 mm; der Wert muss null oder positiv sein</translation>
+    </message>
+    <message>
+        <source>%1 is %2 mm; it must be positive</source>
+        <translation>%1 ist %2 mm; der Wert muss positiv sein</translation>
+    </message>
+    <message>
+        <source>the legs can never meet: a1+b1 + a2+b2 = %1 mm is less than w = %2 mm</source>
+        <translation>die Arme können sich nie treffen: a1+b1 + a2+b2 = %1 mm ist kleiner als w = %2 mm</translation>
+    </message>
+    <message>
+        <source>the legs can never meet: one leg's dead zone |a-b| encloses the other leg's whole reach</source>
+        <translation>die Arme können sich nie treffen: der tote Bereich |a-b| eines Arms umschließt die ganze Reichweite des anderen</translation>
+    </message>
+    <message>
+        <source>%1 limits must be finite numbers of degrees</source>
+        <translation>die Grenzen von %1 müssen endliche Gradzahlen sein</translation>
+    </message>
+    <message>
+        <source>%1 minimum %2 deg is not below its maximum %3 deg, so no pose is allowed</source>
+        <translation>das Minimum von %1 (%2°) liegt nicht unter dem Maximum (%3°), also ist keine Stellung erlaubt</translation>
+    </message>
+    <message>
+        <source>the joint limits exclude every pose in which the linkage closes</source>
+        <translation>die Gelenkgrenzen schließen jede Stellung aus, in der sich das Gestänge schließt</translation>
+    </message>
+    <message>
+        <source>calibration.version %1 is not supported; this program reads version %2</source>
+        <translation>calibration.version %1 wird nicht unterstützt; dieses Programm liest Version %2</translation>
+    </message>
+    <message>
+        <source>calibration.date must be an ISO 8601 date like 2026-12-01 or 2026-12-01T22:30:00Z, got "%1"</source>
+        <translation>calibration.date muss ein Datum nach ISO 8601 sein, etwa 2026-12-01 oder 2026-12-01T22:30:00Z, ist aber "%1"</translation>
+    </message>
+    <message>
+        <source>calibration.outliers[%1] must be a mark id, got an empty string</source>
+        <translation>calibration.outliers[%1] muss eine Marken-ID sein, ist aber leer</translation>
+    </message>
+    <message>
+        <source>%1 must be a finite number</source>
+        <translation>%1 muss eine endliche Zahl sein</translation>
+    </message>
+    <message>
+        <source>%1 (%2) must be below %3 (%4)</source>
+        <translation>%1 (%2) muss kleiner als %3 (%4) sein</translation>
+    </message>
+    <message>
+        <source>tool.zUpMm (%1) must be above tool.zDownMm (%2)</source>
+        <translation>tool.zUpMm (%1) muss größer als tool.zDownMm (%2) sein</translation>
+    </message>
+    <message>
+        <source>%1 (%2) lies outside the joint limits [%3, %4]</source>
+        <translation>%1 (%2) liegt außerhalb der Gelenkgrenzen [%3; %4]</translation>
+    </message>
+    <message>
+        <source>name must not be empty</source>
+        <translation>name darf nicht leer sein</translation>
+    </message>
+    <message>
+        <source>workingMode must be one of ++, +-, -+, --, got "%1"</source>
+        <translation>workingMode muss ++, +-, -+ oder -- sein, ist aber "%1"</translation>
+    </message>
+    <message>
+        <source>assemblyMode must be + or -, got "%1"</source>
+        <translation>assemblyMode muss + oder - sein, ist aber "%1"</translation>
+    </message>
+    <message>
+        <source>tool.kind must be pen-servo, z-axis or laser, got "%1"</source>
+        <translation>tool.kind muss pen-servo, z-axis oder laser sein, ist aber "%1"</translation>
+    </message>
+    <message>
+        <source>schema must be "%1", got "%2" (is this a machine profile?)</source>
+        <translation>schema muss "%1" sein, ist aber "%2" (ist das ein Maschinenprofil?)</translation>
+    </message>
+    <message>
+        <source>version %1 is not supported; this program reads version %2</source>
+        <translation>Version %1 wird nicht unterstützt; dieses Programm liest Version %2</translation>
+    </message>
+    <message>
+        <source>%1:%2:%3: invalid JSON: %4</source>
+        <translation>%1:%2:%3: ungültiges JSON: %4</translation>
+    </message>
+    <message>
+        <source>the profile must be a JSON object ({...})</source>
+        <translation>das Profil muss ein JSON-Objekt sein ({...})</translation>
+    </message>
+    <message>
+        <source>%1 must be positive, got %2</source>
+        <translation>%1 muss positiv sein, ist aber %2</translation>
+    </message>
+    <message>
+        <source>%1 must be zero or positive, got %2</source>
+        <translation>%1 muss null oder positiv sein, ist aber %2</translation>
+    </message>
+    <message>
+        <source>%1 must be between %2 and %3 %4, got %5</source>
+        <translation>%1 muss zwischen %2 und %3 %4 liegen, ist aber %5</translation>
+    </message>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation>%1 kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <source>unknown machine preset '%1' (presets: %2; or give a profile file path)</source>
+        <translation>unbekannte Maschinenvorlage '%1' (Vorlagen: %2; oder den Pfad einer Profildatei angeben)</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <translation>eine Zahl</translation>
+    </message>
+    <message>
+        <source>a string</source>
+        <translation>ein Text</translation>
+    </message>
+    <message>
+        <source>a boolean</source>
+        <translation>ein Wahrheitswert</translation>
+    </message>
+    <message>
+        <source>an object</source>
+        <translation>ein Objekt</translation>
+    </message>
+    <message>
+        <source>an array</source>
+        <translation>eine Liste</translation>
+    </message>
+    <message>
+        <source>null</source>
+        <translation>null</translation>
+    </message>
+    <message>
+        <source>an unsupported value</source>
+        <translation>ein nicht unterstützter Wert</translation>
+    </message>
+    <message>
+        <source>%1 is missing (it is required)</source>
+        <translation>%1 fehlt (das Feld ist Pflicht)</translation>
+    </message>
+    <message>
+        <source>%1 must be %2, got %3 "%4"</source>
+        <translation>%1 muss %2 sein, ist aber %3 "%4"</translation>
+    </message>
+    <message>
+        <source>%1 must be %2, got %3</source>
+        <translation>%1 muss %2 sein, ist aber %3</translation>
+    </message>
+    <message>
+        <source>an integer</source>
+        <translation>eine ganze Zahl</translation>
+    </message>
+    <message>
+        <source>%1 is out of the integer range</source>
+        <translation>%1 liegt außerhalb des Ganzzahlbereichs</translation>
+    </message>
+    <message>
+        <source>true or false</source>
+        <translation>true oder false</translation>
+    </message>
+    <message>
+        <source>an array of strings</source>
+        <translation>eine Liste von Texten</translation>
+    </message>
+    <message>
+        <source>%1 must be a string, got %2</source>
+        <translation>%1 muss ein Text sein, ist aber %2</translation>
+    </message>
+    <message>
+        <source>%1 is not a known field (expected one of: %2)</source>
+        <translation>%1 ist kein bekanntes Feld (erwartet: eines von %2)</translation>
+    </message>
+    <message>
+        <source>machine: %1</source>
+        <translation>Maschine: %1</translation>
     </message>
 </context>
 </TS>

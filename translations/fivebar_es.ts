@@ -359,6 +359,38 @@
         <source>the drawing was flattened within %1 mm, too coarse at %2 %: import it again within %3 mm</source>
         <translation>el dibujo se aplanó con %1 mm de precisión, demasiado basto al %2 %: impórtelo de nuevo con %3 mm</translation>
     </message>
+    <message>
+        <source>move or shrink the drawing in the Placement panel</source>
+        <translation>mover o reducir el dibujo en el panel Colocación</translation>
+    </message>
+    <message>
+        <source>try another working mode in the Workspace panel</source>
+        <translation>probar otro modo de trabajo en el panel Espacio de trabajo</translation>
+    </message>
+    <message>
+        <source>move the drawing away from singular regions in the Placement panel</source>
+        <translation>alejar el dibujo de las zonas singulares en el panel Colocación</translation>
+    </message>
+    <message>
+        <source>move the drawing away from the workspace edge in the Placement panel</source>
+        <translation>alejar el dibujo del borde del espacio de trabajo en el panel Colocación</translation>
+    </message>
+    <message>
+        <source>set Scale to %1 % in the Placement panel</source>
+        <translation>poner «Escala» en %1 % en el panel Colocación</translation>
+    </message>
+    <message>
+        <source>set Centre X to %1 mm and Centre Y to %2 mm in the Placement panel</source>
+        <translation>poner «Centro X» en %1 mm y «Centro Y» en %2 mm en el panel Colocación</translation>
+    </message>
+    <message>
+        <source>choose working mode %1 in the Workspace panel</source>
+        <translation>elegir el modo de trabajo %1 en el panel Espacio de trabajo</translation>
+    </message>
+    <message>
+        <source>press Fit to workspace in the Placement panel</source>
+        <translation>pulsar «Ajustar al espacio» en el panel Colocación</translation>
+    </message>
 </context>
 <context>
     <name>Preflight</name>
@@ -425,6 +457,10 @@
     <message>
         <source>%1; fix: move the centre to (%2, %3) mm</source>
         <translation>%1; solución: mover el centro a (%2; %3) mm</translation>
+    </message>
+    <message>
+        <source>point %1 at (%2, %3) mm</source>
+        <translation>punto %1 en (%2; %3) mm</translation>
     </message>
 </context>
 <context>
@@ -2123,6 +2159,10 @@ Pausar, detener y salir: la máquina se detiene limpiamente y el progreso se gua
         <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Working mode:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Estimated time:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%8&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen down:&lt;/td&gt;&lt;td&gt;%3 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen up:&lt;/td&gt;&lt;td&gt;%4 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Segments:&lt;/td&gt;&lt;td&gt;%5&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Max deviation:&lt;/td&gt;&lt;td&gt;%6 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Singularity margin:&lt;/td&gt;&lt;td&gt;%7 deg&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
         <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Modo de trabajo:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Tiempo estimado:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%8&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pluma bajada:&lt;/td&gt;&lt;td&gt;%3 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pluma subida:&lt;/td&gt;&lt;td&gt;%4 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Segmentos:&lt;/td&gt;&lt;td&gt;%5&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Desviación máx.:&lt;/td&gt;&lt;td&gt;%6 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Margen de singularidad:&lt;/td&gt;&lt;td&gt;%7°&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>
+    <message>
+        <source>; </source>
+        <translation>; </translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::ProfileEditor</name>
@@ -3670,6 +3710,189 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     <message>
         <source>User interface language: de, en, es or fr (default: View &gt; Language, else the system's).</source>
         <translation>Idioma de la interfaz: de, en, es o fr (predeterminado: Ver &gt; Idioma, si no, el del sistema).</translation>
+    </message>
+</context>
+<context>
+    <name>Profile</name>
+    <message>
+        <source>%1 must be a finite number of millimetres</source>
+        <translation>%1 debe ser un número finito de milímetros</translation>
+    </message>
+    <message>
+        <source>%1 is %2 mm; it must be zero or positive</source>
+        <translation>%1 es %2 mm; debe ser cero o positivo</translation>
+    </message>
+    <message>
+        <source>%1 is %2 mm; it must be positive</source>
+        <translation>%1 es %2 mm; debe ser positivo</translation>
+    </message>
+    <message>
+        <source>the legs can never meet: a1+b1 + a2+b2 = %1 mm is less than w = %2 mm</source>
+        <translation>los brazos nunca pueden unirse: a1+b1 + a2+b2 = %1 mm es menor que w = %2 mm</translation>
+    </message>
+    <message>
+        <source>the legs can never meet: one leg's dead zone |a-b| encloses the other leg's whole reach</source>
+        <translation>los brazos nunca pueden unirse: la zona muerta |a-b| de un brazo encierra todo el alcance del otro</translation>
+    </message>
+    <message>
+        <source>%1 limits must be finite numbers of degrees</source>
+        <translation>los límites de %1 deben ser números finitos de grados</translation>
+    </message>
+    <message>
+        <source>%1 minimum %2 deg is not below its maximum %3 deg, so no pose is allowed</source>
+        <translation>el mínimo de %1 (%2°) no es menor que su máximo (%3°), así que no se permite ninguna postura</translation>
+    </message>
+    <message>
+        <source>the joint limits exclude every pose in which the linkage closes</source>
+        <translation>los límites de las articulaciones excluyen todas las posturas en las que el mecanismo se cierra</translation>
+    </message>
+    <message>
+        <source>calibration.version %1 is not supported; this program reads version %2</source>
+        <translation>calibration.version %1 no es compatible; este programa lee la versión %2</translation>
+    </message>
+    <message>
+        <source>calibration.date must be an ISO 8601 date like 2026-12-01 or 2026-12-01T22:30:00Z, got "%1"</source>
+        <translation>calibration.date debe ser una fecha ISO 8601 como 2026-12-01 o 2026-12-01T22:30:00Z, no "%1"</translation>
+    </message>
+    <message>
+        <source>calibration.outliers[%1] must be a mark id, got an empty string</source>
+        <translation>calibration.outliers[%1] debe ser un identificador de marca, no una cadena vacía</translation>
+    </message>
+    <message>
+        <source>%1 must be a finite number</source>
+        <translation>%1 debe ser un número finito</translation>
+    </message>
+    <message>
+        <source>%1 (%2) must be below %3 (%4)</source>
+        <translation>%1 (%2) debe ser menor que %3 (%4)</translation>
+    </message>
+    <message>
+        <source>tool.zUpMm (%1) must be above tool.zDownMm (%2)</source>
+        <translation>tool.zUpMm (%1) debe ser mayor que tool.zDownMm (%2)</translation>
+    </message>
+    <message>
+        <source>%1 (%2) lies outside the joint limits [%3, %4]</source>
+        <translation>%1 (%2) está fuera de los límites de las articulaciones [%3; %4]</translation>
+    </message>
+    <message>
+        <source>name must not be empty</source>
+        <translation>name no debe estar vacío</translation>
+    </message>
+    <message>
+        <source>workingMode must be one of ++, +-, -+, --, got "%1"</source>
+        <translation>workingMode debe ser ++, +-, -+ o --, no "%1"</translation>
+    </message>
+    <message>
+        <source>assemblyMode must be + or -, got "%1"</source>
+        <translation>assemblyMode debe ser + o -, no "%1"</translation>
+    </message>
+    <message>
+        <source>tool.kind must be pen-servo, z-axis or laser, got "%1"</source>
+        <translation>tool.kind debe ser pen-servo, z-axis o laser, no "%1"</translation>
+    </message>
+    <message>
+        <source>schema must be "%1", got "%2" (is this a machine profile?)</source>
+        <translation>schema debe ser "%1", no "%2" (¿es un perfil de máquina?)</translation>
+    </message>
+    <message>
+        <source>version %1 is not supported; this program reads version %2</source>
+        <translation>la versión %1 no es compatible; este programa lee la versión %2</translation>
+    </message>
+    <message>
+        <source>%1:%2:%3: invalid JSON: %4</source>
+        <translation>%1:%2:%3: JSON no válido: %4</translation>
+    </message>
+    <message>
+        <source>the profile must be a JSON object ({...})</source>
+        <translation>el perfil debe ser un objeto JSON ({...})</translation>
+    </message>
+    <message>
+        <source>%1 must be positive, got %2</source>
+        <translation>%1 debe ser positivo, no %2</translation>
+    </message>
+    <message>
+        <source>%1 must be zero or positive, got %2</source>
+        <translation>%1 debe ser cero o positivo, no %2</translation>
+    </message>
+    <message>
+        <source>%1 must be between %2 and %3 %4, got %5</source>
+        <translation>%1 debe estar entre %2 y %3 %4, no %5</translation>
+    </message>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation>no se puede abrir %1: %2</translation>
+    </message>
+    <message>
+        <source>unknown machine preset '%1' (presets: %2; or give a profile file path)</source>
+        <translation>preajuste de máquina desconocido '%1' (preajustes: %2; o indique la ruta de un archivo de perfil)</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <translation>un número</translation>
+    </message>
+    <message>
+        <source>a string</source>
+        <translation>una cadena</translation>
+    </message>
+    <message>
+        <source>a boolean</source>
+        <translation>un booleano</translation>
+    </message>
+    <message>
+        <source>an object</source>
+        <translation>un objeto</translation>
+    </message>
+    <message>
+        <source>an array</source>
+        <translation>una lista</translation>
+    </message>
+    <message>
+        <source>null</source>
+        <translation>null</translation>
+    </message>
+    <message>
+        <source>an unsupported value</source>
+        <translation>un valor no admitido</translation>
+    </message>
+    <message>
+        <source>%1 is missing (it is required)</source>
+        <translation>falta %1 (es obligatorio)</translation>
+    </message>
+    <message>
+        <source>%1 must be %2, got %3 "%4"</source>
+        <translation>%1 debe ser %2, no %3 "%4"</translation>
+    </message>
+    <message>
+        <source>%1 must be %2, got %3</source>
+        <translation>%1 debe ser %2, no %3</translation>
+    </message>
+    <message>
+        <source>an integer</source>
+        <translation>un número entero</translation>
+    </message>
+    <message>
+        <source>%1 is out of the integer range</source>
+        <translation>%1 está fuera del rango de los enteros</translation>
+    </message>
+    <message>
+        <source>true or false</source>
+        <translation>true o false</translation>
+    </message>
+    <message>
+        <source>an array of strings</source>
+        <translation>una lista de cadenas</translation>
+    </message>
+    <message>
+        <source>%1 must be a string, got %2</source>
+        <translation>%1 debe ser una cadena, no %2</translation>
+    </message>
+    <message>
+        <source>%1 is not a known field (expected one of: %2)</source>
+        <translation>%1 no es un campo conocido (se espera uno de: %2)</translation>
+    </message>
+    <message>
+        <source>machine: %1</source>
+        <translation>máquina: %1</translation>
     </message>
 </context>
 </TS>

@@ -359,6 +359,38 @@
         <source>the drawing was flattened within %1 mm, too coarse at %2 %: import it again within %3 mm</source>
         <translation>le dessin a été aplati à %1 mm près, trop grossier à %2 % : l'importer à nouveau à %3 mm près</translation>
     </message>
+    <message>
+        <source>move or shrink the drawing in the Placement panel</source>
+        <translation>déplacer ou réduire le dessin dans le panneau Placement</translation>
+    </message>
+    <message>
+        <source>try another working mode in the Workspace panel</source>
+        <translation>essayer un autre mode de travail dans le panneau Espace de travail</translation>
+    </message>
+    <message>
+        <source>move the drawing away from singular regions in the Placement panel</source>
+        <translation>éloigner le dessin des zones singulières dans le panneau Placement</translation>
+    </message>
+    <message>
+        <source>move the drawing away from the workspace edge in the Placement panel</source>
+        <translation>éloigner le dessin du bord de l'espace de travail dans le panneau Placement</translation>
+    </message>
+    <message>
+        <source>set Scale to %1 % in the Placement panel</source>
+        <translation>régler « Échelle » sur %1 % dans le panneau Placement</translation>
+    </message>
+    <message>
+        <source>set Centre X to %1 mm and Centre Y to %2 mm in the Placement panel</source>
+        <translation>régler « Centre X » sur %1 mm et « Centre Y » sur %2 mm dans le panneau Placement</translation>
+    </message>
+    <message>
+        <source>choose working mode %1 in the Workspace panel</source>
+        <translation>choisir le mode de travail %1 dans le panneau Espace de travail</translation>
+    </message>
+    <message>
+        <source>press Fit to workspace in the Placement panel</source>
+        <translation>cliquer sur « Ajuster à l'espace » dans le panneau Placement</translation>
+    </message>
 </context>
 <context>
     <name>Preflight</name>
@@ -425,6 +457,10 @@
     <message>
         <source>%1; fix: move the centre to (%2, %3) mm</source>
         <translation>%1 ; solution : déplacer le centre en (%2 ; %3) mm</translation>
+    </message>
+    <message>
+        <source>point %1 at (%2, %3) mm</source>
+        <translation>point %1 en (%2 ; %3) mm</translation>
     </message>
 </context>
 <context>
@@ -2123,6 +2159,10 @@ Pause, arrêter et quitter : la machine s'arrête proprement et la progression e
         <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Working mode:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Estimated time:&lt;/td&gt;&lt;td&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%8&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen down:&lt;/td&gt;&lt;td&gt;%3 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Pen up:&lt;/td&gt;&lt;td&gt;%4 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Segments:&lt;/td&gt;&lt;td&gt;%5&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Max deviation:&lt;/td&gt;&lt;td&gt;%6 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Singularity margin:&lt;/td&gt;&lt;td&gt;%7 deg&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
         <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Mode de travail :&lt;/td&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Durée estimée :&lt;/td&gt;&lt;td&gt;&lt;b&gt;%2&lt;/b&gt;&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;%8&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Stylo baissé :&lt;/td&gt;&lt;td&gt;%3 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Stylo levé :&lt;/td&gt;&lt;td&gt;%4 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Segments :&lt;/td&gt;&lt;td&gt;%5&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Écart max. :&lt;/td&gt;&lt;td&gt;%6 mm&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Marge de singularité :&lt;/td&gt;&lt;td&gt;%7°&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>
+    <message>
+        <source>; </source>
+        <translation> ; </translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::ProfileEditor</name>
@@ -3670,6 +3710,189 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     <message>
         <source>User interface language: de, en, es or fr (default: View &gt; Language, else the system's).</source>
         <translation>Langue de l'interface : de, en, es ou fr (par défaut : Affichage &gt; Langue, sinon celle du système).</translation>
+    </message>
+</context>
+<context>
+    <name>Profile</name>
+    <message>
+        <source>%1 must be a finite number of millimetres</source>
+        <translation>%1 doit être un nombre fini de millimètres</translation>
+    </message>
+    <message>
+        <source>%1 is %2 mm; it must be zero or positive</source>
+        <translation>%1 vaut %2 mm ; la valeur doit être nulle ou positive</translation>
+    </message>
+    <message>
+        <source>%1 is %2 mm; it must be positive</source>
+        <translation>%1 vaut %2 mm ; la valeur doit être positive</translation>
+    </message>
+    <message>
+        <source>the legs can never meet: a1+b1 + a2+b2 = %1 mm is less than w = %2 mm</source>
+        <translation>les bras ne peuvent jamais se rejoindre : a1+b1 + a2+b2 = %1 mm est inférieur à w = %2 mm</translation>
+    </message>
+    <message>
+        <source>the legs can never meet: one leg's dead zone |a-b| encloses the other leg's whole reach</source>
+        <translation>les bras ne peuvent jamais se rejoindre : la zone morte |a-b| d'un bras englobe toute la portée de l'autre</translation>
+    </message>
+    <message>
+        <source>%1 limits must be finite numbers of degrees</source>
+        <translation>les limites de %1 doivent être des nombres finis de degrés</translation>
+    </message>
+    <message>
+        <source>%1 minimum %2 deg is not below its maximum %3 deg, so no pose is allowed</source>
+        <translation>le minimum de %1 (%2°) n'est pas inférieur à son maximum (%3°) : aucune position n'est permise</translation>
+    </message>
+    <message>
+        <source>the joint limits exclude every pose in which the linkage closes</source>
+        <translation>les limites articulaires excluent toutes les positions où le mécanisme se referme</translation>
+    </message>
+    <message>
+        <source>calibration.version %1 is not supported; this program reads version %2</source>
+        <translation>calibration.version %1 n'est pas prise en charge ; ce programme lit la version %2</translation>
+    </message>
+    <message>
+        <source>calibration.date must be an ISO 8601 date like 2026-12-01 or 2026-12-01T22:30:00Z, got "%1"</source>
+        <translation>calibration.date doit être une date ISO 8601 comme 2026-12-01 ou 2026-12-01T22:30:00Z, et non « %1 »</translation>
+    </message>
+    <message>
+        <source>calibration.outliers[%1] must be a mark id, got an empty string</source>
+        <translation>calibration.outliers[%1] doit être un identifiant de marque, et non une chaîne vide</translation>
+    </message>
+    <message>
+        <source>%1 must be a finite number</source>
+        <translation>%1 doit être un nombre fini</translation>
+    </message>
+    <message>
+        <source>%1 (%2) must be below %3 (%4)</source>
+        <translation>%1 (%2) doit être inférieur à %3 (%4)</translation>
+    </message>
+    <message>
+        <source>tool.zUpMm (%1) must be above tool.zDownMm (%2)</source>
+        <translation>tool.zUpMm (%1) doit être supérieur à tool.zDownMm (%2)</translation>
+    </message>
+    <message>
+        <source>%1 (%2) lies outside the joint limits [%3, %4]</source>
+        <translation>%1 (%2) est hors des limites articulaires [%3 ; %4]</translation>
+    </message>
+    <message>
+        <source>name must not be empty</source>
+        <translation>name ne doit pas être vide</translation>
+    </message>
+    <message>
+        <source>workingMode must be one of ++, +-, -+, --, got "%1"</source>
+        <translation>workingMode doit valoir ++, +-, -+ ou --, et non « %1 »</translation>
+    </message>
+    <message>
+        <source>assemblyMode must be + or -, got "%1"</source>
+        <translation>assemblyMode doit valoir + ou -, et non « %1 »</translation>
+    </message>
+    <message>
+        <source>tool.kind must be pen-servo, z-axis or laser, got "%1"</source>
+        <translation>tool.kind doit valoir pen-servo, z-axis ou laser, et non « %1 »</translation>
+    </message>
+    <message>
+        <source>schema must be "%1", got "%2" (is this a machine profile?)</source>
+        <translation>schema doit valoir « %1 », et non « %2 » (est-ce bien un profil de machine ?)</translation>
+    </message>
+    <message>
+        <source>version %1 is not supported; this program reads version %2</source>
+        <translation>la version %1 n'est pas prise en charge ; ce programme lit la version %2</translation>
+    </message>
+    <message>
+        <source>%1:%2:%3: invalid JSON: %4</source>
+        <translation>%1:%2:%3 : JSON invalide : %4</translation>
+    </message>
+    <message>
+        <source>the profile must be a JSON object ({...})</source>
+        <translation>le profil doit être un objet JSON ({...})</translation>
+    </message>
+    <message>
+        <source>%1 must be positive, got %2</source>
+        <translation>%1 doit être positif, et non %2</translation>
+    </message>
+    <message>
+        <source>%1 must be zero or positive, got %2</source>
+        <translation>%1 doit être nul ou positif, et non %2</translation>
+    </message>
+    <message>
+        <source>%1 must be between %2 and %3 %4, got %5</source>
+        <translation>%1 doit être compris entre %2 et %3 %4, et non %5</translation>
+    </message>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation>impossible d'ouvrir %1 : %2</translation>
+    </message>
+    <message>
+        <source>unknown machine preset '%1' (presets: %2; or give a profile file path)</source>
+        <translation>préréglage de machine inconnu « %1 » (préréglages : %2 ; ou indiquez le chemin d'un fichier de profil)</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <translation>un nombre</translation>
+    </message>
+    <message>
+        <source>a string</source>
+        <translation>une chaîne</translation>
+    </message>
+    <message>
+        <source>a boolean</source>
+        <translation>un booléen</translation>
+    </message>
+    <message>
+        <source>an object</source>
+        <translation>un objet</translation>
+    </message>
+    <message>
+        <source>an array</source>
+        <translation>un tableau</translation>
+    </message>
+    <message>
+        <source>null</source>
+        <translation>null</translation>
+    </message>
+    <message>
+        <source>an unsupported value</source>
+        <translation>une valeur non prise en charge</translation>
+    </message>
+    <message>
+        <source>%1 is missing (it is required)</source>
+        <translation>%1 est absent (ce champ est obligatoire)</translation>
+    </message>
+    <message>
+        <source>%1 must be %2, got %3 "%4"</source>
+        <translation>%1 doit être %2, et non %3 « %4 »</translation>
+    </message>
+    <message>
+        <source>%1 must be %2, got %3</source>
+        <translation>%1 doit être %2, et non %3</translation>
+    </message>
+    <message>
+        <source>an integer</source>
+        <translation>un entier</translation>
+    </message>
+    <message>
+        <source>%1 is out of the integer range</source>
+        <translation>%1 dépasse la plage des entiers</translation>
+    </message>
+    <message>
+        <source>true or false</source>
+        <translation>true ou false</translation>
+    </message>
+    <message>
+        <source>an array of strings</source>
+        <translation>un tableau de chaînes</translation>
+    </message>
+    <message>
+        <source>%1 must be a string, got %2</source>
+        <translation>%1 doit être une chaîne, et non %2</translation>
+    </message>
+    <message>
+        <source>%1 is not a known field (expected one of: %2)</source>
+        <translation>%1 n'est pas un champ connu (attendu : l'un de %2)</translation>
+    </message>
+    <message>
+        <source>machine: %1</source>
+        <translation>machine : %1</translation>
     </message>
 </context>
 </TS>

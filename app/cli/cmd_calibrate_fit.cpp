@@ -208,7 +208,7 @@ int fit(const Options& o) {
     calibrated.calibration->backlashRad2 = std::max(0.0, backlash->play.motor2Rad);
   }
   const std::vector<ValidationIssue> issues = validate(calibrated);
-  if (!issues.empty()) return fail("the fitted profile is not valid (" + issues[0].message + "); no profile written");
+  if (!issues.empty()) return fail("the fitted profile is not valid (" + issues[0].message.text() + "); no profile written");
   if (const auto reportPath = o.value("--report")) {
     std::ofstream report(*reportPath, std::ios::binary);
     if (!(report << reportOf(result, *nominal, measuredPath, distances, backlash).dump(2) << "\n"))

@@ -140,7 +140,7 @@ Request parseRequest(const Options& o) {
   r.search.seed = static_cast<std::uint32_t>(parseMm(o, "--seed", 1.0, 0.0, 4e9));
   r.search.threads = static_cast<unsigned>(
       parseMm(o, "--threads", std::max(1u, std::thread::hardware_concurrency()), 1.0, 64.0));
-  for (const ValidationIssue& issue : validate(b)) throw UsageError(issue.message);
+  for (const ValidationIssue& issue : validate(b)) throw UsageError(issue.message.text());
   r.jsonPath = o.value("--json");
   r.profilePath = o.value("--profile-out");
   r.pngPath = o.value("--png");

@@ -35,7 +35,7 @@ int check(const std::vector<std::string>& files) {
     for (const ValidationIssue& issue : load.issues) {
       // Unreadable files and broken JSON already carry the file name (and line:column).
       if (issue.field == "file" || issue.field == "json")
-        std::cout << (issue.message.rfind(file, 0) == 0 ? "" : file + ": ") << issue.message << "\n";
+        std::cout << (issue.message.text().rfind(file, 0) == 0 ? "" : file + ": ") << issue.message << "\n";
       else
         std::cout << file << ": " << issue.field << ": " << issue.message << "\n";
     }

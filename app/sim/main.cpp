@@ -134,7 +134,7 @@ int main(int argc, char** argv) {
   const fivebar::ProfileLoad load = fivebar::resolveMachine(args.machine);
   if (!load.profile) {
     std::cerr << "fivebar-sim: --machine " << args.machine << ": "
-              << (load.issues.empty() ? "unknown" : load.issues.front().field + ": " + load.issues.front().message)
+              << (load.issues.empty() ? "unknown" : load.issues.front().field + ": " + load.issues.front().message.text())
               << "\n";
     return 1;
   }
@@ -145,7 +145,7 @@ int main(int argc, char** argv) {
     if (!real.profile) {
       std::cerr << "fivebar-sim: --true-machine " << args.trueMachine << ": "
                 << (real.issues.empty() ? "unknown"
-                                        : real.issues.front().field + ": " + real.issues.front().message)
+                                        : real.issues.front().field + ": " + real.issues.front().message.text())
                 << "\n";
       return 1;
     }

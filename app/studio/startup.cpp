@@ -29,7 +29,7 @@ std::optional<MachineProfile> resolveProfile(const std::string& presetOrPath, st
   error.clear();
   for (const ValidationIssue& issue : load.issues) {
     if (!error.empty()) error += "\n";
-    error += presetOrPath + ": " + issue.field + ": " + issue.message;
+    error += presetOrPath + ": " + issue.field + ": " + issue.message.text();
   }
   if (error.empty()) error = presetOrPath + ": cannot load the machine profile";
   return std::nullopt;

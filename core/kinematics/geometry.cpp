@@ -1,18 +1,18 @@
 #include "core/kinematics/geometry.hpp"
 
 #include <cmath>
-#include <sstream>
 
 namespace fivebar {
 namespace {
 
 void checkLength(std::vector<ValidationIssue>& out, const char* field, double v, bool allowZero) {
   if (!std::isfinite(v)) {
-    out.push_back({field, std::string(field) + " must be a finite number of millimetres"});
+    out.push_back({field, FB_TR("Profile", "%1 must be a finite number of millimetres").arg(field)});
   } else if (v < 0.0 || (!allowZero && v == 0.0)) {
-    std::ostringstream s;
-    s << field << " is " << v << " mm; it must be " << (allowZero ? "zero or positive" : "positive");
-    out.push_back({field, s.str()});
+    out.push_back({field, (allowZero ? FB_TR("Profile", "%1 is %2 mm; it must be zero or positive")
+                                     : FB_TR("Profile", "%1 is %2 mm; it must be positive"))
+                              .arg(field)
+                              .argSignificant(v, 6)});
   }
 }
 
@@ -32,14 +32,13 @@ std::vector<ValidationIssue> validate(const Geometry& g) {
   const double r1 = g.a1 + g.b1, r2 = g.a2 + g.b2;
   const double h1 = std::abs(g.a1 - g.b1), h2 = std::abs(g.a2 - g.b2);
   if (r1 + r2 < g.w) {
-    std::ostringstream s;
-    s << "the legs can never meet: a1+b1 + a2+b2 = " << (r1 + r2) << " mm is less than w = " << g.w
-      << " mm";
-    out.push_back({"w", s.str()});
+    out.push_back({"w", FB_TR("Profile", "the legs can never meet: a1+b1 + a2+b2 = %1 mm is less than w = %2 mm")
+                            .argSignificant(r1 + r2, 6)
+                            .argSignificant(g.w, 6)});
   } else if (h1 > g.w + r2 || h2 > g.w + r1) {
     out.push_back({h1 > h2 ? "b1" : "b2",
-                   "the legs can never meet: one leg's dead zone |a-b| encloses the other leg's "
-                   "whole reach"});
+                   FB_TR("Profile", "the legs can never meet: one leg's dead zone |a-b| encloses "
+                                    "the other leg's whole reach")});
   }
   return out;
 }
@@ -48,12 +47,13 @@ std::vector<ValidationIssue> validate(const Geometry& g, const JointLimits& l) {
   std::vector<ValidationIssue> out = validate(g);
   auto checkPair = [&](const char* field, double lo, double hi) {
     if (!std::isfinite(lo) || !std::isfinite(hi)) {
-      out.push_back({field, std::string(field) + " limits must be finite numbers of degrees"});
+      out.push_back({field, FB_TR("Profile", "%1 limits must be finite numbers of degrees").arg(field)});
     } else if (!(lo < hi)) {
-      std::ostringstream s;
-      s << field << " minimum " << degFromRad(lo) << " deg is not below its maximum "
-        << degFromRad(hi) << " deg, so no pose is allowed";
-      out.push_back({field, s.str()});
+      out.push_back({field, FB_TR("Profile", "%1 minimum %2 deg is not below its maximum %3 deg, so no "
+                                             "pose is allowed")
+                                .arg(field)
+                                .argSignificant(degFromRad(lo), 6)
+                                .argSignificant(degFromRad(hi), 6)});
     }
   };
   checkPair("limits.theta1", l.theta1Min, l.theta1Max);
@@ -73,7 +73,7 @@ std::vector<ValidationIssue> validate(const Geometry& g, const JointLimits& l) {
       if (d <= g.b1 + g.b2 && d >= std::abs(g.b1 - g.b2)) return out;
     }
   }
-  out.push_back({"limits", "the joint limits exclude every pose in which the linkage closes"});
+  out.push_back({"limits", FB_TR("Profile", "the joint limits exclude every pose in which the linkage closes")});
   return out;
 }
 

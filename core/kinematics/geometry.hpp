@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/kinematics/units.hpp"
+#include "core/support/message.hpp"
 
 namespace fivebar {
 
@@ -38,10 +39,11 @@ struct JointLimits {
 };
 
 // One problem found by validation: the field it concerns ("a1", "limits.theta1", ...) and a
-// sentence a person can act on.
+// sentence a person can act on, translatable (message.text() is the English the CLI prints; the
+// studio shows it in the user's language, widgets/document/core_message.hpp).
 struct ValidationIssue {
   std::string field;
-  std::string message;
+  Message message;
 };
 
 // Checks lengths (positive, finite) and that the two legs can ever close a loop.

@@ -53,9 +53,10 @@ void readCalibration(ObjectReader& root, MachineProfile& p, std::vector<Validati
   r.integer("version", version, true);
   if (issues.size() != before) return;
   if (version < 1 || version > MachineCalibration::kSchemaVersion) {
-    issues.push_back({"calibration.version", "calibration.version " + std::to_string(version) +
-                                                 " is not supported; this program reads version " +
-                                                 std::to_string(MachineCalibration::kSchemaVersion)});
+    issues.push_back({"calibration.version",
+                      FB_TR("Profile", "calibration.version %1 is not supported; this program reads version %2")
+                          .arg(version)
+                          .arg(MachineCalibration::kSchemaVersion)});
     return;
   }
   MachineCalibration& c = p.calibration.emplace();
@@ -94,12 +95,13 @@ void validateCalibration(std::vector<ValidationIssue>& out, const MachineProfile
     for (const ValidationIssue& issue : checkField(f, f.get(p))) out.push_back(issue);
   }
   if (!c.date.empty() && !looksLikeIsoDate(c.date))
-    out.push_back({"calibration.date", "calibration.date must be an ISO 8601 date like 2026-12-01 or "
-                                       "2026-12-01T22:30:00Z, got \"" + c.date + "\""});
+    out.push_back({"calibration.date", FB_TR("Profile", "calibration.date must be an ISO 8601 date like "
+                                                        "2026-12-01 or 2026-12-01T22:30:00Z, got \"%1\"")
+                                           .arg(c.date)});
   for (std::size_t i = 0; i < c.fit.outlierIds.size(); ++i)
     if (c.fit.outlierIds[i].empty())
-      out.push_back({"calibration.outliers", "calibration.outliers[" + std::to_string(i) +
-                                                 "] must be a mark id, got an empty string"});
+      out.push_back({"calibration.outliers",
+                     FB_TR("Profile", "calibration.outliers[%1] must be a mark id, got an empty string").arg(i)});
 }
 
 }  // namespace fivebar::detail

@@ -18,23 +18,19 @@ using detail::ObjectReader;
 
 constexpr const char* kSchemaName = "fivebar-profile";
 
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
-}
-
 bool limitsAreUnlimited(const JointLimits& l) { return l == JointLimits{}; }
 
 void validateLimits(std::vector<ValidationIssue>& out, const JointLimits& l) {
   auto pair = [&](const std::string& name, double lo, double hi) {
     const std::string minField = "limits." + name + "MinDeg", maxField = "limits." + name + "MaxDeg";
-    if (!std::isfinite(lo)) out.push_back({minField, minField + " must be a finite number"});
-    if (!std::isfinite(hi)) out.push_back({maxField, maxField + " must be a finite number"});
+    if (!std::isfinite(lo)) out.push_back({minField, FB_TR("Profile", "%1 must be a finite number").arg(minField)});
+    if (!std::isfinite(hi)) out.push_back({maxField, FB_TR("Profile", "%1 must be a finite number").arg(maxField)});
     if (std::isfinite(lo) && std::isfinite(hi) && !(lo < hi))
-      out.push_back({minField, minField + " (" + fmt(degFromRad(lo)) + ") must be below " +
-                                   maxField + " (" + fmt(degFromRad(hi)) + ")"});
+      out.push_back({minField, FB_TR("Profile", "%1 (%2) must be below %3 (%4)")
+                                   .arg(minField)
+                                   .argSignificant(degFromRad(lo), 10)
+                                   .arg(maxField)
+                                   .argSignificant(degFromRad(hi), 10)});
   };
   pair("theta1", l.theta1Min, l.theta1Max);
   pair("theta2", l.theta2Min, l.theta2Max);
@@ -52,18 +48,22 @@ void validateTool(std::vector<ValidationIssue>& out, const MachineProfile& p) {
   const ToolSettings& t = p.tool;
   if (t.kind == ToolKind::ZAxis && std::isfinite(t.zUpMm) && std::isfinite(t.zDownMm) &&
       !(t.zUpMm > t.zDownMm))
-    out.push_back({"tool.zUpMm", "tool.zUpMm (" + fmt(t.zUpMm) + ") must be above tool.zDownMm (" +
-                                     fmt(t.zDownMm) + ")"});
+    out.push_back({"tool.zUpMm", FB_TR("Profile", "tool.zUpMm (%1) must be above tool.zDownMm (%2)")
+                                     .argSignificant(t.zUpMm, 10)
+                                     .argSignificant(t.zDownMm, 10)});
 }
 
 void validateHome(std::vector<ValidationIssue>& out, const MachineProfile& p) {
   auto check = [&](const char* field, double v, double lo, double hi) {
     const std::string f = field;
     if (!std::isfinite(v)) {
-      out.push_back({f, f + " must be a finite number"});
+      out.push_back({f, FB_TR("Profile", "%1 must be a finite number").arg(f)});
     } else if (v < lo || v > hi) {
-      out.push_back({f, f + " (" + fmt(degFromRad(v)) + ") lies outside the joint limits [" +
-                            fmt(degFromRad(lo)) + ", " + fmt(degFromRad(hi)) + "]"});
+      out.push_back({f, FB_TR("Profile", "%1 (%2) lies outside the joint limits [%3, %4]")
+                            .arg(f)
+                            .argSignificant(degFromRad(v), 10)
+                            .argSignificant(degFromRad(lo), 10)
+                            .argSignificant(degFromRad(hi), 10)});
     }
   };
   check("home.theta1Deg", p.homeAngles.theta1, p.limits.theta1Min, p.limits.theta1Max);
@@ -89,7 +89,7 @@ std::optional<ToolKind> parseToolKind(const std::string& s) {
 
 std::vector<ValidationIssue> validate(const MachineProfile& p) {
   std::vector<ValidationIssue> out;
-  if (p.name.empty()) out.push_back({"name", "name must not be empty"});
+  if (p.name.empty()) out.push_back({"name", FB_TR("Profile", "name must not be empty")});
   const Geometry& g = p.geometry;
   validateSection(out, p, "geometry");
   const std::size_t fieldIssues = out.size();
@@ -153,11 +153,11 @@ void readModes(ObjectReader& root, MachineProfile& p, std::vector<ValidationIssu
   std::string text(toString(p.defaultMode));
   root.string("workingMode", text);
   if (auto m = parseWorkingMode(text)) p.defaultMode = *m;
-  else issues.push_back({"workingMode", "workingMode must be one of ++, +-, -+, --, got \"" + text + "\""});
+  else issues.push_back({"workingMode", FB_TR("Profile", "workingMode must be one of ++, +-, -+, --, got \"%1\"").arg(text)});
   text = std::string(toString(p.assembly));
   root.string("assemblyMode", text);
   if (auto a = parseAssemblyMode(text)) p.assembly = *a;
-  else issues.push_back({"assemblyMode", "assemblyMode must be + or -, got \"" + text + "\""});
+  else issues.push_back({"assemblyMode", FB_TR("Profile", "assemblyMode must be + or -, got \"%1\"").arg(text)});
 }
 
 void readTool(const json* o, MachineProfile& p, std::vector<ValidationIssue>& issues) {
@@ -167,7 +167,7 @@ void readTool(const json* o, MachineProfile& p, std::vector<ValidationIssue>& is
   std::string kind = toolName(t.kind);
   r.string("kind", kind);
   if (auto k = parseToolKind(kind)) t.kind = *k;
-  else issues.push_back({"tool.kind", "tool.kind must be pen-servo, z-axis or laser, got \"" + kind + "\""});
+  else issues.push_back({"tool.kind", FB_TR("Profile", "tool.kind must be pen-servo, z-axis or laser, got \"%1\"").arg(kind)});
   readNumbers(r, "tool", p);
   r.finish();
 }
@@ -217,14 +217,15 @@ bool readHeader(ObjectReader& root, std::vector<ValidationIssue>& issues) {
   root.integer("version", version, true);
   if (!issues.empty()) return false;
   if (schema != kSchemaName) {
-    issues.push_back({"schema", "schema must be \"" + std::string(kSchemaName) + "\", got \"" +
-                                    schema + "\" (is this a machine profile?)"});
+    issues.push_back({"schema", FB_TR("Profile", "schema must be \"%1\", got \"%2\" (is this a machine profile?)")
+                                    .arg(kSchemaName)
+                                    .arg(schema)});
     return false;
   }
   if (version != MachineProfile::kSchemaVersion) {
-    issues.push_back({"version", "version " + std::to_string(version) +
-                                     " is not supported; this program reads version " +
-                                     std::to_string(MachineProfile::kSchemaVersion)});
+    issues.push_back({"version", FB_TR("Profile", "version %1 is not supported; this program reads version %2")
+                                     .arg(version)
+                                     .arg(MachineProfile::kSchemaVersion)});
     return false;
   }
   return true;
@@ -241,12 +242,15 @@ ProfileLoad profileFromJson(const std::string& text, const std::string& sourceNa
     const auto pos = detail::positionOf(text, e.byte > 0 ? e.byte - 1 : 0);
     std::string what = e.what();
     if (auto colon = what.find(": "); colon != std::string::npos) what = what.substr(colon + 2);
-    result.issues.push_back({"json", sourceName + ":" + std::to_string(pos.line) + ":" +
-                                         std::to_string(pos.column) + ": invalid JSON: " + what});
+    result.issues.push_back({"json", FB_TR("Profile", "%1:%2:%3: invalid JSON: %4")
+                                         .arg(sourceName)
+                                         .arg(pos.line)
+                                         .arg(pos.column)
+                                         .arg(what)});
     return result;
   }
   if (!doc.is_object()) {
-    result.issues.push_back({"json", "the profile must be a JSON object ({...})"});
+    result.issues.push_back({"json", FB_TR("Profile", "the profile must be a JSON object ({...})")});
     return result;
   }
   ObjectReader root(doc, "", result.issues);

@@ -209,13 +209,6 @@ std::vector<ProfileField> makeTable() {
   };
 }
 
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
-}
-
 }  // namespace
 
 const std::vector<ProfileField>& profileFields() {
@@ -245,18 +238,24 @@ std::string keyOf(const ProfileField& f) {
 
 std::vector<ValidationIssue> checkField(const ProfileField& f, double v) {
   const std::string path = f.path;
-  if (!std::isfinite(v)) return {{path, path + " must be a finite number"}};
+  if (!std::isfinite(v)) return {{path, FB_TR("Profile", "%1 must be a finite number").arg(path)}};
   switch (f.rule) {
     case FieldRule::Positive:
-      if (v <= 0.0) return {{path, path + " must be positive, got " + fmt(v)}};
+      if (v <= 0.0)
+        return {{path, FB_TR("Profile", "%1 must be positive, got %2").arg(path).argSignificant(v, 10)}};
       break;
     case FieldRule::NonNegative:
-      if (v < 0.0) return {{path, path + " must be zero or positive, got " + fmt(v)}};
+      if (v < 0.0)
+        return {{path, FB_TR("Profile", "%1 must be zero or positive, got %2").arg(path).argSignificant(v, 10)}};
       break;
     case FieldRule::Between:
       if (v < f.validMin || v > f.validMax)
-        return {{path, path + " must be between " + fmt(f.validMin) + " and " + fmt(f.validMax) + " " +
-                           f.unit + ", got " + fmt(v)}};
+        return {{path, FB_TR("Profile", "%1 must be between %2 and %3 %4, got %5")
+                           .arg(path)
+                           .argSignificant(f.validMin, 10)
+                           .argSignificant(f.validMax, 10)
+                           .arg(f.unit)
+                           .argSignificant(v, 10)}};
       break;
     case FieldRule::Finite: break;
   }

@@ -16,7 +16,7 @@ ProfileLoad loadProfile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     ProfileLoad r;
-    r.issues.push_back({"file", "cannot open " + path + ": " + std::strerror(errno)});
+    r.issues.push_back({"file", FB_TR("Profile", "cannot open %1: %2").arg(path).arg(std::strerror(errno))});
     return r;
   }
   std::ostringstream text;
@@ -67,8 +67,9 @@ ProfileLoad resolveMachine(const std::string& presetOrPath) {
     std::string names;
     for (const std::string& n : presetNames()) names += (names.empty() ? "" : ", ") + n;
     ProfileLoad r;
-    r.issues.push_back({"machine", "unknown machine preset '" + presetOrPath +
-                                       "' (presets: " + names + "; or give a profile file path)"});
+    r.issues.push_back({"machine", FB_TR("Profile", "unknown machine preset '%1' (presets: %2; or give a profile file path)")
+                                       .arg(presetOrPath)
+                                       .arg(names)});
     return r;
   }
   return loadProfile(presetOrPath);

@@ -1,19 +1,18 @@
 #include "core/machine/profile_json.hpp"
 
 #include <cmath>
-#include <sstream>
 
 namespace fivebar::detail {
 namespace {
 
-const char* typeName(const nlohmann::json& v) {
-  if (v.is_number()) return "a number";
-  if (v.is_string()) return "a string";
-  if (v.is_boolean()) return "a boolean";
-  if (v.is_object()) return "an object";
-  if (v.is_array()) return "an array";
-  if (v.is_null()) return "null";
-  return "an unsupported value";
+Message typeName(const nlohmann::json& v) {
+  if (v.is_number()) return FB_TR("Profile", "a number");
+  if (v.is_string()) return FB_TR("Profile", "a string");
+  if (v.is_boolean()) return FB_TR("Profile", "a boolean");
+  if (v.is_object()) return FB_TR("Profile", "an object");
+  if (v.is_array()) return FB_TR("Profile", "an array");
+  if (v.is_null()) return FB_TR("Profile", "null");
+  return FB_TR("Profile", "an unsupported value");
 }
 
 }  // namespace
@@ -31,33 +30,39 @@ const nlohmann::json* ObjectReader::member(const char* key, bool required) {
   if (!isObject_) return nullptr;
   auto it = object_.find(key);
   if (it == object_.end()) {
-    if (required) issues_.push_back({pathOf(key), pathOf(key) + " is missing (it is required)"});
+    if (required) issues_.push_back({pathOf(key), FB_TR("Profile", "%1 is missing (it is required)").arg(pathOf(key))});
     return nullptr;
   }
   return &*it;
 }
 
-void ObjectReader::typeError(const char* key, const char* expected, const nlohmann::json& value) {
-  std::ostringstream s;
-  s << pathOf(key) << " must be " << expected << ", got " << typeName(value);
-  if (value.is_string()) s << " \"" << value.get<std::string>() << "\"";
-  issues_.push_back({pathOf(key), s.str()});
+void ObjectReader::typeError(const char* key, Message expected, const nlohmann::json& value) {
+  issues_.push_back({pathOf(key), value.is_string()
+                                      ? FB_TR("Profile", "%1 must be %2, got %3 \"%4\"")
+                                            .arg(pathOf(key))
+                                            .arg(std::move(expected))
+                                            .arg(typeName(value))
+                                            .arg(value.get<std::string>())
+                                      : FB_TR("Profile", "%1 must be %2, got %3")
+                                            .arg(pathOf(key))
+                                            .arg(std::move(expected))
+                                            .arg(typeName(value))});
 }
 
 void ObjectReader::number(const char* key, double& out, bool required) {
   const nlohmann::json* v = member(key, required);
   if (!v) return;
-  if (!v->is_number()) return typeError(key, "a number", *v);
+  if (!v->is_number()) return typeError(key, FB_TR("Profile", "a number"), *v);
   out = v->get<double>();
 }
 
 void ObjectReader::integer(const char* key, int& out, bool required) {
   const nlohmann::json* v = member(key, required);
   if (!v) return;
-  if (!v->is_number_integer()) return typeError(key, "an integer", *v);
+  if (!v->is_number_integer()) return typeError(key, FB_TR("Profile", "an integer"), *v);
   const auto value = v->get<long long>();
   if (value < -2147483647LL || value > 2147483647LL) {
-    issues_.push_back({pathOf(key), pathOf(key) + " is out of the integer range"});
+    issues_.push_back({pathOf(key), FB_TR("Profile", "%1 is out of the integer range").arg(pathOf(key))});
     return;
   }
   out = static_cast<int>(value);
@@ -66,27 +71,27 @@ void ObjectReader::integer(const char* key, int& out, bool required) {
 void ObjectReader::boolean(const char* key, bool& out, bool required) {
   const nlohmann::json* v = member(key, required);
   if (!v) return;
-  if (!v->is_boolean()) return typeError(key, "true or false", *v);
+  if (!v->is_boolean()) return typeError(key, FB_TR("Profile", "true or false"), *v);
   out = v->get<bool>();
 }
 
 void ObjectReader::string(const char* key, std::string& out, bool required) {
   const nlohmann::json* v = member(key, required);
   if (!v) return;
-  if (!v->is_string()) return typeError(key, "a string", *v);
+  if (!v->is_string()) return typeError(key, FB_TR("Profile", "a string"), *v);
   out = v->get<std::string>();
 }
 
 void ObjectReader::strings(const char* key, std::vector<std::string>& out, bool required) {
   const nlohmann::json* v = member(key, required);
   if (!v) return;
-  if (!v->is_array()) return typeError(key, "an array of strings", *v);
+  if (!v->is_array()) return typeError(key, FB_TR("Profile", "an array of strings"), *v);
   std::vector<std::string> values;
   for (std::size_t i = 0; i < v->size(); ++i) {
     const nlohmann::json& e = (*v)[i];
     if (!e.is_string()) {
       const std::string path = pathOf(key) + "[" + std::to_string(i) + "]";
-      issues_.push_back({path, path + " must be a string, got " + typeName(e)});
+      issues_.push_back({path, FB_TR("Profile", "%1 must be a string, got %2").arg(path).arg(typeName(e))});
       return;
     }
     values.push_back(e.get<std::string>());
@@ -98,7 +103,7 @@ const nlohmann::json* ObjectReader::object(const char* key, bool required) {
   const nlohmann::json* v = member(key, required);
   if (!v) return nullptr;
   if (!v->is_object()) {
-    typeError(key, "an object", *v);
+    typeError(key, FB_TR("Profile", "an object"), *v);
     return nullptr;
   }
   return v;
@@ -111,7 +116,7 @@ void ObjectReader::finish() {
   for (auto it = object_.begin(); it != object_.end(); ++it) {
     if (known_.count(it.key())) continue;
     const std::string path = pathOf(it.key().c_str());
-    issues_.push_back({path, path + " is not a known field (expected one of: " + expected + ")"});
+    issues_.push_back({path, FB_TR("Profile", "%1 is not a known field (expected one of: %2)").arg(path).arg(expected)});
   }
 }
 

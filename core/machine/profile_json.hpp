@@ -37,7 +37,7 @@ class ObjectReader {
 
  private:
   const nlohmann::json* member(const char* key, bool required);
-  void typeError(const char* key, const char* expected, const nlohmann::json& value);
+  void typeError(const char* key, Message expected, const nlohmann::json& value);
 
   const nlohmann::json& object_;
   std::string path_;

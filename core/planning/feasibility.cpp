@@ -24,9 +24,12 @@ constexpr int kMaxDetourSearches = 16;
 // Full preflight verifications a fix search may spend.
 constexpr int kMaxFixVerifications = 3;
 
+// A point of the job. The studio lists each problem under its layer (by name) and path, so
+// there the point is named without them.
 Message pointText(const Stroke& s, int k, const Vec2& p) {
   return FB_TR("Preflight", "layer %1 path %2 point %3 at (%4, %5) mm")
-      .arg(s.layerIndex).arg(s.pathIndex).arg(k).arg(p.x(), 2).arg(p.y(), 2);
+      .arg(s.layerIndex).arg(s.pathIndex).arg(k).arg(p.x(), 2).arg(p.y(), 2)
+      .inStudio(FB_TR("Preflight", "point %1 at (%2, %3) mm").arg(k).arg(p.x(), 2).arg(p.y(), 2));
 }
 
 // What checking one stroke asks of the job-wide pass, in order: problems to add and travels

@@ -46,8 +46,10 @@ Message layerLabel(const std::vector<Layer>& layers, int layerIndex) {
 
 // The fixes of a stroke the planner cannot draw.
 std::vector<Message> strokeFixes() {
-  return {FB_TR("Planner", "move or shrink the drawing (--at, --scale, --fit)"),
-          FB_TR("Planner", "try another working mode (--mode)")};
+  return {FB_TR("Planner", "move or shrink the drawing (--at, --scale, --fit)")
+              .inStudio(FB_TR("Planner", "move or shrink the drawing in the Placement panel")),
+          FB_TR("Planner", "try another working mode (--mode)")
+              .inStudio(FB_TR("Planner", "try another working mode in the Workspace panel"))};
 }
 
 class MotionPlanner {
@@ -395,8 +397,11 @@ class MotionPlanner {
     if (!t.found) {
       const FkResult fk = forward(g_, target, p_.assembly);
       problem(what(), fk.ok() ? fk.p : atXY_, FB_TR("Planner", "no safe pen-up travel reaches it"),
-              {FB_TR("Planner", "move the drawing away from singular regions (--at)"),
-               FB_TR("Planner", "try another --mode")});
+              {FB_TR("Planner", "move the drawing away from singular regions (--at)")
+                   .inStudio(FB_TR("Planner", "move the drawing away from singular regions in the "
+                                              "Placement panel")),
+               FB_TR("Planner", "try another --mode")
+                   .inStudio(FB_TR("Planner", "try another working mode in the Workspace panel"))});
       return false;
     }
     for (size_t i = 0; i < t.feeds.size(); ++i) {
@@ -605,7 +610,9 @@ PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Lay
       if (!pass.ok)
         out.report.problems.push_back(
             {FB_TR("Planner", "backlash compensation"), pass.problem.where, pass.message,
-             {FB_TR("Planner", "move the drawing away from the workspace edge (--at)")}});
+             {FB_TR("Planner", "move the drawing away from the workspace edge (--at)")
+                  .inStudio(FB_TR("Planner", "move the drawing away from the workspace edge in the "
+                                             "Placement panel"))}});
       clock.lap("backlash compensation");
     }
   }

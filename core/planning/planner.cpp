@@ -55,23 +55,33 @@ Message layerName(const Drawing& d, int layerIndex) {
 }
 
 // What to change, in plain words, with the `fivebar plan` option that does it in brackets (the
-// option's values in the C locale: they are typed on a command line).
+// option's values in the C locale: they are typed on a command line); in the studio, with the
+// names of its controls instead (app/studio: Placement panel, Workspace panel's Working mode).
 std::vector<Message> fixesOf(const Candidate& c, const std::vector<Candidate>& all, bool fitted) {
   std::vector<Message> fixes;
   if (c.report.shrinkFactor) {
     const double scale = c.placement.scale * *c.report.shrinkFactor;
     fixes.push_back(FB_TR("Planner", "shrink the drawing to %1 % (--scale %2)")
-                        .arg(scale * 100.0, 0).arg(fixedText(scale, 3)));
+                        .arg(scale * 100.0, 0).arg(fixedText(scale, 3))
+                        .inStudio(FB_TR("Planner", "set Scale to %1 % in the Placement panel")
+                                      .arg(scale * 100.0, 0)));
   }
   if (c.report.suggestedAnchorMm && !fitted) {
     const double x = c.report.suggestedAnchorMm->x(), y = c.report.suggestedAnchorMm->y();
     fixes.push_back(FB_TR("Planner", "move the drawing's centre to x %1 mm, y %2 mm (--at %3,%4)")
-                        .arg(x, 1).arg(y, 1).arg(fixedText(x, 1)).arg(fixedText(y, 1)));
+                        .arg(x, 1).arg(y, 1).arg(fixedText(x, 1)).arg(fixedText(y, 1))
+                        .inStudio(FB_TR("Planner", "set Centre X to %1 mm and Centre Y to %2 mm in the "
+                                                   "Placement panel")
+                                      .arg(x, 1).arg(y, 1)));
   }
   for (const Candidate& other : all)
     if (other.report.feasible && other.mode != c.mode)
-      fixes.push_back(FB_TR("Planner", "use working mode %1 (--mode %1)").arg(toString(other.mode)));
-  if (!fitted) fixes.push_back(FB_TR("Planner", "fit the drawing into the workspace (--fit)"));
+      fixes.push_back(FB_TR("Planner", "use working mode %1 (--mode %1)").arg(toString(other.mode))
+                          .inStudio(FB_TR("Planner", "choose working mode %1 in the Workspace panel")
+                                        .arg(toString(other.mode))));
+  if (!fitted)
+    fixes.push_back(FB_TR("Planner", "fit the drawing into the workspace (--fit)")
+                        .inStudio(FB_TR("Planner", "press Fit to workspace in the Placement panel")));
   return fixes;
 }
 

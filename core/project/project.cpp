@@ -108,7 +108,7 @@ void readMachine(ObjectReader& root, const std::string& sourceName, Project& p,
   ProfileLoad load = profileFromJson(mj->dump(), sourceName);
   for (ValidationIssue& issue : load.issues) {
     issue.field = "machine." + issue.field;
-    issue.message = "machine: " + issue.message;
+    issue.message = FB_TR("Profile", "machine: %1").arg(issue.message);
     issues.push_back(std::move(issue));
   }
   if (load.profile) p.profile = *load.profile;

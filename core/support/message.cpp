@@ -63,6 +63,14 @@ std::string fixedText(double value, int decimals) {
   return std::string(b, r.ptr);  // as printf("%.*f") in the C locale, "-0.0" included
 }
 
+std::string significantText(double value, int digits) {
+  char b[64];
+  const auto r = std::to_chars(b, b + sizeof b, value, std::chars_format::general,
+                               std::clamp(digits, 1, 17));
+  if (r.ec != std::errc()) return "?";
+  return std::string(b, r.ptr);  // as printf("%.*g") in the C locale
+}
+
 Message& Message::arg(std::string text) & {
   args_.push_back({MessageArg::Kind::Text, std::move(text), 0.0, 0, nullptr});
   return *this;
@@ -74,6 +82,14 @@ Message& Message::arg(long long value) & { return arg(std::to_string(value)); }
 Message& Message::arg(std::size_t value) & { return arg(std::to_string(value)); }
 Message& Message::arg(double value, int decimals) & {
   args_.push_back({MessageArg::Kind::Number, {}, value, decimals, nullptr});
+  return *this;
+}
+Message& Message::argSignificant(double value, int digits) & {
+  args_.push_back({MessageArg::Kind::Number, {}, value, digits, nullptr, true});
+  return *this;
+}
+Message& Message::inStudio(Message studioWording) & {
+  studio_ = std::make_shared<const Message>(std::move(studioWording));
   return *this;
 }
 Message& Message::arg(Message nested) & {
@@ -89,7 +105,10 @@ std::string Message::text() const {
   for (const MessageArg& a : args_) {
     switch (a.kind) {
       case MessageArg::Kind::Text: texts.push_back(a.text); break;
-      case MessageArg::Kind::Number: texts.push_back(fixedText(a.value, a.decimals)); break;
+      case MessageArg::Kind::Number:
+        texts.push_back(a.significant ? significantText(a.value, a.decimals)
+                                      : fixedText(a.value, a.decimals));
+        break;
       case MessageArg::Kind::Nested: texts.push_back(a.message->text()); break;
     }
   }

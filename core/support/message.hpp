@@ -34,6 +34,9 @@ struct MessageArg {
   double value = 0.0;                      // Number
   int decimals = 0;                        // Number: digits after the decimal point
   std::shared_ptr<const Message> message;  // Nested (never null when Nested)
+  // Number: `decimals` counts significant digits instead, trailing zeros dropped (printf %g,
+  // what an ostream writes with that precision: 0.5, 120, 1e-07).
+  bool significant = false;
 };
 
 class Message {
@@ -57,6 +60,12 @@ class Message {
   Message& arg(long long value) &;
   Message& arg(std::size_t value) &;
   Message& arg(double value, int decimals) &;
+  // A real number with `digits` significant digits, as an ostream of that precision writes it.
+  Message& argSignificant(double value, int digits) &;
+  Message&& argSignificant(double value, int digits) && {
+    argSignificant(value, digits);
+    return std::move(*this);
+  }
   Message& arg(Message nested) &;
   template <class... A>
   Message&& arg(A&&... a) && {
@@ -67,6 +76,18 @@ class Message {
   // The English sentence: the template with every %n replaced by argument n (a number in the
   // C locale, a nested message by its text()).
   std::string text() const;
+
+  // The same sentence in the studio's words, where this one (the CLI's) names command-line
+  // options or repeats what the studio shows beside it: "shrink the drawing to 55 % (--scale
+  // 0.550)" is "set Scale to 55 % (Placement panel)" in the studio. text() stays this one's;
+  // the studio's translated() shows the studio wording instead.
+  Message& inStudio(Message studioWording) &;
+  Message&& inStudio(Message studioWording) && {
+    inStudio(std::move(studioWording));
+    return std::move(*this);
+  }
+  // The studio wording, or null when the studio shows this message itself.
+  const Message* studioWording() const { return studio_.get(); }
 
   bool translatable() const { return !context_.empty(); }
   bool empty() const { return templ_.empty(); }
@@ -80,6 +101,7 @@ class Message {
   std::string context_;  // empty: verbatim, templ_ is the text itself (no substitution)
   std::string templ_;
   std::vector<MessageArg> args_;
+  std::shared_ptr<const Message> studio_;  // inStudio(); null when none
 };
 
 // QString::arg(a1, a2, ...) at run time: markers are %n and %Ln (n = 1..99, two digits read
@@ -90,6 +112,8 @@ std::string substituteArgs(std::string_view templ, const std::vector<std::string
 
 // A real number written with `decimals` digits after the point, in the C locale.
 std::string fixedText(double value, int decimals);
+// A real number with `digits` significant digits (printf %g), in the C locale.
+std::string significantText(double value, int digits);
 
 // Writes text() (the CLI prints messages in English).
 std::ostream& operator<<(std::ostream& out, const Message& message);

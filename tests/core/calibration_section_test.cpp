@@ -16,15 +16,15 @@ using nlohmann::json;
 
 bool hasIssue(const ProfileLoad& load, const std::string& field, const std::string& text) {
   for (const ValidationIssue& i : load.issues)
-    if (i.field == field && i.message.find(field) != std::string::npos &&
-        i.message.find(text) != std::string::npos)
+    if (i.field == field && i.message.text().find(field) != std::string::npos &&
+        i.message.text().find(text) != std::string::npos)
       return true;
   return false;
 }
 
 std::string messages(const ProfileLoad& load) {
   std::string all;
-  for (const ValidationIssue& i : load.issues) all += i.field + ": " + i.message + "\n";
+  for (const ValidationIssue& i : load.issues) all += i.field + ": " + i.message.text() + "\n";
   return all;
 }
 

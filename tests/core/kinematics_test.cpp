@@ -111,7 +111,7 @@ TEST(Kinematics, ValidationNamesTheField) {
   const auto issues = validate(Geometry{-1.0, 10.0, 10.0, 10.0, 5.0});
   ASSERT_FALSE(issues.empty());
   EXPECT_EQ(issues.front().field, "a1");
-  EXPECT_NE(issues.front().message.find("positive"), std::string::npos);
+  EXPECT_NE(issues.front().message.text().find("positive"), std::string::npos);
   const auto apart = validate(Geometry{10.0, 10.0, 10.0, 10.0, 100.0});
   ASSERT_FALSE(apart.empty());
   EXPECT_EQ(apart.front().field, "w");

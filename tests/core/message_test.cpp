@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <sstream>
+
+#include "core/kinematics/geometry.hpp"
+
 namespace fivebar {
 namespace {
 
@@ -55,6 +59,47 @@ TEST(Message, SubstitutionFollowsQStringArg) {
   // One pass: a replacement holding a marker is not substituted again.
   EXPECT_EQ(substituteArgs("%1 %2", {"%2", "b"}), "%2 b");
   EXPECT_EQ(substituteArgs("no markers", {}), "no markers");
+}
+
+// Significant digits write a number as an ostream of that precision does (the profile
+// validation's sentences kept their CLI text when they became messages).
+TEST(Message, SignificantDigitsMatchAnOstream) {
+  for (const double v : {-5.0, 0.5, 120.0, 1e-7, 123456789.0, 1.0 / 3.0, -0.0, 2e15}) {
+    for (const int digits : {6, 10}) {
+      std::ostringstream s;
+      s.precision(digits);
+      s << v;
+      EXPECT_EQ(significantText(v, digits), s.str()) << v << " with " << digits << " digits";
+      const Message m = FB_TR("Profile", "got %1").argSignificant(v, digits);
+      EXPECT_EQ(m.text(), "got " + s.str());
+      EXPECT_TRUE(m.args().front().significant);
+    }
+  }
+}
+
+// A message with a studio wording keeps the CLI's text; the studio wording travels with it,
+// also when the message is nested in another.
+TEST(Message, StudioWordingLeavesTheTextAlone) {
+  Message fix = FB_TR("Planner", "shrink the drawing to %1 % (--scale %2)").arg(55.0, 0).arg("0.550");
+  EXPECT_EQ(fix.studioWording(), nullptr);
+  fix.inStudio(FB_TR("Planner", "set Scale to %1 % in the Placement panel").arg(55.0, 0));
+  EXPECT_EQ(fix.text(), "shrink the drawing to 55 % (--scale 0.550)");
+  ASSERT_NE(fix.studioWording(), nullptr);
+  EXPECT_EQ(fix.studioWording()->text(), "set Scale to 55 % in the Placement panel");
+  const Message outer = FB_TR("Planner", "fix: %1").arg(fix);
+  EXPECT_EQ(outer.text(), "fix: shrink the drawing to 55 % (--scale 0.550)");
+  ASSERT_NE(outer.args().front().message->studioWording(), nullptr);
+}
+
+// Profile validation (ValidationIssue) speaks in messages: the English is the CLI's sentence,
+// the template is translatable, numbers are arguments.
+TEST(Message, ValidationIssuesAreTranslatable) {
+  const std::vector<ValidationIssue> issues = validate(Geometry{-1.5, 10.0, 10.0, 10.0, 5.0});
+  ASSERT_FALSE(issues.empty());
+  EXPECT_EQ(issues.front().message.text(), "a1 is -1.5 mm; it must be positive");
+  EXPECT_TRUE(issues.front().message.translatable());
+  EXPECT_EQ(issues.front().message.context(), "Profile");
+  EXPECT_EQ(issues.front().message.templ(), "%1 is %2 mm; it must be positive");
 }
 
 }  // namespace

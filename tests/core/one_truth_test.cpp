@@ -218,7 +218,7 @@ TEST(OneTruth, BadProjectsNameTheField) {
   auto issueOf = [](const std::string& text) {
     const ProjectLoad l = projectFromJson(text, "bad.fivebar");
     EXPECT_FALSE(l.project);
-    return l.issues.empty() ? std::string() : l.issues.front().field + ": " + l.issues.front().message;
+    return l.issues.empty() ? std::string() : l.issues.front().field + ": " + l.issues.front().message.text();
   };
   EXPECT_NE(issueOf("{ not json").find("bad.fivebar:1:"), std::string::npos);
   std::string text = projectToJson(sampleProject());

@@ -25,8 +25,8 @@ std::string readFile(const std::string& path) {
 bool hasIssue(const std::vector<ValidationIssue>& issues, const std::string& field,
               const std::string& fragment) {
   for (const ValidationIssue& i : issues)
-    if (i.field == field && i.message.find(field) != std::string::npos &&
-        i.message.find(fragment) != std::string::npos)
+    if (i.field == field && i.message.text().find(field) != std::string::npos &&
+        i.message.text().find(fragment) != std::string::npos)
       return true;
   return false;
 }

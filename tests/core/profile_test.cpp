@@ -18,13 +18,13 @@ using nlohmann::json;
 // The joined messages of a load, for content checks.
 std::string messages(const ProfileLoad& load) {
   std::string all;
-  for (const ValidationIssue& i : load.issues) all += i.field + ": " + i.message + "\n";
+  for (const ValidationIssue& i : load.issues) all += i.field + ": " + i.message.text() + "\n";
   return all;
 }
 
 bool hasIssue(const ProfileLoad& load, const std::string& field, const std::string& text) {
   for (const ValidationIssue& i : load.issues)
-    if (i.field == field && i.message.find(text) != std::string::npos) return true;
+    if (i.field == field && i.message.text().find(text) != std::string::npos) return true;
   return false;
 }
 
@@ -113,8 +113,8 @@ TEST(ProfileJson, BrokenJsonNamesLineAndColumn) {
   const ProfileLoad load = profileFromJson(text, "bad.json");
   ASSERT_FALSE(load.profile);
   ASSERT_EQ(load.issues.size(), 1u);
-  EXPECT_NE(load.issues[0].message.find("bad.json:3:"), std::string::npos) << messages(load);
-  EXPECT_NE(load.issues[0].message.find("invalid JSON"), std::string::npos);
+  EXPECT_NE(load.issues[0].message.text().find("bad.json:3:"), std::string::npos) << messages(load);
+  EXPECT_NE(load.issues[0].message.text().find("invalid JSON"), std::string::npos);
 }
 
 TEST(ProfileJson, NegativeLengthNamesFieldAndValue) {

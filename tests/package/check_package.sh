@@ -111,5 +111,20 @@ installed=$(cd "$share/fivebar-studio/presets" && ls *.json | sed 's/\.json$//' 
 moves=$(grep -cE '^G1 X-?[0-9]+\.[0-9]+ Y-?[0-9]+\.[0-9]+' "$tmp/job.gcode" 2>/dev/null)
 [ "${moves:-0}" -gt 100 ] || fail "the planned demo job has ${moves:-0} G1 moves with C-locale numbers"
 
+# `cmake --install` to another prefix: the same programs run from there and find their data
+# (translations, presets) beside them, with no build tree around.
+prefix="$tmp/prefix/opt/fivebar"
+if cmake --install "$build" --prefix "$prefix" >"$tmp/install.log" 2>&1; then
+  [ "$("$prefix/bin/fivebar" --version)" = "fivebar $version" ] || fail "installed to a prefix: fivebar --version"
+  [ -s "$prefix/share/fivebar-studio/translations/fivebar_fr.qm" ] || fail "installed to a prefix: no fivebar_fr.qm"
+  env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM "$prefix/bin/fivebar-studio" --lang fr --help \
+    >"$tmp/prefix-help-fr.txt" 2>&1 || fail "installed to a prefix: fivebar-studio --help"
+  env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM "$prefix/bin/fivebar-studio" --lang en --help \
+    >"$tmp/prefix-help-en.txt" 2>&1
+  cmp -s "$tmp/prefix-help-fr.txt" "$tmp/prefix-help-en.txt" && fail "installed to a prefix: the studio finds no French"
+else
+  tail -n 20 "$tmp/install.log"; fail "cmake --install --prefix $prefix"
+fi
+
 [ "$failures" -eq 0 ] && echo "package OK: $(basename "$deb")"
 exit $((failures > 0))

@@ -7,12 +7,16 @@
 //   dialog-settings-LANG.png     Machine > Machine settings..., board read on the simulated machine
 //   dialog-preflight-LANG.png    the job preview with its pre-flight problems (the demo drawing
 //                                moved partly out of reach)
+//   dialog-profile-error-LANG.png the profile editor showing validation problems (a1 negative)
+//   dialog-placement-LANG.png    the placement panel with the demo drawing
+//   dialog-console-LANG.png      the machine console after connecting the simulated machine
 // The language is installed as the studio installs it (translations and number format).
 // With FIVEBAR_DEBUG_WIDTHS set, the profile editor's widgets wider than 250 px are listed (the
 // ones that make the dock clip at the window's left dock width).
 #include <QAction>
 #include <QApplication>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QListWidget>
@@ -34,7 +38,9 @@
 #include "widgets/document/studio_document.hpp"
 #include "session/machine_side.hpp"
 #include "widgets/machine/machine_settings_dialog.hpp"
+#include "widgets/machine/console_panel.hpp"
 #include "widgets/machine/machine_panels.hpp"
+#include "widgets/panels/placement_panel.hpp"
 #include "widgets/panels/preview_panel.hpp"
 #include "widgets/panels/profile_editor.hpp"
 
@@ -85,6 +91,13 @@ int main(int argc, char** argv) {
     QDockWidget* dock = raisedDockOf(editor);
     if (dock) dock->setFloating(true), dock->resize(330, 940);  // the width of the window's left docks
     ok = grab(dock ? static_cast<QWidget&>(*dock) : *editor, out + "/dialog-profile" + suffix) && ok;
+    if (QDoubleSpinBox* a1 = editor->numberField("geometry.a1")) {
+      const double before = a1->value();
+      a1->setValue(-5.5);
+      ok = grab(dock ? static_cast<QWidget&>(*dock) : *editor, out + "/dialog-profile-error" + suffix) && ok;
+      a1->setValue(before);
+    }
+    if (dock) dock->setFloating(false);
     if (qEnvironmentVariableIsSet("FIVEBAR_DEBUG_WIDTHS"))
       for (QWidget* w : editor->findChildren<QWidget*>())
         if (w->isVisible() && w->minimumSizeHint().width() > 250)
@@ -121,6 +134,14 @@ int main(int argc, char** argv) {
   waitUntil([] { return false; }, 500);
   ok = grab(*settings, out + "/dialog-settings" + suffix) && ok;
   settings->hide();
+  if (auto* console = window.machinePanels().consolePanel()) {
+    QDockWidget* dock = raisedDockOf(console);
+    if (dock) dock->setFloating(true), dock->resize(620, 360);
+    waitUntil([] { return false; }, 300);
+    ok = grab(dock ? static_cast<QWidget&>(*dock) : static_cast<QWidget&>(*console),
+              out + "/dialog-console" + suffix) && ok;
+    if (dock) dock->setFloating(false);
+  }
 
   // The job preview of the demo drawing, moved so that part of it is out of reach.
   QFile demo(QStringLiteral(FIVEBAR_DEMO_SVG));
@@ -128,6 +149,13 @@ int main(int argc, char** argv) {
   window.importer().setInteractive(false);
   window.importer().openData(demo.readAll(), QStringLiteral("fivebar-demo.svg"));
   waitUntil([&] { return window.preview().result().status == widgets::PreviewStatus::Planned; }, 60000);
+  if (auto* placement = window.findChild<widgets::PlacementPanel*>()) {
+    QDockWidget* dock = raisedDockOf(placement);
+    if (dock) dock->setFloating(true), dock->resize(330, 420);
+    waitUntil([] { return false; }, 300);
+    ok = grab(dock ? static_cast<QWidget&>(*dock) : *placement, out + "/dialog-placement" + suffix) && ok;
+    if (dock) dock->setFloating(false);
+  }
   Placement far = window.document().placement();
   far.centerMm += Vec2(0.0, 90.0);
   window.document().setPlacement(far);

@@ -22,7 +22,7 @@ namespace {
 // The message validate() gives for this profile's field, as the editor must show it.
 QString expectedMessage(const MachineProfile& p, const std::string& field) {
   for (const ValidationIssue& issue : validate(p))
-    if (issue.field == field) return QString::fromStdString(issue.message);
+    if (issue.field == field) return QString::fromStdString(issue.message.text());
   return {};
 }
 

@@ -7,6 +7,7 @@
 #include <QAbstractButton>
 #include <QAction>
 #include <QCoreApplication>
+#include <QDoubleSpinBox>
 #include <QDockWidget>
 #include <QFile>
 #include <QGroupBox>
@@ -92,7 +93,7 @@ std::set<QString> runtimeContexts() {
                         "fivebar::widgets::MachineDialogs", "fivebar::session::SettingsAdvice",
                         "CalibrationWizard",
                         // the core's messages (core/support/message.hpp, widgets::translated)
-                        "Placement", "Planner", "Preflight", "Safety"})
+                        "Placement", "Planner", "Preflight", "Safety", "Profile"})
     names.insert(QString::fromLatin1(c));
   return names;
 }
@@ -195,15 +196,97 @@ TEST(Translations, PreflightProblemIsShownInGermanWithDecimalComma) {
   ASSERT_EQ(r.status, fivebar::widgets::PreviewStatus::Infeasible) << r.message.toStdString();
   ASSERT_FALSE(r.problems.empty());
   const QString text = r.problems.front().text;
-  EXPECT_TRUE(text.startsWith(QStringLiteral("Ebene 'ink' Pfad 0: Ebene 0 Pfad 0 Punkt 0 bei (")))
+  // The layer and path once, by the layer's name (the CLI's sentence repeats them by index).
+  EXPECT_TRUE(text.startsWith(QStringLiteral("Ebene 'ink' Pfad 0: Punkt 0 bei (")))
       << text.toStdString();
   EXPECT_TRUE(text.contains(QStringLiteral("außerhalb der Reichweite von Arm"))) << text.toStdString();
   EXPECT_TRUE(text.contains(QRegularExpression(QStringLiteral("\\(-?\\d+,\\d\\d; -?\\d+,\\d\\d\\) mm"))))
       << text.toStdString();
   EXPECT_FALSE(text.contains(QRegularExpression(QStringLiteral("\\d\\.\\d")))) << text.toStdString();
   ASSERT_FALSE(r.problems.front().fixes.isEmpty());
-  EXPECT_FALSE(r.problems.front().fixes.join(QLatin1Char(' ')).contains(QStringLiteral("fit the drawing")));
+  const QString fixes = r.problems.front().fixes.join(QLatin1Char(' '));
+  EXPECT_FALSE(fixes.contains(QStringLiteral("fit the drawing"))) << fixes.toStdString();
+  // In the studio's words: its panels' names, no command-line option.
+  EXPECT_FALSE(fixes.contains(QStringLiteral("--"))) << fixes.toStdString();
+  EXPECT_TRUE(fixes.contains(QStringLiteral("Platzierung"))) << fixes.toStdString();
   EXPECT_TRUE(r.message.startsWith(QStringLiteral("Arbeitsmodus "))) << r.message.toStdString();
+}
+
+// Profile validation reaches the profile editor in the user's language with the locale's
+// decimal comma, and so do a broken profile file's problems (line and field names kept); the
+// CLI's English (message.text()) is unchanged.
+TEST(Translations, ProfileProblemsAreShownInFrench) {
+  const auto profile = fivebar::preset("maker-plotter");
+  ASSERT_TRUE(profile.has_value());
+  QTranslator translator;
+  ASSERT_TRUE(translator.load(QStringLiteral(":/i18n/fivebar_fr.qm")));
+  ASSERT_TRUE(QCoreApplication::installTranslator(&translator));
+  const QLocale before;
+  QLocale::setDefault(QLocale(QLocale::French, QLocale::France));
+  fivebar::MachineProfile bad = *profile;
+  bad.geometry.a1 = -1.5;
+  fivebar::widgets::StudioDocument doc(*profile);
+  fivebar::widgets::ProfileEditor editor(doc);
+  editor.numberField("geometry.a1")->setValue(-1.5);
+  const QString shown = editor.messageFor("geometry.a1")->text();
+  std::string english;
+  for (const fivebar::ValidationIssue& i : fivebar::validate(bad))
+    if (i.field == "geometry.a1" && english.empty()) english = i.message.text();
+  const fivebar::ProfileLoad load = fivebar::profileFromJson("{\n  \"schema\": 3\n}\n", "p.json");
+  const fivebar::ProfileLoad broken = fivebar::profileFromJson("{\n  \"schema\": ,\n}\n", "p.json");
+  QLocale::setDefault(before);
+  QCoreApplication::removeTranslator(&translator);
+  EXPECT_EQ(english, "geometry.a1 must be positive, got -1.5");
+  EXPECT_TRUE(shown.startsWith(QStringLiteral("geometry.a1 doit être positif, et non -1,5\n")))
+      << shown.toStdString();
+  EXPECT_TRUE(shown.contains(QStringLiteral("a1 vaut -1,5 mm ; la valeur doit être positive")))
+      << shown.toStdString();
+  ASSERT_FALSE(load.issues.empty());
+  ASSERT_FALSE(broken.issues.empty());
+  QCoreApplication::installTranslator(&translator);
+  const QString type = fivebar::widgets::translated(load.issues.front().message);
+  const QString json = fivebar::widgets::translated(broken.issues.front().message);
+  QCoreApplication::removeTranslator(&translator);
+  EXPECT_EQ(type, QStringLiteral("schema doit être une chaîne, et non un nombre")) << type.toStdString();
+  EXPECT_TRUE(json.startsWith(QStringLiteral("p.json:2:13 : JSON invalide : "))) << json.toStdString();
+}
+
+// The fixes of a pre-flight problem name the studio's controls in every language: no
+// command-line option, the placement panel by its translated title.
+TEST(Translations, PreflightFixesUseTheStudiosWordsInEveryLanguage) {
+  const auto profile = fivebar::preset("maker-plotter");
+  ASSERT_TRUE(profile.has_value());
+  fivebar::widgets::PipelineInput input;
+  fivebar::Layer layer;
+  layer.id = layer.name = "Dial";
+  layer.paths.push_back({{fivebar::Vec2(0.0, 0.0), fivebar::Vec2(10.5, 0.0)}});
+  auto drawing = std::make_shared<fivebar::Drawing>();
+  drawing->layers.push_back(layer);
+  drawing->source = "far.svg";
+  input.drawing = drawing;
+  input.placement.centerMm = fivebar::Vec2(0.0, 700.0);  // far beyond every leg's reach
+  input.profile = *profile;
+  const std::pair<const char*, const char*> languages[] = {
+      {"de", "Platzierung"}, {"fr", "Placement"}, {"es", "Colocación"}, {"en", "Placement"}};
+  for (const auto& [lang, panel] : languages) {
+    QTranslator translator;
+    if (std::string(lang) != "en") {
+      ASSERT_TRUE(translator.load(QStringLiteral(":/i18n/fivebar_%1.qm").arg(QLatin1String(lang))));
+      ASSERT_TRUE(QCoreApplication::installTranslator(&translator));
+    }
+    const fivebar::widgets::PreviewResult r = fivebar::widgets::runPipeline(input);
+    QCoreApplication::removeTranslator(&translator);
+    ASSERT_EQ(r.status, fivebar::widgets::PreviewStatus::Infeasible) << lang << ": " << r.message.toStdString();
+    ASSERT_FALSE(r.problems.empty()) << lang;
+    const QString fixes = r.problems.front().fixes.join(QStringLiteral("; "));
+    EXPECT_FALSE(fixes.contains(QStringLiteral("--"))) << lang << ": " << fixes.toStdString();
+    EXPECT_TRUE(fixes.contains(QString::fromUtf8(panel))) << lang << ": " << fixes.toStdString();
+    // The layer is named once, by its name (the CLI's "layer 0 path 0 point" is not repeated).
+    const QString text = r.problems.front().text;
+    EXPECT_EQ(text.count(QStringLiteral("Dial")), 1) << lang << ": " << text.toStdString();
+    EXPECT_FALSE(text.contains(QRegularExpression(QStringLiteral("\\w+ 0 \\w+ 0 \\w+ \\d+"))))
+        << lang << ": " << text.toStdString();
+  }
 }
 
 // The texts a user reads in the main window: actions, menus, dock titles, labels, group boxes,

@@ -22,6 +22,7 @@
 #include "core/design/design_json.hpp"
 #include "widgets/canvas/canvas_view.hpp"
 #include "widgets/design/pareto_plot.hpp"
+#include "widgets/document/core_message.hpp"
 #include "widgets/document/studio_document.hpp"
 
 namespace fivebar::widgets {
@@ -245,7 +246,7 @@ void DesignDialog::startSearch() {
   if (searching()) return;
   searchedBrief_ = brief();
   if (const auto issues = design::validate(searchedBrief_); !issues.empty()) {
-    status_->setText(QString::fromStdString(issues.front().message));
+    status_->setText(translated(issues.front().message));
     return;
   }
   cancel_ = false;

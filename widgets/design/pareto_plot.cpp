@@ -52,10 +52,12 @@ void ParetoPlot::paintEvent(QPaintEvent*) {
   font.setPointSizeF(8.0);
   painter.setFont(font);
   painter.setPen(palette::gridLabel());
+  // Footprints are whole cm² unless the range is narrow (an empty plot spans 0..1).
+  const int xDecimals = (x1_ - x0_) >= 8.0 ? 0 : 2;
   for (int k = 0; k <= 4; ++k) {
     const double fx = x0_ + (x1_ - x0_) * k / 4.0, fy = y0_ + (y1_ - y0_) * k / 4.0;
     const double px = r.left() + r.width() * k / 4.0, py = r.bottom() - r.height() * k / 4.0;
-    painter.drawText(QRectF(px - 30, r.bottom() + 2, 60, 14), Qt::AlignCenter, QLocale().toString(fx, 'f', 0));
+    painter.drawText(QRectF(px - 30, r.bottom() + 2, 60, 14), Qt::AlignCenter, QLocale().toString(fx, 'f', xDecimals));
     painter.drawText(QRectF(0, py - 7, 44, 14), Qt::AlignRight | Qt::AlignVCenter, QLocale().toString(fy, 'f', 2));
   }
   painter.drawText(QRectF(r.left(), height() - 16, r.width(), 14), Qt::AlignCenter, tr("Footprint (cm\u00b2)"));

@@ -6,6 +6,7 @@
 namespace fivebar::widgets {
 
 QString translated(const Message& message, const QLocale& locale) {
+  if (const Message* studio = message.studioWording()) return translated(*studio, locale);
   if (!message.translatable()) return QString::fromStdString(message.templ());
   const QString templ =
       QCoreApplication::translate(message.context().c_str(), message.templ().c_str());
@@ -16,7 +17,7 @@ QString translated(const Message& message, const QLocale& locale) {
     switch (a.kind) {
       case MessageArg::Kind::Text: args.push_back(a.text); break;
       case MessageArg::Kind::Number:
-        args.push_back(locale.toString(a.value, 'f', a.decimals).toStdString());
+        args.push_back(locale.toString(a.value, a.significant ? 'g' : 'f', a.decimals).toStdString());
         break;
       case MessageArg::Kind::Nested: args.push_back(translated(*a.message, locale).toStdString()); break;
     }

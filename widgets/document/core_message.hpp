@@ -3,7 +3,8 @@
 // numbers written by QLocale (1,5 in German, French and Spanish), nested messages translated
 // on their own; verbatim messages are shown as they are. The markers are substituted as
 // QString::arg(a1, a2, ...) does (core substituteArgs), so the CLI's English and the studio's
-// text differ only by the translation and the number format.
+// text differ only by the translation and the number format. A message with a studio wording
+// (Message::inStudio: the CLI's names command-line options) is shown in that wording.
 #pragma once
 
 #include <QLocale>

@@ -8,6 +8,7 @@
 #include <QTemporaryFile>
 
 #include "core/import/svg_import.hpp"
+#include "widgets/document/core_message.hpp"
 
 namespace fivebar::widgets {
 
@@ -99,7 +100,7 @@ std::optional<LoadedJob> loadProject(const QString& path, const std::optional<Ma
   if (!load.project) {
     error.clear();
     for (const ValidationIssue& issue : load.issues)
-      error += (error.empty() ? "" : "\n") + path.toStdString() + ": " + issue.message;
+      error += (error.empty() ? "" : "\n") + path.toStdString() + ": " + translated(issue.message).toStdString();
     return std::nullopt;
   }
   LoadedJob job;

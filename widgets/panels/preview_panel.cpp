@@ -172,7 +172,7 @@ void PreviewPanel::showResult() {
   problems_->clear();
   for (const PreviewProblem& p : r.problems) {
     QString text = p.text;
-    if (!p.fixes.isEmpty()) text += QStringLiteral("\n") + tr("What to do: %1").arg(p.fixes.join(QStringLiteral("; ")));
+    if (!p.fixes.isEmpty()) text += QStringLiteral("\n") + tr("What to do: %1").arg(p.fixes.join(tr("; ")));
     auto* item = new QListWidgetItem(text, problems_);
     item->setForeground(palette::problem());
     item->setToolTip(text);

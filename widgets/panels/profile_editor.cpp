@@ -20,6 +20,7 @@
 
 #include "core/machine/profile.hpp"
 #include "core/machine/profile_fields.hpp"
+#include "widgets/document/core_message.hpp"
 #include "core/kinematics/units.hpp"
 
 namespace fivebar::widgets {
@@ -299,7 +300,7 @@ void ProfileEditor::showIssues(const std::vector<ValidationIssue>& issues) {
   std::map<std::string, QStringList> byField;
   QStringList unmatched;
   for (const ValidationIssue& issue : issues) {
-    const QString text = QString::fromStdString(issue.message);
+    const QString text = translated(issue.message);
     if (messages_.count(issue.field)) {
       byField[issue.field] << text;
     } else {
@@ -325,7 +326,7 @@ bool ProfileEditor::importFrom(const QString& path, QString* error) {
   const ProfileLoad load = loadProfile(path.toStdString());
   if (!load.profile) {
     QStringList lines;
-    for (const ValidationIssue& issue : load.issues) lines << QString::fromStdString(issue.message);
+    for (const ValidationIssue& issue : load.issues) lines << translated(issue.message);
     *error = tr("%1 cannot be used:\n%2").arg(path, lines.join(QLatin1Char('\n')));
     return false;
   }
