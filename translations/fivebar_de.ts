@@ -202,6 +202,22 @@
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
+    <message>
+        <source>%1: cannot write a temporary copy to import</source>
+        <translation>%1: keine temporäre Kopie zum Importieren möglich</translation>
+    </message>
+    <message>
+        <source>%1: cannot be imported</source>
+        <translation>%1: kann nicht importiert werden</translation>
+    </message>
+    <message>
+        <source>%1: cannot read (%2)</source>
+        <translation>%1: kann nicht gelesen werden (%2)</translation>
+    </message>
+    <message>
+        <source>no machine profile given</source>
+        <translation>kein Maschinenprofil angegeben</translation>
+    </message>
 </context>
 <context>
     <name>MapPainter</name>

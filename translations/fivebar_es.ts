@@ -202,6 +202,22 @@
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
+    <message>
+        <source>%1: cannot write a temporary copy to import</source>
+        <translation>%1: no se puede escribir una copia temporal para importar</translation>
+    </message>
+    <message>
+        <source>%1: cannot be imported</source>
+        <translation>%1: no se puede importar</translation>
+    </message>
+    <message>
+        <source>%1: cannot read (%2)</source>
+        <translation>%1: no se puede leer (%2)</translation>
+    </message>
+    <message>
+        <source>no machine profile given</source>
+        <translation>no se indicó ningún perfil de máquina</translation>
+    </message>
 </context>
 <context>
     <name>MapPainter</name>

@@ -202,6 +202,22 @@
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>
+    <message>
+        <source>%1: cannot write a temporary copy to import</source>
+        <translation>%1 : impossible d'écrire une copie temporaire pour l'import</translation>
+    </message>
+    <message>
+        <source>%1: cannot be imported</source>
+        <translation>%1 : ne peut pas être importé</translation>
+    </message>
+    <message>
+        <source>%1: cannot read (%2)</source>
+        <translation>%1 : lecture impossible (%2)</translation>
+    </message>
+    <message>
+        <source>no machine profile given</source>
+        <translation>aucun profil de machine indiqué</translation>
+    </message>
 </context>
 <context>
     <name>MapPainter</name>

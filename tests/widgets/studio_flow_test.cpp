@@ -3,12 +3,16 @@
 // to the end, and the main window painting a planned job.
 #include <gtest/gtest.h>
 
+#include <QAction>
+#include <QApplication>
 #include <QDir>
 #include <QFile>
 #include <QImage>
+#include <QMessageBox>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 
 #include "app/studio/main_window.hpp"
 #include "widgets/canvas/canvas_view.hpp"
@@ -238,6 +242,28 @@ TEST(StudioFlow, MainWindowShowsTheDemoJob) {
   EXPECT_GT(coloured, 200);
   // The simulation was handed the trajectory.
   EXPECT_NE(window.simulation().trajectory(), nullptr);
+}
+
+// Help > About shows the application's version, the one `fivebar-studio --version` prints
+// (main.cpp sets it from the CMake project version; the package test checks --version).
+TEST(StudioFlow, AboutShowsTheApplicationVersion) {
+  const QString before = QCoreApplication::applicationVersion();
+  QCoreApplication::setApplicationVersion(QStringLiteral("9.8.7"));
+  studio::MainWindow window(makerPlotter());
+  QAction* about = nullptr;
+  for (QAction* a : window.findChildren<QAction*>())
+    if (a->text().contains(QStringLiteral("About"))) about = a;
+  ASSERT_NE(about, nullptr);
+  QString shown;
+  QTimer::singleShot(0, [&shown] {
+    if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+      shown = box->text();
+      box->accept();
+    }
+  });
+  about->trigger();
+  QCoreApplication::setApplicationVersion(before);
+  EXPECT_TRUE(shown.contains(QStringLiteral("FiveBar Studio 9.8.7"))) << shown.toStdString();
 }
 
 }  // namespace

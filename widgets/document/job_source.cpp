@@ -3,6 +3,7 @@
 
 #include <utility>
 
+#include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
 #include <QTemporaryFile>
@@ -11,6 +12,11 @@
 #include "widgets/document/core_message.hpp"
 
 namespace fivebar::widgets {
+
+namespace {
+// The studio's own sentences about a source, in the user's language (context "JobPipeline").
+QString trSource(const char* text) { return QCoreApplication::translate("JobPipeline", text); }
+}  // namespace
 
 bool isProjectPath(const QString& path) {
   return path.endsWith(QStringLiteral(".fivebar"), Qt::CaseInsensitive);
@@ -22,7 +28,8 @@ std::optional<Drawing> importSvgText(const DrawingSource& source, double toleran
   // Through a file, so that the import runs in the isolated worker process.
   QTemporaryFile file(QStringLiteral("fivebar-import-XXXXXX.svg"));
   if (!file.open() || file.write(source.svg) != source.svg.size() || !file.flush()) {
-    error = source.name.toStdString() + ": cannot write a temporary copy to import";
+    error = trSource(QT_TRANSLATE_NOOP("JobPipeline", "%1: cannot write a temporary copy to import"))
+                .arg(source.name).toStdString();
     return std::nullopt;
   }
   file.close();
@@ -37,7 +44,9 @@ std::optional<Drawing> importSvgText(const DrawingSource& source, double toleran
     const std::string temp = file.fileName().toStdString();
     for (std::size_t at = message.find(temp); at != std::string::npos; at = message.find(temp))
       message.replace(at, temp.size(), source.name.toStdString());
-    error = message.empty() ? source.name.toStdString() + ": cannot be imported" : message;
+    error = message.empty()
+                ? trSource(QT_TRANSLATE_NOOP("JobPipeline", "%1: cannot be imported")).arg(source.name).toStdString()
+                : message;
     return std::nullopt;
   }
   if (warnings) warnings->insert(warnings->end(), r.warnings.begin(), r.warnings.end());
@@ -85,7 +94,7 @@ namespace {
 bool readFile(const QString& path, QByteArray& out, std::string& error) {
   QFile f(path);
   if (!f.open(QIODevice::ReadOnly)) {
-    error = path.toStdString() + ": cannot read (" + f.errorString().toStdString() + ")";
+    error = trSource(QT_TRANSLATE_NOOP("JobPipeline", "%1: cannot read (%2)")).arg(path, f.errorString()).toStdString();
     return false;
   }
   out = f.readAll();
@@ -152,7 +161,7 @@ std::optional<LoadedJob> loadJob(const QString& path, const std::optional<Machin
                                  const HatchSettings& hatch, std::size_t maxPoints) {
   if (isProjectPath(path)) return loadProject(path, profile, error, maxPoints);
   if (!profile) {
-    error = "no machine profile given";
+    error = trSource(QT_TRANSLATE_NOOP("JobPipeline", "no machine profile given")).toStdString();
     return std::nullopt;
   }
   DrawingSource source;
