@@ -1,7 +1,7 @@
 // One truth, end to end: the studio window's G-code (File > Export G-code, what Run streams) is
 // byte-identical to `fivebar plan` and to `fivebar-studio --export-gcode` for corpus drawings;
 // a project saved, reopened and exported gives the same G-code; the unsaved-changes question;
-// the machine profile remembered across restarts.
+// recent projects; the machine profile remembered across restarts.
 #include <gtest/gtest.h>
 
 #include <QApplication>
@@ -12,6 +12,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QMenu>
 #include <QProcess>
 #include <QSettings>
 #include <QSignalSpy>
@@ -149,6 +150,39 @@ TEST(ProjectFlow, SavedReopenedAndExportedGivesTheSameGcode) {
   ASSERT_EQ(runTool(QStringLiteral(FIVEBAR_CLI), {QStringLiteral("plan"), project, QStringLiteral("-o"), cli}, &err), 0)
       << err.toStdString();
   EXPECT_TRUE(slurp(cli) == slurp(first));
+}
+
+// Recent projects: a saved project heads File > Open recent, above the drawing opened before it;
+// the list outlives the window (QSettings), and its entry reopens the project.
+TEST(ProjectFlow, SavedProjectsAreRecentAndReopenFromTheMenu) {
+  QTemporaryDir dir;
+  const QString svg = writeA5(dir);
+  const QString project = dir.filePath(QStringLiteral("recent.fivebar"));
+  {
+    studio::MainWindow w(makerPlotter());
+    w.importer().clearRecentFiles();
+    ASSERT_TRUE(openAndPlan(w, svg));
+    QString error;
+    ASSERT_TRUE(w.files().saveTo(project, &error)) << error.toStdString();
+    const QStringList recent = w.importer().recentFiles();
+    ASSERT_GE(recent.size(), 2);
+    EXPECT_EQ(QFileInfo(recent[0]).canonicalFilePath(), QFileInfo(project).canonicalFilePath());
+    EXPECT_EQ(QFileInfo(recent[1]).canonicalFilePath(), QFileInfo(svg).canonicalFilePath());
+  }
+  studio::MainWindow w(makerPlotter());  // a restart
+  w.importer().setInteractive(false);
+  QMenu menu;
+  w.files().fillRecentMenu(&menu);
+  QAction* entry = nullptr;
+  for (QAction* a : menu.actions())
+    if (a->text() == QStringLiteral("recent.fivebar")) entry = a;
+  ASSERT_NE(entry, nullptr) << "the saved project is not in File > Open recent";
+  QSignalSpy imported(&w.importer(), &ImportController::finished);
+  entry->trigger();
+  ASSERT_TRUE(imported.wait(kWaitMs));
+  ASSERT_TRUE(imported.front().at(0).toBool()) << imported.front().at(1).toString().toStdString();
+  EXPECT_EQ(QFileInfo(w.document().projectPath()).canonicalFilePath(), QFileInfo(project).canonicalFilePath());
+  EXPECT_DOUBLE_EQ(w.document().placement().scale, 1.0);
 }
 
 // A layer's fill set in the layers panel plans exactly as `fivebar plan --fill hatch` with the same

@@ -9,6 +9,7 @@
 #include <QFile>
 #include <QImage>
 #include <QMessageBox>
+#include <QPainter>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -148,6 +149,52 @@ TEST(StudioFlow, PreviewPlansTheJobAndModesSwitch) {
   s.doc.undoStack()->undo();
   r = planAndWait(s);
   EXPECT_EQ(r.status, PreviewStatus::Planned);
+}
+
+// A planned job carries no drawing scene (its draw moves are the drawing); while the next plan
+// runs, the canvas shows those draw moves moved to the new placement, faded, with "Planning...".
+TEST(StudioFlow, WhilePlanningTheLastJobsDrawMovesShowTheDrawingAtTheNewPlacement) {
+  QTemporaryDir dir;
+  Studio s;
+  ASSERT_TRUE(importAndWait(s, writeDrawing(dir)));
+  const PreviewResult r = planAndWait(s);
+  ASSERT_EQ(r.status, PreviewStatus::Planned) << r.message.toStdString();
+  EXPECT_EQ(r.drawingScene, nullptr);
+  ASSERT_TRUE(r.jobScene);
+  JobLayer layer(s.doc, s.preview, s.sim);
+  const QRectF bounds = r.jobScene->boundsMm();
+  ViewTransform view(bounds.center(), 1.0, QSizeF(400, 400));
+  view.fit(bounds.adjusted(-60, -60, 60, 60), 10.0);
+  // Painted pixels in the left and right halves of the image.
+  auto painted = [&](int& left, int& right) {
+    QImage image(400, 400, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    layer.paint(painter, view);
+    painter.end();
+    left = right = 0;
+    for (int y = 60; y < 400; ++y)  // below the "Planning..." banner
+      for (int x = 0; x < 400; ++x)
+        if (image.pixel(x, y) != qRgb(255, 255, 255)) ++(x < 200 ? left : right);
+  };
+  int left = 0, right = 0;
+  painted(left, right);
+  ASSERT_GT(left + right, 50) << "the planned job is not painted";
+  // The drawing moved 40 mm towards machine -x: the next plan starts, and the canvas shows
+  // the old job's draw moves at the new place at once.
+  Placement moved = s.doc.placement();
+  moved.centerMm += Vec2(-40.0, 0.0);
+  s.doc.setPlacement(moved);
+  s.preview.replanNow();
+  ASSERT_TRUE(s.preview.busy());
+  int movedLeft = 0, movedRight = 0;
+  painted(movedLeft, movedRight);
+  EXPECT_GT(movedLeft + movedRight, 20) << "nothing shown while planning";
+  const bool xRight = view.widgetFromMachine(QPointF(1, 0)).x() > view.widgetFromMachine(QPointF(0, 0)).x();
+  EXPECT_GT(xRight ? movedLeft - left : movedRight - right, 0) << "not shown at the new placement";
+  QSignalSpy ready(&s.preview, &PreviewController::resultChanged);
+  while (s.preview.busy()) ASSERT_TRUE(ready.wait(kWaitMs));
+  EXPECT_EQ(s.preview.result().status, PreviewStatus::Planned);
 }
 
 TEST(StudioFlow, HiddenLayersAreNotPlanned) {

@@ -95,7 +95,13 @@ void JobLayer::paint(QPainter& painter, const ViewTransform& view) {
     mainRenderer_.paint(painter, view, r.jobScene, o, optionsKey());
     settling_ = false;
     if (mainRenderer_.stale()) settle_.start();
-  } else if (r.drawingScene) {
+  } else if (r.drawingScene || r.jobScene) {
+    // The drawing as last planned: its scene, or for a planned job the job's draw moves.
+    const std::shared_ptr<const PathScene>& scene = r.drawingScene ? r.drawingScene : r.jobScene;
+    if (!r.drawingScene) {
+      o.showTravel = false;
+      o.colourBySpeed = false;
+    }
     o.machineFromScene = placementDelta(preview_.resultPlacement(), doc_.placement());
     if (planning) {
       o.opacity = kFadedJobOpacity;
@@ -106,7 +112,8 @@ void JobLayer::paint(QPainter& painter, const ViewTransform& view) {
                                                  o.machineFromScene.dx() * 13.0 +
                                                  o.machineFromScene.dy() * 17.0 +
                                                  o.machineFromScene.m12() * 19.0);
-    mainRenderer_.paint(painter, view, r.drawingScene, o, (deltaKey << 8) | 64u | (planning ? 128u : 0u));
+    mainRenderer_.paint(painter, view, scene, o,
+                        (deltaKey << 9) | 64u | (planning ? 128u : 0u) | (r.drawingScene ? 0u : 256u));
   }
   if (planning) {
     painter.save();

@@ -54,7 +54,9 @@ struct PreviewResult {
   std::optional<WorkingMode> mode;       // mode planned in (Auto: the pick)
   double minMarginRad = 0.0;             // worst type II margin of the plan (or of the preflight)
   std::vector<PreviewProblem> problems;
-  std::shared_ptr<const PathScene> drawingScene;  // placed strokes, offending ones flagged
+  // Placed strokes, offending ones flagged: set when there is no job (a planned job's own scene
+  // shows its drawing).
+  std::shared_ptr<const PathScene> drawingScene;
   std::shared_ptr<const PlannedJob> job;          // set when planned
   std::shared_ptr<const Trajectory> trajectory;   // set when planned
   std::shared_ptr<const PathScene> jobScene;      // moves; order = move index
@@ -62,7 +64,7 @@ struct PreviewResult {
   // Set when the planner needed the drawing flattened more finely: the drawing planned.
   std::shared_ptr<const Drawing> refinedDrawing;
   // Wall and CPU time of each stage: the planner's (PlanResult::timings), then the studio's own
-  // ("drawing scene"; "job scene and trajectory", built meanwhile on a second thread: the wait).
+  // ("job scene and trajectory", the two built side by side; "drawing scene" when not planned).
   StageTimes timings;
 };
 
