@@ -17,6 +17,57 @@
     </message>
 </context>
 <context>
+    <name>Design</name>
+    <message>
+        <source>%1 must be a positive length in mm</source>
+        <translation>%1 muss eine positive Länge in mm sein</translation>
+    </message>
+    <message>
+        <source>the rectangle's width</source>
+        <translation>die Breite des Rechtecks</translation>
+    </message>
+    <message>
+        <source>the rectangle's height</source>
+        <translation>die Höhe des Rechtecks</translation>
+    </message>
+    <message>
+        <source>the shortest link</source>
+        <translation>das kürzeste Glied</translation>
+    </message>
+    <message>
+        <source>the longest link</source>
+        <translation>das längste Glied</translation>
+    </message>
+    <message>
+        <source>the shortest link (%1 mm) is longer than the longest (%2 mm)</source>
+        <translation>das kürzeste Glied (%1 mm) ist länger als das längste (%2 mm)</translation>
+    </message>
+    <message>
+        <source>the motor spacing must be 0 mm or more</source>
+        <translation>der Motorabstand muss 0 mm oder mehr betragen</translation>
+    </message>
+    <message>
+        <source>the smallest motor spacing (%1 mm) exceeds the largest (%2 mm)</source>
+        <translation>der kleinste Motorabstand (%1 mm) übersteigt den größten (%2 mm)</translation>
+    </message>
+    <message>
+        <source>the clearance must be 0 mm or more</source>
+        <translation>der Sicherheitsabstand muss 0 mm oder mehr betragen</translation>
+    </message>
+    <message>
+        <source>the type II margin must be from 0 to below 90 deg</source>
+        <translation>der Typ-II-Abstand muss zwischen 0 und unter 90° liegen</translation>
+    </message>
+    <message>
+        <source>mix weights must be finite and not negative</source>
+        <translation>die Gewichte der Mischung müssen endlich und nicht negativ sein</translation>
+    </message>
+    <message>
+        <source>mix weights must not all be zero</source>
+        <translation>die Gewichte der Mischung dürfen nicht alle null sein</translation>
+    </message>
+</context>
+<context>
     <name>DesignPainter</name>
     <message>
         <source>Workspace, singularity-free region and type II curves</source>

@@ -17,6 +17,57 @@
     </message>
 </context>
 <context>
+    <name>Design</name>
+    <message>
+        <source>%1 must be a positive length in mm</source>
+        <translation>%1 debe ser una longitud positiva en mm</translation>
+    </message>
+    <message>
+        <source>the rectangle's width</source>
+        <translation>el ancho del rectángulo</translation>
+    </message>
+    <message>
+        <source>the rectangle's height</source>
+        <translation>el alto del rectángulo</translation>
+    </message>
+    <message>
+        <source>the shortest link</source>
+        <translation>el brazo más corto</translation>
+    </message>
+    <message>
+        <source>the longest link</source>
+        <translation>el brazo más largo</translation>
+    </message>
+    <message>
+        <source>the shortest link (%1 mm) is longer than the longest (%2 mm)</source>
+        <translation>el brazo más corto (%1 mm) es más largo que el más largo (%2 mm)</translation>
+    </message>
+    <message>
+        <source>the motor spacing must be 0 mm or more</source>
+        <translation>la separación entre motores debe ser de 0 mm o más</translation>
+    </message>
+    <message>
+        <source>the smallest motor spacing (%1 mm) exceeds the largest (%2 mm)</source>
+        <translation>la menor separación entre motores (%1 mm) supera la mayor (%2 mm)</translation>
+    </message>
+    <message>
+        <source>the clearance must be 0 mm or more</source>
+        <translation>la holgura debe ser de 0 mm o más</translation>
+    </message>
+    <message>
+        <source>the type II margin must be from 0 to below 90 deg</source>
+        <translation>el margen de tipo II debe estar entre 0 y menos de 90°</translation>
+    </message>
+    <message>
+        <source>mix weights must be finite and not negative</source>
+        <translation>los pesos de la mezcla deben ser finitos y no negativos</translation>
+    </message>
+    <message>
+        <source>mix weights must not all be zero</source>
+        <translation>los pesos de la mezcla no pueden ser todos cero</translation>
+    </message>
+</context>
+<context>
     <name>DesignPainter</name>
     <message>
         <source>Workspace, singularity-free region and type II curves</source>

@@ -17,6 +17,57 @@
     </message>
 </context>
 <context>
+    <name>Design</name>
+    <message>
+        <source>%1 must be a positive length in mm</source>
+        <translation>%1 doit être une longueur positive en mm</translation>
+    </message>
+    <message>
+        <source>the rectangle's width</source>
+        <translation>la largeur du rectangle</translation>
+    </message>
+    <message>
+        <source>the rectangle's height</source>
+        <translation>la hauteur du rectangle</translation>
+    </message>
+    <message>
+        <source>the shortest link</source>
+        <translation>le bras le plus court</translation>
+    </message>
+    <message>
+        <source>the longest link</source>
+        <translation>le bras le plus long</translation>
+    </message>
+    <message>
+        <source>the shortest link (%1 mm) is longer than the longest (%2 mm)</source>
+        <translation>le bras le plus court (%1 mm) est plus long que le plus long (%2 mm)</translation>
+    </message>
+    <message>
+        <source>the motor spacing must be 0 mm or more</source>
+        <translation>l'écart entre les moteurs doit être de 0 mm ou plus</translation>
+    </message>
+    <message>
+        <source>the smallest motor spacing (%1 mm) exceeds the largest (%2 mm)</source>
+        <translation>le plus petit écart entre les moteurs (%1 mm) dépasse le plus grand (%2 mm)</translation>
+    </message>
+    <message>
+        <source>the clearance must be 0 mm or more</source>
+        <translation>la marge de dégagement doit être de 0 mm ou plus</translation>
+    </message>
+    <message>
+        <source>the type II margin must be from 0 to below 90 deg</source>
+        <translation>la marge de type II doit être comprise entre 0 et moins de 90°</translation>
+    </message>
+    <message>
+        <source>mix weights must be finite and not negative</source>
+        <translation>les poids du mélange doivent être finis et non négatifs</translation>
+    </message>
+    <message>
+        <source>mix weights must not all be zero</source>
+        <translation>les poids du mélange ne doivent pas être tous nuls</translation>
+    </message>
+</context>
+<context>
     <name>DesignPainter</name>
     <message>
         <source>Workspace, singularity-free region and type II curves</source>

@@ -98,7 +98,7 @@ MixWeights parseWeights(const std::string& text) {
     start = comma == std::string::npos ? text.size() : comma + 1;
   }
   const MixWeights w{v[0], v[1], v[2]};
-  std::string problem = ok ? validateWeights(w) : std::string("it needs three numbers");
+  std::string problem = ok ? validateWeights(w).text() : std::string("it needs three numbers");
   if (!problem.empty())
     throw UsageError("--weights must be C,R,F (three numbers >= 0, not all zero), e.g. 1,0,0.5, got '" +
                      text + "': " + problem);

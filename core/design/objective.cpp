@@ -22,11 +22,10 @@ std::optional<Objective> parseObjective(std::string_view text) {
   return std::nullopt;
 }
 
-std::string validateWeights(const MixWeights& w) {
+Message validateWeights(const MixWeights& w) {
   for (double v : {w.condition, w.resolution, w.footprint})
-    if (!std::isfinite(v) || v < 0.0) return "mix weights must be finite and not negative";
-  if (w.condition + w.resolution + w.footprint <= 0.0)
-    return "mix weights must not all be zero";
+    if (!std::isfinite(v) || v < 0.0) return FB_TR("Design", "mix weights must be finite and not negative");
+  if (w.condition + w.resolution + w.footprint <= 0.0) return FB_TR("Design", "mix weights must not all be zero");
   return {};
 }
 

@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "core/design/evaluation.hpp"
+#include "core/support/message.hpp"
 
 namespace fivebar::design {
 
@@ -29,7 +30,7 @@ struct MixWeights {
   double footprint = 1.0;
 };
 // Empty when valid, else a sentence naming the problem.
-std::string validateWeights(const MixWeights& w);
+Message validateWeights(const MixWeights& w);
 
 // The normalised terms of the mix (dimensionless, >= 1 for a feasible design, 1 ideal):
 // condition: worst-case condition number kappa itself (1 = isotropic);

@@ -226,28 +226,31 @@ DesignRules searchRules(const DesignRules& rules) {
 
 std::vector<ValidationIssue> validate(const DesignBrief& b) {
   std::vector<ValidationIssue> issues;
-  auto positive = [&](double v, const char* field, const char* what) {
-    if (!(v > 0.0) || !std::isfinite(v)) issues.push_back({field, std::string(what) + " must be a positive length in mm"});
+  auto positive = [&](double v, const char* field, Message what) {
+    if (!(v > 0.0) || !std::isfinite(v))
+      issues.push_back({field, FB_TR("Design", "%1 must be a positive length in mm").arg(std::move(what))});
   };
-  positive(b.widthMm, "widthMm", "the rectangle's width");
-  positive(b.heightMm, "heightMm", "the rectangle's height");
-  positive(b.bounds.minLinkMm, "bounds.minLinkMm", "the shortest link");
-  positive(b.bounds.maxLinkMm, "bounds.maxLinkMm", "the longest link");
+  positive(b.widthMm, "widthMm", FB_TR("Design", "the rectangle's width"));
+  positive(b.heightMm, "heightMm", FB_TR("Design", "the rectangle's height"));
+  positive(b.bounds.minLinkMm, "bounds.minLinkMm", FB_TR("Design", "the shortest link"));
+  positive(b.bounds.maxLinkMm, "bounds.maxLinkMm", FB_TR("Design", "the longest link"));
   if (b.bounds.minLinkMm > b.bounds.maxLinkMm)
-    issues.push_back({"bounds.minLinkMm", "the shortest link (" + fmt(b.bounds.minLinkMm) +
-                                              " mm) is longer than the longest (" + fmt(b.bounds.maxLinkMm) + " mm)"});
+    issues.push_back({"bounds.minLinkMm", FB_TR("Design", "the shortest link (%1 mm) is longer than the longest (%2 mm)")
+                                              .arg(b.bounds.minLinkMm, 1)
+                                              .arg(b.bounds.maxLinkMm, 1)});
   if (!(b.bounds.minBaseMm >= 0.0) || !std::isfinite(b.bounds.maxBaseMm))
-    issues.push_back({"bounds.minBaseMm", "the motor spacing must be 0 mm or more"});
+    issues.push_back({"bounds.minBaseMm", FB_TR("Design", "the motor spacing must be 0 mm or more")});
   if (b.bounds.minBaseMm > b.bounds.maxBaseMm)
-    issues.push_back({"bounds.minBaseMm", "the smallest motor spacing (" + fmt(b.bounds.minBaseMm) +
-                                              " mm) exceeds the largest (" + fmt(b.bounds.maxBaseMm) + " mm)"});
+    issues.push_back({"bounds.minBaseMm", FB_TR("Design", "the smallest motor spacing (%1 mm) exceeds the largest (%2 mm)")
+                                              .arg(b.bounds.minBaseMm, 1)
+                                              .arg(b.bounds.maxBaseMm, 1)});
   if (!(b.rules.clearanceMm >= 0.0) || !std::isfinite(b.rules.clearanceMm))
-    issues.push_back({"rules.clearanceMm", "the clearance must be 0 mm or more"});
+    issues.push_back({"rules.clearanceMm", FB_TR("Design", "the clearance must be 0 mm or more")});
   const double t2 = b.rules.workspace.typeIIMarginRad;
   if (!(t2 >= 0.0 && t2 < 0.5 * kPi))
-    issues.push_back({"rules.typeIIMargin", "the type II margin must be from 0 to below 90 deg"});
+    issues.push_back({"rules.typeIIMargin", FB_TR("Design", "the type II margin must be from 0 to below 90 deg")});
   if (b.objective == Objective::Mix)
-    if (const std::string w = validateWeights(b.weights); !w.empty()) issues.push_back({"weights", w});
+    if (Message w = validateWeights(b.weights); !w.empty()) issues.push_back({"weights", std::move(w)});
   return issues;
 }
 
