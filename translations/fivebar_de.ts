@@ -110,6 +110,125 @@
     </message>
 </context>
 <context>
+    <name>ImportError</name>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: nesting deeper than %2 elements</source>
+        <translation>%1: tiefer als %2 Elemente verschachtelt</translation>
+    </message>
+    <message>
+        <source>%1: the root element is not &lt;svg&gt;</source>
+        <translation>%1: das Wurzelelement ist nicht &lt;svg&gt;</translation>
+    </message>
+    <message>
+        <source>cannot open: %1</source>
+        <translation>kann nicht geöffnet werden: %1</translation>
+    </message>
+    <message>
+        <source>cannot read: %1</source>
+        <translation>kann nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>compressed SVG (gzip): %1</source>
+        <translation>komprimiertes SVG (gzip): %1</translation>
+    </message>
+    <message>
+        <source>could not create a pipe for the SVG worker: %1</source>
+        <translation>keine Pipe für den SVG-Worker: %1</translation>
+    </message>
+    <message>
+        <source>could not start the SVG worker %1: %2</source>
+        <translation>der SVG-Worker %1 ließ sich nicht starten: %2</translation>
+    </message>
+    <message>
+        <source>import cancelled</source>
+        <translation>Import abgebrochen</translation>
+    </message>
+    <message>
+        <source>layer "%1" has a non-finite coordinate</source>
+        <translation>Ebene „%1“ hat eine nicht endliche Koordinate</translation>
+    </message>
+    <message>
+        <source>layer "%1" has a point at (%2, %3) mm, beyond the %4 mm limit</source>
+        <translation>Ebene „%1“ hat einen Punkt bei (%2; %3) mm, jenseits der Grenze von %4 mm</translation>
+    </message>
+    <message>
+        <source>line %1, column %2: %3</source>
+        <translation>Zeile %1, Spalte %2: %3</translation>
+    </message>
+    <message>
+        <source>line %1: %2</source>
+        <translation>Zeile %1: %2</translation>
+    </message>
+    <message>
+        <source>line %1: &lt;%2&gt; attribute %3 contains %4</source>
+        <translation>Zeile %1: &lt;%2&gt; Attribut %3 enthält %4</translation>
+    </message>
+    <message>
+        <source>line %1: &lt;%2&gt;</source>
+        <translation>Zeile %1: &lt;%2&gt;</translation>
+    </message>
+    <message>
+        <source>more than %1 points after flattening (the points budget): reading stopped there</source>
+        <translation>mehr als %1 Punkte nach dem Glätten (das Punktebudget): das Lesen wurde dort beendet</translation>
+    </message>
+    <message>
+        <source>no &lt;svg&gt; element found</source>
+        <translation>kein &lt;svg&gt;-Element gefunden</translation>
+    </message>
+    <message>
+        <source>no such file</source>
+        <translation>Datei nicht vorhanden</translation>
+    </message>
+    <message>
+        <source>not readable</source>
+        <translation>nicht lesbar</translation>
+    </message>
+    <message>
+        <source>root &lt;svg&gt; %1="%2" is not a length</source>
+        <translation>Wurzel-&lt;svg&gt; %1="%2" ist keine Länge</translation>
+    </message>
+    <message>
+        <source>root &lt;svg&gt; %1="%2" is zero or negative: nothing to draw</source>
+        <translation>Wurzel-&lt;svg&gt; %1="%2" ist null oder negativ: nichts zu zeichnen</translation>
+    </message>
+    <message>
+        <source>root &lt;svg&gt; viewBox="%1": %2</source>
+        <translation>Wurzel-&lt;svg&gt; viewBox="%1": %2</translation>
+    </message>
+    <message>
+        <source>the SVG parser crashed on this file (it is hostile or corrupt, or needed more than the %1 MB memory limit)</source>
+        <translation>der SVG-Parser ist an dieser Datei abgestürzt (sie ist bösartig oder beschädigt oder brauchte mehr als die Speichergrenze von %1 MB)</translation>
+    </message>
+    <message>
+        <source>the SVG parser did not finish within %1 s and was stopped (the file is too complex or makes Qt SVG hang)</source>
+        <translation>der SVG-Parser wurde nicht innerhalb von %1 s fertig und wurde gestoppt (die Datei ist zu komplex oder lässt Qt SVG hängen)</translation>
+    </message>
+    <message>
+        <source>the SVG worker (fivebar-svg-worker) was not found; set ImportOptions::workerPath or FIVEBAR_SVG_WORKER, or install it next to the program</source>
+        <translation>der SVG-Worker (fivebar-svg-worker) wurde nicht gefunden; ImportOptions::workerPath oder FIVEBAR_SVG_WORKER setzen oder ihn neben dem Programm installieren</translation>
+    </message>
+    <message>
+        <source>the SVG worker ended without a readable result (exit code %1): %2</source>
+        <translation>der SVG-Worker endete ohne lesbares Ergebnis (Exit-Code %1): %2</translation>
+    </message>
+    <message>
+        <source>the compressed file is empty</source>
+        <translation>die komprimierte Datei ist leer</translation>
+    </message>
+    <message>
+        <source>the file is empty</source>
+        <translation>die Datei ist leer</translation>
+    </message>
+</context>
+<context>
     <name>ImportWarning</name>
     <message>
         <source>attribute d: invalid path data at character %1 %2: drawn up to the error</source>

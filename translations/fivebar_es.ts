@@ -110,6 +110,125 @@
     </message>
 </context>
 <context>
+    <name>ImportError</name>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: nesting deeper than %2 elements</source>
+        <translation>%1: anidamiento de más de %2 elementos</translation>
+    </message>
+    <message>
+        <source>%1: the root element is not &lt;svg&gt;</source>
+        <translation>%1: el elemento raíz no es &lt;svg&gt;</translation>
+    </message>
+    <message>
+        <source>cannot open: %1</source>
+        <translation>no se puede abrir: %1</translation>
+    </message>
+    <message>
+        <source>cannot read: %1</source>
+        <translation>no se puede leer: %1</translation>
+    </message>
+    <message>
+        <source>compressed SVG (gzip): %1</source>
+        <translation>SVG comprimido (gzip): %1</translation>
+    </message>
+    <message>
+        <source>could not create a pipe for the SVG worker: %1</source>
+        <translation>no se pudo crear una tubería para el proceso SVG: %1</translation>
+    </message>
+    <message>
+        <source>could not start the SVG worker %1: %2</source>
+        <translation>no se pudo iniciar el proceso SVG %1: %2</translation>
+    </message>
+    <message>
+        <source>import cancelled</source>
+        <translation>importación cancelada</translation>
+    </message>
+    <message>
+        <source>layer "%1" has a non-finite coordinate</source>
+        <translation>la capa «%1» tiene una coordenada no finita</translation>
+    </message>
+    <message>
+        <source>layer "%1" has a point at (%2, %3) mm, beyond the %4 mm limit</source>
+        <translation>la capa «%1» tiene un punto en (%2; %3) mm, más allá del límite de %4 mm</translation>
+    </message>
+    <message>
+        <source>line %1, column %2: %3</source>
+        <translation>línea %1, columna %2: %3</translation>
+    </message>
+    <message>
+        <source>line %1: %2</source>
+        <translation>línea %1: %2</translation>
+    </message>
+    <message>
+        <source>line %1: &lt;%2&gt; attribute %3 contains %4</source>
+        <translation>línea %1: &lt;%2&gt; atributo %3 contiene %4</translation>
+    </message>
+    <message>
+        <source>line %1: &lt;%2&gt;</source>
+        <translation>línea %1: &lt;%2&gt;</translation>
+    </message>
+    <message>
+        <source>more than %1 points after flattening (the points budget): reading stopped there</source>
+        <translation>más de %1 puntos tras el aplanado (el presupuesto de puntos): la lectura se detuvo ahí</translation>
+    </message>
+    <message>
+        <source>no &lt;svg&gt; element found</source>
+        <translation>no se encontró ningún elemento &lt;svg&gt;</translation>
+    </message>
+    <message>
+        <source>no such file</source>
+        <translation>el archivo no existe</translation>
+    </message>
+    <message>
+        <source>not readable</source>
+        <translation>no se puede leer</translation>
+    </message>
+    <message>
+        <source>root &lt;svg&gt; %1="%2" is not a length</source>
+        <translation>&lt;svg&gt; raíz: %1="%2" no es una longitud</translation>
+    </message>
+    <message>
+        <source>root &lt;svg&gt; %1="%2" is zero or negative: nothing to draw</source>
+        <translation>&lt;svg&gt; raíz: %1="%2" es cero o negativo: nada que dibujar</translation>
+    </message>
+    <message>
+        <source>root &lt;svg&gt; viewBox="%1": %2</source>
+        <translation>&lt;svg&gt; raíz: viewBox="%1": %2</translation>
+    </message>
+    <message>
+        <source>the SVG parser crashed on this file (it is hostile or corrupt, or needed more than the %1 MB memory limit)</source>
+        <translation>el analizador SVG falló con este archivo (es malicioso o está dañado, o necesitó más del límite de memoria de %1 MB)</translation>
+    </message>
+    <message>
+        <source>the SVG parser did not finish within %1 s and was stopped (the file is too complex or makes Qt SVG hang)</source>
+        <translation>el analizador SVG no terminó en %1 s y se detuvo (el archivo es demasiado complejo o bloquea Qt SVG)</translation>
+    </message>
+    <message>
+        <source>the SVG worker (fivebar-svg-worker) was not found; set ImportOptions::workerPath or FIVEBAR_SVG_WORKER, or install it next to the program</source>
+        <translation>no se encontró el proceso SVG (fivebar-svg-worker); defina ImportOptions::workerPath o FIVEBAR_SVG_WORKER, o instálelo junto al programa</translation>
+    </message>
+    <message>
+        <source>the SVG worker ended without a readable result (exit code %1): %2</source>
+        <translation>el proceso SVG terminó sin un resultado legible (código de salida %1): %2</translation>
+    </message>
+    <message>
+        <source>the compressed file is empty</source>
+        <translation>el archivo comprimido está vacío</translation>
+    </message>
+    <message>
+        <source>the file is empty</source>
+        <translation>el archivo está vacío</translation>
+    </message>
+</context>
+<context>
     <name>ImportWarning</name>
     <message>
         <source>attribute d: invalid path data at character %1 %2: drawn up to the error</source>

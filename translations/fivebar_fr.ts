@@ -110,6 +110,125 @@
     </message>
 </context>
 <context>
+    <name>ImportError</name>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <source>%1: nesting deeper than %2 elements</source>
+        <translation>%1 : imbrication de plus de %2 éléments</translation>
+    </message>
+    <message>
+        <source>%1: the root element is not &lt;svg&gt;</source>
+        <translation>%1 : l'élément racine n'est pas &lt;svg&gt;</translation>
+    </message>
+    <message>
+        <source>cannot open: %1</source>
+        <translation>impossible d'ouvrir : %1</translation>
+    </message>
+    <message>
+        <source>cannot read: %1</source>
+        <translation>impossible de lire : %1</translation>
+    </message>
+    <message>
+        <source>compressed SVG (gzip): %1</source>
+        <translation>SVG compressé (gzip) : %1</translation>
+    </message>
+    <message>
+        <source>could not create a pipe for the SVG worker: %1</source>
+        <translation>impossible de créer un tube pour le processus SVG : %1</translation>
+    </message>
+    <message>
+        <source>could not start the SVG worker %1: %2</source>
+        <translation>impossible de lancer le processus SVG %1 : %2</translation>
+    </message>
+    <message>
+        <source>import cancelled</source>
+        <translation>import annulé</translation>
+    </message>
+    <message>
+        <source>layer "%1" has a non-finite coordinate</source>
+        <translation>le calque « %1 » a une coordonnée non finie</translation>
+    </message>
+    <message>
+        <source>layer "%1" has a point at (%2, %3) mm, beyond the %4 mm limit</source>
+        <translation>le calque « %1 » a un point en (%2 ; %3) mm, au-delà de la limite de %4 mm</translation>
+    </message>
+    <message>
+        <source>line %1, column %2: %3</source>
+        <translation>ligne %1, colonne %2 : %3</translation>
+    </message>
+    <message>
+        <source>line %1: %2</source>
+        <translation>ligne %1 : %2</translation>
+    </message>
+    <message>
+        <source>line %1: &lt;%2&gt; attribute %3 contains %4</source>
+        <translation>ligne %1 : &lt;%2&gt; l'attribut %3 contient %4</translation>
+    </message>
+    <message>
+        <source>line %1: &lt;%2&gt;</source>
+        <translation>ligne %1 : &lt;%2&gt;</translation>
+    </message>
+    <message>
+        <source>more than %1 points after flattening (the points budget): reading stopped there</source>
+        <translation>plus de %1 points après aplatissement (le budget de points) : lecture arrêtée là</translation>
+    </message>
+    <message>
+        <source>no &lt;svg&gt; element found</source>
+        <translation>aucun élément &lt;svg&gt; trouvé</translation>
+    </message>
+    <message>
+        <source>no such file</source>
+        <translation>fichier introuvable</translation>
+    </message>
+    <message>
+        <source>not readable</source>
+        <translation>illisible</translation>
+    </message>
+    <message>
+        <source>root &lt;svg&gt; %1="%2" is not a length</source>
+        <translation>&lt;svg&gt; racine : %1="%2" n'est pas une longueur</translation>
+    </message>
+    <message>
+        <source>root &lt;svg&gt; %1="%2" is zero or negative: nothing to draw</source>
+        <translation>&lt;svg&gt; racine : %1="%2" est nul ou négatif : rien à dessiner</translation>
+    </message>
+    <message>
+        <source>root &lt;svg&gt; viewBox="%1": %2</source>
+        <translation>&lt;svg&gt; racine : viewBox="%1" : %2</translation>
+    </message>
+    <message>
+        <source>the SVG parser crashed on this file (it is hostile or corrupt, or needed more than the %1 MB memory limit)</source>
+        <translation>l'analyseur SVG a planté sur ce fichier (il est malveillant ou corrompu, ou a demandé plus que la limite de %1 Mo de mémoire)</translation>
+    </message>
+    <message>
+        <source>the SVG parser did not finish within %1 s and was stopped (the file is too complex or makes Qt SVG hang)</source>
+        <translation>l'analyseur SVG n'a pas terminé en %1 s et a été arrêté (le fichier est trop complexe ou bloque Qt SVG)</translation>
+    </message>
+    <message>
+        <source>the SVG worker (fivebar-svg-worker) was not found; set ImportOptions::workerPath or FIVEBAR_SVG_WORKER, or install it next to the program</source>
+        <translation>le processus SVG (fivebar-svg-worker) est introuvable ; définissez ImportOptions::workerPath ou FIVEBAR_SVG_WORKER, ou installez-le à côté du programme</translation>
+    </message>
+    <message>
+        <source>the SVG worker ended without a readable result (exit code %1): %2</source>
+        <translation>le processus SVG s'est terminé sans résultat lisible (code de sortie %1) : %2</translation>
+    </message>
+    <message>
+        <source>the compressed file is empty</source>
+        <translation>le fichier compressé est vide</translation>
+    </message>
+    <message>
+        <source>the file is empty</source>
+        <translation>le fichier est vide</translation>
+    </message>
+</context>
+<context>
     <name>ImportWarning</name>
     <message>
         <source>attribute d: invalid path data at character %1 %2: drawn up to the error</source>

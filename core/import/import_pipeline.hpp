@@ -21,7 +21,7 @@ namespace fivebar::svg {
 
 struct Capture {
   ImportStatus status = ImportStatus::Ok;
-  std::string message;                    // when not Ok: names the source, as ImportResult does
+  Message message;                        // when not Ok: names the source, as ImportResult does
   std::vector<CapturedRun> runs;          // page frame; runs handed to a sink are not repeated
   std::vector<TopLevelElement> topLevel;  // for layers
   PageSetup page;                         // finishImport uses sizeKnown, widthMm, heightMm

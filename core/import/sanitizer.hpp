@@ -54,8 +54,8 @@ class Sanitizer {
   void writeMarkerInstances();
   void warn(Message what);
   void warnAt(const QXmlStreamAttributes& attributes, Message what);
-  void fail(ImportStatus status, const std::string& message);
-  std::string where() const;
+  void fail(ImportStatus status, Message message);
+  Message where() const;  // "line N: <tag>"
 
   QIODevice& input_;
   double dpi_;

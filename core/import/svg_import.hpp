@@ -80,7 +80,7 @@ const char* toString(ImportStatus status);
 
 struct ImportResult {
   ImportStatus status = ImportStatus::Ok;
-  std::string message;              // empty when Ok; else names the file and, when known, line/element
+  Message message;                  // empty when Ok; else names the file and, when known, line/element (translatable)
   Drawing drawing;                  // empty unless Ok
   std::vector<Message> warnings;  // translatable; things dropped or approximated (images, scripts, split paths)
   bool ok() const { return status == ImportStatus::Ok; }

@@ -44,10 +44,10 @@ const char* toString(ImportStatus status) {
 
 namespace {
 
-ImportResult failure(ImportStatus status, const QString& source, const std::string& message) {
+ImportResult failure(ImportStatus status, const QString& source, Message message) {
   ImportResult r;
   r.status = status;
-  r.message = source.toStdString() + ": " + message;
+  r.message = FB_TR("ImportError", "%1: %2").arg(source.toStdString()).arg(std::move(message));
   return r;
 }
 
@@ -63,7 +63,7 @@ std::string validateOptions(const ImportOptions& o) {
 
 struct Extent {
   double maxX = 0.0, maxY = 0.0;
-  std::string problem;  // first refused point, empty when all are fine
+  Message problem;  // first refused point, empty when all are fine
 };
 
 // Finds the extent of the page-frame points and the first non-finite or absurd point.
@@ -73,13 +73,15 @@ Extent inspect(const std::vector<Layer>& layers, double limitMm) {
     for (const Polyline& line : layer.paths) {
       for (const Vec2& p : line.points) {
         if (!std::isfinite(p.x()) || !std::isfinite(p.y())) {
-          e.problem = "layer \"" + layer.name + "\" has a non-finite coordinate";
+          e.problem = FB_TR("ImportError", "layer \"%1\" has a non-finite coordinate").arg(layer.name);
           return e;
         }
         if (std::abs(p.x()) > limitMm || std::abs(p.y()) > limitMm) {
-          e.problem = "layer \"" + layer.name + "\" has a point at (" + std::to_string(p.x()) +
-                      ", " + std::to_string(p.y()) + ") mm, beyond the " +
-                      std::to_string(limitMm) + " mm limit";
+          e.problem = FB_TR("ImportError", "layer \"%1\" has a point at (%2, %3) mm, beyond the %4 mm limit")
+                          .arg(layer.name)
+                          .arg(p.x(), 6)
+                          .arg(p.y(), 6)
+                          .arg(limitMm, 6);
           return e;
         }
         e.maxX = std::max(e.maxX, p.x());
@@ -149,15 +151,17 @@ std::string render(SanitizeResult& clean, const PageSetup& page, const ImportOpt
   return {};
 }
 
-std::string tooManyPoints(const ImportOptions& o) {
-  return "more than " + std::to_string(o.maxPoints) +
-         " points after flattening (the points budget): reading stopped there";
+Message tooManyPoints(const ImportOptions& o) {
+  return FB_TR("ImportError", "more than %1 points after flattening (the points budget): reading stopped there")
+      .arg(static_cast<long long>(o.maxPoints));
 }
 
-Capture failed(ImportStatus status, const QString& source, const std::string& message) {
+Message cancelledMessage() { return FB_TR("ImportError", "import cancelled"); }
+
+Capture failed(ImportStatus status, const QString& source, Message message) {
   Capture c;
   c.status = status;
-  c.message = source.toStdString() + ": " + message;
+  c.message = FB_TR("ImportError", "%1: %2").arg(source.toStdString()).arg(std::move(message));
   return c;
 }
 
@@ -171,16 +175,16 @@ Capture captureGeneral(QIODevice& input, const QString& source, const ImportOpti
   });
   if (clean.status != ImportStatus::Ok) return failed(clean.status, source, clean.error);
   Capture capture;
-  if (const std::string bad = computePage(clean.root, o.dpi, capture.page); !bad.empty())
+  if (Message bad = computePage(clean.root, o.dpi, capture.page); !bad.empty())
     return failed(ImportStatus::InvalidDocument, source,
-                  "line " + std::to_string(clean.root.line) + ": " + bad);
+                  FB_TR("ImportError", "line %1: %2").arg(static_cast<long long>(clean.root.line)).arg(std::move(bad)));
   if (progress) progress(0.5);
   bool overBudget = false;
   if (const std::string bad = render(clean, capture.page, o, progress, capture.runs, overBudget);
       !bad.empty())
     return failed(ImportStatus::RenderFailed, source, bad);
   if (overBudget) return failed(ImportStatus::TooManyPoints, source, tooManyPoints(o));
-  if (cancelled()) return failed(ImportStatus::Cancelled, source, "import cancelled");
+  if (cancelled()) return failed(ImportStatus::Cancelled, source, cancelledMessage());
   capture.topLevel = std::move(clean.topLevel);
   capture.warnings = std::move(clean.warnings);
   return capture;
@@ -194,8 +198,8 @@ Capture captureBytes(const QByteArray& data, const QString& source, const Import
   if (isGzip(data)) {  // .svgz
     QByteArray plain;
     if (const std::string bad = gunzip(data, kMaxDecompressedBytes, plain); !bad.empty())
-      return failed(ImportStatus::FileError, source, "compressed SVG (gzip): " + bad);
-    if (plain.isEmpty()) return failed(ImportStatus::FileError, source, "the compressed file is empty");
+      return failed(ImportStatus::FileError, source, FB_TR("ImportError", "compressed SVG (gzip): %1").arg(bad));
+    if (plain.isEmpty()) return failed(ImportStatus::FileError, source, FB_TR("ImportError", "the compressed file is empty"));
     return captureBytes(plain, source, o, progress, allowDirect, sink);
   }
   if (allowDirect) {
@@ -204,7 +208,7 @@ Capture captureBytes(const QByteArray& data, const QString& source, const Import
       if (progress) progress(0.95 * f);
     };
     switch (captureDirect(data, o, scaled, direct, sink)) {
-      case DirectStatus::Cancelled: return failed(ImportStatus::Cancelled, source, "import cancelled");
+      case DirectStatus::Cancelled: return failed(ImportStatus::Cancelled, source, cancelledMessage());
       case DirectStatus::TooManyPoints:
         return failed(ImportStatus::TooManyPoints, source, tooManyPoints(o));
       case DirectStatus::Captured: {
@@ -239,8 +243,8 @@ ImportResult finishImport(Capture&& capture, const QString& source, const Import
   Drawing& drawing = result.drawing;
   drawing.source = source.toStdString();
   drawing.layers = buildLayers(std::move(capture.runs), capture.topLevel, o.layerMode);
-  const Extent extent = inspect(drawing.layers, o.maxCoordinateMm);
-  if (!extent.problem.empty()) return failure(ImportStatus::AbsurdCoordinates, source, extent.problem);
+  Extent extent = inspect(drawing.layers, o.maxCoordinateMm);
+  if (!extent.problem.empty()) return failure(ImportStatus::AbsurdCoordinates, source, std::move(extent.problem));
   const PageSetup& page = capture.page;
   drawing.widthMm = page.widthMm > 0.0 ? page.widthMm : extent.maxX;
   drawing.heightMm = page.heightMm > 0.0 ? page.heightMm : extent.maxY;
@@ -266,13 +270,13 @@ ImportResult importSvgDataGeneral(const QByteArray& data, const QString& sourceN
 Capture captureSvgFile(const QString& path, const ImportOptions& options, const ProgressFn& progress,
                        const RunSink& sink) {
   QFile file(path);
-  if (!QFileInfo(path).isFile()) return failed(ImportStatus::FileError, path, "no such file");
+  if (!QFileInfo(path).isFile()) return failed(ImportStatus::FileError, path, FB_TR("ImportError", "no such file"));
   if (!file.open(QIODevice::ReadOnly))
-    return failed(ImportStatus::FileError, path, "cannot open: " + file.errorString().toStdString());
-  if (file.size() == 0) return failed(ImportStatus::FileError, path, "the file is empty");
+    return failed(ImportStatus::FileError, path, FB_TR("ImportError", "cannot open: %1").arg(file.errorString().toStdString()));
+  if (file.size() == 0) return failed(ImportStatus::FileError, path, FB_TR("ImportError", "the file is empty"));
   const QByteArray data = file.readAll();
   if (file.error() != QFileDevice::NoError)
-    return failed(ImportStatus::FileError, path, "cannot read: " + file.errorString().toStdString());
+    return failed(ImportStatus::FileError, path, FB_TR("ImportError", "cannot read: %1").arg(file.errorString().toStdString()));
   return captureBytes(data, path, options, progress, true, sink);
 }
 

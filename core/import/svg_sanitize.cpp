@@ -59,9 +59,10 @@ bool styleSheetSelectsRect(const QByteArray& document) {
 
 }  // namespace
 
-std::string Sanitizer::where() const {
-  return "line " + std::to_string(reader_.lineNumber()) + ": <" +
-         reader_.name().toString().toStdString() + ">";
+Message Sanitizer::where() const {
+  return FB_TR("ImportError", "line %1: <%2>")
+      .arg(static_cast<long long>(reader_.lineNumber()))
+      .arg(reader_.name().toString().toStdString());
 }
 
 void Sanitizer::warn(Message what) {
@@ -81,10 +82,10 @@ void Sanitizer::warnAt(const QXmlStreamAttributes& attributes, Message what) {
                          .arg(static_cast<long long>(reader_.lineNumber())).arg(element).arg(std::move(what)));
 }
 
-void Sanitizer::fail(ImportStatus status, const std::string& message) {
+void Sanitizer::fail(ImportStatus status, Message message) {
   if (result_.status == ImportStatus::Ok) {
     result_.status = status;
-    result_.error = message;
+    result_.error = std::move(message);
   }
 }
 
@@ -96,7 +97,7 @@ SanitizeResult Sanitizer::run() {
     const QXmlStreamReader::TokenType token = reader_.readNext();
     if (progress_ && (++tokens & 4095) == 0 &&
         !progress_(static_cast<double>(input_.pos()) / static_cast<double>(total))) {
-      fail(ImportStatus::Cancelled, "import cancelled");
+      fail(ImportStatus::Cancelled, FB_TR("ImportError", "import cancelled"));
       break;
     }
     switch (token) {
@@ -118,12 +119,13 @@ SanitizeResult Sanitizer::run() {
     }
   }
   if (reader_.hasError() && result_.status == ImportStatus::Ok) {
-    fail(ImportStatus::MalformedXml, "line " + std::to_string(reader_.lineNumber()) +
-                                         ", column " + std::to_string(reader_.columnNumber()) +
-                                         ": " + reader_.errorString().toStdString());
+    fail(ImportStatus::MalformedXml, FB_TR("ImportError", "line %1, column %2: %3")
+                                         .arg(static_cast<long long>(reader_.lineNumber()))
+                                         .arg(static_cast<long long>(reader_.columnNumber()))
+                                         .arg(reader_.errorString().toStdString()));
   }
   if (result_.status == ImportStatus::Ok && !sawRoot_)
-    fail(ImportStatus::InvalidDocument, "no <svg> element found");
+    fail(ImportStatus::InvalidDocument, FB_TR("ImportError", "no <svg> element found"));
   writer_.writeEndDocument();
   result_.warnings = std::move(located_);
   for (auto& [text, repeated] : warnings_) {
@@ -153,9 +155,11 @@ bool Sanitizer::checkNumbers(QStringView tag, const QXmlStreamAttributes& attrib
     if (const std::string bad = describeNonFiniteNumber(a.value()); !bad.empty()) {
       const QString id = attributes.value(QStringLiteral("id")).toString();
       fail(ImportStatus::InvalidNumber,
-           "line " + std::to_string(reader_.lineNumber()) + ": <" + tag.toString().toStdString() +
-               (id.isEmpty() ? "" : " id=\"" + id.toStdString() + "\"") + "> attribute " +
-               a.name().toString().toStdString() + " contains " + bad);
+           FB_TR("ImportError", "line %1: <%2> attribute %3 contains %4")
+               .arg(static_cast<long long>(reader_.lineNumber()))
+               .arg(tag.toString().toStdString() + (id.isEmpty() ? "" : " id=\"" + id.toStdString() + "\""))
+               .arg(a.name().toString().toStdString())
+               .arg(bad));
       return false;
     }
   }
@@ -346,8 +350,8 @@ void Sanitizer::startElement() {
   if (skipDepth_ > 0) return;
   const QString tag = reader_.name().toString();
   if (depth_ > kMaxDepth) {
-    fail(ImportStatus::InvalidDocument, where() + " nesting deeper than " +
-                                            std::to_string(kMaxDepth) + " elements");
+    fail(ImportStatus::InvalidDocument,
+         FB_TR("ImportError", "%1: nesting deeper than %2 elements").arg(where()).arg(kMaxDepth));
     return;
   }
   if (isDropped(tag)) {
@@ -357,7 +361,7 @@ void Sanitizer::startElement() {
   }
   if (depth_ == 1) {
     if (tag != u"svg") {
-      fail(ImportStatus::InvalidDocument, where() + " the root element is not <svg>");
+      fail(ImportStatus::InvalidDocument, FB_TR("ImportError", "%1: the root element is not <svg>").arg(where()));
       return;
     }
     sawRoot_ = true;

@@ -37,7 +37,7 @@ struct TopLevelElement {
 
 struct SanitizeResult {
   ImportStatus status = ImportStatus::Ok;
-  std::string error;  // without the file name; starts with "line N:" when the line is known
+  Message error;  // without the file name; starts with "line N:" when the line is known
   QString svg;        // the rewritten document (no encoding declaration: already decoded)
   RootAttributes root;
   std::vector<TopLevelElement> topLevel;  // sentinel colour k + 1 marks element k

@@ -142,17 +142,17 @@ namespace {
 // One side of the viewport: mm when given in absolute units, nullopt when missing or percent.
 // Sets error for unparsable, zero or negative values.
 std::optional<double> sideMm(bool present, const QString& text, const char* name, double dpi,
-                             std::string& error) {
+                             Message& error) {
   if (!present) return std::nullopt;
   const std::optional<Length> length = parseLength(text);
   if (!length) {
-    error = std::string("root <svg> ") + name + "=\"" + text.toStdString() +
-            "\" is not a length";
+    error = FB_TR("ImportError", "root <svg> %1=\"%2\" is not a length").arg(name).arg(text.toStdString());
     return std::nullopt;
   }
   if (length->value <= 0.0) {
-    error = std::string("root <svg> ") + name + "=\"" + text.toStdString() +
-            "\" is zero or negative: nothing to draw";
+    error = FB_TR("ImportError", "root <svg> %1=\"%2\" is zero or negative: nothing to draw")
+                .arg(name)
+                .arg(text.toStdString());
     return std::nullopt;
   }
   return lengthToMm(*length, dpi);
@@ -160,8 +160,8 @@ std::optional<double> sideMm(bool present, const QString& text, const char* name
 
 }  // namespace
 
-std::string computePage(const RootAttributes& root, double dpi, PageSetup& page) {
-  std::string error;
+Message computePage(const RootAttributes& root, double dpi, PageSetup& page) {
+  Message error;
   std::optional<double> w = sideMm(root.hasWidth, root.width, "width", dpi, error);
   if (!error.empty()) return error;
   std::optional<double> h = sideMm(root.hasHeight, root.height, "height", dpi, error);
@@ -170,7 +170,7 @@ std::string computePage(const RootAttributes& root, double dpi, PageSetup& page)
   if (root.hasViewBox) {
     const std::string problem = viewBoxProblem(root.viewBox);
     if (!problem.empty())
-      return "root <svg> viewBox=\"" + root.viewBox.toStdString() + "\": " + problem;
+      return FB_TR("ImportError", "root <svg> viewBox=\"%1\": %2").arg(root.viewBox.toStdString()).arg(problem);
     vb = parseViewBox(root.viewBox);
   }
   const double mmPerUser = 25.4 / dpi;

@@ -10,6 +10,8 @@
 #include <optional>
 #include <string>
 
+#include "core/support/message.hpp"
+
 namespace fivebar::svg {
 
 enum class LengthUnit { None, Px, Mm, Cm, In, Pt, Pc, Em, Ex, Percent };
@@ -67,7 +69,7 @@ struct PageSetup {
 
 // Derives the page from the root attributes; returns an error text (empty when fine) for
 // zero/negative sizes or an unusable viewBox.
-std::string computePage(const RootAttributes& root, double dpi, PageSetup& page);
+Message computePage(const RootAttributes& root, double dpi, PageSetup& page);
 
 // Where a viewBox of size (vbWidth x vbHeight) lands inside a viewport, per preserveAspectRatio.
 QRectF placeViewBox(const QRectF& viewBox, const QRectF& viewport, const AspectRatio& ratio);

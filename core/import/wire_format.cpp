@@ -10,8 +10,8 @@
 namespace fivebar::svg {
 namespace {
 
-constexpr std::string_view kMagic = "FBSVG1\n";
-constexpr std::string_view kStreamMagic = "FBSVG2\n";
+constexpr std::string_view kMagic = "FBSVG3\n";
+constexpr std::string_view kStreamMagic = "FBSVG4\n";
 constexpr std::uint8_t kRunsRecord = 'C';
 constexpr std::uint8_t kRestartRecord = 'R';
 constexpr std::uint8_t kFinalRecord = 'F';
@@ -103,7 +103,7 @@ void writeMessages(const std::vector<Message>& messages, Writer& w) {
 void encode(const ImportResult& result, Writer& w) {
   w.bytes(kMagic);
   w.raw(static_cast<std::uint32_t>(result.status));
-  w.text(result.message);
+  writeMessage(result.message, w);
   writeMessages(result.warnings, w);
   const Drawing& d = result.drawing;
   w.raw(d.widthMm);
@@ -266,7 +266,7 @@ QByteArray encodeResult(const ImportResult& result) {
       bytes += 5 + 16 * static_cast<qsizetype>(line.points.size());
   }
   for (const Message& w : result.warnings) bytes += 16 + static_cast<qsizetype>(w.templ().size());
-  out.reserve(bytes + static_cast<qsizetype>(result.message.size() + result.drawing.source.size()));
+  out.reserve(bytes + static_cast<qsizetype>(result.message.templ().size() + result.drawing.source.size()));
   Writer w(out);
   encode(result, w);
   return out;
@@ -275,7 +275,7 @@ QByteArray encodeResult(const ImportResult& result) {
 bool decodeResult(ByteSource& source, ImportResult& result) {
   Reader r(source);
   std::uint32_t status = 0, layers = 0;
-  if (!r.literal(kMagic) || !r.raw(status) || !r.text(result.message) ||
+  if (!r.literal(kMagic) || !r.raw(status) || !readMessage(r, result.message) ||
       !readMessages(r, result.warnings))
     return false;
   if (status > static_cast<std::uint32_t>(ImportStatus::TooManyPoints)) return false;
@@ -328,7 +328,7 @@ bool CaptureStreamWriter::finish(const Capture& c, const std::vector<std::string
   runs(c.runs);
   w.raw(kFinalRecord);
   w.raw(static_cast<std::uint32_t>(c.status));
-  w.text(c.message);
+  writeMessage(c.message, w);
   writeMessages(c.warnings, w);
   writeTexts(qtMessages, w);
   w.raw(static_cast<std::uint8_t>(c.page.sizeKnown ? 1 : 0));
@@ -353,7 +353,7 @@ bool readFinal(Reader& r, StreamedCapture& out) {
   std::uint32_t status = 0, elements = 0;
   std::uint8_t sizeKnown = 0;
   if (!r.raw(status) || status > static_cast<std::uint32_t>(ImportStatus::TooManyPoints) ||
-      !r.text(c.message) || !readMessages(r, c.warnings) || !readTexts(r, out.qtMessages) ||
+      !readMessage(r, c.message) || !readMessages(r, c.warnings) || !readTexts(r, out.qtMessages) ||
       !r.raw(sizeKnown) || !r.raw(c.page.widthMm) || !r.raw(c.page.heightMm) || !r.count(elements))
     return false;
   c.status = static_cast<ImportStatus>(status);

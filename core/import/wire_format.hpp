@@ -1,6 +1,6 @@
 // Binary forms between fivebar-svg-worker and importSvgFile (little-endian).
 // An ImportResult (tools and tests):
-//   magic "FBSVG1\n", u32 status, str message, u32 n + n msg warnings,
+//   magic "FBSVG3\n", u32 status, msg message, u32 n + n msg warnings,
 //   f64 widthMm, f64 heightMm, str source, u32 layers, per layer:
 //     str id, str name, u32 rgb, u8 visible, u32 paths, per path: u8 closed, u32 n, n x (f64 x, f64 y)
 //   str = u32 byte length + UTF-8 bytes; msg = str context, str template, u32 n args, per arg
@@ -37,10 +37,10 @@ bool decodeResult(ByteSource& source, ImportResult& result);
 bool decodeResult(const QByteArray& bytes, ImportResult& result);
 
 // The worker's stream (what importSvgFile reads; ImportResult above is for tools and tests):
-//   magic "FBSVG2\n", then records, each starting with one byte:
+//   magic "FBSVG4\n", then records, each starting with one byte:
 //   'C' runs: u32 n, per run: i32 topIndex, u32 rgb, u32 paths, per path as above
 //   'R' restart: forget the runs received so far (the direct reader declined late)
-//   'F' final: u32 status, str message, u32 n + n msg warnings, u32 n + n str Qt messages,
+//   'F' final: u32 status, msg message, u32 n + n msg warnings, u32 n + n str Qt messages,
 //       u8 sizeKnown, f64 widthMm, f64 heightMm, u32 n + per top-level element:
 //       str tag, str id, str label, u8 inkscapeLayer; then "END\n".
 // The caller turns it into the ImportResult with finishImport (import_pipeline.hpp), then

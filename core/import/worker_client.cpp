@@ -39,10 +39,10 @@ qint64 svgzAnnouncedSize(const QString& path) {
 const char kWorkerName[] = "fivebar-svg-worker";
 constexpr int kPipeBytes = 1 << 20;  // result pipe capacity asked for (Linux default max)
 
-ImportResult failure(ImportStatus status, const QString& path, const std::string& message) {
+ImportResult failure(ImportStatus status, const QString& path, Message message) {
   ImportResult r;
   r.status = status;
-  r.message = path.toStdString() + ": " + message;
+  r.message = FB_TR("ImportError", "%1: %2").arg(path.toStdString()).arg(std::move(message));
   return r;
 }
 
@@ -74,7 +74,6 @@ void readErrorChannel(QProcess& process, QByteArray& pending, QByteArray& diagno
   }
 }
 
-std::string seconds(double s) { return QString::number(s, 'f', 1).toStdString() + " s"; }
 
 }  // namespace
 
@@ -243,17 +242,17 @@ ImportResult importSvgFile(const QString& path, const ImportOptions& options,
                            const ProgressFn& progress) {
   if (options.isolation == Isolation::InProcess) return importSvgInProcess(path, options, progress);
   const QFileInfo info(path);
-  if (!info.isFile()) return failure(ImportStatus::FileError, path, "no such file");
-  if (!info.isReadable()) return failure(ImportStatus::FileError, path, "not readable");
+  if (!info.isFile()) return failure(ImportStatus::FileError, path, FB_TR("ImportError", "no such file"));
+  if (!info.isReadable()) return failure(ImportStatus::FileError, path, FB_TR("ImportError", "not readable"));
   const QString worker = findSvgWorker(options);
   if (worker.isEmpty())
     return failure(ImportStatus::WorkerNotFound, path,
-                   "the SVG worker (fivebar-svg-worker) was not found; set ImportOptions::workerPath "
-                   "or FIVEBAR_SVG_WORKER, or install it next to the program");
+                   FB_TR("ImportError", "the SVG worker (fivebar-svg-worker) was not found; set ImportOptions::workerPath "
+                                        "or FIVEBAR_SVG_WORKER, or install it next to the program"));
   int readFd = -1, writeFd = -1;
   if (!makeResultPipe(readFd, writeFd))
     return failure(ImportStatus::WorkerNotFound, path,
-                   std::string("could not create a pipe for the SVG worker: ") + std::strerror(errno));
+                   FB_TR("ImportError", "could not create a pipe for the SVG worker: %1").arg(std::strerror(errno)));
   QProcess process;
   prepareWorker(process, worker, path, options, writeFd);
   process.start(QIODevice::ReadOnly);
@@ -266,8 +265,9 @@ ImportResult importSvgFile(const QString& path, const ImportOptions& options,
   ResultPipe pipe(readFd, process, options, deadline, progress);
   if (!started)
     return failure(ImportStatus::WorkerNotFound, path,
-                   "could not start the SVG worker " + worker.toStdString() + ": " +
-                       process.errorString().toStdString());
+                   FB_TR("ImportError", "could not start the SVG worker %1: %2")
+                       .arg(worker.toStdString())
+                       .arg(process.errorString().toStdString()));
 
   StreamedCapture streamed;
   const bool decoded = decodeCaptureStream(pipe, streamed);  // while the worker still writes
@@ -276,20 +276,22 @@ ImportResult importSvgFile(const QString& path, const ImportOptions& options,
     process.kill();
     process.waitForFinished(5000);
     if (pipe.stop() == ResultPipe::Stop::Cancelled)
-      return failure(ImportStatus::Cancelled, path, "import cancelled");
+      return failure(ImportStatus::Cancelled, path, FB_TR("ImportError", "import cancelled"));
     return failure(ImportStatus::WorkerTimeout, path,
-                   "the SVG parser did not finish within " + seconds(limitS) +
-                       " and was stopped (the file is too complex or makes Qt SVG hang)");
+                   FB_TR("ImportError", "the SVG parser did not finish within %1 s and was stopped (the file is too "
+                                        "complex or makes Qt SVG hang)")
+                       .arg(limitS, 1));
   }
   if (process.exitStatus() == QProcess::CrashExit)
     return failure(ImportStatus::WorkerCrashed, path,
-                   "the SVG parser crashed on this file (it is hostile or corrupt, or needed more "
-                   "than the " + std::to_string(options.memoryLimitBytes >> 20) + " MB memory limit)");
+                   FB_TR("ImportError", "the SVG parser crashed on this file (it is hostile or corrupt, or needed more "
+                                        "than the %1 MB memory limit)")
+                       .arg(static_cast<long long>(options.memoryLimitBytes >> 20)));
   if (process.exitCode() != 0 || !decoded)
     return failure(ImportStatus::WorkerCrashed, path,
-                   "the SVG worker ended without a readable result (exit code " +
-                       std::to_string(process.exitCode()) + "): " +
-                       pipe.diagnostics().trimmed().toStdString());
+                   FB_TR("ImportError", "the SVG worker ended without a readable result (exit code %1): %2")
+                       .arg(process.exitCode())
+                       .arg(pipe.diagnostics().trimmed().toStdString()));
   ImportResult result = finishImport(std::move(streamed.capture), path, options, progress);
   if (result.ok())
     for (std::string& m : streamed.qtMessages) result.warnings.push_back(std::move(m));

@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> qtWarnings;
   if (capture.status == fivebar::svg::ImportStatus::Ok) qtWarnings = qtMessages();
   else if (capture.status == fivebar::svg::ImportStatus::RenderFailed && !qtMessages().empty())
-    capture.message += " (" + qtMessages().front() + ")";
+    capture.message = FB_TR("ImportError", "%1 (%2)").arg(std::move(capture.message)).arg(qtMessages().front());
   if (!stream.finish(capture, qtWarnings)) {
     std::fprintf(stderr, "fivebar-svg-worker: cannot write the result: %s\n", std::strerror(errno));
     return 3;

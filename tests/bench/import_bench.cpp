@@ -131,7 +131,7 @@ void runAgainstBaseline(benchmark::State& state, const QByteArray& svg, Fn&& imp
     const fivebar::svg::ImportResult r = importOnce();
     total += cpuSeconds() - start;
     if (!r.ok()) {
-      state.SkipWithError(r.message.c_str());
+      state.SkipWithError(r.message.text().c_str());
       return;
     }
     points = 0;
@@ -207,7 +207,7 @@ void BM_ImportPlotter10MbWorker(benchmark::State& state) {
     cpu += cpuSeconds() - cpuStart;
     total += seconds;
     best = std::min(best, seconds);
-    if (!r.ok()) return state.SkipWithError(r.message.c_str());
+    if (!r.ok()) return state.SkipWithError(r.message.text().c_str());
     points = 0;
     for (const auto& layer : r.drawing.layers)
       for (const auto& line : layer.paths) points += static_cast<long long>(line.points.size());

@@ -48,8 +48,8 @@ void expectSane(const ImportResult& r, const std::string& file) {
 
 // A refusal a user would accept: names the file and says what is wrong.
 void expectClearRefusal(const ImportResult& r, const std::string& file) {
-  EXPECT_NE(r.message.find(file), std::string::npos) << r.message;
-  EXPECT_GT(r.message.size(), file.size() + 10) << r.message;
+  EXPECT_NE(r.message.text().find(file), std::string::npos) << r.message;
+  EXPECT_GT(r.message.text().size(), file.size() + 10) << r.message;
   std::cout << "REFUSED " << file << " [" << toString(r.status) << "]: " << r.message << '\n';
 }
 

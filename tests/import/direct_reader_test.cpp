@@ -26,7 +26,7 @@ constexpr double kSamePointMm = 1e-9;
 // Explains the first difference between two results; empty when they are the same.
 std::string difference(const ImportResult& a, const ImportResult& b) {
   if (a.status != b.status) return std::string("status ") + toString(a.status) + " vs " + toString(b.status);
-  if (a.message != b.message) return "message [" + a.message + "] vs [" + b.message + "]";
+  if (a.message.text() != b.message.text()) return "message [" + a.message.text() + "] vs [" + b.message.text() + "]";
   if (a.warnings != b.warnings) return "warnings differ";
   const Drawing &da = a.drawing, &db = b.drawing;
   if (da.widthMm != db.widthMm || da.heightMm != db.heightMm) return "page size differs";

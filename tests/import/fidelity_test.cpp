@@ -214,10 +214,10 @@ TEST(Messages, NumbersTooLargeAreNamedAsSuch) {
   const ImportResult big = importText(
       "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 9E80 7\"><path d=\"M0 0 L1 1\" stroke=\"black\"/></svg>");
   EXPECT_EQ(big.status, ImportStatus::InvalidDocument);
-  EXPECT_NE(big.message.find("a number too large (9E80"), std::string::npos) << big.message;
+  EXPECT_NE(big.message.text().find("a number too large (9E80"), std::string::npos) << big.message;
   const ImportResult huge = importText(page("\n<path id=\"p\" d=\"M0 0 L 1e308 5\" stroke=\"black\"/>"));
   EXPECT_EQ(huge.status, ImportStatus::InvalidNumber);
-  EXPECT_NE(huge.message.find("line 2: <path id=\"p\"> attribute d contains a number beyond 1e300 (1e308)"),
+  EXPECT_NE(huge.message.text().find("line 2: <path id=\"p\"> attribute d contains a number beyond 1e300 (1e308)"),
             std::string::npos)
       << huge.message;
 }
@@ -267,7 +267,7 @@ TEST(Svgz, DecompressedSizeIsBoundedAndCorruptDataIsNamed) {
   QByteArray broken = bomb.left(bomb.size() / 2);
   const ImportResult r = importSvgData(broken, QStringLiteral("broken.svgz"));
   EXPECT_EQ(r.status, ImportStatus::FileError);
-  EXPECT_NE(r.message.find("broken.svgz: compressed SVG (gzip): the gzip data ends early"),
+  EXPECT_NE(r.message.text().find("broken.svgz: compressed SVG (gzip): the gzip data ends early"),
             std::string::npos)
       << r.message;
 }

@@ -73,8 +73,8 @@ TEST_F(Isolation, CrashingWorkerEndsInAClearErrorNamingTheFile) {
   const QString file = svgFile();
   const ImportResult r = importSvgFile(file, withFakeWorker("kill -SEGV $$"));
   EXPECT_EQ(r.status, ImportStatus::WorkerCrashed);
-  EXPECT_NE(r.message.find(file.toStdString()), std::string::npos) << r.message;
-  EXPECT_NE(r.message.find("crashed"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.text().find(file.toStdString()), std::string::npos) << r.message;
+  EXPECT_NE(r.message.text().find("crashed"), std::string::npos) << r.message;
 }
 
 TEST_F(Isolation, HangingWorkerIsStoppedAtTheTimeout) {
@@ -85,7 +85,7 @@ TEST_F(Isolation, HangingWorkerIsStoppedAtTheTimeout) {
   const ImportResult r = importSvgFile(svgFile(), o);
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_EQ(r.status, ImportStatus::WorkerTimeout);
-  EXPECT_NE(r.message.find("did not finish within 0.5 s"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.text().find("did not finish within 0.5 s"), std::string::npos) << r.message;
   EXPECT_LT(elapsed, 5.0);
 }
 
@@ -142,16 +142,16 @@ TEST_F(Isolation, BigFileReportsRisingProgressAndCanBeCancelledMidway) {
 TEST_F(Isolation, GarbageOutputAndMissingPiecesAreReported) {
   const ImportResult garbage = importSvgFile(svgFile(), withFakeWorker("echo hello; echo oops >&2"));
   EXPECT_EQ(garbage.status, ImportStatus::WorkerCrashed);
-  EXPECT_NE(garbage.message.find("without a readable result"), std::string::npos) << garbage.message;
-  EXPECT_NE(garbage.message.find("oops"), std::string::npos) << garbage.message;
+  EXPECT_NE(garbage.message.text().find("without a readable result"), std::string::npos) << garbage.message;
+  EXPECT_NE(garbage.message.text().find("oops"), std::string::npos) << garbage.message;
   ImportOptions nowhere;
   nowhere.workerPath = dir.filePath(QStringLiteral("no-such-worker"));
   const ImportResult missing = importSvgFile(svgFile(), nowhere);
   EXPECT_EQ(missing.status, ImportStatus::WorkerNotFound);
-  EXPECT_NE(missing.message.find("FIVEBAR_SVG_WORKER"), std::string::npos) << missing.message;
+  EXPECT_NE(missing.message.text().find("FIVEBAR_SVG_WORKER"), std::string::npos) << missing.message;
   const ImportResult noFile = importSvgFile(dir.filePath(QStringLiteral("absent.svg")));
   EXPECT_EQ(noFile.status, ImportStatus::FileError);
-  EXPECT_NE(noFile.message.find("absent.svg: no such file"), std::string::npos) << noFile.message;
+  EXPECT_NE(noFile.message.text().find("absent.svg: no such file"), std::string::npos) << noFile.message;
 }
 
 }  // namespace

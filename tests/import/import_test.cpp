@@ -156,7 +156,7 @@ TEST(ImportHostile, ThePointsBudgetStopsTheImportEarly) {
   for (const std::string& extra : {std::string(), std::string("<rect width=\"5\" height=\"5\" stroke=\"#000\"/>")}) {
     const ImportResult stopped = importText(page(many + extra), o);
     EXPECT_EQ(stopped.status, ImportStatus::TooManyPoints);
-    EXPECT_NE(stopped.message.find("more than 500 points after flattening (the points budget)"),
+    EXPECT_NE(stopped.message.text().find("more than 500 points after flattening (the points budget)"),
               std::string::npos) << stopped.message;
     o.maxPoints = 900;  // 800 points + the rectangle's 4
     EXPECT_TRUE(importText(page(many + extra), o).ok());
@@ -284,33 +284,33 @@ TEST(ImportHostile, PathWithMoreThan32767ElementsImportsWhole) {
 TEST(ImportHostile, NaNAndOverflowAreRefusedWithElementAndLine) {
   const ImportResult nan = importText(page("\n<path id=\"bad\" d=\"M0 0 L NaN 5\"/>"));
   EXPECT_EQ(nan.status, ImportStatus::InvalidNumber);
-  EXPECT_NE(nan.message.find("test.svg"), std::string::npos) << nan.message;
-  EXPECT_NE(nan.message.find("line 2"), std::string::npos) << nan.message;
-  EXPECT_NE(nan.message.find("<path id=\"bad\">"), std::string::npos) << nan.message;
-  EXPECT_NE(nan.message.find("NaN"), std::string::npos) << nan.message;
+  EXPECT_NE(nan.message.text().find("test.svg"), std::string::npos) << nan.message;
+  EXPECT_NE(nan.message.text().find("line 2"), std::string::npos) << nan.message;
+  EXPECT_NE(nan.message.text().find("<path id=\"bad\">"), std::string::npos) << nan.message;
+  EXPECT_NE(nan.message.text().find("NaN"), std::string::npos) << nan.message;
   const ImportResult inf = importText(page("<circle cx=\"1e999\" cy=\"1\" r=\"1\"/>"));
   EXPECT_EQ(inf.status, ImportStatus::InvalidNumber);
-  EXPECT_NE(inf.message.find("attribute cx"), std::string::npos) << inf.message;
+  EXPECT_NE(inf.message.text().find("attribute cx"), std::string::npos) << inf.message;
 }
 
 TEST(ImportHostile, AbsurdCoordinatesAreRefused) {
   const ImportResult r = importText(page(std::string("<path d=\"M0 0 L3e9 0\"") + kStroke + "/>"));
   EXPECT_EQ(r.status, ImportStatus::AbsurdCoordinates);
-  EXPECT_NE(r.message.find("beyond"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.text().find("beyond"), std::string::npos) << r.message;
 }
 
 TEST(ImportErrors, MalformedXmlWrongRootAndBadOptionsNameTheProblem) {
   const ImportResult xml = importText("<svg xmlns=\"http://www.w3.org/2000/svg\">\n<path></svg>");
   EXPECT_EQ(xml.status, ImportStatus::MalformedXml);
-  EXPECT_NE(xml.message.find("line 2"), std::string::npos) << xml.message;
+  EXPECT_NE(xml.message.text().find("line 2"), std::string::npos) << xml.message;
   const ImportResult root = importText("<html><body/></html>");
   EXPECT_EQ(root.status, ImportStatus::InvalidDocument);
-  EXPECT_NE(root.message.find("not <svg>"), std::string::npos) << root.message;
+  EXPECT_NE(root.message.text().find("not <svg>"), std::string::npos) << root.message;
   ImportOptions bad;
   bad.toleranceMm = 0.0;
   const ImportResult options = importText(page(""), bad);
   EXPECT_EQ(options.status, ImportStatus::InvalidOptions);
-  EXPECT_NE(options.message.find("toleranceMm"), std::string::npos) << options.message;
+  EXPECT_NE(options.message.text().find("toleranceMm"), std::string::npos) << options.message;
 }
 
 TEST(ImportProgress, ReportsRisingFractionsToOneAndHonoursCancel) {

@@ -76,12 +76,12 @@ TEST(Units, ZeroOrNegativeSizeIsRefusedWithTheAttribute) {
   root.hasHeight = true;
   root.height = QStringLiteral("10");
   PageSetup page;
-  const std::string error = computePage(root, 96.0, page);
+  const std::string error = computePage(root, 96.0, page).text();
   EXPECT_NE(error.find("width=\"0\""), std::string::npos) << error;
   root.width = QStringLiteral("10");
   root.hasViewBox = true;
   root.viewBox = QStringLiteral("0 0 -5 10");
-  EXPECT_NE(computePage(root, 96.0, page).find("viewBox"), std::string::npos);
+  EXPECT_NE(computePage(root, 96.0, page).text().find("viewBox"), std::string::npos);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include <QListWidget>
 #include <QMenu>
 #include <QRegularExpression>
+#include <QTemporaryDir>
 #include <QTranslator>
 #include <QXmlStreamReader>
 #include <algorithm>
@@ -249,6 +250,31 @@ TEST(Translations, ProfileProblemsAreShownInFrench) {
   QCoreApplication::removeTranslator(&translator);
   EXPECT_EQ(type, QStringLiteral("schema doit être une chaîne, et non un nombre")) << type.toStdString();
   EXPECT_TRUE(json.startsWith(QStringLiteral("p.json:2:13 : JSON invalide : "))) << json.toStdString();
+}
+
+// An SVG that cannot be imported is refused in the user's language (the file, line and element
+// kept as they are), through the worker process as in the studio; the CLI's text stays English.
+TEST(Translations, ImportErrorsAreShownInSpanish) {
+  QTemporaryDir dir;
+  ASSERT_TRUE(dir.isValid());
+  const QString path = dir.filePath(QStringLiteral("roto.svg"));
+  QFile file(path);
+  ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+  file.write("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"10mm\" height=\"10mm\">\n"
+             "<circle id=\"p\" cx=\"NaN\" cy=\"5\" r=\"2\"/>\n</svg>\n");
+  file.close();
+  const fivebar::svg::ImportResult r = fivebar::svg::importSvgFile(path);
+  ASSERT_FALSE(r.ok());
+  QTranslator translator;
+  ASSERT_TRUE(translator.load(QStringLiteral(":/i18n/fivebar_es.qm")));
+  ASSERT_TRUE(QCoreApplication::installTranslator(&translator));
+  const QString shown = fivebar::widgets::translated(r.message);
+  QCoreApplication::removeTranslator(&translator);
+  const std::string english = r.message.text();
+  EXPECT_NE(english.find("line 2: <circle id=\"p\"> attribute cx contains"), std::string::npos) << english;
+  EXPECT_TRUE(shown.startsWith(path + QStringLiteral(": "))) << shown.toStdString();
+  EXPECT_TRUE(shown.contains(QStringLiteral("línea 2: <circle id=\"p\"> atributo cx"))) << shown.toStdString();
+  EXPECT_FALSE(shown.contains(QStringLiteral("line 2"))) << shown.toStdString();
 }
 
 // The fixes of a pre-flight problem name the studio's controls in every language: no

@@ -39,14 +39,11 @@ std::optional<Drawing> importSvgText(const DrawingSource& source, double toleran
   options.maxPoints = source.maxPoints;
   svg::ImportResult r = svg::importSvgFile(file.fileName(), options);
   if (!r.ok()) {
-    std::string message = r.message;
-    // Name the drawing, not the temporary copy.
-    const std::string temp = file.fileName().toStdString();
-    for (std::size_t at = message.find(temp); at != std::string::npos; at = message.find(temp))
-      message.replace(at, temp.size(), source.name.toStdString());
-    error = message.empty()
+    // In the user's language, naming the drawing, not the temporary copy.
+    const QString message = translated(r.message).replace(file.fileName(), source.name);
+    error = message.isEmpty()
                 ? trSource(QT_TRANSLATE_NOOP("JobPipeline", "%1: cannot be imported")).arg(source.name).toStdString()
-                : message;
+                : message.toStdString();
     return std::nullopt;
   }
   if (warnings) warnings->insert(warnings->end(), r.warnings.begin(), r.warnings.end());
