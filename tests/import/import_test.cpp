@@ -140,6 +140,7 @@ TEST(ImportTolerance, CurvesAreMarkedFlattenedStraightLinesAreNot) {
     EXPECT_FALSE(paths[3].flattened);  // line
     if (!extra.empty()) {
       EXPECT_TRUE(paths[4].flattened);  // circle
+    }
   }
 }
 
@@ -147,7 +148,6 @@ TEST(ImportTolerance, CurvesAreMarkedFlattenedStraightLinesAreNot) {
 // path alike), naming the budget.
 TEST(ImportHostile, ThePointsBudgetStopsTheImportEarly) {
   std::string many;
-    }
   for (int i = 0; i < 400; ++i)
     many += "<path d=\"M0 " + std::to_string(i % 50) + " L100 " + std::to_string(i % 50) +
             "\" stroke=\"#000\"/>";
