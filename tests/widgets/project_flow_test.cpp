@@ -185,6 +185,29 @@ TEST(ProjectFlow, SavedProjectsAreRecentAndReopenFromTheMenu) {
   EXPECT_DOUBLE_EQ(w.document().placement().scale, 1.0);
 }
 
+// Headless export of a job that cannot be drawn: exit status 1, the problems on stderr, no file.
+TEST(ProjectFlow, HeadlessExportOfAnInfeasibleProjectExitsOneWithTheProblems) {
+  QTemporaryDir dir;
+  const QString svg = writeA5(dir);
+  const QString project = dir.filePath(QStringLiteral("far.fivebar"));
+  {
+    studio::MainWindow w(makerPlotter());
+    ASSERT_TRUE(openAndPlan(w, svg));
+    Placement far = w.document().placement();
+    far.centerMm = Vec2(0.0, 2000.0);  // out of reach
+    w.document().setPlacement(far);
+    QString error;
+    ASSERT_TRUE(w.files().saveTo(project, &error)) << error.toStdString();
+  }
+  const QString out = dir.filePath(QStringLiteral("far.gcode"));
+  QString err;
+  EXPECT_EQ(runTool(QStringLiteral(FIVEBAR_STUDIO), {project, QStringLiteral("--export-gcode"), out}, &err), 1)
+      << err.toStdString();
+  EXPECT_FALSE(err.isEmpty());
+  EXPECT_TRUE(err.contains(QStringLiteral("layer"))) << err.toStdString();  // names the offending path
+  EXPECT_FALSE(QFileInfo::exists(out));
+}
+
 // A layer's fill set in the layers panel plans exactly as `fivebar plan --fill hatch` with the same
 // spacing, angle and crosshatch; it is saved in the project and comes back with it.
 TEST(ProjectFlow, LayerFillFromTheLayersPanelEqualsFivebarPlanFillAndIsSaved) {
