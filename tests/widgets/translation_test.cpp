@@ -92,7 +92,8 @@ std::set<QString> runtimeContexts() {
                         "fivebar::widgets::MachineDialogs", "fivebar::session::SettingsAdvice",
                         "CalibrationWizard",
                         // the core's messages (core/support/message.hpp, widgets::translated)
-                        "Placement", "Planner", "Preflight", "Safety"})
+                        "Placement", "Planner", "Preflight", "Safety", "CalibrationFit", "CalibrationPattern",
+                        "CalibrationScan"})
     names.insert(QString::fromLatin1(c));
   return names;
 }
