@@ -3062,6 +3062,54 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
         <source>&lt;br&gt;&lt;i&gt;Apply the calibration (step 5) to see the lines drawn after it.&lt;/i&gt;</source>
         <translation>&lt;br&gt;&lt;i&gt;Wenden Sie die Kalibrierung an (Schritt 5), um die danach gezeichneten Linien zu sehen.&lt;/i&gt;</translation>
     </message>
+    <message>
+        <source>Import scan...</source>
+        <translation>Scan importieren...</translation>
+    </message>
+    <message>
+        <source>A scan of the sheet with the accuracy lines (PNG or JPEG, taken straight from above): each line's length and straightness are measured in the image and fill the columns of the chosen sheet.</source>
+        <translation>Ein Scan des Blatts mit den Genauigkeitslinien (PNG oder JPEG, gerade von oben aufgenommen): Länge und Geradheit jeder Linie werden im Bild gemessen und füllen die Spalten des gewählten Blatts.</translation>
+    </message>
+    <message>
+        <source>Sheet drawn before calibration</source>
+        <translation>Blatt vor der Kalibrierung gezeichnet</translation>
+    </message>
+    <message>
+        <source>Sheet drawn after calibration</source>
+        <translation>Blatt nach der Kalibrierung gezeichnet</translation>
+    </message>
+    <message>
+        <source> dpi</source>
+        <translation> dpi</translation>
+    </message>
+    <message>
+        <source>The scanner's resolution: the scan's size in mm comes from it.</source>
+        <translation>Die Auflösung des Scanners: aus ihr ergibt sich die Größe des Scans in mm.</translation>
+    </message>
+    <message>
+        <source>Import a scan of the accuracy lines</source>
+        <translation>Einen Scan der Genauigkeitslinien importieren</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.tif *.tiff *.bmp)</source>
+        <translation>Bilder (*.png *.jpg *.jpeg *.tif *.tiff *.bmp)</translation>
+    </message>
+    <message>
+        <source>A line in the scan is too short to measure.</source>
+        <translation>Eine Linie im Scan ist zu kurz zum Messen.</translation>
+    </message>
+    <message>
+        <source>Found %1 lines in the scan (%2 mm pen): the %3 columns are filled.</source>
+        <translation>%1 Linien im Scan gefunden (Stift %2 mm): die Spalten „%3“ sind ausgefüllt.</translation>
+    </message>
+    <message>
+        <source>after</source>
+        <translation>nachher</translation>
+    </message>
+    <message>
+        <source>before</source>
+        <translation>vorher</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::calibration::ApplyPage</name>
@@ -4079,6 +4127,131 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
     <message>
         <source>machine: %1</source>
         <translation>Maschine: %1</translation>
+    </message>
+</context>
+<context>
+    <name>CalibrationFit</name>
+    <message>
+        <source>the measurements do not depend on %1 at all</source>
+        <translation>die Messungen hängen überhaupt nicht von %1 ab</translation>
+    </message>
+    <message>
+        <source>the fit is ill-conditioned (condition number %1 &gt; %2): the marks cannot separate %3; spread the marks over the whole working area</source>
+        <translation>die Anpassung ist schlecht konditioniert (Konditionszahl %1 &gt; %2): die Marken können %3 nicht unterscheiden; verteilen Sie die Marken über den ganzen Arbeitsbereich</translation>
+    </message>
+    <message>
+        <source>%1 distances are too few for %2 parameters: at least %3 distances are needed</source>
+        <translation>%1 Abstände sind zu wenige für %2 Parameter: mindestens %3 Abstände sind nötig</translation>
+    </message>
+    <message>
+        <source>%1 marks are too few for %2 parameters: at least %3 marks are needed</source>
+        <translation>%1 Marken sind zu wenige für %2 Parameter: mindestens %3 Marken sind nötig</translation>
+    </message>
+    <message>
+        <source>a mark's commanded angles do not close the nominal machine's loop</source>
+        <translation>die befohlenen Winkel einer Marke schließen die Kette der Nennmaschine nicht</translation>
+    </message>
+    <message>
+        <source>the fit did not converge within %1 evaluations (are the commanded angles and measurements of the same marks?)</source>
+        <translation>die Anpassung ist nach %1 Auswertungen nicht konvergiert (gehören die befohlenen Winkel und die Messungen zu denselben Marken?)</translation>
+    </message>
+    <message>
+        <source>the final fit did not converge within %1 evaluations</source>
+        <translation>die abschließende Anpassung ist nach %1 Auswertungen nicht konvergiert</translation>
+    </message>
+    <message>
+        <source>line %1: mark %2 is not in the marks file</source>
+        <translation>Zeile %1: Marke %2 steht nicht in der Markendatei</translation>
+    </message>
+</context>
+<context>
+    <name>CalibrationPattern</name>
+    <message>
+        <source>pattern options out of range</source>
+        <translation>Musteroptionen außerhalb des zulässigen Bereichs</translation>
+    </message>
+    <message>
+        <source>no point of the working area (mode %1) has room for a mark</source>
+        <translation>kein Punkt des Arbeitsbereichs (Modus %1) hat Platz für eine Marke</translation>
+    </message>
+    <message>
+        <source>only %1 marks fit %2 mm apart in the working area; at least %3 are needed</source>
+        <translation>nur %1 Marken passen im Abstand von %2 mm in den Arbeitsbereich; mindestens %3 sind nötig</translation>
+    </message>
+    <message>
+        <source>no drawing order keeps every move between marks under half a turn of a motor</source>
+        <translation>keine Zeichenreihenfolge hält jede Bewegung zwischen Marken unter einer halben Motorumdrehung</translation>
+    </message>
+    <message>
+        <source>approach of mark %1</source>
+        <translation>Anfahrt von Marke %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>CalibrationScan</name>
+    <message>
+        <source>the pattern has fewer than 3 marks</source>
+        <translation>das Muster hat weniger als 3 Marken</translation>
+    </message>
+    <message>
+        <source>found %1 marks, the pattern has %2</source>
+        <translation>%1 Marken gefunden, das Muster hat %2</translation>
+    </message>
+    <message>
+        <source>no two found marks are as far apart as the pattern's marks (is the dpi right?)</source>
+        <translation>keine zwei gefundenen Marken liegen so weit auseinander wie die Marken des Musters (stimmt die Auflösung?)</translation>
+    </message>
+    <message>
+        <source>only %1 of the pattern's %2 marks match the found ones (%3 found): not this pattern, or the dpi is wrong</source>
+        <translation>nur %1 der %2 Marken des Musters passen zu den gefundenen (%3 gefunden): nicht dieses Muster, oder die Auflösung ist falsch</translation>
+    </message>
+    <message>
+        <source>ambiguous: two placements of the sheet match %1 and %2 marks</source>
+        <translation>mehrdeutig: zwei Lagen des Blatts passen zu %1 und %2 Marken</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>the dpi must be a positive number</source>
+        <translation>die Auflösung (dpi) muss eine positive Zahl sein</translation>
+    </message>
+    <message>
+        <source>the image is empty</source>
+        <translation>das Bild ist leer</translation>
+    </message>
+    <message>
+        <source>the pattern has no marks</source>
+        <translation>das Muster hat keine Marken</translation>
+    </message>
+    <message>
+        <source>no ink found (the image has almost no contrast)</source>
+        <translation>keine Tinte gefunden (das Bild hat kaum Kontrast)</translation>
+    </message>
+    <message>
+        <source>no marks found at %1 dpi: the pattern's rings are %2 mm across (%3 px); the ring-like shapes in the image are about %4 px: is it scanned at about %5 dpi?</source>
+        <translation>keine Marken bei %1 dpi gefunden: die Ringe des Musters haben %2 mm Durchmesser (%3 px); die ringartigen Formen im Bild sind etwa %4 px groß: wurde mit etwa %5 dpi gescannt?</translation>
+    </message>
+    <message>
+        <source>no marks found at %1 dpi: the pattern's rings are %2 mm across (%3 px)</source>
+        <translation>keine Marken bei %1 dpi gefunden: die Ringe des Musters haben %2 mm Durchmesser (%3 px)</translation>
+    </message>
+    <message>
+        <source>cannot read the image (%1)</source>
+        <translation>das Bild kann nicht gelesen werden (%1)</translation>
+    </message>
+    <message>
+        <source>found %1 parallel lines of about %2 mm at %3 dpi, expected %4 (is the dpi right, and the whole pattern on the scan?)</source>
+        <translation>%1 parallele Linien von etwa %2 mm bei %3 dpi gefunden, erwartet %4 (stimmt die Auflösung, und ist das ganze Muster auf dem Scan?)</translation>
+    </message>
+    <message>
+        <source>the line near (%1, %2) mm has no clear ends</source>
+        <translation>die Linie bei (%1, %2) mm hat keine klaren Enden</translation>
     </message>
 </context>
 </TS>

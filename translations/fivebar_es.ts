@@ -3062,6 +3062,54 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
         <source>&lt;br&gt;&lt;i&gt;Apply the calibration (step 5) to see the lines drawn after it.&lt;/i&gt;</source>
         <translation>&lt;br&gt;&lt;i&gt;Aplique la calibración (paso 5) para ver las líneas dibujadas después.&lt;/i&gt;</translation>
     </message>
+    <message>
+        <source>Import scan...</source>
+        <translation>Importar escaneo...</translation>
+    </message>
+    <message>
+        <source>A scan of the sheet with the accuracy lines (PNG or JPEG, taken straight from above): each line's length and straightness are measured in the image and fill the columns of the chosen sheet.</source>
+        <translation>Un escaneo de la hoja con las líneas de precisión (PNG o JPEG, tomado de frente desde arriba): la longitud y la rectitud de cada línea se miden en la imagen y rellenan las columnas de la hoja elegida.</translation>
+    </message>
+    <message>
+        <source>Sheet drawn before calibration</source>
+        <translation>Hoja dibujada antes de la calibración</translation>
+    </message>
+    <message>
+        <source>Sheet drawn after calibration</source>
+        <translation>Hoja dibujada después de la calibración</translation>
+    </message>
+    <message>
+        <source> dpi</source>
+        <translation> dpi</translation>
+    </message>
+    <message>
+        <source>The scanner's resolution: the scan's size in mm comes from it.</source>
+        <translation>La resolución del escáner: de ella sale el tamaño del escaneo en mm.</translation>
+    </message>
+    <message>
+        <source>Import a scan of the accuracy lines</source>
+        <translation>Importar un escaneo de las líneas de precisión</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.tif *.tiff *.bmp)</source>
+        <translation>Imágenes (*.png *.jpg *.jpeg *.tif *.tiff *.bmp)</translation>
+    </message>
+    <message>
+        <source>A line in the scan is too short to measure.</source>
+        <translation>Una línea del escaneo es demasiado corta para medirla.</translation>
+    </message>
+    <message>
+        <source>Found %1 lines in the scan (%2 mm pen): the %3 columns are filled.</source>
+        <translation>Se encontraron %1 líneas en el escaneo (bolígrafo de %2 mm): las columnas «%3» están rellenas.</translation>
+    </message>
+    <message>
+        <source>after</source>
+        <translation>después</translation>
+    </message>
+    <message>
+        <source>before</source>
+        <translation>antes</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::calibration::ApplyPage</name>
@@ -4079,6 +4127,131 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     <message>
         <source>machine: %1</source>
         <translation>máquina: %1</translation>
+    </message>
+</context>
+<context>
+    <name>CalibrationFit</name>
+    <message>
+        <source>the measurements do not depend on %1 at all</source>
+        <translation>las medidas no dependen en absoluto de %1</translation>
+    </message>
+    <message>
+        <source>the fit is ill-conditioned (condition number %1 &gt; %2): the marks cannot separate %3; spread the marks over the whole working area</source>
+        <translation>el ajuste está mal condicionado (número de condición %1 &gt; %2): las marcas no permiten separar %3; reparta las marcas por toda el área de trabajo</translation>
+    </message>
+    <message>
+        <source>%1 distances are too few for %2 parameters: at least %3 distances are needed</source>
+        <translation>%1 distancias son muy pocas para %2 parámetros: se necesitan al menos %3 distancias</translation>
+    </message>
+    <message>
+        <source>%1 marks are too few for %2 parameters: at least %3 marks are needed</source>
+        <translation>%1 marcas son muy pocas para %2 parámetros: se necesitan al menos %3 marcas</translation>
+    </message>
+    <message>
+        <source>a mark's commanded angles do not close the nominal machine's loop</source>
+        <translation>los ángulos ordenados de una marca no cierran el lazo de la máquina nominal</translation>
+    </message>
+    <message>
+        <source>the fit did not converge within %1 evaluations (are the commanded angles and measurements of the same marks?)</source>
+        <translation>el ajuste no convergió en %1 evaluaciones (¿son los ángulos ordenados y las medidas de las mismas marcas?)</translation>
+    </message>
+    <message>
+        <source>the final fit did not converge within %1 evaluations</source>
+        <translation>el ajuste final no convergió en %1 evaluaciones</translation>
+    </message>
+    <message>
+        <source>line %1: mark %2 is not in the marks file</source>
+        <translation>línea %1: la marca %2 no está en el archivo de marcas</translation>
+    </message>
+</context>
+<context>
+    <name>CalibrationPattern</name>
+    <message>
+        <source>pattern options out of range</source>
+        <translation>opciones del patrón fuera de rango</translation>
+    </message>
+    <message>
+        <source>no point of the working area (mode %1) has room for a mark</source>
+        <translation>ningún punto del área de trabajo (modo %1) tiene espacio para una marca</translation>
+    </message>
+    <message>
+        <source>only %1 marks fit %2 mm apart in the working area; at least %3 are needed</source>
+        <translation>solo caben %1 marcas separadas %2 mm en el área de trabajo; se necesitan al menos %3</translation>
+    </message>
+    <message>
+        <source>no drawing order keeps every move between marks under half a turn of a motor</source>
+        <translation>ningún orden de dibujo mantiene cada movimiento entre marcas por debajo de media vuelta de un motor</translation>
+    </message>
+    <message>
+        <source>approach of mark %1</source>
+        <translation>aproximación a la marca %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>CalibrationScan</name>
+    <message>
+        <source>the pattern has fewer than 3 marks</source>
+        <translation>el patrón tiene menos de 3 marcas</translation>
+    </message>
+    <message>
+        <source>found %1 marks, the pattern has %2</source>
+        <translation>se encontraron %1 marcas, el patrón tiene %2</translation>
+    </message>
+    <message>
+        <source>no two found marks are as far apart as the pattern's marks (is the dpi right?)</source>
+        <translation>ningún par de marcas encontradas está tan separado como las marcas del patrón (¿es correcta la resolución?)</translation>
+    </message>
+    <message>
+        <source>only %1 of the pattern's %2 marks match the found ones (%3 found): not this pattern, or the dpi is wrong</source>
+        <translation>solo %1 de las %2 marcas del patrón coinciden con las encontradas (%3 encontradas): no es este patrón, o la resolución es incorrecta</translation>
+    </message>
+    <message>
+        <source>ambiguous: two placements of the sheet match %1 and %2 marks</source>
+        <translation>ambiguo: dos posiciones de la hoja coinciden con %1 y %2 marcas</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>the dpi must be a positive number</source>
+        <translation>la resolución (dpi) debe ser un número positivo</translation>
+    </message>
+    <message>
+        <source>the image is empty</source>
+        <translation>la imagen está vacía</translation>
+    </message>
+    <message>
+        <source>the pattern has no marks</source>
+        <translation>el patrón no tiene marcas</translation>
+    </message>
+    <message>
+        <source>no ink found (the image has almost no contrast)</source>
+        <translation>no se encontró tinta (la imagen casi no tiene contraste)</translation>
+    </message>
+    <message>
+        <source>no marks found at %1 dpi: the pattern's rings are %2 mm across (%3 px); the ring-like shapes in the image are about %4 px: is it scanned at about %5 dpi?</source>
+        <translation>no se encontraron marcas a %1 dpi: los anillos del patrón miden %2 mm de diámetro (%3 px); las formas de anillo de la imagen miden unos %4 px: ¿se escaneó a unos %5 dpi?</translation>
+    </message>
+    <message>
+        <source>no marks found at %1 dpi: the pattern's rings are %2 mm across (%3 px)</source>
+        <translation>no se encontraron marcas a %1 dpi: los anillos del patrón miden %2 mm de diámetro (%3 px)</translation>
+    </message>
+    <message>
+        <source>cannot read the image (%1)</source>
+        <translation>no se puede leer la imagen (%1)</translation>
+    </message>
+    <message>
+        <source>found %1 parallel lines of about %2 mm at %3 dpi, expected %4 (is the dpi right, and the whole pattern on the scan?)</source>
+        <translation>se encontraron %1 líneas paralelas de unos %2 mm a %3 dpi, se esperaban %4 (¿es correcta la resolución y está todo el patrón en el escaneo?)</translation>
+    </message>
+    <message>
+        <source>the line near (%1, %2) mm has no clear ends</source>
+        <translation>la línea cerca de (%1, %2) mm no tiene extremos claros</translation>
     </message>
 </context>
 </TS>

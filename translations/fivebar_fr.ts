@@ -3062,6 +3062,54 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
         <source>&lt;br&gt;&lt;i&gt;Apply the calibration (step 5) to see the lines drawn after it.&lt;/i&gt;</source>
         <translation>&lt;br&gt;&lt;i&gt;Appliquez l'étalonnage (étape 5) pour voir les lignes tracées après.&lt;/i&gt;</translation>
     </message>
+    <message>
+        <source>Import scan...</source>
+        <translation>Importer une numérisation...</translation>
+    </message>
+    <message>
+        <source>A scan of the sheet with the accuracy lines (PNG or JPEG, taken straight from above): each line's length and straightness are measured in the image and fill the columns of the chosen sheet.</source>
+        <translation>Une numérisation de la feuille avec les lignes de précision (PNG ou JPEG, pris bien à la verticale) : la longueur et la rectitude de chaque ligne sont mesurées dans l'image et remplissent les colonnes de la feuille choisie.</translation>
+    </message>
+    <message>
+        <source>Sheet drawn before calibration</source>
+        <translation>Feuille tracée avant l'étalonnage</translation>
+    </message>
+    <message>
+        <source>Sheet drawn after calibration</source>
+        <translation>Feuille tracée après l'étalonnage</translation>
+    </message>
+    <message>
+        <source> dpi</source>
+        <translation> dpi</translation>
+    </message>
+    <message>
+        <source>The scanner's resolution: the scan's size in mm comes from it.</source>
+        <translation>La résolution du scanner : la taille de la numérisation en mm en découle.</translation>
+    </message>
+    <message>
+        <source>Import a scan of the accuracy lines</source>
+        <translation>Importer une numérisation des lignes de précision</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.tif *.tiff *.bmp)</source>
+        <translation>Images (*.png *.jpg *.jpeg *.tif *.tiff *.bmp)</translation>
+    </message>
+    <message>
+        <source>A line in the scan is too short to measure.</source>
+        <translation>Une ligne de la numérisation est trop courte pour être mesurée.</translation>
+    </message>
+    <message>
+        <source>Found %1 lines in the scan (%2 mm pen): the %3 columns are filled.</source>
+        <translation>%1 lignes trouvées dans la numérisation (stylo de %2 mm) : les colonnes « %3 » sont remplies.</translation>
+    </message>
+    <message>
+        <source>after</source>
+        <translation>après</translation>
+    </message>
+    <message>
+        <source>before</source>
+        <translation>avant</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::calibration::ApplyPage</name>
@@ -4079,6 +4127,131 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     <message>
         <source>machine: %1</source>
         <translation>machine : %1</translation>
+    </message>
+</context>
+<context>
+    <name>CalibrationFit</name>
+    <message>
+        <source>the measurements do not depend on %1 at all</source>
+        <translation>les mesures ne dépendent pas du tout de %1</translation>
+    </message>
+    <message>
+        <source>the fit is ill-conditioned (condition number %1 &gt; %2): the marks cannot separate %3; spread the marks over the whole working area</source>
+        <translation>l'ajustement est mal conditionné (conditionnement %1 &gt; %2) : les repères ne permettent pas de séparer %3 ; répartissez les repères sur toute la zone de travail</translation>
+    </message>
+    <message>
+        <source>%1 distances are too few for %2 parameters: at least %3 distances are needed</source>
+        <translation>%1 distances sont trop peu pour %2 paramètres : il faut au moins %3 distances</translation>
+    </message>
+    <message>
+        <source>%1 marks are too few for %2 parameters: at least %3 marks are needed</source>
+        <translation>%1 repères sont trop peu pour %2 paramètres : il faut au moins %3 repères</translation>
+    </message>
+    <message>
+        <source>a mark's commanded angles do not close the nominal machine's loop</source>
+        <translation>les angles commandés d'un repère ne ferment pas la boucle de la machine nominale</translation>
+    </message>
+    <message>
+        <source>the fit did not converge within %1 evaluations (are the commanded angles and measurements of the same marks?)</source>
+        <translation>l'ajustement n'a pas convergé en %1 évaluations (les angles commandés et les mesures sont-ils ceux des mêmes repères ?)</translation>
+    </message>
+    <message>
+        <source>the final fit did not converge within %1 evaluations</source>
+        <translation>l'ajustement final n'a pas convergé en %1 évaluations</translation>
+    </message>
+    <message>
+        <source>line %1: mark %2 is not in the marks file</source>
+        <translation>ligne %1 : le repère %2 n'est pas dans le fichier des repères</translation>
+    </message>
+</context>
+<context>
+    <name>CalibrationPattern</name>
+    <message>
+        <source>pattern options out of range</source>
+        <translation>options du motif hors limites</translation>
+    </message>
+    <message>
+        <source>no point of the working area (mode %1) has room for a mark</source>
+        <translation>aucun point de la zone de travail (mode %1) n'a la place pour un repère</translation>
+    </message>
+    <message>
+        <source>only %1 marks fit %2 mm apart in the working area; at least %3 are needed</source>
+        <translation>seuls %1 repères tiennent à %2 mm d'écart dans la zone de travail ; il en faut au moins %3</translation>
+    </message>
+    <message>
+        <source>no drawing order keeps every move between marks under half a turn of a motor</source>
+        <translation>aucun ordre de tracé ne garde chaque déplacement entre repères sous un demi-tour de moteur</translation>
+    </message>
+    <message>
+        <source>approach of mark %1</source>
+        <translation>approche du repère %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+</context>
+<context>
+    <name>CalibrationScan</name>
+    <message>
+        <source>the pattern has fewer than 3 marks</source>
+        <translation>le motif a moins de 3 repères</translation>
+    </message>
+    <message>
+        <source>found %1 marks, the pattern has %2</source>
+        <translation>%1 repères trouvés, le motif en a %2</translation>
+    </message>
+    <message>
+        <source>no two found marks are as far apart as the pattern's marks (is the dpi right?)</source>
+        <translation>aucun couple de repères trouvés n'est aussi écarté que les repères du motif (la résolution est-elle juste ?)</translation>
+    </message>
+    <message>
+        <source>only %1 of the pattern's %2 marks match the found ones (%3 found): not this pattern, or the dpi is wrong</source>
+        <translation>seuls %1 des %2 repères du motif correspondent à ceux trouvés (%3 trouvés) : ce n'est pas ce motif, ou la résolution est fausse</translation>
+    </message>
+    <message>
+        <source>ambiguous: two placements of the sheet match %1 and %2 marks</source>
+        <translation>ambigu : deux positions de la feuille correspondent à %1 et %2 repères</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <source>the dpi must be a positive number</source>
+        <translation>la résolution (dpi) doit être un nombre positif</translation>
+    </message>
+    <message>
+        <source>the image is empty</source>
+        <translation>l'image est vide</translation>
+    </message>
+    <message>
+        <source>the pattern has no marks</source>
+        <translation>le motif n'a aucun repère</translation>
+    </message>
+    <message>
+        <source>no ink found (the image has almost no contrast)</source>
+        <translation>aucune encre trouvée (l'image n'a presque pas de contraste)</translation>
+    </message>
+    <message>
+        <source>no marks found at %1 dpi: the pattern's rings are %2 mm across (%3 px); the ring-like shapes in the image are about %4 px: is it scanned at about %5 dpi?</source>
+        <translation>aucun repère trouvé à %1 dpi : les anneaux du motif font %2 mm de diamètre (%3 px) ; les formes en anneau de l'image font environ %4 px : est-elle numérisée à environ %5 dpi ?</translation>
+    </message>
+    <message>
+        <source>no marks found at %1 dpi: the pattern's rings are %2 mm across (%3 px)</source>
+        <translation>aucun repère trouvé à %1 dpi : les anneaux du motif font %2 mm de diamètre (%3 px)</translation>
+    </message>
+    <message>
+        <source>cannot read the image (%1)</source>
+        <translation>impossible de lire l'image (%1)</translation>
+    </message>
+    <message>
+        <source>found %1 parallel lines of about %2 mm at %3 dpi, expected %4 (is the dpi right, and the whole pattern on the scan?)</source>
+        <translation>%1 lignes parallèles d'environ %2 mm trouvées à %3 dpi, %4 attendues (la résolution est-elle juste, et tout le motif est-il sur la numérisation ?)</translation>
+    </message>
+    <message>
+        <source>the line near (%1, %2) mm has no clear ends</source>
+        <translation>la ligne près de (%1, %2) mm n'a pas d'extrémités nettes</translation>
     </message>
 </context>
 </TS>

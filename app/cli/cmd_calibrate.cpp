@@ -1,6 +1,7 @@
 // fivebar calibrate: the calibration commands (issue 13). A tiny dispatcher:
 //   calibrate pattern ...  cmd_calibrate_pattern.cpp (docs/calibration-pattern.md)
 //   calibrate scan ...     cmd_calibrate_scan.cpp (Qt builds only)
+//   calibrate lines ...    cmd_calibrate_lines.cpp (Qt builds only)
 //   calibrate fit ...      cmd_calibrate_fit.cpp (docs/calibration.md)
 #include <iostream>
 
@@ -14,6 +15,7 @@ constexpr const char* kHelp =
     "                                 [--svg PATTERN.svg]\n"
 #ifdef FIVEBAR_HAVE_QT
     "       fivebar calibrate scan --marks MARKS.csv --image SCAN.png --dpi 600 -o MEASURED.csv\n"
+    "       fivebar calibrate lines --image SCAN.png --dpi 600 [-o LINES.csv]\n"
 #endif
     "       fivebar calibrate fit --machine PRESET|FILE --measured MEASURED.csv -o CALIBRATED.json\n"
     "                             [--report REPORT.json] [--marks MARKS.csv] [--fit-pen-offset]\n"
@@ -30,11 +32,12 @@ int runCalibrate(const Args& args) {
   if (args[0] == "pattern") return runCalibratePattern(rest);
 #ifdef FIVEBAR_HAVE_QT
   if (args[0] == "scan") return runCalibrateScan(rest);
+  if (args[0] == "lines") return runCalibrateLines(rest);
 #endif
   if (args[0] == "fit") return runCalibrateFit(rest);
   std::cerr << "fivebar calibrate: unknown subcommand '" << args[0] << "' (expected pattern, "
 #ifdef FIVEBAR_HAVE_QT
-            << "scan, "
+            << "scan, lines, "
 #endif
             << "fit)\n" << kHelp;
   return 2;

@@ -196,12 +196,12 @@ int fit(const Options& o) {
     const MarkPosesRead marks = readMarkPoses(marksText, *marksPath);
     if (!marks.ok()) return fail(marks.error);
     result = fitDistances(*nominal, marks.marks, read.distances, options);
-    if (result.status == FitStatus::BadInput && result.reason.rfind("line ", 0) == 0)
-      return fail(measuredPath + ":" + result.reason.substr(5));
+    if (result.status == FitStatus::BadInput && result.reason.text().rfind("line ", 0) == 0)
+      return fail(measuredPath + ":" + result.reason.text().substr(5));
   } else {
     result = fitMarks(*nominal, read.marks, options);
   }
-  if (!result.ok()) return fail(measuredPath + ": no profile written: " + result.reason);
+  if (!result.ok()) return fail(measuredPath + ": no profile written: " + result.reason.text());
   MachineProfile calibrated = calibratedProfile(*nominal, result, nowIso());
   if (backlash && calibrated.calibration) {
     calibrated.calibration->backlashRad1 = std::max(0.0, backlash->play.motor1Rad);

@@ -3,11 +3,14 @@
 //   fk: "theta1,theta2" (deg) per stdin line     -> "x,y" (mm, 9 decimals)
 // A point or pose the linkage cannot reach prints "unreachable". ik reports the geometry's
 // reachability only: joint limits apply to continuous motion (plans, jogs), not to single poses.
+// x,y is the pen: with a calibrated pen offset (calibration.penOffset) the pen kinematics of
+// core/machine/pen_kinematics.hpp. The angles are kinematic (docs/calibration.md).
 #include <iostream>
 #include <string>
 
 #include "commands.hpp"
 #include "core/kinematics/kinematics.hpp"
+#include "core/machine/pen_kinematics.hpp"
 #include "machine_arg.hpp"
 #include "options.hpp"
 
@@ -18,12 +21,15 @@ constexpr const char* kIkHelp =
     "usage: fivebar ik --machine PRESET|FILE [--mode ++|+-|-+|--]\n"
     "Reads 'x,y' lines (mm, machine frame) on stdin and writes 'theta1,theta2' (degrees, in\n"
     "(-180, 180], 9 decimals) or 'unreachable' per line. --mode defaults to the profile's working\n"
-    "mode. Joint limits are not applied: ik reports what the geometry can reach.\n";
+    "mode. Joint limits are not applied: ik reports what the geometry can reach. x,y is the pen\n"
+    "(a calibrated pen offset is honoured); the angles are kinematic (a calibrated profile's zero\n"
+    "offsets are not subtracted).\n";
 
 constexpr const char* kFkHelp =
     "usage: fivebar fk --machine PRESET|FILE [--assembly +|-]\n"
     "Reads 'theta1,theta2' lines (degrees) on stdin and writes 'x,y' (mm, machine frame,\n"
-    "9 decimals) or 'unreachable' per line. --assembly defaults to the profile's assembly mode.\n";
+    "9 decimals) or 'unreachable' per line. --assembly defaults to the profile's assembly mode.\n"
+    "x,y is the pen (a calibrated pen offset is honoured); the angles are kinematic.\n";
 
 // Applies `convert` to every stdin line. Stops at the first malformed line (exit 1).
 template <typename Convert>
@@ -89,9 +95,10 @@ int runIk(const Args& args) {
     mode = *m;
   }
   const Geometry g = parsed->profile.geometry;
+  const std::optional<PenOffset> pen = calibratedPenOffset(parsed->profile);
   std::ios::sync_with_stdio(false);
   return filterLines("ik", "x,y", [&](const NumberPair& xy) -> std::string {
-    const IkResult r = inverse(g, Vec2(xy.first, xy.second), mode);
+    const IkResult r = penInverse(g, pen, Vec2(xy.first, xy.second), mode);
     if (!r.ok()) return "unreachable";
     return poseAngleDeg(r.angles.theta1) + "," + poseAngleDeg(r.angles.theta2);
   });
@@ -111,9 +118,10 @@ int runFk(const Args& args) {
     assembly = *a;
   }
   const Geometry g = parsed->profile.geometry;
+  const std::optional<PenOffset> pen = calibratedPenOffset(parsed->profile);
   std::ios::sync_with_stdio(false);
   return filterLines("fk", "theta1,theta2", [&](const NumberPair& q) -> std::string {
-    const FkResult r = forward(g, {radFromDeg(q.first), radFromDeg(q.second)}, assembly);
+    const FkResult r = penForward(g, pen, {radFromDeg(q.first), radFromDeg(q.second)}, assembly);
     if (!r.ok()) return "unreachable";
     return fixed9(r.p.x()) + "," + fixed9(r.p.y());
   });

@@ -25,6 +25,7 @@ int runCalibrate(const Args& args);      // cmd_calibrate.cpp (dispatches to the
 int runCalibrateFit(const Args& args);   // cmd_calibrate_fit.cpp
 int runCalibratePattern(const Args& args);  // cmd_calibrate_pattern.cpp
 int runCalibrateScan(const Args& args);     // cmd_calibrate_scan.cpp (Qt builds only: reads images)
+int runCalibrateLines(const Args& args);    // cmd_calibrate_lines.cpp (Qt builds only: reads images)
 // Further commands are declared here as they land (plan, grbl-settings, stream, send).
 
 }  // namespace fivebar::cli

@@ -113,7 +113,8 @@ FitStatus analyse(const Problem& p, const Solution& s, const FitOptions& o, Cali
   const std::vector<std::string> names = parameterNames(p);
   for (int j = 0; j < J.cols(); ++j)
     if (!(norms[j] > 0.0)) {
-      out.reason = "the measurements do not depend on " + names[std::size_t(j)] + " at all";
+      out.reason = std::move(Message(FB_TR("CalibrationFit", "the measurements do not depend on %1 at all"))
+                                 .arg(names[std::size_t(j)]));
       return FitStatus::IllConditioned;
     }
   const Eigen::MatrixXd Jn = J * norms.cwiseInverse().asDiagonal();
@@ -125,9 +126,12 @@ FitStatus analyse(const Problem& p, const Solution& s, const FitOptions& o, Cali
     std::string combo;
     for (int j = 0; j < weak.size(); ++j)
       if (std::abs(weak[j]) > 0.3) combo += (combo.empty() ? "" : ", ") + names[std::size_t(j)];
-    out.reason = "the fit is ill-conditioned (condition number " + fmt(out.conditionNumber) + " > " +
-                 fmt(o.maxConditionNumber) + "): the marks cannot separate " + combo +
-                 "; spread the marks over the whole working area";
+    out.reason = std::move(Message(FB_TR("CalibrationFit",
+                                         "the fit is ill-conditioned (condition number %1 > %2): the marks "
+                                         "cannot separate %3; spread the marks over the whole working area"))
+                               .arg(fmt(out.conditionNumber))
+                               .arg(fmt(o.maxConditionNumber))
+                               .arg(combo));
     return FitStatus::IllConditioned;
   }
   Eigen::VectorXd r;
@@ -153,7 +157,6 @@ CalibrationFit run(const MachineProfile& nominalProfile, const Measurements& m, 
   const Problem& all = m.all;
   const MachineParameters nominal = parametersOf(nominalProfile);
   const int n = int(m.ids.size());
-  const char* what = all.distances ? "distances" : "marks";
   // Held-out measurements: every Nth, in file order.
   std::vector<int> train, held;
   for (int i = 0; i < n; ++i)
@@ -162,8 +165,15 @@ CalibrationFit run(const MachineProfile& nominalProfile, const Measurements& m, 
   const int needed = (all.parameterCount() + kMinRedundancy + all.residualsPer() - 1) / all.residualsPer();
   if (int(train.size()) < needed) {
     out.status = FitStatus::TooFewMeasurements;
-    out.reason = std::to_string(n) + " " + what + " are too few for " + std::to_string(all.parameterCount()) +
-                 " parameters: at least " + std::to_string(needed) + " " + what + " are needed";
+    out.reason = std::move(Message(all.distances ? FB_TR("CalibrationFit",
+                                                         "%1 distances are too few for %2 parameters: at least "
+                                                         "%3 distances are needed")
+                                                 : FB_TR("CalibrationFit",
+                                                         "%1 marks are too few for %2 parameters: at least %3 "
+                                                         "marks are needed"))
+                               .arg(n)
+                               .arg(all.parameterCount())
+                               .arg(needed));
     return out;
   }
   // Both mirror hypotheses of the paper frame; the better one is kept.
@@ -176,7 +186,7 @@ CalibrationFit run(const MachineProfile& nominalProfile, const Measurements& m, 
     const auto x0 = startFor(p, nominal);
     if (!x0) {
       out.status = FitStatus::BadInput;
-      out.reason = "a mark's commanded angles do not close the nominal machine's loop";
+      out.reason = FB_TR("CalibrationFit", "a mark's commanded angles do not close the nominal machine's loop");
       return out;
     }
     Solution s = detail::solve(p, *x0, allFree(p), o.maxFunctionEvaluations);
@@ -209,8 +219,10 @@ CalibrationFit run(const MachineProfile& nominalProfile, const Measurements& m, 
   out.status = analyse(best, bestSolution, o, out);
   if (out.ok() && !bestSolution.converged) {
     out.status = FitStatus::DidNotConverge;
-    out.reason = "the fit did not converge within " + std::to_string(o.maxFunctionEvaluations) +
-                 " evaluations (are the commanded angles and measurements of the same marks?)";
+    out.reason = std::move(Message(FB_TR("CalibrationFit",
+                                         "the fit did not converge within %1 evaluations (are the commanded "
+                                         "angles and measurements of the same marks?)"))
+                               .arg(o.maxFunctionEvaluations));
   }
   if (!out.ok()) return out;
   // Held-out measurements, under the model and paper pose fitted without them; the same robust
@@ -240,7 +252,8 @@ CalibrationFit run(const MachineProfile& nominalProfile, const Measurements& m, 
   out.functionEvaluations += bestSolution.evaluations;
   if (!bestSolution.converged) {
     out.status = FitStatus::DidNotConverge;
-    out.reason = "the final fit did not converge within " + std::to_string(o.maxFunctionEvaluations) + " evaluations";
+    out.reason = std::move(Message(FB_TR("CalibrationFit", "the final fit did not converge within %1 evaluations"))
+                               .arg(o.maxFunctionEvaluations));
     return out;
   }
   out.estimates.clear();
@@ -332,7 +345,9 @@ CalibrationFit fitDistances(const MachineProfile& nominal, std::span<const MarkP
     const MarkPose* b = find(d.idB);
     if (!a || !b) {
       CalibrationFit out;
-      out.reason = "line " + std::to_string(d.line) + ": mark " + (a ? d.idB : d.idA) + " is not in the marks file";
+      out.reason = std::move(Message(FB_TR("CalibrationFit", "line %1: mark %2 is not in the marks file"))
+                                 .arg(d.line)
+                                 .arg(a ? d.idB : d.idA));
       return out;
     }
     m.ids.push_back(d.idA + "-" + d.idB);

@@ -4,6 +4,8 @@
 // honest error on held-out marks. Millimetres and radians inside; estimates in file units.
 #pragma once
 
+#include "core/support/message.hpp"
+
 #include <optional>
 #include <span>
 #include <string>
@@ -70,7 +72,7 @@ struct MeasurementResidual {
 
 struct CalibrationFit {
   FitStatus status = FitStatus::BadInput;
-  std::string reason;  // why the fit was refused (empty when Ok)
+  Message reason;  // why the fit was refused (empty when Ok); translatable (context CalibrationFit)
   MachineParameters parameters;
   std::optional<PaperPose> paper;  // points form only
   std::vector<ParameterEstimate> estimates;

@@ -81,11 +81,11 @@ MarkMatch matchMarks(const std::vector<Vec2>& found, const std::vector<Vec2>& no
   MarkMatch out;
   out.foundOfMark.assign(nominal.size(), -1);
   if (nominal.size() < 3) {
-    out.error = "the pattern has fewer than 3 marks";
+    out.error = FB_TR("CalibrationScan", "the pattern has fewer than 3 marks");
     return out;
   }
   if (found.size() < 3) {
-    out.error = "found " + std::to_string(found.size()) + " marks, the pattern has " + std::to_string(nominal.size());
+    out.error = std::move(Message(FB_TR("CalibrationScan", "found %1 marks, the pattern has %2")).arg(found.size()).arg(nominal.size()));
     return out;
   }
   // Base pairs: the longest nominal pairs, each mark used once.
@@ -126,7 +126,7 @@ MarkMatch matchMarks(const std::vector<Vec2>& found, const std::vector<Vec2>& no
     }
   }
   if (all.empty()) {
-    out.error = "no two found marks are as far apart as the pattern's marks (is the dpi right?)";
+    out.error = FB_TR("CalibrationScan", "no two found marks are as far apart as the pattern's marks (is the dpi right?)");
     return out;
   }
   std::sort(all.begin(), all.end(), better);
@@ -151,15 +151,19 @@ MarkMatch matchMarks(const std::vector<Vec2>& found, const std::vector<Vec2>& no
   const Hypothesis& best = distinct.front();
   const int needed = static_cast<int>(std::ceil(options.minFoundShare * static_cast<double>(nominal.size())));
   if (best.matched < needed) {
-    out.error = "only " + std::to_string(best.matched) + " of the pattern's " + std::to_string(nominal.size()) +
-                " marks match the found ones (" + std::to_string(found.size()) +
-                " found): not this pattern, or the dpi is wrong";
+    out.error = std::move(Message(FB_TR("CalibrationScan",
+                                        "only %1 of the pattern's %2 marks match the found ones (%3 found): "
+                                        "not this pattern, or the dpi is wrong"))
+                              .arg(best.matched)
+                              .arg(nominal.size())
+                              .arg(found.size()));
     return out;
   }
   if (distinct.size() > 1 && distinct[1].matched >= best.matched - kAmbiguityMarks &&
       distinct[1].assign != best.assign) {
-    out.error = "ambiguous: two placements of the sheet match " + std::to_string(best.matched) + " and " +
-                std::to_string(distinct[1].matched) + " marks";
+    out.error = std::move(Message(FB_TR("CalibrationScan", "ambiguous: two placements of the sheet match %1 and %2 marks"))
+                              .arg(best.matched)
+                              .arg(distinct[1].matched));
     return out;
   }
   out.foundOfMark = best.assign;

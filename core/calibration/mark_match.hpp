@@ -5,6 +5,8 @@
 // Qt-free; the image part is core/calibration/scan. docs/calibration-pattern.md "Scan".
 #pragma once
 
+#include "core/support/message.hpp"
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,7 +25,7 @@ struct MarkMatch {
   std::vector<int> foundOfMark;  // per nominal mark: index into `found`, or -1 when missing
   RigidFit machineFromPaper;     // the refined placement of the sheet
   int matched = 0;
-  std::string error;             // no or an ambiguous match: why
+  Message error;                 // no or an ambiguous match: why (translatable, CalibrationScan)
   bool ok() const { return error.empty(); }
 };
 

@@ -56,7 +56,7 @@ class Builder {
         !(o_.approachRad > 0.0) || o_.gridMarks < kMinPatternMarks ||
         o_.gridMarks + 3 * o_.backlashRowsPerMotor * 2 > kMaxMarks || o_.backlashRowsPerMotor < 0 ||
         o_.backlashRowsPerMotor > static_cast<int>(kRowAnchors1.size())) {
-      out.error = "pattern options out of range";
+      out.error = FB_TR("CalibrationPattern", "pattern options out of range");
       return out;
     }
     CalibrationPattern pat;
@@ -66,8 +66,8 @@ class Builder {
     accuracy_ = pat.accuracy;
     candidates(pat.accuracy);
     if (cands_.empty()) {
-      out.error = "no point of the working area (mode " + std::string(toString(mode_)) +
-                  ") has room for a mark";
+      out.error = std::move(Message(FB_TR("CalibrationPattern", "no point of the working area (mode %1) has room for a mark"))
+                                .arg(std::string(toString(mode_))));
       return out;
     }
     std::vector<PatternMark> rows;
@@ -78,8 +78,11 @@ class Builder {
       }
     std::vector<PatternMark> grid = farthestPoints();
     if (static_cast<int>(grid.size()) < kMinPatternMarks) {
-      out.error = "only " + std::to_string(grid.size()) + " marks fit " + std::to_string(o_.minSpacingMm) +
-                  " mm apart in the working area; at least " + std::to_string(kMinPatternMarks) + " are needed";
+      out.error = std::move(Message(FB_TR("CalibrationPattern",
+                                          "only %1 marks fit %2 mm apart in the working area; at least %3 are needed"))
+                                .arg(grid.size())
+                                .arg(o_.minSpacingMm, 1)
+                                .arg(kMinPatternMarks));
       return out;
     }
     number(grid);
@@ -281,7 +284,7 @@ class Builder {
     return order;
   }
 
-  bool strokes(CalibrationPattern& pat, std::string& error) const {
+  bool strokes(CalibrationPattern& pat, Message& error) const {
     int path = 0;
     auto add = [&](std::vector<Vec2> pts) {
       Stroke s;
@@ -302,7 +305,7 @@ class Builder {
     for (int item : order) {
       const JointAngles& q = poses[static_cast<size_t>(item)];
       if (std::max(std::abs(q.theta1 - at.theta1), std::abs(q.theta2 - at.theta2)) >= kMaxJumpRad) {
-        error = "no drawing order keeps every move between marks under half a turn of a motor";
+        error = FB_TR("CalibrationPattern", "no drawing order keeps every move between marks under half a turn of a motor");
         return false;
       }
       at = q;
@@ -388,9 +391,10 @@ PlanResult planCalibrationPattern(const CalibrationPattern& pattern, const Machi
       const MoveCheck check = checkJointMove(profile, q, e);
       if (!check.ok()) {
         r.status = PlanStatus::Infeasible;
-        r.message = "approach of mark " + std::to_string(pm.id) + ": " + describe(check);
+        Message where = std::move(Message(FB_TR("CalibrationPattern", "approach of mark %1")).arg(pm.id));
+        r.message = std::move(Message(FB_TR("CalibrationPattern", "%1: %2")).arg(where).arg(describeMove(check)));
         r.report.feasible = false;
-        r.report.problems.push_back({"approach of mark " + std::to_string(pm.id), check.where, describe(check), {}});
+        r.report.problems.push_back({where, check.where, describeMove(check), {}});
         return r;
       }
       const FkResult fe = forward(profile.geometry, e, profile.assembly);
@@ -427,6 +431,16 @@ PlanResult planCalibrationPattern(const CalibrationPattern& pattern, const Machi
   r.report.travelMm = job.summary.travelMm;
   r.report.minSingularityMarginDeg = degFromRad(job.summary.minTypeIIMarginRad);
   return r;
+}
+
+PlanResult planVerificationPattern(const CalibrationPattern& pattern, const MachineProfile& profile) {
+  Layer layer;
+  layer.id = layer.name = "calibration pattern";
+  PlanOptions options;
+  options.optimise = false;  // the pattern's own order
+  options.mode = pattern.mode;
+  options.toleranceMm = kVerificationToleranceMm;
+  return planStrokes(pattern.strokes, {layer}, profile, pattern.mode, options);
 }
 
 std::string patternSvg(const CalibrationPattern& pattern, double penWidthMm) {

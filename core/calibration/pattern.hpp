@@ -59,7 +59,7 @@ struct CalibrationPattern {
 
 struct PatternResult {
   std::optional<CalibrationPattern> pattern;
-  std::string error;  // why there is none
+  Message error;  // why there is none (translatable, context CalibrationPattern)
 };
 
 // Marks for `profile` (its calibration left out) in its default working mode; every mark, its ring and number area and its
@@ -75,6 +75,16 @@ PatternResult makeCalibrationPattern(const MachineProfile& profile,
 // checked with checkJointMove. Times are estimated again afterwards.
 PlanResult planCalibrationPattern(const CalibrationPattern& pattern, const MachineProfile& profile,
                                   double approachRad = PatternOptions{}.approachRad);
+
+// The pattern planned for `profile` AS IT IS, its calibration applied by the planner (zero offsets,
+// pen offset, backlash compensation), without approach excursions (the compensation takes up the
+// play whatever the approach): the verification sheet and the accuracy lines drawn after
+// calibration, which show what the calibration achieves. Without a calibration it draws what
+// planCalibrationPattern draws, less the approaches. The path tolerance is
+// kVerificationToleranceMm, so that the lines' straightness shows the machine rather than the
+// planner's joint-linear chords (0.1 mm by default).
+inline constexpr double kVerificationToleranceMm = 0.02;
+PlanResult planVerificationPattern(const CalibrationPattern& pattern, const MachineProfile& profile);
 
 // The pattern as an SVG picture (machine frame, y up on the page, 1 user unit = 1 mm): strokes as
 // polylines, dots as small discs.

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "core/machine/pen_kinematics.hpp"
 #include "core/planning/optimise_order.hpp"
 
 namespace fivebar {
@@ -15,9 +16,11 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Joint angles of an end point in `mode`; pseudo angles (chord directions) when out of reach.
-JointAngles endAngles(const Geometry& g, const Vec2& p, WorkingMode mode) {
-  const IkResult ik = inverse(g, p, mode);
+// Joint angles that put the profile's pen (its calibrated pen offset honoured) on an end point in
+// `mode`; pseudo angles (chord directions) when out of reach.
+JointAngles endAngles(const MachineProfile& profile, const Vec2& p, WorkingMode mode) {
+  const Geometry& g = profile.geometry;
+  const IkResult ik = penInverse(g, calibratedPenOffset(profile), p, mode);
   if (ik.ok()) return ik.angles;
   const Vec2 c1 = p - g.motor1(), c2 = p - g.motor2();
   return {std::atan2(c1.y(), c1.x()), std::atan2(c2.y(), c2.x())};
@@ -177,7 +180,7 @@ Ends scaledEnds(const std::vector<Stroke>& run, const MachineProfile& pr, Workin
   for (std::size_t i = 0; i < run.size(); ++i)
     for (int k = 0; k < 2; ++k) {
       const JointAngles q =
-          endAngles(pr.geometry, k == 0 ? run[i].points.front() : run[i].points.back(), mode);
+          endAngles(pr, k == 0 ? run[i].points.front() : run[i].points.back(), mode);
       const Vec2 node(unwrapNear(q.theta1, reference.theta1) / v1,
                       unwrapNear(q.theta2, reference.theta2) / v2);
       // A non-finite point (bad input, reported by preflight) must not poison the grid.
@@ -213,9 +216,9 @@ double travelTimeS(const std::vector<Stroke>& strokes, const MachineProfile& pro
   std::optional<JointAngles> at = start;
   for (const Stroke& s : strokes) {
     if (s.points.empty()) continue;
-    const JointAngles first = endAngles(profile.geometry, s.points.front(), mode);
+    const JointAngles first = endAngles(profile, s.points.front(), mode);
     if (at) total += jointTravelTimeS(profile.motors, *at, first);
-    at = endAngles(profile.geometry, s.points.back(), mode);
+    at = endAngles(profile, s.points.back(), mode);
   }
   return total;
 }
@@ -271,7 +274,7 @@ OptimiseResult optimise(std::vector<Stroke> strokes, const MachineProfile& profi
     if (options.simplifyToleranceMm > 0.0)
       for (Stroke& s : run) s.points = simplifyPolyline(s.points, options.simplifyToleranceMm);
     if (options.reorder && run.size() > 1) {
-      JointAngles ref = at ? *at : endAngles(profile.geometry, run.front().points.front(), mode);
+      JointAngles ref = at ? *at : endAngles(profile, run.front().points.front(), mode);
       if (!std::isfinite(ref.theta1) || !std::isfinite(ref.theta2)) ref = {};
       const Ends ends = scaledEnds(run, profile, mode, ref);
       std::optional<Vec2> start;
@@ -281,7 +284,7 @@ OptimiseResult optimise(std::vector<Stroke> strokes, const MachineProfile& profi
         order::twoOpt(ends, tour, start, options.maxTwoOptPasses, stepsLeft);
       if (order::tourCost(ends, tour, start) <= order::inputCost(ends, start)) applyTour(run, tour);
     }
-    if (!run.empty()) at = endAngles(profile.geometry, run.back().points.back(), mode);
+    if (!run.empty()) at = endAngles(profile, run.back().points.back(), mode);
     for (Stroke& s : run) r.strokes.push_back(std::move(s));
     b = e;
   }

@@ -1,11 +1,13 @@
 #include "core/planning/time_optimal.hpp"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "core/kinematics/singularity.hpp"
 #include "core/kinematics/units.hpp"
+#include "core/machine/pen_kinematics.hpp"
 #include "core/support/parallel.hpp"
 
 namespace fivebar {
@@ -28,21 +30,41 @@ struct GridPoint {
 };
 
 // dq/ds at p along the unit tangent t (A t = B dq/ds, Hoang 2015 eq. 7, B diagonal), or false
-// where the point is out of reach or a leg is stretched (B singular).
-bool jointRate(const Geometry& g, WorkingMode mode, const Vec2& p, const Vec2& t, double out[2]) {
-  const IkResult ik = inverse(g, p, mode);
+// where the point is out of reach or a leg is stretched (B singular). With a pen offset p is the
+// pen: its velocity is P's (J = A^-1 B) plus the offset turning with link b1,
+// d(pen)/dq = J + (along I + normal Rot90) de/dq with e = (P - R1) / b1,
+// de/dq = (J - [dR1/dtheta1, 0]) / b1, and dq/ds = (d(pen)/dq)^-1 t.
+bool jointRate(const Geometry& g, const std::optional<PenOffset>& pen, WorkingMode mode, const Vec2& p,
+               const Vec2& t, double out[2]) {
+  Vec2 P = p;
+  const IkResult ik = pen ? penInverse(g, pen, p, mode, &P) : inverse(g, p, mode);
   if (!ik.ok()) return false;
-  const Jacobians j = jacobians(g, makePose(g, ik.angles, p));
-  const Eigen::Vector2d at = j.A * t;
+  const Jacobians j = jacobians(g, makePose(g, ik.angles, P));
   if (std::abs(j.B(0, 0)) < kStillMotor || std::abs(j.B(1, 1)) < kStillMotor) return false;
-  out[0] = at[0] / j.B(0, 0);
-  out[1] = at[1] / j.B(1, 1);
+  if (!pen) {
+    const Eigen::Vector2d at = j.A * t;
+    out[0] = at[0] / j.B(0, 0);
+    out[1] = at[1] / j.B(1, 1);
+    return true;
+  }
+  if (std::abs(j.A.determinant()) < kStillMotor) return false;
+  const Eigen::Matrix2d J = j.A.inverse() * j.B;
+  Eigen::Matrix2d dR1 = Eigen::Matrix2d::Zero();
+  dR1.col(0) = Eigen::Vector2d(-g.a1 * std::sin(ik.angles.theta1), g.a1 * std::cos(ik.angles.theta1));
+  const Eigen::Matrix2d de = (J - dR1) / g.b1;
+  Eigen::Matrix2d rot90;
+  rot90 << 0.0, -1.0, 1.0, 0.0;
+  const Eigen::Matrix2d Jpen = J + pen->alongMm * de + pen->normalMm * rot90 * de;
+  if (std::abs(Jpen.determinant()) < kStillMotor) return false;
+  const Eigen::Vector2d dq = Jpen.inverse() * t;
+  out[0] = dq[0];
+  out[1] = dq[1];
   return true;
 }
 
 // The grid of one smooth piece v[0..m] (no sharp corner inside): the tangent at an inner vertex
 // bisects its two segments and is interpolated along each segment, so that q'(s) is continuous.
-void gridOf(const Geometry& g, WorkingMode mode, std::span<const Vec2> v, double stepMm,
+void gridOf(const Geometry& g, const std::optional<PenOffset>& pen, WorkingMode mode, std::span<const Vec2> v, double stepMm,
             std::vector<Vec2>& dir, std::vector<double>& fractions, std::vector<GridPoint>& grid) {
   const size_t m = v.size() - 1;
   dir.resize(m);
@@ -70,7 +92,7 @@ void gridOf(const Geometry& g, WorkingMode mode, std::span<const Vec2> v, double
       const Vec2 t = ((1.0 - f) * tA + f * tB).normalized();
       GridPoint gp;
       gp.s = s + f * length;
-      if (jointRate(g, mode, p, t, gp.dq)) grid.push_back(gp);
+      if (jointRate(g, pen, mode, p, t, gp.dq)) grid.push_back(gp);
     }
     s += length;
   }
@@ -184,7 +206,7 @@ double restToRestS(double distanceRad, double maxSpeed, double maxAccel) {
 
 namespace {
 
-double pathTimeS(const Geometry& g, WorkingMode mode, std::span<const Vec2> pointsMm,
+double pathTimeS(const Geometry& g, const std::optional<PenOffset>& pen, WorkingMode mode, std::span<const Vec2> pointsMm,
                  double askedMmPerS, const MotorLimits& limits, const TimeOptimalOptions& options,
                  Scratch& scratch) {
   std::vector<Vec2>& v = scratch.points;
@@ -199,7 +221,7 @@ double pathTimeS(const Geometry& g, WorkingMode mode, std::span<const Vec2> poin
         j + 1 < v.size() && turnRad(v[j] - v[j - 1], v[j + 1] - v[j]) > options.sharpCornerRad;
     if (!corner && j + 1 < v.size()) continue;
     const std::span<const Vec2> piece(v.data() + first, j - first + 1);
-    gridOf(g, mode, piece, options.gridStepMm, scratch.dir, scratch.fractions, scratch.grid);
+    gridOf(g, pen, mode, piece, options.gridStepMm, scratch.dir, scratch.fractions, scratch.grid);
     timeS += timeOfGrid(scratch.grid, askedMmPerS, limits, scratch);
     first = j;
   }
@@ -211,8 +233,14 @@ double pathTimeS(const Geometry& g, WorkingMode mode, std::span<const Vec2> poin
 double timeOptimalPathS(const Geometry& g, WorkingMode mode, std::span<const Vec2> pointsMm,
                         double askedMmPerS, const MotorLimits& limits,
                         const TimeOptimalOptions& options) {
+  return timeOptimalPathS(g, std::nullopt, mode, pointsMm, askedMmPerS, limits, options);
+}
+
+double timeOptimalPathS(const Geometry& g, const std::optional<PenOffset>& pen, WorkingMode mode,
+                        std::span<const Vec2> pointsMm, double askedMmPerS, const MotorLimits& limits,
+                        const TimeOptimalOptions& options) {
   Scratch scratch;
-  return pathTimeS(g, mode, pointsMm, askedMmPerS, limits, options, scratch);
+  return pathTimeS(g, pen, mode, pointsMm, askedMmPerS, limits, options, scratch);
 }
 
 TimeOptimalJob timeOptimalJob(const PlannedJob& job, const MachineProfile& profile,
@@ -289,7 +317,7 @@ TimeOptimalJob timeOptimalJob(const PlannedJob& job, const MachineProfile& profi
     const size_t end = std::min(strokes.size(), (c + 1) * kStrokesPerChunk);
     for (size_t k = c * kStrokesPerChunk; k < end; ++k) {
       const StrokeRange& s = strokes[k];
-      chunkS[c] += pathTimeS(profile.geometry, job.mode,
+      chunkS[c] += pathTimeS(profile.geometry, calibratedPenOffset(profile), job.mode,
                              std::span<const Vec2>(points.data() + s.begin, s.end - s.begin),
                              s.askedMmPerS, lim, options, scratch);
     }

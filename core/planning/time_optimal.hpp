@@ -17,10 +17,12 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "core/kinematics/kinematics.hpp"
+#include "core/machine/calibration.hpp"
 #include "core/machine/profile.hpp"
 #include "core/planning/job.hpp"
 
@@ -49,6 +51,11 @@ struct TimeOptimalOptions {
 // mode `mode`, at most `askedMmPerS` along the path. Points out of reach are skipped.
 double timeOptimalPathS(const Geometry& g, WorkingMode mode, std::span<const Vec2> pointsMm,
                         double askedMmPerS, const MotorLimits& limits,
+                        const TimeOptimalOptions& options = {});
+// The same for the pen of a calibrated pen offset (pen_kinematics.hpp): `pointsMm` is the pen's
+// path; the motors' rates are those that move the pen along it (nullopt: the pen is at P).
+double timeOptimalPathS(const Geometry& g, const std::optional<PenOffset>& pen, WorkingMode mode,
+                        std::span<const Vec2> pointsMm, double askedMmPerS, const MotorLimits& limits,
                         const TimeOptimalOptions& options = {});
 
 // Shortest time (s) for one motor to rotate by `distanceRad` from rest to rest.

@@ -47,7 +47,12 @@ struct WorkspaceSettings {
   double typeIMarginRad = radFromDeg(2.0);    // closest allowed approach to full stretch/fold
   double stepRad1 = radFromDeg(1.0 / 35.5556);  // motor 1 step (microstep) angle
   double stepRad2 = radFromDeg(1.0 / 35.5556);
+  // A calibrated pen offset (pen_kinematics.hpp): the maps are then of the PEN's positions (reach
+  // and margins of the pose that puts the pen there, the pen's resolution and conditioning).
+  // nullopt: the pen is at P.
+  std::optional<PenOffset> penOffset;
 };
+// The profile's limits, margins, step angles and calibrated pen offset.
 WorkspaceSettings workspaceSettings(const MachineProfile& p);
 
 // Everything known about one point in one working mode.

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "core/kinematics/kinematics.hpp"
+#include "core/machine/pen_kinematics.hpp"
 #include "core/workspace/workspace.hpp"
 
 namespace fivebar {
@@ -82,22 +83,16 @@ double sigmaMax(double m00, double m01, double m10, double m11) {
   return std::sqrt(0.5 * (s + std::sqrt(std::max(0.0, s * s - 4.0 * det * det))));
 }
 
-// One working mode at p: sigma1 = +1 when theta1 = chord1 + alpha1 (arm 1 '+'), sigma2 = +1 when
-// theta2 = chord2 + alpha2 (arm 2 '-'), as in inverseArm1/2.
-PointSample sampleMode(const Geometry& g, const WorkspaceSettings& s, const Limits& limits,
-                       const Vec2& p, const ArmAtPoint& arm1, const ArmAtPoint& arm2,
-                       double sigma1, double sigma2) {
+// The sample of a pose: motor angles (cos, sin) theta1, theta2 with distal joint P; `slackMm` the
+// reach slack of the legs; `typeIMarginRad` the legs' smaller type I margin. With a pen offset the
+// resolution and conditioning are the pen's: d(pen)/dq = J + (along I + normal Rot90) de/dq, with
+// e = (P - R1) / b1 and de/dq = (J - [dR1/dtheta1, 0]) / b1 (pen_kinematics.hpp).
+PointSample sampleAngles(const Geometry& g, const WorkspaceSettings& s, const Limits& limits,
+                         const Vec2& p, double c1, double s1, double c2, double s2, double slackMm,
+                         double typeIMarginRad) {
   PointSample out;
-  out.reachSlackMm = std::min(arm1.slackMm, arm2.slackMm);
-  if (!arm1.inAnnulus || !arm2.inAnnulus) return out;
-  // Motor angle cos/sin from the chord and elbow angles: theta = chord + sigma * alpha.
-  const double c1 = arm1.cosC * arm1.cosA - sigma1 * arm1.sinC * arm1.sinA;
-  const double s1 = arm1.sinC * arm1.cosA + sigma1 * arm1.cosC * arm1.sinA;
-  const double c2 = arm2.cosC * arm2.cosA - sigma2 * arm2.sinC * arm2.sinA;
-  const double s2 = arm2.sinC * arm2.cosA + sigma2 * arm2.cosC * arm2.sinA;
   // Joint limits, as an arc length at each elbow (mm).
-  out.reachSlackMm = std::min({out.reachSlackMm, g.a1 * limits.arc1.slackRad(c1, s1),
-                               g.a2 * limits.arc2.slackRad(c2, s2)});
+  out.reachSlackMm = std::min({slackMm, g.a1 * limits.arc1.slackRad(c1, s1), g.a2 * limits.arc2.slackRad(c2, s2)});
   out.reachable = out.reachSlackMm >= -kReachToleranceMm;
   if (!out.reachable) return out;
   // Floating link vectors u_i = P - R_i (length b_i): the rows of A.
@@ -108,7 +103,7 @@ PointSample sampleMode(const Geometry& g, const WorkspaceSettings& s, const Limi
   out.signedTypeII = detA / bb;
   out.muRad = std::atan2(std::abs(detA), u1x * u2x + u1y * u2y);
   out.typeIIMarginRad = std::min(out.muRad, kPi - out.muRad);
-  out.typeIMarginRad = std::min(arm1.typeIMarginRad, arm2.typeIMarginRad);
+  out.typeIMarginRad = typeIMarginRad;
   if (std::abs(out.signedTypeII) < kSingularSin) {
     out.inverseCondition = 0.0;
     out.resolutionMm = kInf;
@@ -116,13 +111,80 @@ PointSample sampleMode(const Geometry& g, const WorkspaceSettings& s, const Limi
   }
   // B = diag(a_i u_i . t_i), t_i = (-sin theta_i, cos theta_i); J = A^-1 B.
   const double B11 = g.a1 * (-u1x * s1 + u1y * c1), B22 = g.a2 * (-u2x * s2 + u2y * c2);
-  const double j00 = u2y * B11 / detA, j01 = -u1y * B22 / detA;
-  const double j10 = -u2x * B11 / detA, j11 = u1x * B22 / detA;
+  double j00 = u2y * B11 / detA, j01 = -u1y * B22 / detA;
+  double j10 = -u2x * B11 / detA, j11 = u1x * B22 / detA;
+  if (s.penOffset) {
+    const double al = s.penOffset->alongMm, no = s.penOffset->normalMm;
+    const double e00 = (j00 + g.a1 * s1) / g.b1, e01 = j01 / g.b1;
+    const double e10 = (j10 - g.a1 * c1) / g.b1, e11 = j11 / g.b1;
+    j00 += al * e00 - no * e10;
+    j01 += al * e01 - no * e11;
+    j10 += al * e10 + no * e00;
+    j11 += al * e11 + no * e01;
+  }
   const double smax = sigmaMax(j00, j01, j10, j11);
-  const double smin = smax > 0.0 ? std::abs(B11 * B22 / detA) / smax : 0.0;
+  const double smin = smax > 0.0 ? std::abs(j00 * j11 - j01 * j10) / smax : 0.0;
   out.inverseCondition = smax > 0.0 ? smin / smax : 0.0;
   out.resolutionMm = sigmaMax(j00 * s.stepRad1, j01 * s.stepRad2, j10 * s.stepRad1, j11 * s.stepRad2);
   return out;
+}
+
+// One working mode at p: sigma1 = +1 when theta1 = chord1 + alpha1 (arm 1 '+'), sigma2 = +1 when
+// theta2 = chord2 + alpha2 (arm 2 '-'), as in inverseArm1/2.
+PointSample sampleMode(const Geometry& g, const WorkspaceSettings& s, const Limits& limits,
+                       const Vec2& p, const ArmAtPoint& arm1, const ArmAtPoint& arm2,
+                       double sigma1, double sigma2) {
+  if (!arm1.inAnnulus || !arm2.inAnnulus) {
+    PointSample out;
+    out.reachSlackMm = std::min(arm1.slackMm, arm2.slackMm);
+    return out;
+  }
+  // Motor angle cos/sin from the chord and elbow angles: theta = chord + sigma * alpha.
+  const double c1 = arm1.cosC * arm1.cosA - sigma1 * arm1.sinC * arm1.sinA;
+  const double s1 = arm1.sinC * arm1.cosA + sigma1 * arm1.cosC * arm1.sinA;
+  const double c2 = arm2.cosC * arm2.cosA - sigma2 * arm2.sinC * arm2.sinA;
+  const double s2 = arm2.sinC * arm2.cosA + sigma2 * arm2.cosC * arm2.sinA;
+  return sampleAngles(g, s, limits, p, c1, s1, c2, s2, std::min(arm1.slackMm, arm2.slackMm),
+                      std::min(arm1.typeIMarginRad, arm2.typeIMarginRad));
+}
+
+// The pen of a calibrated pen offset at `pen` in `mode`: the pose penInverse gives (leg 1 reaching
+// the pen as the chain a1, c1; P on link b1; leg 2 reaching P), sampled as above. The reach slack
+// is leg 1's chain to the pen and leg 2's to P; out of reach, the chain's or leg 2's (at the P of
+// the chain's elbow in the mode) slack, whichever fails.
+PointSample samplePen(const Geometry& g, const WorkspaceSettings& s, const Limits& limits,
+                      const Vec2& pen, WorkingMode mode) {
+  const PenOffset& o = *s.penOffset;
+  const double c1Len = std::hypot(g.b1 + o.alongMm, o.normalMm);
+  const ArmAtPoint chain = solveArm(g.a1, c1Len, pen.x() + 0.5 * g.w, pen.y());
+  Vec2 P = pen;
+  const IkResult ik = penInverse(g, s.penOffset, pen, mode, &P);
+  if (!ik.ok()) {
+    PointSample out;
+    out.reachSlackMm = chain.slackMm;
+    if (chain.inAnnulus) {
+      // Leg 2 misses P: P of the chain's elbow with the mode's arm-1 sign.
+      Geometry chainGeometry = g;
+      chainGeometry.b1 = c1Len;
+      if (const auto t1 = inverseArm1(chainGeometry, pen, arm1Sign(mode))) {
+        const Vec2 R1 = elbow1(g, *t1);
+        const double psi = std::atan2(o.normalMm, g.b1 + o.alongMm);
+        const Vec2 d = (pen - R1) / c1Len;
+        const Vec2 e(std::cos(psi) * d.x() + std::sin(psi) * d.y(), -std::sin(psi) * d.x() + std::cos(psi) * d.y());
+        const Vec2 Pm = R1 + g.b1 * e;
+        out.reachSlackMm = std::min(out.reachSlackMm, solveArm(g.a2, g.b2, Pm.x() - 0.5 * g.w, Pm.y()).slackMm);
+      }
+      // Reach slack within the tolerance but no pose: just outside.
+      out.reachSlackMm = std::min(out.reachSlackMm, -2.0 * kReachToleranceMm);
+    }
+    return out;
+  }
+  const ArmAtPoint arm1 = solveArm(g.a1, g.b1, P.x() + 0.5 * g.w, P.y());
+  const ArmAtPoint arm2 = solveArm(g.a2, g.b2, P.x() - 0.5 * g.w, P.y());
+  return sampleAngles(g, s, limits, P, std::cos(ik.angles.theta1), std::sin(ik.angles.theta1),
+                      std::cos(ik.angles.theta2), std::sin(ik.angles.theta2),
+                      std::min(chain.slackMm, arm2.slackMm),
+                      std::min(arm1.typeIMarginRad, arm2.typeIMarginRad));
 }
 
 double sigma1Of(WorkingMode m) { return arm1Sign(m) == ArmSign::Plus ? 1.0 : -1.0; }
@@ -166,9 +228,13 @@ void fillRows(const Geometry& g, const WorkspaceSettings& s, WorkspaceMap* maps,
     const double y = grid.yCenter(iy);
     for (int ix = 0; ix < grid.nx; ++ix) {
       const Vec2 p(grid.xCenter(ix), y);
+      const std::size_t i = grid.index(ix, iy);
+      if (s.penOffset) {
+        for (int m = 0; m < count; ++m) store(maps[m], i, samplePen(g, s, limits, p, maps[m].mode));
+        continue;
+      }
       const ArmAtPoint arm1 = solveArm(g.a1, g.b1, p.x() + 0.5 * g.w, y);
       const ArmAtPoint arm2 = solveArm(g.a2, g.b2, p.x() - 0.5 * g.w, y);
-      const std::size_t i = grid.index(ix, iy);
       for (int m = 0; m < count; ++m)
         store(maps[m], i, sampleMode(g, s, limits, p, arm1, arm2, sigma1[m], sigma2[m]));
     }
@@ -196,11 +262,13 @@ WorkspaceSettings workspaceSettings(const MachineProfile& p) {
   s.typeIMarginRad = p.typeIMarginRad;
   s.stepRad1 = radFromDeg(1.0 / p.motors.stepsPerDeg1);
   s.stepRad2 = radFromDeg(1.0 / p.motors.stepsPerDeg2);
+  s.penOffset = calibratedPenOffset(p);
   return s;
 }
 
 PointSample evaluatePoint(const Geometry& g, const WorkspaceSettings& s, WorkingMode mode,
                           const Vec2& p) {
+  if (s.penOffset) return samplePen(g, s, Limits(s.limits), p, mode);
   const ArmAtPoint arm1 = solveArm(g.a1, g.b1, p.x() + 0.5 * g.w, p.y());
   const ArmAtPoint arm2 = solveArm(g.a2, g.b2, p.x() - 0.5 * g.w, p.y());
   return sampleMode(g, s, Limits(s.limits), p, arm1, arm2, sigma1Of(mode), sigma2Of(mode));

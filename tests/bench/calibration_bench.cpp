@@ -46,7 +46,7 @@ void fitAndReport(benchmark::State& state, const std::vector<calibration::MarkMe
     benchmark::DoNotOptimize(fit);
   }
   if (!fit.ok()) {
-    state.SkipWithError(fit.reason.c_str());
+    state.SkipWithError(fit.reason.text().c_str());
     return;
   }
   const auto before = test::areaShapeError(nominal(), area());

@@ -16,6 +16,7 @@
 #include "core/calibration/marks_csv.hpp"
 #include "core/calibration/scan/scan.hpp"
 #include "core/calibration/scan/scan_blobs.hpp"
+#include "core/calibration/scan/scan_lines.hpp"
 
 namespace fivebar {
 namespace {
@@ -54,11 +55,23 @@ void BM_ScanA4At600Dpi(benchmark::State& state) {
   std::size_t found = 0;
   for (auto _ : state) {
     const ScanOutcome s = scanImage(p.image, 600.0, p.marks, "A4");
-    if (!s.ok()) state.SkipWithError(s.error.c_str());
+    if (!s.ok()) state.SkipWithError(s.error.text().c_str());
     found = s.measured.size();
   }
   state.counters["marks"] = static_cast<double>(found);
   state.counters["Mpx"] = p.image.width() * static_cast<double>(p.image.height()) / 1e6;
+}
+
+// The page's accuracy lines (among its marks and numbers): their ends, centre and figures.
+void BM_ScanLinesA4At600Dpi(benchmark::State& state) {
+  const Page& p = page();
+  std::size_t lines = 0;
+  for (auto _ : state) {
+    const LineScanOutcome s = scanAccuracyLines(p.image, 600.0, "A4");
+    if (!s.ok()) state.SkipWithError(s.error.text().c_str());
+    lines = s.lines.size();
+  }
+  state.counters["lines"] = static_cast<double>(lines);
 }
 
 void BM_RunLengthComponents(benchmark::State& state) {
@@ -119,6 +132,7 @@ void BM_BaselineDecodePng(benchmark::State& state) {
 }
 
 BENCHMARK(BM_ScanA4At600Dpi)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ScanLinesA4At600Dpi)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_RunLengthComponents)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_BaselineFloodFillComponents)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_BaselineDecodePng)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -130,8 +130,8 @@ TEST(Scan, BadInputIsNamed) {
   const test::Sheet sheet = test::renderSheet(f.pattern, o);
   // Wrong dpi: the rings are half the size expected; the message suggests the real dpi.
   const ScanOutcome wrong = scanImage(sheet.image, 600, f.marks, "SCAN.png");
-  EXPECT_EQ(wrong.error.rfind("SCAN.png: no marks found at 600 dpi", 0), 0u) << wrong.error;
-  EXPECT_NE(wrong.error.find("about 3"), std::string::npos) << wrong.error;  // "about 300 dpi" or so
+  EXPECT_EQ(wrong.error.text().rfind("SCAN.png: no marks found at 600 dpi", 0), 0u) << wrong.error;
+  EXPECT_NE(wrong.error.text().find("about 3"), std::string::npos) << wrong.error;  // "about 300 dpi" or so
   // A blank page.
   QImage blank(400, 300, QImage::Format_Grayscale8);
   blank.fill(255);
@@ -141,8 +141,8 @@ TEST(Scan, BadInputIsNamed) {
   QTemporaryDir dir;
   const std::string junk = dir.filePath("junk.png").toStdString();
   { std::FILE* fp = std::fopen(junk.c_str(), "wb"); std::fputs("not a picture", fp); std::fclose(fp); }
-  EXPECT_EQ(scanFile(junk, 300, f.marks).error.rfind(junk + ": cannot read the image", 0), 0u);
-  EXPECT_EQ(scanFile("/nonexistent/scan.png", 300, f.marks).error.rfind("/nonexistent/scan.png: cannot read", 0), 0u);
+  EXPECT_EQ(scanFile(junk, 300, f.marks).error.text().rfind(junk + ": cannot read the image", 0), 0u);
+  EXPECT_EQ(scanFile("/nonexistent/scan.png", 300, f.marks).error.text().rfind("/nonexistent/scan.png: cannot read", 0), 0u);
   EXPECT_EQ(scanImage(sheet.image, -1, f.marks, "SCAN.png").error, "SCAN.png: the dpi must be a positive number");
   // Another machine's pattern: the marks do not match.
   const PatternResult other = makeCalibrationPattern(*preset("hoang2015"));
@@ -150,7 +150,7 @@ TEST(Scan, BadInputIsNamed) {
   const MarksLoad otherMarks = parseMarksCsv(marksCsv(*other.pattern), "OTHER.csv");
   const ScanOutcome mismatch = scanImage(sheet.image, 300, otherMarks.marks, "SCAN.png");
   EXPECT_FALSE(mismatch.ok());
-  EXPECT_EQ(mismatch.error.rfind("SCAN.png: ", 0), 0u) << mismatch.error;
+  EXPECT_EQ(mismatch.error.text().rfind("SCAN.png: ", 0), 0u) << mismatch.error;
 }
 
 TEST(MarkMatch, SymmetricPointSetIsAmbiguous) {
@@ -159,7 +159,7 @@ TEST(MarkMatch, SymmetricPointSetIsAmbiguous) {
   std::vector<Vec2> found;
   for (const Vec2& p : nominal) found.push_back(p + Vec2(10, 10));
   const MarkMatch m = matchMarks(found, nominal);
-  EXPECT_NE(m.error.find("ambiguous"), std::string::npos) << m.error;
+  EXPECT_NE(m.error.text().find("ambiguous"), std::string::npos) << m.error;
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "core/kinematics/kinematics.hpp"
 #include "core/machine/profile.hpp"
 #include "core/kinematics/singularity.hpp"
+#include "core/machine/pen_kinematics.hpp"
 #include "test_support.hpp"
 
 namespace fivebar {
@@ -126,6 +127,41 @@ TEST_F(Cli, IkThenFkReturnsThePointsInEveryMode) {
         EXPECT_NEAR(y, points[a][i].y(), 1e-6) << toString(mode) << " line " << i;
       }
     }
+  }
+}
+
+// A calibrated pen offset: ik puts the pen (not P) on the point, fk returns the pen.
+TEST_F(Cli, IkAndFkHonourTheCalibratedPenOffset) {
+  MachineProfile p = *preset("maker-plotter");
+  p.calibration.emplace();
+  p.calibration->penOffset = PenOffset{5.0, -3.0};
+  const std::string file = path("pen.json").string();
+  ASSERT_EQ(saveProfile(p, file), "");
+  const std::vector<Vec2> points{Vec2(-30, 150), Vec2(20, 190), Vec2(45, 130)};
+  std::string in;
+  for (const Vec2& q : points) in += std::to_string(q.x()) + "," + std::to_string(q.y()) + "\n";
+  const CliRun ik = run({"ik", "--machine", file}, in);
+  ASSERT_EQ(ik.exitCode, 0) << ik.err;
+  const auto angles = ik.lines();
+  ASSERT_EQ(angles.size(), points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto [t1, t2] = parsePair(angles[i]);
+    const IkResult core = penInverse(p, points[i], p.defaultMode);
+    ASSERT_TRUE(core.ok());
+    EXPECT_NEAR(t1, degFromRad(core.angles.theta1), 1e-8) << i;
+    EXPECT_NEAR(t2, degFromRad(core.angles.theta2), 1e-8) << i;
+    // P's angles differ by far more than the printed precision.
+    const IkResult atP = inverse(p.geometry, points[i], p.defaultMode);
+    EXPECT_GT(std::abs(t1 - degFromRad(atP.angles.theta1)) + std::abs(t2 - degFromRad(atP.angles.theta2)), 0.5) << i;
+  }
+  const CliRun fk = run({"fk", "--machine", file}, ik.out);
+  ASSERT_EQ(fk.exitCode, 0) << fk.err;
+  const auto xy = fk.lines();
+  ASSERT_EQ(xy.size(), points.size());
+  for (std::size_t i = 0; i < xy.size(); ++i) {
+    const auto [x, y] = parsePair(xy[i]);
+    EXPECT_NEAR(x, points[i].x(), 1e-6) << i;
+    EXPECT_NEAR(y, points[i].y(), 1e-6) << i;
   }
 }
 

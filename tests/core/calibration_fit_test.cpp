@@ -123,7 +123,7 @@ TEST(CalibrationFit, TooFewMarksAreRefusedWithTheCount) {
   marks.resize(6);
   const CalibrationFit fit = fitMarks(nominal(), marks);
   EXPECT_EQ(fit.status, FitStatus::TooFewMeasurements);
-  EXPECT_EQ(fit.reason, "6 marks are too few for 10 parameters: at least 7 marks are needed");
+  EXPECT_EQ(fit.reason.text(), "6 marks are too few for 10 parameters: at least 7 marks are needed");
 }
 
 TEST(CalibrationFit, ClusteredMarksAreRefusedAsIllConditioned) {
@@ -138,8 +138,9 @@ TEST(CalibrationFit, ClusteredMarksAreRefusedAsIllConditioned) {
   }
   const CalibrationFit fit = fitMarks(nominal(), marks);
   EXPECT_EQ(fit.status, FitStatus::IllConditioned) << fit.conditionNumber;
-  EXPECT_NE(fit.reason.find("ill-conditioned"), std::string::npos) << fit.reason;
-  EXPECT_NE(fit.reason.find("spread the marks"), std::string::npos) << fit.reason;
+  EXPECT_NE(fit.reason.text().find("ill-conditioned"), std::string::npos) << fit.reason;
+  EXPECT_TRUE(fit.reason.translatable());
+  EXPECT_NE(fit.reason.text().find("spread the marks"), std::string::npos) << fit.reason;
 }
 
 TEST(CalibrationFit, PerfectDataRecoverTheTruth) {

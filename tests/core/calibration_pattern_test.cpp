@@ -169,7 +169,7 @@ TEST(CalibrationPattern, OtherPresetsGetAPatternOrAClearReason) {
     const MachineProfile p = *preset(name);
     const PatternResult r = makeCalibrationPattern(p);
     if (!r.pattern) {
-      EXPECT_NE(r.error.find("marks"), std::string::npos) << name << ": " << r.error;
+      EXPECT_NE(r.error.text().find("marks"), std::string::npos) << name << ": " << r.error;
       continue;
     }
     if (r.pattern->accuracy)  // marks keep off the accuracy lines on every machine

@@ -142,7 +142,7 @@ TEST(CalibrationWizard, AMisMeasuredMarkIsNamedAsAnOutlier) {
   table->item(row, kX)->setText(QString::number(table->item(row, kX)->text().toDouble() + 3.0, 'f', 2));
   w.next();
   ASSERT_EQ(w.currentId(), CalibrationWizard::kFitPage);
-  ASSERT_TRUE(w.fit && w.fit->ok()) << (w.fit ? w.fit->reason : std::string());
+  ASSERT_TRUE(w.fit && w.fit->ok()) << (w.fit ? w.fit->reason.text() : std::string());
   const std::string id = std::to_string(w.pattern->marks[row].id);
   ASSERT_EQ(w.fit->outlierIds.size(), 1u);
   EXPECT_EQ(w.fit->outlierIds.front(), id);
@@ -188,7 +188,7 @@ TEST(CalibrationWizard, FillsTheTableFromAScanOfTheSheet) {
       << message.toStdString();
   w.next();
   ASSERT_EQ(w.currentId(), CalibrationWizard::kFitPage);
-  ASSERT_TRUE(w.fit && w.fit->ok()) << (w.fit ? w.fit->reason : std::string());
+  ASSERT_TRUE(w.fit && w.fit->ok()) << (w.fit ? w.fit->reason.text() : std::string());
   EXPECT_GT(w.fit->beforeRmsMm, 0.5);
   EXPECT_LT(w.fit->afterRmsMm, 0.1);
 

@@ -9,7 +9,13 @@
 
 #include "core/planning/placement.hpp"
 #include "test_support.hpp"
+#include "core/machine/pen_kinematics.hpp"
+#include "core/planning/planner.hpp"
+#include "core/planning/trajectory.hpp"
 #include "widgets/canvas/job_layer.hpp"
+#include "widgets/canvas/machine_layer.hpp"
+#include "widgets/document/simulation_controller.hpp"
+#include "widgets/document/studio_document.hpp"
 #include "widgets/canvas/machine_painter.hpp"
 #include "widgets/canvas/map_painter.hpp"
 #include "widgets/canvas/studio_palette.hpp"
@@ -151,3 +157,54 @@ TEST(PlacementDelta, MatchesCoreTransforms) {
 
 }  // namespace
 }  // namespace fivebar::widgets
+
+namespace fivebar {
+namespace {
+
+// With a calibrated pen offset the canvas draws the linkage from the motor angles and the pen
+// where penForward puts it, for the home pose and along the simulation (whose samples carry the
+// pen, not P).
+TEST(MachineLayerPen, ThePenIsDrawnWhereTheOffsetPutsIt) {
+  MachineProfile p = *preset("maker-plotter");
+  p.calibration.emplace();
+  p.calibration->penOffset = PenOffset{6.0, -4.0};
+  widgets::StudioDocument doc(p);
+  widgets::SimulationController sim;
+  widgets::MachineLayer layer(doc, sim);
+  ASSERT_TRUE(layer.pose() && layer.penMm());
+  const JointAngles home = kinematicFromCommanded(p.calibration, p.homeAngles);
+  const FkResult atP = forward(p.geometry, home, p.assembly);
+  EXPECT_LT((layer.pose()->P - atP.p).norm(), 1e-9);
+  EXPECT_LT((*layer.penMm() - penForward(p, home).p).norm(), 1e-9);
+  EXPECT_GT((*layer.penMm() - atP.p).norm(), 7.0);  // |(6, -4)| = 7.2 mm off P
+  // Along a planned square: P from the angles, the pen where the sample says it is.
+  Drawing d;
+  d.layers.resize(1);
+  Polyline pl;
+  for (const Vec2& c : {Vec2(0, 0), Vec2(30, 0), Vec2(30, 30), Vec2(0, 30), Vec2(0, 0)}) pl.points.push_back(c);
+  d.layers[0].paths.push_back(pl);
+  PlanOptions o;
+  o.atMm = Vec2(-15, 150);
+  const PlanResult plan = planJob(d, p, o);
+  ASSERT_TRUE(plan.ok()) << plan.message.text();
+  sim.setTrajectory(std::make_shared<Trajectory>(plan.job, p));
+  sim.setTimeS(0.5 * sim.durationS());
+  const TrajectorySample s = sim.sample();
+  ASSERT_TRUE(layer.pose() && layer.penMm());
+  EXPECT_LT((layer.pose()->P - forward(p.geometry, s.q, p.assembly).p).norm(), 1e-9);
+  EXPECT_LT((*layer.penMm() - s.p).norm(), 1e-6);
+  // The painter puts the pen's dot there: its colour at the pen, not at P.
+  QImage img(600, 600, QImage::Format_RGB32);
+  img.fill(Qt::white);
+  QPainter painter(&img);
+  QTransform t;
+  t.translate(300, 300);
+  t.scale(8, -8);
+  t.translate(-layer.penMm()->x(), -layer.penMm()->y());
+  widgets::paintMachine(painter, t, p.geometry, *layer.pose(), 1.0, layer.penMm());
+  painter.end();
+  EXPECT_EQ(img.pixelColor(300, 300), widgets::palette::pen());
+}
+
+}  // namespace
+}  // namespace fivebar

@@ -94,7 +94,8 @@ std::set<QString> runtimeContexts() {
                         "fivebar::widgets::MachineDialogs", "fivebar::session::SettingsAdvice",
                         "CalibrationWizard",
                         // the core's messages (core/support/message.hpp, widgets::translated)
-                        "Placement", "Planner", "Preflight", "Safety", "Profile"})
+                        "Placement", "Planner", "Preflight", "Safety", "Profile", "CalibrationFit",
+                        "CalibrationPattern", "CalibrationScan", "Design", "ImportError"})
     names.insert(QString::fromLatin1(c));
   return names;
 }

@@ -1,5 +1,8 @@
 // The accuracy step of the calibration wizard: Hoang's ten 40 mm lines measured with a ruler
 // (length, straightness), before and after calibration, and the figures that compare them.
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -9,7 +12,9 @@
 #include <QVBoxLayout>
 #include <cmath>
 
+#include "core/calibration/scan/scan_lines.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
+#include "widgets/document/core_message.hpp"
 
 namespace fivebar::widgets::calibration {
 
@@ -52,10 +57,40 @@ AccuracyPage::AccuracyPage(CalibrationWizard& wizard) : w_(wizard) {
   buttons->addWidget(fromSheet_);
   buttons->addStretch(1);
   left->addLayout(buttons);
+  auto* scan = new QHBoxLayout;
+  auto* scanButton = new QPushButton(tr("Import scan..."));
+  scanButton->setObjectName(QStringLiteral("importAccuracyScan"));
+  scanButton->setToolTip(tr("A scan of the sheet with the accuracy lines (PNG or JPEG, taken straight "
+                            "from above): each line's length and straightness are measured in the "
+                            "image and fill the columns of the chosen sheet."));
+  sheet_ = new QComboBox;
+  sheet_->addItem(tr("Sheet drawn before calibration"));
+  sheet_->addItem(tr("Sheet drawn after calibration"));
+  dpi_ = new QDoubleSpinBox;
+  dpi_->setRange(50.0, 4800.0);
+  dpi_->setDecimals(0);
+  dpi_->setValue(600.0);
+  dpi_->setSuffix(tr(" dpi"));
+  dpi_->setToolTip(tr("The scanner's resolution: the scan's size in mm comes from it."));
+  scan->addWidget(scanButton);
+  scan->addWidget(sheet_);
+  scan->addWidget(dpi_);
+  scan->addStretch(1);
+  left->addLayout(scan);
+  scanStatus_ = explanation(QString());
+  scanStatus_->setObjectName(QStringLiteral("accuracyScanStatus"));
+  left->addWidget(scanStatus_);
   preview_ = new CalibrationPreview;
   layout->addLayout(left, 2);
   layout->addWidget(preview_, 1);
   connect(fromSheet_, &QPushButton::clicked, this, &AccuracyPage::fillFromSimulatedSheet);
+  connect(scanButton, &QPushButton::clicked, this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Import a scan of the accuracy lines"), QString(),
+                                                      tr("Images (*.png *.jpg *.jpeg *.tif *.tiff *.bmp)"));
+    if (path.isEmpty()) return;
+    QString message;
+    importScan(path, dpi_->value(), sheet_->currentIndex() == 1, &message);
+  });
   connect(table_, &QTableWidget::cellChanged, this, [this] {
     if (!filling_) updateFigures();
   });
@@ -124,6 +159,37 @@ void AccuracyPage::updateFigures() {
     text += tr("<br>Worst straightness plus worst length error: %1 mm &rarr; <b>%2 mm</b>.").arg(mm(was), mm(now));
   }
   figures_->setText(text);
+}
+
+bool AccuracyPage::importScan(const QString& path, double dpi, bool after, QString* message) {
+  const LineScanOutcome scan = scanAccuracyLinesFile(path.toStdString(), dpi);
+  if (!scan.ok() || !scan.figures) {
+    *message = scan.ok() ? tr("A line in the scan is too short to measure.") : translated(scan.error);
+    scanStatus_->setStyleSheet(QStringLiteral("color:#b00000"));
+    scanStatus_->setText(*message);
+    return false;
+  }
+  filling_ = true;
+  const int c0 = after ? kLengthAfter : kLengthBefore;
+  for (int r = 0; r < kAccuracyLineCount; ++r) {
+    const bool has = r < static_cast<int>(scan.figures->lines.size());
+    const LineAccuracy* l = has ? &scan.figures->lines[static_cast<std::size_t>(r)] : nullptr;
+    table_->item(r, c0)->setText(l ? QLocale().toString(l->lengthMm, 'f', 2) : QString());
+    table_->item(r, c0 + 1)->setText(l ? QLocale().toString(l->straightnessMm, 'f', 2) : QString());
+  }
+  filling_ = false;
+  std::vector<std::vector<Vec2>> trace;
+  for (const ScannedLine& l : scan.lines) trace.push_back(l.pointsMm());
+  preview_->setPlan({});
+  preview_->setTrueTrace(trace);
+  updateFigures();
+  *message = tr("Found %1 lines in the scan (%2 mm pen): the %3 columns are filled.")
+                 .arg(static_cast<int>(scan.lines.size()))
+                 .arg(QLocale().toString(scan.lines.front().penWidthMm, 'f', 2))
+                 .arg(after ? tr("after") : tr("before"));
+  scanStatus_->setStyleSheet(QString());
+  scanStatus_->setText(*message);
+  return true;
 }
 
 void AccuracyPage::fillFromSimulatedSheet() {

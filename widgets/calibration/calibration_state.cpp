@@ -67,7 +67,7 @@ std::optional<CalibrationPattern> makePattern(const MachineProfile& profile, Pat
   options.gridMarks = gridMarks;
   PatternResult r = makeCalibrationPattern(profile, options);
   if (!r.pattern) {
-    if (error) *error = QString::fromStdString(r.error);
+    if (error) *error = translated(r.error);
     return std::nullopt;
   }
   return r.pattern;
@@ -206,7 +206,10 @@ std::optional<AccuracyFigures> simulatedAccuracy(const MachineProfile& profile, 
                                                  std::vector<std::vector<Vec2>>* trace, QString* error) {
   const auto pattern = makePattern(profile, PatternKind::AccuracyOnly, 0, error);
   if (!pattern) return std::nullopt;
-  PlanResult plan = planCalibrationPattern(*pattern, profile);
+  // Planned with the profile as it is: a calibrated profile's zero offsets, pen offset and
+  // backlash compensation all apply (planCalibrationPattern would draw the raw machine, without
+  // the compensation the fitted zeros assume).
+  PlanResult plan = planVerificationPattern(*pattern, profile);
   if (!plan.ok()) {
     if (error) *error = translated(plan.message);
     return std::nullopt;

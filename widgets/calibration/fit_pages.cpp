@@ -102,7 +102,7 @@ void FitPage::initializePage() {
   if (!fit.ok()) {
     summary_->setText(tr("<span style='color:#b00000'><b>The fit failed:</b> %1</span><br>Go back, "
                          "check the table, or measure more marks.")
-                          .arg(QString::fromStdString(fit.reason)));
+                          .arg(translated(fit.reason)));
     parameters_->setRowCount(0);
     preview_->setArrows({});
     emit completeChanged();
@@ -316,7 +316,9 @@ void VerifyPage::initializePage() {
   job_ = {};
   gcode_.clear();
   if (pattern_) {
-    PlanResult plan = planCalibrationPattern(*pattern_, profile);
+    // The calibration applied by the planner (zero offsets, pen offset, backlash compensation):
+    // this sheet shows what the calibration achieves.
+    PlanResult plan = planVerificationPattern(*pattern_, profile);
     if (plan.ok()) {
       job_ = std::move(plan.job);
       try {

@@ -17,6 +17,7 @@
 #include "core/calibration/marks_csv.hpp"
 #include "core/calibration/rigid_fit.hpp"
 #include "core/calibration/scan/scan.hpp"
+#include "widgets/document/core_message.hpp"
 #include "core/kinematics/units.hpp"
 #include "widgets/calibration/distances_box.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
@@ -322,7 +323,7 @@ bool MeasurePage::importScan(const QString& path, double dpi, QString* message) 
   for (const PatternMark& m : w_.pattern->marks) records.push_back({m, w_.pattern->ringRadiusMm});
   const ScanOutcome scan = scanFile(path.toStdString(), dpi, records);
   if (!scan.ok()) {
-    *message = QString::fromStdString(scan.error);
+    *message = translated(scan.error);
     problem_->setStyleSheet(QStringLiteral("color:#b00000"));
     problem_->setText(*message);
     return false;

@@ -10,6 +10,7 @@
 #include "widgets/calibration/simulated_machine.hpp"
 
 class QCheckBox;
+class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
@@ -194,6 +195,11 @@ class AccuracyPage : public QWizardPage {
   // Fills the table from the simulated sheets (before: the profile the wizard started from;
   // after: the profile in use, when the calibration is applied).
   void fillFromSimulatedSheet();
+  // Fills the before (or after) columns from a scan of that sheet (core's scanAccuracyLines) and
+  // shows the lines found in the preview; false with *message saying why (also shown).
+  bool importScan(const QString& path, double dpi, bool after, QString* message);
+  QDoubleSpinBox* scanDpi() const { return dpi_; }
+  QComboBox* scanSheet() const { return sheet_; }
   // The columns read back; false with *error naming the line and the column of a bad cell.
   bool readColumns(bool after, std::vector<LineMeasure>* out, QString* error) const;
   // Recomputes the figures from the table (called on every edit).
@@ -206,6 +212,9 @@ class AccuracyPage : public QWizardPage {
   QTableWidget* table_ = nullptr;
   QLabel* figures_ = nullptr;
   QPushButton* fromSheet_ = nullptr;
+  QDoubleSpinBox* dpi_ = nullptr;
+  QComboBox* sheet_ = nullptr;
+  QLabel* scanStatus_ = nullptr;
   CalibrationPreview* preview_ = nullptr;
   std::optional<AccuracySummary> before_, after_;
   bool filling_ = false;

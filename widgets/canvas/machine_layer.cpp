@@ -1,5 +1,6 @@
 #include "widgets/canvas/machine_layer.hpp"
 
+#include "core/machine/pen_kinematics.hpp"
 #include "widgets/canvas/machine_painter.hpp"
 
 namespace fivebar::widgets {
@@ -8,6 +9,10 @@ std::optional<Pose> poseOf(const MachineProfile& profile, const JointAngles& ang
   const FkResult fk = forward(profile.geometry, angles, profile.assembly);
   if (!fk.ok()) return std::nullopt;
   return makePose(profile.geometry, angles, fk.p);
+}
+
+Vec2 penOf(const MachineProfile& profile, const Pose& pose) {
+  return penFromDistal(calibratedPenOffset(profile), profile.geometry, pose.R1, pose.P);
 }
 
 MachineLayer::MachineLayer(const StudioDocument& doc, const SimulationController& sim,
@@ -30,26 +35,26 @@ void MachineLayer::refresh() {
   const bool simulating =
       sim_.trajectory() != nullptr && (sim_.playing() || sim_.timeS() > 0.0);
   ghost_.reset();
+  // The simulation's samples carry the pen (Trajectory::at): the linkage comes from the angles.
   if (external_) {
     pose_ = poseOf(profile, kinematicFromCommanded(profile.calibration, *external_));  // MPos is commanded
-    if (simulating) {
-      const TrajectorySample s = sim_.sample();
-      ghost_ = makePose(profile.geometry, s.q, s.p);
-    }
+    if (simulating) ghost_ = poseOf(profile, sim_.sample().q);
   } else if (sim_.trajectory() != nullptr) {
-    const TrajectorySample s = sim_.sample();
-    pose_ = makePose(profile.geometry, s.q, s.p);
+    pose_ = poseOf(profile, sim_.sample().q);
   } else {
     pose_ = poseOf(profile, kinematicFromCommanded(profile.calibration, profile.homeAngles));
   }
+  pen_ = pose_ ? std::optional<Vec2>(penOf(profile, *pose_)) : std::nullopt;
+  ghostPen_ = ghost_ ? std::optional<Vec2>(penOf(profile, *ghost_)) : std::nullopt;
   emit changed();
 }
 
 void MachineLayer::paint(QPainter& painter, const ViewTransform& view) {
-  if (ghost_) paintMachine(painter, view.widgetFromMachine(), doc_.profile().geometry, *ghost_, kGhostOpacity);
+  if (ghost_)
+    paintMachine(painter, view.widgetFromMachine(), doc_.profile().geometry, *ghost_, kGhostOpacity, ghostPen_);
   if (!pose_) return;
   // Slightly see-through so the drawing under the arms stays readable.
-  paintMachine(painter, view.widgetFromMachine(), doc_.profile().geometry, *pose_, kOpacity);
+  paintMachine(painter, view.widgetFromMachine(), doc_.profile().geometry, *pose_, kOpacity, pen_);
 }
 
 }  // namespace fivebar::widgets

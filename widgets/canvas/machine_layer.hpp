@@ -2,7 +2,8 @@
 // reported pose (setExternalAngles) whenever there is one, with the simulation's pose as a
 // faint ghost while the simulation runs or is scrubbed; without a machine the simulation's pose,
 // else the simulation's start pose or the profile's home pose. The pose is recomputed when its
-// source changes (not in paint); paint only draws it.
+// source changes (not in paint); paint only draws it. With a calibrated pen offset the pen is
+// drawn where it really is, fixed to link b1 off the distal joint P (pen_kinematics.hpp).
 #pragma once
 
 #include <QObject>
@@ -29,6 +30,10 @@ class MachineLayer : public QObject, public CanvasLayer {
   const std::optional<Pose>& pose() const { return pose_; }
   // The simulation's pose drawn faintly behind the machine's (nullopt when none).
   const std::optional<Pose>& ghost() const { return ghost_; }
+  // Where the pen of pose() / ghost() is (machine frame, mm): P, or P plus the calibrated pen
+  // offset; nullopt with no pose.
+  const std::optional<Vec2>& penMm() const { return pen_; }
+  const std::optional<Vec2>& ghostPenMm() const { return ghostPen_; }
 
  public slots:
   // Shows an externally reported pose (the connected machine's position), overriding the
@@ -46,9 +51,13 @@ class MachineLayer : public QObject, public CanvasLayer {
   std::optional<JointAngles> external_;
   std::optional<Pose> pose_;
   std::optional<Pose> ghost_;
+  std::optional<Vec2> pen_, ghostPen_;
 };
 
-// The pose of `angles` in the profile's assembly mode; nullopt when the loop cannot close.
+// The pose of kinematic `angles` in the profile's assembly mode (P the distal joint); nullopt when
+// the loop cannot close.
 std::optional<Pose> poseOf(const MachineProfile& profile, const JointAngles& angles);
+// The pen of a pose of the profile: P, or P plus the calibrated pen offset.
+Vec2 penOf(const MachineProfile& profile, const Pose& pose);
 
 }  // namespace fivebar::widgets

@@ -82,7 +82,7 @@ void paintGrid(QPainter& painter, const ViewTransform& view) {
 }
 
 void paintMachine(QPainter& painter, const QTransform& widgetFromMachine, const Geometry& g,
-                  const Pose& pose, double opacity) {
+                  const Pose& pose, double opacity, const std::optional<Vec2>& penMm) {
   painter.save();
   painter.setOpacity(opacity);
   painter.setRenderHint(QPainter::Antialiasing, true);
@@ -121,12 +121,17 @@ void paintMachine(QPainter& painter, const QTransform& widgetFromMachine, const 
   link(m2, r2, palette::drivingLink(), linkWidth);
   link(r1, p, palette::floatingLink(), linkWidth * 0.7);
   link(r2, p, palette::floatingLink(), linkWidth * 0.7);
+  const bool offset = penMm && (*penMm - pose.P).norm() > 1e-9;
+  const QPointF pen = offset ? t.map(toQ(*penMm)) : p;
+  // A pen off P sits on a bracket fixed to link b1 (R1 -> P -> pen are rigid).
+  if (offset) link(p, pen, palette::floatingLink(), linkWidth * 0.45);
   painter.setPen(QPen(palette::machineBase(), 1.5));
   painter.setBrush(palette::joint());
   for (const QPointF& j : {m1, m2, r1, r2}) painter.drawEllipse(j, jointRadius, jointRadius);
+  if (offset) painter.drawEllipse(p, jointRadius * 0.8, jointRadius * 0.8);
   painter.setBrush(palette::pen());
   painter.setPen(QPen(Qt::white, 1.5));
-  painter.drawEllipse(p, jointRadius * 1.3, jointRadius * 1.3);
+  painter.drawEllipse(pen, jointRadius * 1.3, jointRadius * 1.3);
   painter.restore();
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <QPainter>
+#include <optional>
 
 #include "core/kinematics/kinematics.hpp"
 #include "widgets/canvas/view_transform.hpp"
@@ -16,8 +17,10 @@ void paintGrid(QPainter& painter, const ViewTransform& view);
 
 // The machine to scale: base between the motors, motors, driving links a1/a2 to the elbows,
 // floating links b1/b2 to the pen, joints and the pen point. `opacity` in [0, 1] fades it (used
-// while the drawing is edited so the machine does not hide it).
+// while the drawing is edited so the machine does not hide it). `penMm`: where the pen is when it
+// is not at P (a calibrated pen offset): a bracket from P to it on link b1's side, the pen point
+// there and a plain joint at P.
 void paintMachine(QPainter& painter, const QTransform& widgetFromMachine, const Geometry& g,
-                  const Pose& pose, double opacity = 1.0);
+                  const Pose& pose, double opacity = 1.0, const std::optional<Vec2>& penMm = std::nullopt);
 
 }  // namespace fivebar::widgets

@@ -15,7 +15,9 @@ namespace {
 // The paper and the ink must differ by at least this many grey levels to find anything.
 constexpr double kMinContrast = 40.0;
 
-std::string mmText(double v) { return fixedDecimal(v, 1); }
+Message sourced(const std::string& source, Message m) {
+  return std::move(Message(FB_TR("CalibrationScan", "%1: %2")).arg(source).arg(std::move(m)));
+}
 
 }  // namespace
 
@@ -23,21 +25,21 @@ ScanOutcome scanImage(const QImage& image, double dpi, const std::vector<MarkRec
                       const std::string& source) {
   ScanOutcome out;
   if (!(dpi > 0.0) || !std::isfinite(dpi)) {
-    out.error = source + ": the dpi must be a positive number";
+    out.error = sourced(source, FB_TR("CalibrationScan", "the dpi must be a positive number"));
     return out;
   }
   if (image.isNull() || image.width() < 2 || image.height() < 2) {
-    out.error = source + ": the image is empty";
+    out.error = sourced(source, FB_TR("CalibrationScan", "the image is empty"));
     return out;
   }
   if (marks.empty()) {
-    out.error = source + ": the pattern has no marks";
+    out.error = sourced(source, FB_TR("CalibrationScan", "the pattern has no marks"));
     return out;
   }
   const QImage grey = image.convertToFormat(QImage::Format_Grayscale8);
   const scan::Levels levels = scan::levelsOf(grey);
   if (levels.paper - levels.ink < kMinContrast) {
-    out.error = source + ": no ink found (the image has almost no contrast)";
+    out.error = sourced(source, FB_TR("CalibrationScan", "no ink found (the image has almost no contrast)"));
     return out;
   }
   const double pxPerMm = dpi / kMmPerInch;
@@ -47,14 +49,25 @@ ScanOutcome scanImage(const QImage& image, double dpi, const std::vector<MarkRec
       scan::findMarks(grey, levels, blobs, ringMm * pxPerMm, kScanMaxPenMm * pxPerMm);
   out.foundMarks = static_cast<int>(found.size());
   if (found.empty()) {
-    std::ostringstream e;
-    e << source << ": no marks found at " << dpi << " dpi: the pattern's rings are " << mmText(ringMm)
-      << " mm across (" << fixedDecimal(ringMm * pxPerMm, 0) << " px)";
+    std::ostringstream dpiText;
+    dpiText << dpi;
     const double typical = scan::typicalRingSizePx(blobs, 8.0);
-    if (typical > 0.0)
-      e << "; the ring-like shapes in the image are about " << fixedDecimal(typical, 0)
-        << " px: is it scanned at about " << fixedDecimal(typical / ringMm * kMmPerInch, 0) << " dpi?";
-    out.error = e.str();
+    Message m = typical > 0.0
+                    ? std::move(Message(FB_TR("CalibrationScan",
+                                              "no marks found at %1 dpi: the pattern's rings are %2 mm across "
+                                              "(%3 px); the ring-like shapes in the image are about %4 px: is it "
+                                              "scanned at about %5 dpi?"))
+                                    .arg(dpiText.str())
+                                    .arg(ringMm, 1)
+                                    .arg(ringMm * pxPerMm, 0)
+                                    .arg(typical, 0)
+                                    .arg(typical / ringMm * kMmPerInch, 0))
+                    : std::move(Message(FB_TR("CalibrationScan",
+                                              "no marks found at %1 dpi: the pattern's rings are %2 mm across (%3 px)"))
+                                    .arg(dpiText.str())
+                                    .arg(ringMm, 1)
+                                    .arg(ringMm * pxPerMm, 0));
+    out.error = sourced(source, std::move(m));
     return out;
   }
   // Pixel centres to paper mm, y up from the lower left corner.
@@ -66,7 +79,7 @@ ScanOutcome scanImage(const QImage& image, double dpi, const std::vector<MarkRec
   for (const MarkRecord& m : marks) nominal.push_back(m.mark.nominalMm);
   const MarkMatch match = matchMarks(foundMm, nominal);
   if (!match.ok()) {
-    out.error = source + ": " + match.error;
+    out.error = sourced(source, match.error);
     return out;
   }
   for (size_t i = 0; i < marks.size(); ++i) {
@@ -93,7 +106,8 @@ ScanOutcome scanFile(const std::string& path, double dpi, const std::vector<Mark
   const QImage image = reader.read();
   if (image.isNull()) {
     ScanOutcome out;
-    out.error = path + ": cannot read the image (" + reader.errorString().toStdString() + ")";
+    out.error = sourced(path, std::move(Message(FB_TR("CalibrationScan", "cannot read the image (%1)"))
+                                            .arg(reader.errorString().toStdString())));
     return out;
   }
   return scanImage(image, dpi, marks, path);

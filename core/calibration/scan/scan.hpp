@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/calibration/marks_csv.hpp"
+#include "core/support/message.hpp"
 
 namespace fivebar {
 
@@ -23,7 +24,7 @@ struct ScanOutcome {
   bool mirrored = false;               // the sheet lies mirrored in the image
   double rotationDeg = 0.0;            // of the sheet in the image
   double rmsMm = 0.0;                  // rigid-placement residual against the nominal marks
-  std::string error;                   // names the file and what is wrong; empty when ok
+  Message error;                       // names the file and what is wrong; empty when ok (translatable)
   bool ok() const { return error.empty(); }
 };
 

@@ -95,6 +95,7 @@ std::vector<Blob> darkBlobs(const QImage& grey, const Levels& levels) {
   std::vector<int> blobOf(parent.size(), -1);
   std::vector<Blob> blobs;
   std::vector<Vec2> sums;
+  std::vector<std::array<double, 3>> moments;  // raw sums of x^2, x y, y^2 (pixel centres)
   for (const Run& r : runs) {
     const int root = findRoot(parent, r.label);
     int& b = blobOf[static_cast<size_t>(root)];
@@ -102,6 +103,7 @@ std::vector<Blob> darkBlobs(const QImage& grey, const Levels& levels) {
       b = static_cast<int>(blobs.size());
       blobs.push_back({0, r.x0, r.y, r.x1, r.y, Vec2::Zero()});
       sums.push_back(Vec2::Zero());
+      moments.push_back({0.0, 0.0, 0.0});
     }
     Blob& blob = blobs[static_cast<size_t>(b)];
     const int n = r.x1 - r.x0 + 1;
@@ -110,9 +112,24 @@ std::vector<Blob> darkBlobs(const QImage& grey, const Levels& levels) {
     blob.x1 = std::max(blob.x1, r.x1);
     blob.y0 = std::min(blob.y0, r.y);
     blob.y1 = std::max(blob.y1, r.y);
-    sums[static_cast<size_t>(b)] += Vec2(n * (0.5 * (r.x0 + r.x1) + 0.5), n * (r.y + 0.5));
+    const double sx = n * (0.5 * (r.x0 + r.x1) + 0.5), yc = r.y + 0.5;
+    sums[static_cast<size_t>(b)] += Vec2(sx, n * yc);
+    // Sum over the run of (k + 0.5)^2 = sum k^2 + sum k + n / 4.
+    const auto sumSq = [](double m) { return m * (m + 1.0) * (2.0 * m + 1.0) / 6.0; };
+    const double sk = 0.5 * n * (r.x0 + r.x1);
+    auto& mo = moments[static_cast<size_t>(b)];
+    mo[0] += sumSq(r.x1) - sumSq(r.x0 - 1.0) + sk + 0.25 * n;
+    mo[1] += sx * yc;
+    mo[2] += n * yc * yc;
   }
-  for (size_t i = 0; i < blobs.size(); ++i) blobs[i].centroidPx = sums[i] / blobs[i].area;
+  for (size_t i = 0; i < blobs.size(); ++i) {
+    Blob& blob = blobs[i];
+    blob.centroidPx = sums[i] / blob.area;
+    const double a = blob.area;
+    blob.sxx = moments[i][0] - a * blob.centroidPx.x() * blob.centroidPx.x();
+    blob.sxy = moments[i][1] - a * blob.centroidPx.x() * blob.centroidPx.y();
+    blob.syy = moments[i][2] - a * blob.centroidPx.y() * blob.centroidPx.y();
+  }
   return blobs;
 }
 

@@ -15,6 +15,7 @@ struct Blob {
   int area = 0;                          // pixels
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;    // bounding box, inclusive
   Vec2 centroidPx = Vec2::Zero();        // of the pixels (centres at +0.5)
+  double sxx = 0.0, sxy = 0.0, syy = 0.0;  // central second moments of the pixels (sums, px^2)
   int width() const { return x1 - x0 + 1; }
   int height() const { return y1 - y0 + 1; }
 };
