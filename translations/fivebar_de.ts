@@ -204,6 +204,53 @@
     </message>
 </context>
 <context>
+    <name>Jog</name>
+    <message>
+        <source>the machine position is not known yet</source>
+        <translation>die Position der Maschine ist noch nicht bekannt</translation>
+    </message>
+    <message>
+        <source>the current motor angles do not close the linkage</source>
+        <translation>die aktuellen Motorwinkel schließen das Gestänge nicht</translation>
+    </message>
+    <message>
+        <source>the line leaves the workspace</source>
+        <translation>die Linie verlässt den Arbeitsbereich</translation>
+    </message>
+    <message>
+        <source>the arms cannot follow the straight line closely enough</source>
+        <translation>die Arme können der geraden Linie nicht genau genug folgen</translation>
+    </message>
+    <message>
+        <source>stopped after %1 mm: %2</source>
+        <translation>nach %1 mm angehalten: %2</translation>
+    </message>
+    <message>
+        <source>no jog direction</source>
+        <translation>keine Verfahrrichtung</translation>
+    </message>
+    <message>
+        <source>no safe travel to that point</source>
+        <translation>kein sicherer Weg zu diesem Punkt</translation>
+    </message>
+    <message>
+        <source>the point is out of reach</source>
+        <translation>der Punkt ist außer Reichweite</translation>
+    </message>
+    <message>
+        <source>the job has no pen-down strokes to frame</source>
+        <translation>der Auftrag hat keine Striche mit abgesenktem Stift, die umrahmt werden könnten</translation>
+    </message>
+    <message>
+        <source>cannot reach the frame's first corner: %1</source>
+        <translation>die erste Ecke des Rahmens ist nicht erreichbar: %1</translation>
+    </message>
+    <message>
+        <source>frame edge %1: %2</source>
+        <translation>Rahmenkante %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>MapPainter</name>
     <message>
         <source>Transmission angle at the pen (deg)</source>
@@ -216,6 +263,69 @@
     <message>
         <source>Resolution (um per motor step)</source>
         <translation>Auflösung (µm je Motorschritt)</translation>
+    </message>
+</context>
+<context>
+    <name>MotionCheck</name>
+    <message>
+        <source>G2/G3 arcs are not arcs in joint space (X and Y are motor angles): plan the drawing with 'fivebar plan', which turns arcs into checked straight segments</source>
+        <translation>G2/G3-Bögen sind im Gelenkraum keine Bögen (X und Y sind Motorwinkel): planen Sie die Zeichnung mit 'fivebar plan', das Bögen in geprüfte gerade Segmente umwandelt</translation>
+    </message>
+    <message>
+        <source>probing (G38) is not supported on a five-bar machine</source>
+        <translation>Antasten (G38) wird auf einer Fünfgelenkmaschine nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>G20 (inches) would scale the motor angles by 25.4: X and Y are degrees, use G21</source>
+        <translation>G20 (Zoll) würde die Motorwinkel mit 25,4 skalieren: X und Y sind Grad, verwenden Sie G21</translation>
+    </message>
+    <message>
+        <source>G10/G92 change the coordinates the checks rely on: %1</source>
+        <translation>G10/G92 ändern die Koordinaten, auf denen die Prüfungen beruhen: %1</translation>
+    </message>
+    <message>
+        <source>G55-G59 select another work coordinate system; the checked link works in G54</source>
+        <translation>G55-G59 wählen ein anderes Werkstückkoordinatensystem; die geprüfte Verbindung arbeitet in G54</translation>
+    </message>
+    <message>
+        <source>a jog ($J=) takes only G90, G91, G53 and G21</source>
+        <translation>ein Verfahrbefehl ($J=) akzeptiert nur G90, G91, G53 und G21</translation>
+    </message>
+    <message>
+        <source>the board would refuse the jog (error:15)</source>
+        <translation>die Steuerung würde das Verfahren ablehnen (error:15)</translation>
+    </message>
+    <message>
+        <source>the board would stop with a soft-limit alarm (ALARM:2)</source>
+        <translation>die Steuerung würde mit einem Software-Endlagen-Alarm anhalten (ALARM:2)</translation>
+    </message>
+    <message>
+        <source>the target %1 takes motor %2 to %3 deg in machine coordinates, outside the board's soft-limit travel %4..0 deg ($%5=%6): %7; home the machine or set its reference so that the travel matches the profile, or choose a target inside it</source>
+        <translation>das Ziel %1 bringt Motor %2 auf %3 Grad in Maschinenkoordinaten, außerhalb des Software-Verfahrwegs der Steuerung %4..0 Grad ($%5=%6): %7; referenzieren Sie die Maschine oder setzen Sie ihre Referenz so, dass der Verfahrweg zum Profil passt, oder wählen Sie ein Ziel darin</translation>
+    </message>
+    <message>
+        <source>set the machine's reference with 'fivebar reference' (or home it with 'fivebar home')</source>
+        <translation>setzen Sie die Referenz der Maschine mit 'fivebar reference' (oder referenzfahren Sie sie mit 'fivebar home')</translation>
+    </message>
+    <message>
+        <source>choose a target inside the workspace (fivebar workspace shows it)</source>
+        <translation>wählen Sie ein Ziel innerhalb des Arbeitsbereichs ('fivebar workspace' zeigt ihn)</translation>
+    </message>
+    <message>
+        <source>(%1, %2) deg</source>
+        <translation>(%1, %2) Grad</translation>
+    </message>
+    <message>
+        <source>G28/G30 go to a position stored on the board, which is not known here; move to the point with a G0 line instead</source>
+        <translation>G28/G30 fahren zu einer auf der Steuerung gespeicherten Position, die hier nicht bekannt ist; fahren Sie den Punkt stattdessen mit einer G0-Zeile an</translation>
+    </message>
+    <message>
+        <source>the machine's position %1 is not a safe pose of %2 (%3), so no move from it can be checked: %4 first</source>
+        <translation>die Position der Maschine %1 ist keine sichere Stellung von %2 (%3), daher kann keine Bewegung von ihr aus geprüft werden: %4 zuerst</translation>
+    </message>
+    <message>
+        <source>the move from %1 to %2 %3; %4</source>
+        <translation>die Bewegung von %1 nach %2 %3; %4</translation>
     </message>
 </context>
 <context>
@@ -470,6 +580,13 @@
     </message>
 </context>
 <context>
+    <name>SoftLimits</name>
+    <message>
+        <source>line %1 moves motor %2 to %3 deg in machine coordinates, outside the board's soft-limit travel %4..0 ($%5=%6)</source>
+        <translation>Zeile %1 bringt Motor %2 auf %3 Grad in Maschinenkoordinaten, außerhalb des Software-Verfahrwegs der Steuerung %4..0 ($%5=%6)</translation>
+    </message>
+</context>
+<context>
     <name>WorkspaceLegend</name>
     <message>
         <source>type II &gt;= %1 deg, type I &gt;= %2 deg</source>
@@ -510,6 +627,308 @@
     <message>
         <source>singularity-free area: %1 cm²</source>
         <translation>singularitätsfreie Fläche: %1 cm²</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::session::BoardPreflight</name>
+    <message>
+        <source>The board's soft limits would stop this job with an alarm (ALARM:2): %1. The board checks its travel ($130, $131) in machine coordinates, which the reference pose shifted against the drawing's. Home the machine, or make the board's settings match the profile (Machine settings...), then start again.</source>
+        <translation>Die Software-Endlagen der Steuerung würden diesen Auftrag mit einem Alarm anhalten (ALARM:2): %1. Die Steuerung prüft ihren Verfahrweg ($130, $131) in Maschinenkoordinaten, die die Referenzstellung gegenüber denen der Zeichnung verschoben hat. Referenzfahren Sie die Maschine oder gleichen Sie die Einstellungen der Steuerung an das Profil an (Maschineneinstellungen...) und starten Sie dann erneut.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::session::JogController</name>
+    <message>
+        <source>Jog refused: the machine is not connected, not idle, or a job is running.</source>
+        <translation>Verfahren abgelehnt: Die Maschine ist nicht verbunden, nicht bereit, oder ein Auftrag läuft.</translation>
+    </message>
+    <message>
+        <source>Jog stopped at the last safe point: %1</source>
+        <translation>Verfahren am letzten sicheren Punkt angehalten: %1</translation>
+    </message>
+    <message>
+        <source>Jog refused: %1</source>
+        <translation>Verfahren abgelehnt: %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::session::MachineSession</name>
+    <message>
+        <source>Cannot open %1.</source>
+        <translation>%1 kann nicht geöffnet werden.</translation>
+    </message>
+    <message>
+        <source>Connected to %1.</source>
+        <translation>Verbunden mit %1.</translation>
+    </message>
+    <message>
+        <source>Disconnected.</source>
+        <translation>Getrennt.</translation>
+    </message>
+    <message>
+        <source>Not connected: %1 was not sent.</source>
+        <translation>Nicht verbunden: %1 wurde nicht gesendet.</translation>
+    </message>
+    <message>
+        <source>Not sent (%1): %2</source>
+        <translation>Nicht gesendet (%1): %2</translation>
+    </message>
+    <message>
+        <source>A job is running: %1 was not sent.</source>
+        <translation>Ein Auftrag läuft: %1 wurde nicht gesendet.</translation>
+    </message>
+    <message>
+        <source>Jog refused: the machine is not idle, not connected or a job is running.</source>
+        <translation>Verfahren abgelehnt: Die Maschine ist nicht bereit, nicht verbunden, oder ein Auftrag läuft.</translation>
+    </message>
+    <message>
+        <source>%1 (jog in %2 checked moves)</source>
+        <translation>%1 (Verfahren in %2 geprüften Bewegungen)</translation>
+    </message>
+    <message>
+        <source>[soft reset]</source>
+        <translation>[Soft-Reset]</translation>
+    </message>
+    <message>
+        <source>[feed hold]</source>
+        <translation>[Vorschub halten]</translation>
+    </message>
+    <message>
+        <source>[cycle start]</source>
+        <translation>[Zyklusstart]</translation>
+    </message>
+    <message>
+        <source>%1 was rejected: %2</source>
+        <translation>%1 wurde abgelehnt: %2</translation>
+    </message>
+    <message>
+        <source>The machine is locked (alarm state). Unlock it with $X or home it with $H once you know where it stands.</source>
+        <translation>Die Maschine ist gesperrt (Alarmzustand). Entsperren Sie sie mit $X oder führen Sie mit $H eine Referenzfahrt aus, sobald Sie wissen, wo sie steht.</translation>
+    </message>
+    <message>
+        <source>The board reset (Grbl %1).</source>
+        <translation>Die Steuerung wurde zurückgesetzt (Grbl %1).</translation>
+    </message>
+    <message>
+        <source>Connection lost: %1</source>
+        <translation>Verbindung verloren: %1</translation>
+    </message>
+    <message>
+        <source>the simulated machine</source>
+        <translation>der simulierten Maschine</translation>
+    </message>
+    <message>
+        <source>set the reference pose (Machine panel) or home the machine</source>
+        <translation>setzen Sie die Referenzstellung (Maschinen-Panel) oder referenzieren Sie die Maschine</translation>
+    </message>
+    <message>
+        <source>%1 at %2 baud</source>
+        <translation>%1 mit %2 Baud</translation>
+    </message>
+    <message>
+        <source>Opened %1; waiting for the board to answer...</source>
+        <translation>%1 geöffnet; warte auf die Antwort der Steuerung...</translation>
+    </message>
+    <message>
+        <source>No GRBL board answered on %1 within %2 s. Check that the port is the machine's, that the baud rate matches its firmware (GRBL 1.1: usually 115200) and that it is powered.</source>
+        <translation>Auf %1 hat innerhalb von %2 s keine GRBL-Steuerung geantwortet. Prüfen Sie, ob der Anschluss der der Maschine ist, ob die Baudrate zu ihrer Firmware passt (GRBL 1.1: meist 115200) und ob sie eingeschaltet ist.</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>Nicht gesendet: %1</translation>
+    </message>
+    <message>
+        <source>Unchecked: %1</source>
+        <translation>Ungeprüft: %1</translation>
+    </message>
+    <message>
+        <source>The machine's position is not known yet (no status report with its work position): wait a moment, or set the reference pose.</source>
+        <translation>Die Position der Maschine ist noch unbekannt (kein Statusbericht mit ihrer Werkstückposition): Warten Sie einen Moment oder setzen Sie die Referenzstellung.</translation>
+    </message>
+    <message>
+        <source>The machine is still moving or busy: send a move when it stands still (Idle), so it can be checked from where the machine really is.</source>
+        <translation>Die Maschine bewegt sich noch oder ist beschäftigt: Senden Sie eine Bewegung, wenn sie stillsteht (Bereit), damit sie von der wirklichen Position aus geprüft werden kann.</translation>
+    </message>
+    <message>
+        <source>Console lines are sent UNCHECKED from now on.</source>
+        <translation>Konsolenzeilen werden ab jetzt UNGEPRÜFT gesendet.</translation>
+    </message>
+    <message>
+        <source>Console lines are checked again.</source>
+        <translation>Konsolenzeilen werden wieder geprüft.</translation>
+    </message>
+    <message>
+        <source>The machine must be connected, idle and its position known.</source>
+        <translation>Die Maschine muss verbunden und bereit sein, und ihre Position muss bekannt sein.</translation>
+    </message>
+    <message>
+        <source>The profile's home pose does not close the linkage.</source>
+        <translation>Die Grundstellung des Profils schließt das Gestänge nicht.</translation>
+    </message>
+    <message>
+        <source>No checked move to the home pose: %1</source>
+        <translation>Keine geprüfte Bewegung zur Grundstellung: %1</translation>
+    </message>
+    <message>
+        <source>The move was not sent (see the console).</source>
+        <translation>Die Bewegung wurde nicht gesendet (siehe Konsole).</translation>
+    </message>
+    <message>
+        <source>choose a target inside the workspace</source>
+        <translation>wählen Sie ein Ziel innerhalb des Arbeitsbereichs</translation>
+    </message>
+    <message>
+        <source>Move not sent: %1</source>
+        <translation>Bewegung nicht gesendet: %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::session::RunController</name>
+    <message>
+        <source>The connection was closed during the run. The progress is saved beside the job: reconnect and resume.</source>
+        <translation>Die Verbindung wurde während des Auftrags getrennt. Der Fortschritt ist neben dem Auftrag gespeichert: Verbinden Sie erneut und setzen Sie fort.</translation>
+    </message>
+    <message>
+        <source>Cannot start: connect the machine, wait until it is idle, and let the job plan first.</source>
+        <translation>Start nicht möglich: Verbinden Sie die Maschine, warten Sie, bis sie bereit ist, und lassen Sie den Auftrag zuerst planen.</translation>
+    </message>
+    <message>
+        <source>Cannot create the job folder %1.</source>
+        <translation>Der Auftragsordner %1 kann nicht angelegt werden.</translation>
+    </message>
+    <message>
+        <source>Nothing to resume: there is no saved progress beside %1.</source>
+        <translation>Nichts fortzusetzen: Neben %1 ist kein Fortschritt gespeichert.</translation>
+    </message>
+    <message>
+        <source>line %1 of %2</source>
+        <translation>Zeile %1 von %2</translation>
+    </message>
+    <message>
+        <source>The run of "%1" was interrupted at %2: %3</source>
+        <translation>Der Lauf von „%1“ wurde bei %2 unterbrochen: %3</translation>
+    </message>
+    <message>
+        <source>press Resume</source>
+        <translation>drücken Sie Fortsetzen</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Fortsetzen</translation>
+    </message>
+    <message>
+        <source>The machine raised an alarm and the job stopped (the banner in the Machine panel says why). The progress is saved: clear the alarm (Reset, Unlock), check the pen stands where the studio shows it, then press Resume.</source>
+        <translation>Die Maschine hat einen Alarm ausgelöst und der Auftrag wurde angehalten (das Banner im Maschinen-Panel sagt, warum). Der Fortschritt ist gespeichert: Heben Sie den Alarm auf (Reset, Entsperren), prüfen Sie, dass der Stift dort steht, wo das Studio ihn zeigt, und drücken Sie dann Fortsetzen.</translation>
+    </message>
+    <message>
+        <source>Resuming "%1"…</source>
+        <translation>Setze „%1“ fort…</translation>
+    </message>
+    <message>
+        <source>Running "%1"…</source>
+        <translation>„%1“ läuft…</translation>
+    </message>
+    <message>
+        <source>"%1" is drawn.</source>
+        <translation>„%1“ ist gezeichnet.</translation>
+    </message>
+    <message>
+        <source>Not started: %1</source>
+        <translation>Nicht gestartet: %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::session::SettingsAdvice</name>
+    <message>
+        <source>soft limits are on, but this machine has no homing switches: the board measures its travel from where it was switched on, not from the reference pose, and stops the job with ALARM:2 when a move leaves that range.</source>
+        <translation>Software-Endlagen sind an, aber diese Maschine hat keine Referenzschalter: Die Steuerung misst ihren Verfahrweg ab der Einschaltstellung, nicht ab der Referenzstellung, und stoppt den Auftrag mit ALARM:2, sobald eine Bewegung diesen Bereich verlässt.</translation>
+    </message>
+    <message>
+        <source>soft limits are off although the profile expects them.</source>
+        <translation>Software-Endlagen sind aus, obwohl das Profil sie erwartet.</translation>
+    </message>
+    <message>
+        <source>hard limits are on: without limit switches wired, noise on the pins stops the machine with ALARM:1.</source>
+        <translation>Hardware-Endlagen sind an: Ohne angeschlossene Endschalter stoppen Störungen an den Pins die Maschine mit ALARM:1.</translation>
+    </message>
+    <message>
+        <source>hard limits are off although the profile expects them.</source>
+        <translation>Hardware-Endlagen sind aus, obwohl das Profil sie erwartet.</translation>
+    </message>
+    <message>
+        <source>the homing cycle is on: the board starts locked and wants $H, which needs homing switches.</source>
+        <translation>Der Referenzlauf ist an: Die Steuerung startet gesperrt und verlangt $H, wofür Referenzschalter nötig sind.</translation>
+    </message>
+    <message>
+        <source>the homing cycle is off although the profile has switches.</source>
+        <translation>Der Referenzlauf ist aus, obwohl das Profil Schalter hat.</translation>
+    </message>
+    <message>
+        <source>steps per degree differ: every motor angle would be wrong by the ratio, so the arms would leave the checked, safe poses.</source>
+        <translation>Die Schritte pro Grad weichen ab: Jeder Motorwinkel wäre um dieses Verhältnis falsch, die Arme verließen also die geprüften, sicheren Stellungen.</translation>
+    </message>
+    <message>
+        <source>the board's maximum rate is lower: the job runs slower than planned and the time estimate is off.</source>
+        <translation>Die Höchstgeschwindigkeit der Steuerung ist niedriger: Der Auftrag läuft langsamer als geplant und die Zeitschätzung stimmt nicht.</translation>
+    </message>
+    <message>
+        <source>the board's maximum rate is higher than the profile allows: the motors may lose steps.</source>
+        <translation>Die Höchstgeschwindigkeit der Steuerung ist höher, als das Profil erlaubt: Die Motoren können Schritte verlieren.</translation>
+    </message>
+    <message>
+        <source>the board accelerates more gently: the job takes longer than planned.</source>
+        <translation>Die Steuerung beschleunigt sanfter: Der Auftrag dauert länger als geplant.</translation>
+    </message>
+    <message>
+        <source>the board accelerates harder than the profile allows: the motors may lose steps.</source>
+        <translation>Die Steuerung beschleunigt stärker, als das Profil erlaubt: Die Motoren können Schritte verlieren.</translation>
+    </message>
+    <message>
+        <source>the motor's travel for soft limits differs: with soft limits on, a move beyond it stops the job with ALARM:2.</source>
+        <translation>Der Verfahrweg des Motors für die Software-Endlagen weicht ab: Mit Software-Endlagen stoppt eine Bewegung darüber hinaus den Auftrag mit ALARM:2.</translation>
+    </message>
+    <message>
+        <source>the spindle (pen servo / laser) range differs: the pen may not lift or lower as planned.</source>
+        <translation>Der Spindelbereich (Stiftservo / Laser) weicht ab: Der Stift hebt oder senkt sich womöglich nicht wie geplant.</translation>
+    </message>
+    <message>
+        <source>the junction deviation differs: corners run at other speeds than planned.</source>
+        <translation>Die Eckenabweichung weicht ab: Ecken werden mit anderen Geschwindigkeiten als geplant gefahren.</translation>
+    </message>
+    <message>
+        <source>differs from what the profile expects.</source>
+        <translation>weicht von dem ab, was das Profil erwartet.</translation>
+    </message>
+    <message>
+        <source>not reported</source>
+        <translation>nicht gemeldet</translation>
+    </message>
+    <message>
+        <source>$%1 is %2 on the board, the profile wants %3: %4</source>
+        <translation>$%1 ist auf der Steuerung %2, das Profil will %3: %4</translation>
+    </message>
+    <message numerus="yes">
+        <source>The board's settings differ from the profile in %n place(s): %1.</source>
+        <translation>
+            <numerusform>Die Einstellungen der Steuerung weichen an %n Stelle vom Profil ab: %1.</numerusform>
+            <numerusform>Die Einstellungen der Steuerung weichen an %n Stellen vom Profil ab: %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>A job would stop or move wrongly with them.</source>
+        <translation>Ein Auftrag würde damit stoppen oder falsch fahren.</translation>
+    </message>
+    <message>
+        <source>The board's GRBL settings differ from the machine profile, and the job would not run as planned:</source>
+        <translation>Die GRBL-Einstellungen der Steuerung weichen vom Maschinenprofil ab, und der Auftrag liefe nicht wie geplant:</translation>
+    </message>
+    <message>
+        <source>The board's GRBL settings differ from the machine profile:</source>
+        <translation>Die GRBL-Einstellungen der Steuerung weichen vom Maschinenprofil ab:</translation>
+    </message>
+    <message>
+        <source>Write the profile's settings to the board (its current ones are saved to a backup file first), or start anyway.</source>
+        <translation>Schreiben Sie die Einstellungen des Profils auf die Steuerung (die aktuellen werden vorher in einer Sicherungsdatei gespeichert), oder starten Sie trotzdem.</translation>
     </message>
 </context>
 <context>
@@ -1183,21 +1602,6 @@ Planen und Zeichnen können sehr lange dauern. Trotzdem ganz importieren?</trans
     </message>
 </context>
 <context>
-    <name>fivebar::session::JogController</name>
-    <message>
-        <source>Jog refused: the machine is not connected, not idle, or a job is running.</source>
-        <translation>Verfahren abgelehnt: Die Maschine ist nicht verbunden, nicht bereit, oder ein Auftrag läuft.</translation>
-    </message>
-    <message>
-        <source>Jog stopped at the last safe point: %1</source>
-        <translation>Verfahren am letzten sicheren Punkt angehalten: %1</translation>
-    </message>
-    <message>
-        <source>Jog refused: %1</source>
-        <translation>Verfahren abgelehnt: %1</translation>
-    </message>
-</context>
-<context>
     <name>fivebar::widgets::JogPanel</name>
     <message>
         <source>Jog the pen %1 mm in X, %2 mm in Y per step; hold for a continuous jog</source>
@@ -1615,126 +2019,50 @@ Bestätigen Sie nur, wenn die Arme jetzt genau in dieser Stellung stehen. Stehen
     </message>
 </context>
 <context>
-    <name>fivebar::session::MachineSession</name>
+    <name>fivebar::widgets::MachinePanels</name>
     <message>
-        <source>Cannot open %1.</source>
-        <translation>%1 kann nicht geöffnet werden.</translation>
+        <source>Machine</source>
+        <translation>Maschine</translation>
     </message>
     <message>
-        <source>Connected to %1.</source>
-        <translation>Verbunden mit %1.</translation>
+        <source>Run</source>
+        <translation>Ausführen</translation>
     </message>
     <message>
-        <source>Disconnected.</source>
-        <translation>Getrennt.</translation>
+        <source>Jog</source>
+        <translation>Verfahren</translation>
     </message>
     <message>
-        <source>Not connected: %1 was not sent.</source>
-        <translation>Nicht verbunden: %1 wurde nicht gesendet.</translation>
+        <source>Console</source>
+        <translation>Konsole</translation>
     </message>
     <message>
-        <source>Not sent (%1): %2</source>
-        <translation>Nicht gesendet (%1): %2</translation>
+        <source>Machine profile</source>
+        <translation>Profil</translation>
     </message>
     <message>
-        <source>A job is running: %1 was not sent.</source>
-        <translation>Ein Auftrag läuft: %1 wurde nicht gesendet.</translation>
+        <source>Machine &amp;settings...</source>
+        <translation>Maschinen&amp;einstellungen...</translation>
     </message>
     <message>
-        <source>Jog refused: the machine is not idle, not connected or a job is running.</source>
-        <translation>Verfahren abgelehnt: Die Maschine ist nicht bereit, nicht verbunden, oder ein Auftrag läuft.</translation>
+        <source>A job is running</source>
+        <translation>Ein Auftrag läuft</translation>
     </message>
     <message>
-        <source>%1 (jog in %2 checked moves)</source>
-        <translation>%1 (Verfahren in %2 geprüften Bewegungen)</translation>
+        <source>The machine is drawing "%1". Quitting the studio would leave it without its stream of lines.
+
+Hold, stop and quit: the machine stops cleanly and the progress is saved, so you can resume later.</source>
+        <translation>Die Maschine zeichnet „%1“. Beim Beenden des Studios bekäme sie keine weiteren Zeilen.
+
+Anhalten, stoppen und beenden: Die Maschine hält sauber an und der Fortschritt wird gespeichert, sodass Sie später fortsetzen können.</translation>
     </message>
     <message>
-        <source>[soft reset]</source>
-        <translation>[Soft-Reset]</translation>
+        <source>Hold, stop and quit</source>
+        <translation>Anhalten, stoppen und beenden</translation>
     </message>
     <message>
-        <source>[feed hold]</source>
-        <translation>[Vorschub halten]</translation>
-    </message>
-    <message>
-        <source>[cycle start]</source>
-        <translation>[Zyklusstart]</translation>
-    </message>
-    <message>
-        <source>%1 was rejected: %2</source>
-        <translation>%1 wurde abgelehnt: %2</translation>
-    </message>
-    <message>
-        <source>The machine is locked (alarm state). Unlock it with $X or home it with $H once you know where it stands.</source>
-        <translation>Die Maschine ist gesperrt (Alarmzustand). Entsperren Sie sie mit $X oder führen Sie mit $H eine Referenzfahrt aus, sobald Sie wissen, wo sie steht.</translation>
-    </message>
-    <message>
-        <source>The board reset (Grbl %1).</source>
-        <translation>Die Steuerung wurde zurückgesetzt (Grbl %1).</translation>
-    </message>
-    <message>
-        <source>Connection lost: %1</source>
-        <translation>Verbindung verloren: %1</translation>
-    </message>
-    <message>
-        <source>the simulated machine</source>
-        <translation>der simulierten Maschine</translation>
-    </message>
-    <message>
-        <source>set the reference pose (Machine panel) or home the machine</source>
-        <translation>setzen Sie die Referenzstellung (Maschinen-Panel) oder referenzieren Sie die Maschine</translation>
-    </message>
-    <message>
-        <source>%1 at %2 baud</source>
-        <translation>%1 mit %2 Baud</translation>
-    </message>
-    <message>
-        <source>Opened %1; waiting for the board to answer...</source>
-        <translation>%1 geöffnet; warte auf die Antwort der Steuerung...</translation>
-    </message>
-    <message>
-        <source>No GRBL board answered on %1 within %2 s. Check that the port is the machine's, that the baud rate matches its firmware (GRBL 1.1: usually 115200) and that it is powered.</source>
-        <translation>Auf %1 hat innerhalb von %2 s keine GRBL-Steuerung geantwortet. Prüfen Sie, ob der Anschluss der der Maschine ist, ob die Baudrate zu ihrer Firmware passt (GRBL 1.1: meist 115200) und ob sie eingeschaltet ist.</translation>
-    </message>
-    <message>
-        <source>Not sent: %1</source>
-        <translation>Nicht gesendet: %1</translation>
-    </message>
-    <message>
-        <source>Unchecked: %1</source>
-        <translation>Ungeprüft: %1</translation>
-    </message>
-    <message>
-        <source>The machine's position is not known yet (no status report with its work position): wait a moment, or set the reference pose.</source>
-        <translation>Die Position der Maschine ist noch unbekannt (kein Statusbericht mit ihrer Werkstückposition): Warten Sie einen Moment oder setzen Sie die Referenzstellung.</translation>
-    </message>
-    <message>
-        <source>The machine is still moving or busy: send a move when it stands still (Idle), so it can be checked from where the machine really is.</source>
-        <translation>Die Maschine bewegt sich noch oder ist beschäftigt: Senden Sie eine Bewegung, wenn sie stillsteht (Bereit), damit sie von der wirklichen Position aus geprüft werden kann.</translation>
-    </message>
-    <message>
-        <source>Console lines are sent UNCHECKED from now on.</source>
-        <translation>Konsolenzeilen werden ab jetzt UNGEPRÜFT gesendet.</translation>
-    </message>
-    <message>
-        <source>Console lines are checked again.</source>
-        <translation>Konsolenzeilen werden wieder geprüft.</translation>
-    </message>
-    <message>
-        <source>The machine must be connected, idle and its position known.</source>
-        <translation>Die Maschine muss verbunden und bereit sein, und ihre Position muss bekannt sein.</translation>
-    </message>
-    <message>
-        <source>The profile's home pose does not close the linkage.</source>
-        <translation>Die Grundstellung des Profils schließt das Gestänge nicht.</translation>
-    </message>
-    <message>
-        <source>No checked move to the home pose: %1</source>
-        <translation>Keine geprüfte Bewegung zur Grundstellung: %1</translation>
-    </message>
-    <message>
-        <source>The move was not sent (see the console).</source>
-        <translation>Die Bewegung wurde nicht gesendet (siehe Konsole).</translation>
+        <source>Keep running</source>
+        <translation>Weiterlaufen lassen</translation>
     </message>
 </context>
 <context>
@@ -1843,53 +2171,6 @@ Bestätigen Sie nur, wenn die Arme jetzt genau in dieser Stellung stehen. Stehen
     <message>
         <source>yes</source>
         <translation>ja</translation>
-    </message>
-</context>
-<context>
-    <name>fivebar::widgets::MachinePanels</name>
-    <message>
-        <source>Machine</source>
-        <translation>Maschine</translation>
-    </message>
-    <message>
-        <source>Run</source>
-        <translation>Ausführen</translation>
-    </message>
-    <message>
-        <source>Jog</source>
-        <translation>Verfahren</translation>
-    </message>
-    <message>
-        <source>Console</source>
-        <translation>Konsole</translation>
-    </message>
-    <message>
-        <source>Machine profile</source>
-        <translation>Profil</translation>
-    </message>
-    <message>
-        <source>Machine &amp;settings...</source>
-        <translation>Maschinen&amp;einstellungen...</translation>
-    </message>
-    <message>
-        <source>A job is running</source>
-        <translation>Ein Auftrag läuft</translation>
-    </message>
-    <message>
-        <source>The machine is drawing "%1". Quitting the studio would leave it without its stream of lines.
-
-Hold, stop and quit: the machine stops cleanly and the progress is saved, so you can resume later.</source>
-        <translation>Die Maschine zeichnet „%1“. Beim Beenden des Studios bekäme sie keine weiteren Zeilen.
-
-Anhalten, stoppen und beenden: Die Maschine hält sauber an und der Fortschritt wird gespeichert, sodass Sie später fortsetzen können.</translation>
-    </message>
-    <message>
-        <source>Hold, stop and quit</source>
-        <translation>Anhalten, stoppen und beenden</translation>
-    </message>
-    <message>
-        <source>Keep running</source>
-        <translation>Weiterlaufen lassen</translation>
     </message>
 </context>
 <context>
@@ -2402,61 +2683,6 @@ Anhalten, stoppen und beenden: Die Maschine hält sauber an und der Fortschritt 
     </message>
 </context>
 <context>
-    <name>fivebar::session::RunController</name>
-    <message>
-        <source>Not started: the board's soft limits would stop this job with an alarm (ALARM:2): %1. The board checks its travel ($130, $131) in machine coordinates, which the reference pose shifted against the drawing's. Home the machine, or make the board's settings match the profile (Machine settings...), then start again.</source>
-        <translation>Nicht gestartet: Die Software-Endlagen der Steuerung würden diesen Auftrag mit einem Alarm (ALARM:2) anhalten: %1. Die Steuerung prüft ihren Verfahrweg ($130, $131) in Maschinenkoordinaten, und die Referenzpose hat diese gegenüber denen der Zeichnung verschoben. Die Maschine referenzieren (Referenzfahrt) oder die Einstellungen der Steuerung an das Profil angleichen (Maschineneinstellungen...), dann erneut starten.</translation>
-    </message>
-    <message>
-        <source>The connection was closed during the run. The progress is saved beside the job: reconnect and resume.</source>
-        <translation>Die Verbindung wurde während des Auftrags getrennt. Der Fortschritt ist neben dem Auftrag gespeichert: Verbinden Sie erneut und setzen Sie fort.</translation>
-    </message>
-    <message>
-        <source>Cannot start: connect the machine, wait until it is idle, and let the job plan first.</source>
-        <translation>Start nicht möglich: Verbinden Sie die Maschine, warten Sie, bis sie bereit ist, und lassen Sie den Auftrag zuerst planen.</translation>
-    </message>
-    <message>
-        <source>Cannot create the job folder %1.</source>
-        <translation>Der Auftragsordner %1 kann nicht angelegt werden.</translation>
-    </message>
-    <message>
-        <source>Nothing to resume: there is no saved progress beside %1.</source>
-        <translation>Nichts fortzusetzen: Neben %1 ist kein Fortschritt gespeichert.</translation>
-    </message>
-    <message>
-        <source>line %1 of %2</source>
-        <translation>Zeile %1 von %2</translation>
-    </message>
-    <message>
-        <source>The run of "%1" was interrupted at %2: %3</source>
-        <translation>Der Lauf von „%1“ wurde bei %2 unterbrochen: %3</translation>
-    </message>
-    <message>
-        <source>press Resume</source>
-        <translation>drücken Sie Fortsetzen</translation>
-    </message>
-    <message>
-        <source>Resume</source>
-        <translation>Fortsetzen</translation>
-    </message>
-    <message>
-        <source>The machine raised an alarm and the job stopped (the banner in the Machine panel says why). The progress is saved: clear the alarm (Reset, Unlock), check the pen stands where the studio shows it, then press Resume.</source>
-        <translation>Die Maschine hat einen Alarm ausgelöst und der Auftrag wurde angehalten (das Banner im Maschinen-Panel sagt, warum). Der Fortschritt ist gespeichert: Heben Sie den Alarm auf (Reset, Entsperren), prüfen Sie, dass der Stift dort steht, wo das Studio ihn zeigt, und drücken Sie dann Fortsetzen.</translation>
-    </message>
-    <message>
-        <source>Resuming "%1"…</source>
-        <translation>Setze „%1“ fort…</translation>
-    </message>
-    <message>
-        <source>Running "%1"…</source>
-        <translation>„%1“ läuft…</translation>
-    </message>
-    <message>
-        <source>"%1" is drawn.</source>
-        <translation>„%1“ ist gezeichnet.</translation>
-    </message>
-</context>
-<context>
     <name>fivebar::widgets::RunPanel</name>
     <message>
         <source>Ready</source>
@@ -2597,100 +2823,6 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
     <message>
         <source>%1 left (on hold)</source>
         <translation>noch %1 (angehalten)</translation>
-    </message>
-</context>
-<context>
-    <name>fivebar::session::SettingsAdvice</name>
-    <message>
-        <source>soft limits are on, but this machine has no homing switches: the board measures its travel from where it was switched on, not from the reference pose, and stops the job with ALARM:2 when a move leaves that range.</source>
-        <translation>Software-Endlagen sind an, aber diese Maschine hat keine Referenzschalter: Die Steuerung misst ihren Verfahrweg ab der Einschaltstellung, nicht ab der Referenzstellung, und stoppt den Auftrag mit ALARM:2, sobald eine Bewegung diesen Bereich verlässt.</translation>
-    </message>
-    <message>
-        <source>soft limits are off although the profile expects them.</source>
-        <translation>Software-Endlagen sind aus, obwohl das Profil sie erwartet.</translation>
-    </message>
-    <message>
-        <source>hard limits are on: without limit switches wired, noise on the pins stops the machine with ALARM:1.</source>
-        <translation>Hardware-Endlagen sind an: Ohne angeschlossene Endschalter stoppen Störungen an den Pins die Maschine mit ALARM:1.</translation>
-    </message>
-    <message>
-        <source>hard limits are off although the profile expects them.</source>
-        <translation>Hardware-Endlagen sind aus, obwohl das Profil sie erwartet.</translation>
-    </message>
-    <message>
-        <source>the homing cycle is on: the board starts locked and wants $H, which needs homing switches.</source>
-        <translation>Der Referenzlauf ist an: Die Steuerung startet gesperrt und verlangt $H, wofür Referenzschalter nötig sind.</translation>
-    </message>
-    <message>
-        <source>the homing cycle is off although the profile has switches.</source>
-        <translation>Der Referenzlauf ist aus, obwohl das Profil Schalter hat.</translation>
-    </message>
-    <message>
-        <source>steps per degree differ: every motor angle would be wrong by the ratio, so the arms would leave the checked, safe poses.</source>
-        <translation>Die Schritte pro Grad weichen ab: Jeder Motorwinkel wäre um dieses Verhältnis falsch, die Arme verließen also die geprüften, sicheren Stellungen.</translation>
-    </message>
-    <message>
-        <source>the board's maximum rate is lower: the job runs slower than planned and the time estimate is off.</source>
-        <translation>Die Höchstgeschwindigkeit der Steuerung ist niedriger: Der Auftrag läuft langsamer als geplant und die Zeitschätzung stimmt nicht.</translation>
-    </message>
-    <message>
-        <source>the board's maximum rate is higher than the profile allows: the motors may lose steps.</source>
-        <translation>Die Höchstgeschwindigkeit der Steuerung ist höher, als das Profil erlaubt: Die Motoren können Schritte verlieren.</translation>
-    </message>
-    <message>
-        <source>the board accelerates more gently: the job takes longer than planned.</source>
-        <translation>Die Steuerung beschleunigt sanfter: Der Auftrag dauert länger als geplant.</translation>
-    </message>
-    <message>
-        <source>the board accelerates harder than the profile allows: the motors may lose steps.</source>
-        <translation>Die Steuerung beschleunigt stärker, als das Profil erlaubt: Die Motoren können Schritte verlieren.</translation>
-    </message>
-    <message>
-        <source>the motor's travel for soft limits differs: with soft limits on, a move beyond it stops the job with ALARM:2.</source>
-        <translation>Der Verfahrweg des Motors für die Software-Endlagen weicht ab: Mit Software-Endlagen stoppt eine Bewegung darüber hinaus den Auftrag mit ALARM:2.</translation>
-    </message>
-    <message>
-        <source>the spindle (pen servo / laser) range differs: the pen may not lift or lower as planned.</source>
-        <translation>Der Spindelbereich (Stiftservo / Laser) weicht ab: Der Stift hebt oder senkt sich womöglich nicht wie geplant.</translation>
-    </message>
-    <message>
-        <source>the junction deviation differs: corners run at other speeds than planned.</source>
-        <translation>Die Eckenabweichung weicht ab: Ecken werden mit anderen Geschwindigkeiten als geplant gefahren.</translation>
-    </message>
-    <message>
-        <source>differs from what the profile expects.</source>
-        <translation>weicht von dem ab, was das Profil erwartet.</translation>
-    </message>
-    <message>
-        <source>not reported</source>
-        <translation>nicht gemeldet</translation>
-    </message>
-    <message>
-        <source>$%1 is %2 on the board, the profile wants %3: %4</source>
-        <translation>$%1 ist auf der Steuerung %2, das Profil will %3: %4</translation>
-    </message>
-    <message numerus="yes">
-        <source>The board's settings differ from the profile in %n place(s): %1.</source>
-        <translation>
-            <numerusform>Die Einstellungen der Steuerung weichen an %n Stelle vom Profil ab: %1.</numerusform>
-            <numerusform>Die Einstellungen der Steuerung weichen an %n Stellen vom Profil ab: %1.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>A job would stop or move wrongly with them.</source>
-        <translation>Ein Auftrag würde damit stoppen oder falsch fahren.</translation>
-    </message>
-    <message>
-        <source>The board's GRBL settings differ from the machine profile, and the job would not run as planned:</source>
-        <translation>Die GRBL-Einstellungen der Steuerung weichen vom Maschinenprofil ab, und der Auftrag liefe nicht wie geplant:</translation>
-    </message>
-    <message>
-        <source>The board's GRBL settings differ from the machine profile:</source>
-        <translation>Die GRBL-Einstellungen der Steuerung weichen vom Maschinenprofil ab:</translation>
-    </message>
-    <message>
-        <source>Write the profile's settings to the board (its current ones are saved to a backup file first), or start anyway.</source>
-        <translation>Schreiben Sie die Einstellungen des Profils auf die Steuerung (die aktuellen werden vorher in einer Sicherungsdatei gespeichert), oder starten Sie trotzdem.</translation>
     </message>
 </context>
 <context>

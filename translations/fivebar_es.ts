@@ -204,6 +204,53 @@
     </message>
 </context>
 <context>
+    <name>Jog</name>
+    <message>
+        <source>the machine position is not known yet</source>
+        <translation>la posición de la máquina aún no se conoce</translation>
+    </message>
+    <message>
+        <source>the current motor angles do not close the linkage</source>
+        <translation>los ángulos actuales de los motores no cierran el mecanismo</translation>
+    </message>
+    <message>
+        <source>the line leaves the workspace</source>
+        <translation>la línea sale del espacio de trabajo</translation>
+    </message>
+    <message>
+        <source>the arms cannot follow the straight line closely enough</source>
+        <translation>los brazos no pueden seguir la línea recta con suficiente precisión</translation>
+    </message>
+    <message>
+        <source>stopped after %1 mm: %2</source>
+        <translation>detenido tras %1 mm: %2</translation>
+    </message>
+    <message>
+        <source>no jog direction</source>
+        <translation>sin dirección de desplazamiento</translation>
+    </message>
+    <message>
+        <source>no safe travel to that point</source>
+        <translation>no hay un recorrido seguro hasta ese punto</translation>
+    </message>
+    <message>
+        <source>the point is out of reach</source>
+        <translation>el punto está fuera de alcance</translation>
+    </message>
+    <message>
+        <source>the job has no pen-down strokes to frame</source>
+        <translation>el trabajo no tiene trazos con el lápiz bajado que enmarcar</translation>
+    </message>
+    <message>
+        <source>cannot reach the frame's first corner: %1</source>
+        <translation>no se puede alcanzar la primera esquina del marco: %1</translation>
+    </message>
+    <message>
+        <source>frame edge %1: %2</source>
+        <translation>lado del marco %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>MapPainter</name>
     <message>
         <source>Transmission angle at the pen (deg)</source>
@@ -216,6 +263,69 @@
     <message>
         <source>Resolution (um per motor step)</source>
         <translation>Resolución (µm por paso de motor)</translation>
+    </message>
+</context>
+<context>
+    <name>MotionCheck</name>
+    <message>
+        <source>G2/G3 arcs are not arcs in joint space (X and Y are motor angles): plan the drawing with 'fivebar plan', which turns arcs into checked straight segments</source>
+        <translation>los arcos G2/G3 no son arcos en el espacio articular (X e Y son ángulos de motor): planifique el dibujo con 'fivebar plan', que convierte los arcos en segmentos rectos comprobados</translation>
+    </message>
+    <message>
+        <source>probing (G38) is not supported on a five-bar machine</source>
+        <translation>el palpado (G38) no está disponible en una máquina de cinco barras</translation>
+    </message>
+    <message>
+        <source>G20 (inches) would scale the motor angles by 25.4: X and Y are degrees, use G21</source>
+        <translation>G20 (pulgadas) escalaría los ángulos de los motores por 25,4: X e Y son grados, use G21</translation>
+    </message>
+    <message>
+        <source>G10/G92 change the coordinates the checks rely on: %1</source>
+        <translation>G10/G92 cambian las coordenadas en las que se basan las comprobaciones: %1</translation>
+    </message>
+    <message>
+        <source>G55-G59 select another work coordinate system; the checked link works in G54</source>
+        <translation>G55-G59 seleccionan otro sistema de coordenadas de trabajo; el enlace comprobado trabaja en G54</translation>
+    </message>
+    <message>
+        <source>a jog ($J=) takes only G90, G91, G53 and G21</source>
+        <translation>un desplazamiento manual ($J=) solo admite G90, G91, G53 y G21</translation>
+    </message>
+    <message>
+        <source>the board would refuse the jog (error:15)</source>
+        <translation>la placa rechazaría el desplazamiento (error:15)</translation>
+    </message>
+    <message>
+        <source>the board would stop with a soft-limit alarm (ALARM:2)</source>
+        <translation>la placa se detendría con una alarma de límite por software (ALARM:2)</translation>
+    </message>
+    <message>
+        <source>the target %1 takes motor %2 to %3 deg in machine coordinates, outside the board's soft-limit travel %4..0 deg ($%5=%6): %7; home the machine or set its reference so that the travel matches the profile, or choose a target inside it</source>
+        <translation>el objetivo %1 lleva el motor %2 a %3 grados en coordenadas de máquina, fuera del recorrido por software de la placa %4..0 grados ($%5=%6): %7; haga el referenciado de la máquina o fije su referencia para que el recorrido coincida con el perfil, o elija un objetivo dentro de él</translation>
+    </message>
+    <message>
+        <source>set the machine's reference with 'fivebar reference' (or home it with 'fivebar home')</source>
+        <translation>fije la referencia de la máquina con 'fivebar reference' (o haga su referenciado con 'fivebar home')</translation>
+    </message>
+    <message>
+        <source>choose a target inside the workspace (fivebar workspace shows it)</source>
+        <translation>elija un objetivo dentro del espacio de trabajo ('fivebar workspace' lo muestra)</translation>
+    </message>
+    <message>
+        <source>(%1, %2) deg</source>
+        <translation>(%1, %2) grados</translation>
+    </message>
+    <message>
+        <source>G28/G30 go to a position stored on the board, which is not known here; move to the point with a G0 line instead</source>
+        <translation>G28/G30 van a una posición guardada en la placa que aquí no se conoce; vaya al punto con una línea G0 en su lugar</translation>
+    </message>
+    <message>
+        <source>the machine's position %1 is not a safe pose of %2 (%3), so no move from it can be checked: %4 first</source>
+        <translation>la posición de la máquina %1 no es una pose segura de %2 (%3), así que ningún movimiento desde ella puede comprobarse: primero %4</translation>
+    </message>
+    <message>
+        <source>the move from %1 to %2 %3; %4</source>
+        <translation>el movimiento de %1 a %2 %3; %4</translation>
     </message>
 </context>
 <context>
@@ -470,6 +580,13 @@
     </message>
 </context>
 <context>
+    <name>SoftLimits</name>
+    <message>
+        <source>line %1 moves motor %2 to %3 deg in machine coordinates, outside the board's soft-limit travel %4..0 ($%5=%6)</source>
+        <translation>la línea %1 lleva el motor %2 a %3 grados en coordenadas de máquina, fuera del recorrido por software de la placa %4..0 ($%5=%6)</translation>
+    </message>
+</context>
+<context>
     <name>WorkspaceLegend</name>
     <message>
         <source>type II &gt;= %1 deg, type I &gt;= %2 deg</source>
@@ -510,6 +627,308 @@
     <message>
         <source>singularity-free area: %1 cm²</source>
         <translation>área sin singularidades: %1 cm²</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::session::BoardPreflight</name>
+    <message>
+        <source>The board's soft limits would stop this job with an alarm (ALARM:2): %1. The board checks its travel ($130, $131) in machine coordinates, which the reference pose shifted against the drawing's. Home the machine, or make the board's settings match the profile (Machine settings...), then start again.</source>
+        <translation>Los límites por software de la placa detendrían este trabajo con una alarma (ALARM:2): %1. La placa comprueba su recorrido ($130, $131) en coordenadas de máquina, que la pose de referencia desplazó respecto a las del dibujo. Haga el referenciado de la máquina o ajuste la configuración de la placa al perfil (Configuración de la máquina...) y vuelva a empezar.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::session::JogController</name>
+    <message>
+        <source>Jog refused: the machine is not connected, not idle, or a job is running.</source>
+        <translation>Movimiento rechazado: la máquina no está conectada, no está en reposo o hay un trabajo en curso.</translation>
+    </message>
+    <message>
+        <source>Jog stopped at the last safe point: %1</source>
+        <translation>Movimiento detenido en el último punto seguro: %1</translation>
+    </message>
+    <message>
+        <source>Jog refused: %1</source>
+        <translation>Movimiento rechazado: %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::session::MachineSession</name>
+    <message>
+        <source>Cannot open %1.</source>
+        <translation>No se puede abrir %1.</translation>
+    </message>
+    <message>
+        <source>Connected to %1.</source>
+        <translation>Conectado a %1.</translation>
+    </message>
+    <message>
+        <source>Disconnected.</source>
+        <translation>Desconectado.</translation>
+    </message>
+    <message>
+        <source>Not connected: %1 was not sent.</source>
+        <translation>Sin conexión: %1 no se envió.</translation>
+    </message>
+    <message>
+        <source>Not sent (%1): %2</source>
+        <translation>No enviado (%1): %2</translation>
+    </message>
+    <message>
+        <source>A job is running: %1 was not sent.</source>
+        <translation>Hay un trabajo en curso: %1 no se envió.</translation>
+    </message>
+    <message>
+        <source>Jog refused: the machine is not idle, not connected or a job is running.</source>
+        <translation>Movimiento rechazado: la máquina no está en reposo, no está conectada o hay un trabajo en curso.</translation>
+    </message>
+    <message>
+        <source>%1 (jog in %2 checked moves)</source>
+        <translation>%1 (movimiento en %2 pasos comprobados)</translation>
+    </message>
+    <message>
+        <source>[soft reset]</source>
+        <translation>[reinicio suave]</translation>
+    </message>
+    <message>
+        <source>[feed hold]</source>
+        <translation>[pausa de avance]</translation>
+    </message>
+    <message>
+        <source>[cycle start]</source>
+        <translation>[inicio de ciclo]</translation>
+    </message>
+    <message>
+        <source>%1 was rejected: %2</source>
+        <translation>%1 fue rechazado: %2</translation>
+    </message>
+    <message>
+        <source>The machine is locked (alarm state). Unlock it with $X or home it with $H once you know where it stands.</source>
+        <translation>La máquina está bloqueada (estado de alarma). Desbloquéala con $X o busca su origen con $H cuando sepas dónde está.</translation>
+    </message>
+    <message>
+        <source>The board reset (Grbl %1).</source>
+        <translation>La placa se ha reiniciado (Grbl %1).</translation>
+    </message>
+    <message>
+        <source>Connection lost: %1</source>
+        <translation>Conexión perdida: %1</translation>
+    </message>
+    <message>
+        <source>the simulated machine</source>
+        <translation>la máquina simulada</translation>
+    </message>
+    <message>
+        <source>set the reference pose (Machine panel) or home the machine</source>
+        <translation>fije la pose de referencia (panel Máquina) o haga el homing de la máquina</translation>
+    </message>
+    <message>
+        <source>%1 at %2 baud</source>
+        <translation>%1 a %2 baudios</translation>
+    </message>
+    <message>
+        <source>Opened %1; waiting for the board to answer...</source>
+        <translation>%1 abierto; esperando respuesta de la placa...</translation>
+    </message>
+    <message>
+        <source>No GRBL board answered on %1 within %2 s. Check that the port is the machine's, that the baud rate matches its firmware (GRBL 1.1: usually 115200) and that it is powered.</source>
+        <translation>Ninguna placa GRBL respondió en %1 en %2 s. Compruebe que el puerto es el de la máquina, que la velocidad en baudios coincide con su firmware (GRBL 1.1: normalmente 115200) y que está encendida.</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>No enviado: %1</translation>
+    </message>
+    <message>
+        <source>Unchecked: %1</source>
+        <translation>Sin comprobar: %1</translation>
+    </message>
+    <message>
+        <source>The machine's position is not known yet (no status report with its work position): wait a moment, or set the reference pose.</source>
+        <translation>La posición de la máquina aún no se conoce (no hay informe de estado con su posición de trabajo): espere un momento o fije la pose de referencia.</translation>
+    </message>
+    <message>
+        <source>The machine is still moving or busy: send a move when it stands still (Idle), so it can be checked from where the machine really is.</source>
+        <translation>La máquina aún se mueve o está ocupada: envíe el movimiento cuando esté parada (Idle), para poder comprobarlo desde donde está realmente.</translation>
+    </message>
+    <message>
+        <source>Console lines are sent UNCHECKED from now on.</source>
+        <translation>A partir de ahora las líneas de consola se envían SIN COMPROBAR.</translation>
+    </message>
+    <message>
+        <source>Console lines are checked again.</source>
+        <translation>Las líneas de consola vuelven a comprobarse.</translation>
+    </message>
+    <message>
+        <source>The machine must be connected, idle and its position known.</source>
+        <translation>La máquina debe estar conectada, inactiva y con su posición conocida.</translation>
+    </message>
+    <message>
+        <source>The profile's home pose does not close the linkage.</source>
+        <translation>La posición de inicio del perfil no cierra el mecanismo.</translation>
+    </message>
+    <message>
+        <source>No checked move to the home pose: %1</source>
+        <translation>No hay movimiento comprobado a la posición de inicio: %1</translation>
+    </message>
+    <message>
+        <source>The move was not sent (see the console).</source>
+        <translation>El movimiento no se envió (véase la consola).</translation>
+    </message>
+    <message>
+        <source>choose a target inside the workspace</source>
+        <translation>elija un objetivo dentro del espacio de trabajo</translation>
+    </message>
+    <message>
+        <source>Move not sent: %1</source>
+        <translation>Movimiento no enviado: %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::session::RunController</name>
+    <message>
+        <source>The connection was closed during the run. The progress is saved beside the job: reconnect and resume.</source>
+        <translation>La conexión se cerró durante la ejecución. El progreso se guarda junto al trabajo: vuelve a conectar y reanuda.</translation>
+    </message>
+    <message>
+        <source>Cannot start: connect the machine, wait until it is idle, and let the job plan first.</source>
+        <translation>No se puede iniciar: conecta la máquina, espera a que esté en reposo y deja que el trabajo se planifique primero.</translation>
+    </message>
+    <message>
+        <source>Cannot create the job folder %1.</source>
+        <translation>No se puede crear la carpeta del trabajo %1.</translation>
+    </message>
+    <message>
+        <source>Nothing to resume: there is no saved progress beside %1.</source>
+        <translation>Nada que reanudar: no hay progreso guardado junto a %1.</translation>
+    </message>
+    <message>
+        <source>line %1 of %2</source>
+        <translation>línea %1 de %2</translation>
+    </message>
+    <message>
+        <source>The run of "%1" was interrupted at %2: %3</source>
+        <translation>La ejecución de "%1" se interrumpió en %2: %3</translation>
+    </message>
+    <message>
+        <source>press Resume</source>
+        <translation>pulse Reanudar</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Reanudar</translation>
+    </message>
+    <message>
+        <source>The machine raised an alarm and the job stopped (the banner in the Machine panel says why). The progress is saved: clear the alarm (Reset, Unlock), check the pen stands where the studio shows it, then press Resume.</source>
+        <translation>La máquina lanzó una alarma y el trabajo se detuvo (el aviso del panel Máquina indica por qué). El progreso está guardado: borre la alarma (Reset, Desbloquear), compruebe que la pluma está donde la muestra el estudio y pulse Reanudar.</translation>
+    </message>
+    <message>
+        <source>Resuming "%1"…</source>
+        <translation>Reanudando "%1"…</translation>
+    </message>
+    <message>
+        <source>Running "%1"…</source>
+        <translation>Ejecutando "%1"…</translation>
+    </message>
+    <message>
+        <source>"%1" is drawn.</source>
+        <translation>"%1" está dibujado.</translation>
+    </message>
+    <message>
+        <source>Not started: %1</source>
+        <translation>No iniciado: %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::session::SettingsAdvice</name>
+    <message>
+        <source>soft limits are on, but this machine has no homing switches: the board measures its travel from where it was switched on, not from the reference pose, and stops the job with ALARM:2 when a move leaves that range.</source>
+        <translation>los límites por software están activados, pero esta máquina no tiene finales de carrera para homing: la placa mide su recorrido desde donde se encendió, no desde la pose de referencia, y detiene el trabajo con ALARM:2 cuando un movimiento sale de ese rango.</translation>
+    </message>
+    <message>
+        <source>soft limits are off although the profile expects them.</source>
+        <translation>los límites por software están desactivados aunque el perfil los espera.</translation>
+    </message>
+    <message>
+        <source>hard limits are on: without limit switches wired, noise on the pins stops the machine with ALARM:1.</source>
+        <translation>los límites por hardware están activados: sin finales de carrera conectados, el ruido en los pines detiene la máquina con ALARM:1.</translation>
+    </message>
+    <message>
+        <source>hard limits are off although the profile expects them.</source>
+        <translation>los límites por hardware están desactivados aunque el perfil los espera.</translation>
+    </message>
+    <message>
+        <source>the homing cycle is on: the board starts locked and wants $H, which needs homing switches.</source>
+        <translation>el ciclo de homing está activado: la placa arranca bloqueada y pide $H, que necesita finales de carrera.</translation>
+    </message>
+    <message>
+        <source>the homing cycle is off although the profile has switches.</source>
+        <translation>el ciclo de homing está desactivado aunque el perfil tiene finales de carrera.</translation>
+    </message>
+    <message>
+        <source>steps per degree differ: every motor angle would be wrong by the ratio, so the arms would leave the checked, safe poses.</source>
+        <translation>los pasos por grado difieren: cada ángulo de motor sería erróneo en esa proporción, así que los brazos saldrían de las poses comprobadas y seguras.</translation>
+    </message>
+    <message>
+        <source>the board's maximum rate is lower: the job runs slower than planned and the time estimate is off.</source>
+        <translation>la velocidad máxima de la placa es menor: el trabajo va más lento de lo planificado y la estimación de tiempo falla.</translation>
+    </message>
+    <message>
+        <source>the board's maximum rate is higher than the profile allows: the motors may lose steps.</source>
+        <translation>la velocidad máxima de la placa es mayor de lo que permite el perfil: los motores pueden perder pasos.</translation>
+    </message>
+    <message>
+        <source>the board accelerates more gently: the job takes longer than planned.</source>
+        <translation>la placa acelera más suavemente: el trabajo tarda más de lo planificado.</translation>
+    </message>
+    <message>
+        <source>the board accelerates harder than the profile allows: the motors may lose steps.</source>
+        <translation>la placa acelera más fuerte de lo que permite el perfil: los motores pueden perder pasos.</translation>
+    </message>
+    <message>
+        <source>the motor's travel for soft limits differs: with soft limits on, a move beyond it stops the job with ALARM:2.</source>
+        <translation>el recorrido del motor para los límites por software difiere: con ellos activados, un movimiento que lo supere detiene el trabajo con ALARM:2.</translation>
+    </message>
+    <message>
+        <source>the spindle (pen servo / laser) range differs: the pen may not lift or lower as planned.</source>
+        <translation>el rango del husillo (servo de pluma / láser) difiere: puede que la pluma no suba o baje como está previsto.</translation>
+    </message>
+    <message>
+        <source>the junction deviation differs: corners run at other speeds than planned.</source>
+        <translation>la desviación de unión (junction deviation) difiere: las esquinas van a velocidades distintas de las planificadas.</translation>
+    </message>
+    <message>
+        <source>differs from what the profile expects.</source>
+        <translation>difiere de lo que espera el perfil.</translation>
+    </message>
+    <message>
+        <source>not reported</source>
+        <translation>no informado</translation>
+    </message>
+    <message>
+        <source>$%1 is %2 on the board, the profile wants %3: %4</source>
+        <translation>$%1 vale %2 en la placa, el perfil quiere %3: %4</translation>
+    </message>
+    <message numerus="yes">
+        <source>The board's settings differ from the profile in %n place(s): %1.</source>
+        <translation>
+            <numerusform>Los ajustes de la placa difieren del perfil en %n punto: %1.</numerusform>
+            <numerusform>Los ajustes de la placa difieren del perfil en %n puntos: %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>A job would stop or move wrongly with them.</source>
+        <translation>Con ellos, un trabajo se detendría o se movería mal.</translation>
+    </message>
+    <message>
+        <source>The board's GRBL settings differ from the machine profile, and the job would not run as planned:</source>
+        <translation>Los ajustes GRBL de la placa difieren del perfil de la máquina y el trabajo no se ejecutaría como está planificado:</translation>
+    </message>
+    <message>
+        <source>The board's GRBL settings differ from the machine profile:</source>
+        <translation>Los ajustes GRBL de la placa difieren del perfil de la máquina:</translation>
+    </message>
+    <message>
+        <source>Write the profile's settings to the board (its current ones are saved to a backup file first), or start anyway.</source>
+        <translation>Escriba los ajustes del perfil en la placa (los actuales se guardan antes en un archivo de copia de seguridad) o inicie de todos modos.</translation>
     </message>
 </context>
 <context>
@@ -1183,21 +1602,6 @@ Planificarlo y plotearlo puede tardar mucho. ¿Importarlo entero de todos modos?
     </message>
 </context>
 <context>
-    <name>fivebar::session::JogController</name>
-    <message>
-        <source>Jog refused: the machine is not connected, not idle, or a job is running.</source>
-        <translation>Movimiento rechazado: la máquina no está conectada, no está en reposo o hay un trabajo en curso.</translation>
-    </message>
-    <message>
-        <source>Jog stopped at the last safe point: %1</source>
-        <translation>Movimiento detenido en el último punto seguro: %1</translation>
-    </message>
-    <message>
-        <source>Jog refused: %1</source>
-        <translation>Movimiento rechazado: %1</translation>
-    </message>
-</context>
-<context>
     <name>fivebar::widgets::JogPanel</name>
     <message>
         <source>Jog the pen %1 mm in X, %2 mm in Y per step; hold for a continuous jog</source>
@@ -1615,126 +2019,50 @@ Confirme solo si los brazos están ahora exactamente en esa pose. Si están en o
     </message>
 </context>
 <context>
-    <name>fivebar::session::MachineSession</name>
+    <name>fivebar::widgets::MachinePanels</name>
     <message>
-        <source>Cannot open %1.</source>
-        <translation>No se puede abrir %1.</translation>
+        <source>Machine</source>
+        <translation>Máquina</translation>
     </message>
     <message>
-        <source>Connected to %1.</source>
-        <translation>Conectado a %1.</translation>
+        <source>Run</source>
+        <translation>Ejecución</translation>
     </message>
     <message>
-        <source>Disconnected.</source>
-        <translation>Desconectado.</translation>
+        <source>Jog</source>
+        <translation>Mover</translation>
     </message>
     <message>
-        <source>Not connected: %1 was not sent.</source>
-        <translation>Sin conexión: %1 no se envió.</translation>
+        <source>Console</source>
+        <translation>Consola</translation>
     </message>
     <message>
-        <source>Not sent (%1): %2</source>
-        <translation>No enviado (%1): %2</translation>
+        <source>Machine profile</source>
+        <translation>Perfil</translation>
     </message>
     <message>
-        <source>A job is running: %1 was not sent.</source>
-        <translation>Hay un trabajo en curso: %1 no se envió.</translation>
+        <source>Machine &amp;settings...</source>
+        <translation>&amp;Ajustes de la máquina…</translation>
     </message>
     <message>
-        <source>Jog refused: the machine is not idle, not connected or a job is running.</source>
-        <translation>Movimiento rechazado: la máquina no está en reposo, no está conectada o hay un trabajo en curso.</translation>
+        <source>A job is running</source>
+        <translation>Hay un trabajo en curso</translation>
     </message>
     <message>
-        <source>%1 (jog in %2 checked moves)</source>
-        <translation>%1 (movimiento en %2 pasos comprobados)</translation>
+        <source>The machine is drawing "%1". Quitting the studio would leave it without its stream of lines.
+
+Hold, stop and quit: the machine stops cleanly and the progress is saved, so you can resume later.</source>
+        <translation>La máquina está dibujando "%1". Salir del estudio la dejaría sin su flujo de líneas.
+
+Pausar, detener y salir: la máquina se detiene limpiamente y el progreso se guarda para que pueda reanudarlo más tarde.</translation>
     </message>
     <message>
-        <source>[soft reset]</source>
-        <translation>[reinicio suave]</translation>
+        <source>Hold, stop and quit</source>
+        <translation>Pausar, detener y salir</translation>
     </message>
     <message>
-        <source>[feed hold]</source>
-        <translation>[pausa de avance]</translation>
-    </message>
-    <message>
-        <source>[cycle start]</source>
-        <translation>[inicio de ciclo]</translation>
-    </message>
-    <message>
-        <source>%1 was rejected: %2</source>
-        <translation>%1 fue rechazado: %2</translation>
-    </message>
-    <message>
-        <source>The machine is locked (alarm state). Unlock it with $X or home it with $H once you know where it stands.</source>
-        <translation>La máquina está bloqueada (estado de alarma). Desbloquéala con $X o busca su origen con $H cuando sepas dónde está.</translation>
-    </message>
-    <message>
-        <source>The board reset (Grbl %1).</source>
-        <translation>La placa se ha reiniciado (Grbl %1).</translation>
-    </message>
-    <message>
-        <source>Connection lost: %1</source>
-        <translation>Conexión perdida: %1</translation>
-    </message>
-    <message>
-        <source>the simulated machine</source>
-        <translation>la máquina simulada</translation>
-    </message>
-    <message>
-        <source>set the reference pose (Machine panel) or home the machine</source>
-        <translation>fije la pose de referencia (panel Máquina) o haga el homing de la máquina</translation>
-    </message>
-    <message>
-        <source>%1 at %2 baud</source>
-        <translation>%1 a %2 baudios</translation>
-    </message>
-    <message>
-        <source>Opened %1; waiting for the board to answer...</source>
-        <translation>%1 abierto; esperando respuesta de la placa...</translation>
-    </message>
-    <message>
-        <source>No GRBL board answered on %1 within %2 s. Check that the port is the machine's, that the baud rate matches its firmware (GRBL 1.1: usually 115200) and that it is powered.</source>
-        <translation>Ninguna placa GRBL respondió en %1 en %2 s. Compruebe que el puerto es el de la máquina, que la velocidad en baudios coincide con su firmware (GRBL 1.1: normalmente 115200) y que está encendida.</translation>
-    </message>
-    <message>
-        <source>Not sent: %1</source>
-        <translation>No enviado: %1</translation>
-    </message>
-    <message>
-        <source>Unchecked: %1</source>
-        <translation>Sin comprobar: %1</translation>
-    </message>
-    <message>
-        <source>The machine's position is not known yet (no status report with its work position): wait a moment, or set the reference pose.</source>
-        <translation>La posición de la máquina aún no se conoce (no hay informe de estado con su posición de trabajo): espere un momento o fije la pose de referencia.</translation>
-    </message>
-    <message>
-        <source>The machine is still moving or busy: send a move when it stands still (Idle), so it can be checked from where the machine really is.</source>
-        <translation>La máquina aún se mueve o está ocupada: envíe el movimiento cuando esté parada (Idle), para poder comprobarlo desde donde está realmente.</translation>
-    </message>
-    <message>
-        <source>Console lines are sent UNCHECKED from now on.</source>
-        <translation>A partir de ahora las líneas de consola se envían SIN COMPROBAR.</translation>
-    </message>
-    <message>
-        <source>Console lines are checked again.</source>
-        <translation>Las líneas de consola vuelven a comprobarse.</translation>
-    </message>
-    <message>
-        <source>The machine must be connected, idle and its position known.</source>
-        <translation>La máquina debe estar conectada, inactiva y con su posición conocida.</translation>
-    </message>
-    <message>
-        <source>The profile's home pose does not close the linkage.</source>
-        <translation>La posición de inicio del perfil no cierra el mecanismo.</translation>
-    </message>
-    <message>
-        <source>No checked move to the home pose: %1</source>
-        <translation>No hay movimiento comprobado a la posición de inicio: %1</translation>
-    </message>
-    <message>
-        <source>The move was not sent (see the console).</source>
-        <translation>El movimiento no se envió (véase la consola).</translation>
+        <source>Keep running</source>
+        <translation>Seguir ejecutando</translation>
     </message>
 </context>
 <context>
@@ -1843,53 +2171,6 @@ Confirme solo si los brazos están ahora exactamente en esa pose. Si están en o
     <message>
         <source>yes</source>
         <translation>sí</translation>
-    </message>
-</context>
-<context>
-    <name>fivebar::widgets::MachinePanels</name>
-    <message>
-        <source>Machine</source>
-        <translation>Máquina</translation>
-    </message>
-    <message>
-        <source>Run</source>
-        <translation>Ejecución</translation>
-    </message>
-    <message>
-        <source>Jog</source>
-        <translation>Mover</translation>
-    </message>
-    <message>
-        <source>Console</source>
-        <translation>Consola</translation>
-    </message>
-    <message>
-        <source>Machine profile</source>
-        <translation>Perfil</translation>
-    </message>
-    <message>
-        <source>Machine &amp;settings...</source>
-        <translation>&amp;Ajustes de la máquina…</translation>
-    </message>
-    <message>
-        <source>A job is running</source>
-        <translation>Hay un trabajo en curso</translation>
-    </message>
-    <message>
-        <source>The machine is drawing "%1". Quitting the studio would leave it without its stream of lines.
-
-Hold, stop and quit: the machine stops cleanly and the progress is saved, so you can resume later.</source>
-        <translation>La máquina está dibujando "%1". Salir del estudio la dejaría sin su flujo de líneas.
-
-Pausar, detener y salir: la máquina se detiene limpiamente y el progreso se guarda para que pueda reanudarlo más tarde.</translation>
-    </message>
-    <message>
-        <source>Hold, stop and quit</source>
-        <translation>Pausar, detener y salir</translation>
-    </message>
-    <message>
-        <source>Keep running</source>
-        <translation>Seguir ejecutando</translation>
     </message>
 </context>
 <context>
@@ -2402,61 +2683,6 @@ Pausar, detener y salir: la máquina se detiene limpiamente y el progreso se gua
     </message>
 </context>
 <context>
-    <name>fivebar::session::RunController</name>
-    <message>
-        <source>Not started: the board's soft limits would stop this job with an alarm (ALARM:2): %1. The board checks its travel ($130, $131) in machine coordinates, which the reference pose shifted against the drawing's. Home the machine, or make the board's settings match the profile (Machine settings...), then start again.</source>
-        <translation>No iniciado: los límites por software de la placa detendrían este trabajo con una alarma (ALARM:2): %1. La placa comprueba su recorrido ($130, $131) en coordenadas de máquina, que la pose de referencia desplazó respecto a las del dibujo. Haga el homing de la máquina o ajuste la configuración de la placa al perfil (Ajustes de la máquina…) y vuelva a iniciar.</translation>
-    </message>
-    <message>
-        <source>The connection was closed during the run. The progress is saved beside the job: reconnect and resume.</source>
-        <translation>La conexión se cerró durante la ejecución. El progreso se guarda junto al trabajo: vuelve a conectar y reanuda.</translation>
-    </message>
-    <message>
-        <source>Cannot start: connect the machine, wait until it is idle, and let the job plan first.</source>
-        <translation>No se puede iniciar: conecta la máquina, espera a que esté en reposo y deja que el trabajo se planifique primero.</translation>
-    </message>
-    <message>
-        <source>Cannot create the job folder %1.</source>
-        <translation>No se puede crear la carpeta del trabajo %1.</translation>
-    </message>
-    <message>
-        <source>Nothing to resume: there is no saved progress beside %1.</source>
-        <translation>Nada que reanudar: no hay progreso guardado junto a %1.</translation>
-    </message>
-    <message>
-        <source>line %1 of %2</source>
-        <translation>línea %1 de %2</translation>
-    </message>
-    <message>
-        <source>The run of "%1" was interrupted at %2: %3</source>
-        <translation>La ejecución de "%1" se interrumpió en %2: %3</translation>
-    </message>
-    <message>
-        <source>press Resume</source>
-        <translation>pulse Reanudar</translation>
-    </message>
-    <message>
-        <source>Resume</source>
-        <translation>Reanudar</translation>
-    </message>
-    <message>
-        <source>The machine raised an alarm and the job stopped (the banner in the Machine panel says why). The progress is saved: clear the alarm (Reset, Unlock), check the pen stands where the studio shows it, then press Resume.</source>
-        <translation>La máquina lanzó una alarma y el trabajo se detuvo (el aviso del panel Máquina indica por qué). El progreso está guardado: borre la alarma (Reset, Desbloquear), compruebe que la pluma está donde la muestra el estudio y pulse Reanudar.</translation>
-    </message>
-    <message>
-        <source>Resuming "%1"…</source>
-        <translation>Reanudando "%1"…</translation>
-    </message>
-    <message>
-        <source>Running "%1"…</source>
-        <translation>Ejecutando "%1"…</translation>
-    </message>
-    <message>
-        <source>"%1" is drawn.</source>
-        <translation>"%1" está dibujado.</translation>
-    </message>
-</context>
-<context>
     <name>fivebar::widgets::RunPanel</name>
     <message>
         <source>Ready</source>
@@ -2597,100 +2823,6 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     <message>
         <source>%1 left (on hold)</source>
         <translation>quedan %1 (en pausa)</translation>
-    </message>
-</context>
-<context>
-    <name>fivebar::session::SettingsAdvice</name>
-    <message>
-        <source>soft limits are on, but this machine has no homing switches: the board measures its travel from where it was switched on, not from the reference pose, and stops the job with ALARM:2 when a move leaves that range.</source>
-        <translation>los límites por software están activados, pero esta máquina no tiene finales de carrera para homing: la placa mide su recorrido desde donde se encendió, no desde la pose de referencia, y detiene el trabajo con ALARM:2 cuando un movimiento sale de ese rango.</translation>
-    </message>
-    <message>
-        <source>soft limits are off although the profile expects them.</source>
-        <translation>los límites por software están desactivados aunque el perfil los espera.</translation>
-    </message>
-    <message>
-        <source>hard limits are on: without limit switches wired, noise on the pins stops the machine with ALARM:1.</source>
-        <translation>los límites por hardware están activados: sin finales de carrera conectados, el ruido en los pines detiene la máquina con ALARM:1.</translation>
-    </message>
-    <message>
-        <source>hard limits are off although the profile expects them.</source>
-        <translation>los límites por hardware están desactivados aunque el perfil los espera.</translation>
-    </message>
-    <message>
-        <source>the homing cycle is on: the board starts locked and wants $H, which needs homing switches.</source>
-        <translation>el ciclo de homing está activado: la placa arranca bloqueada y pide $H, que necesita finales de carrera.</translation>
-    </message>
-    <message>
-        <source>the homing cycle is off although the profile has switches.</source>
-        <translation>el ciclo de homing está desactivado aunque el perfil tiene finales de carrera.</translation>
-    </message>
-    <message>
-        <source>steps per degree differ: every motor angle would be wrong by the ratio, so the arms would leave the checked, safe poses.</source>
-        <translation>los pasos por grado difieren: cada ángulo de motor sería erróneo en esa proporción, así que los brazos saldrían de las poses comprobadas y seguras.</translation>
-    </message>
-    <message>
-        <source>the board's maximum rate is lower: the job runs slower than planned and the time estimate is off.</source>
-        <translation>la velocidad máxima de la placa es menor: el trabajo va más lento de lo planificado y la estimación de tiempo falla.</translation>
-    </message>
-    <message>
-        <source>the board's maximum rate is higher than the profile allows: the motors may lose steps.</source>
-        <translation>la velocidad máxima de la placa es mayor de lo que permite el perfil: los motores pueden perder pasos.</translation>
-    </message>
-    <message>
-        <source>the board accelerates more gently: the job takes longer than planned.</source>
-        <translation>la placa acelera más suavemente: el trabajo tarda más de lo planificado.</translation>
-    </message>
-    <message>
-        <source>the board accelerates harder than the profile allows: the motors may lose steps.</source>
-        <translation>la placa acelera más fuerte de lo que permite el perfil: los motores pueden perder pasos.</translation>
-    </message>
-    <message>
-        <source>the motor's travel for soft limits differs: with soft limits on, a move beyond it stops the job with ALARM:2.</source>
-        <translation>el recorrido del motor para los límites por software difiere: con ellos activados, un movimiento que lo supere detiene el trabajo con ALARM:2.</translation>
-    </message>
-    <message>
-        <source>the spindle (pen servo / laser) range differs: the pen may not lift or lower as planned.</source>
-        <translation>el rango del husillo (servo de pluma / láser) difiere: puede que la pluma no suba o baje como está previsto.</translation>
-    </message>
-    <message>
-        <source>the junction deviation differs: corners run at other speeds than planned.</source>
-        <translation>la desviación de unión (junction deviation) difiere: las esquinas van a velocidades distintas de las planificadas.</translation>
-    </message>
-    <message>
-        <source>differs from what the profile expects.</source>
-        <translation>difiere de lo que espera el perfil.</translation>
-    </message>
-    <message>
-        <source>not reported</source>
-        <translation>no informado</translation>
-    </message>
-    <message>
-        <source>$%1 is %2 on the board, the profile wants %3: %4</source>
-        <translation>$%1 vale %2 en la placa, el perfil quiere %3: %4</translation>
-    </message>
-    <message numerus="yes">
-        <source>The board's settings differ from the profile in %n place(s): %1.</source>
-        <translation>
-            <numerusform>Los ajustes de la placa difieren del perfil en %n punto: %1.</numerusform>
-            <numerusform>Los ajustes de la placa difieren del perfil en %n puntos: %1.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>A job would stop or move wrongly with them.</source>
-        <translation>Con ellos, un trabajo se detendría o se movería mal.</translation>
-    </message>
-    <message>
-        <source>The board's GRBL settings differ from the machine profile, and the job would not run as planned:</source>
-        <translation>Los ajustes GRBL de la placa difieren del perfil de la máquina y el trabajo no se ejecutaría como está planificado:</translation>
-    </message>
-    <message>
-        <source>The board's GRBL settings differ from the machine profile:</source>
-        <translation>Los ajustes GRBL de la placa difieren del perfil de la máquina:</translation>
-    </message>
-    <message>
-        <source>Write the profile's settings to the board (its current ones are saved to a backup file first), or start anyway.</source>
-        <translation>Escriba los ajustes del perfil en la placa (los actuales se guardan antes en un archivo de copia de seguridad) o inicie de todos modos.</translation>
     </message>
 </context>
 <context>

@@ -204,6 +204,53 @@
     </message>
 </context>
 <context>
+    <name>Jog</name>
+    <message>
+        <source>the machine position is not known yet</source>
+        <translation>la position de la machine n'est pas encore connue</translation>
+    </message>
+    <message>
+        <source>the current motor angles do not close the linkage</source>
+        <translation>les angles actuels des moteurs ne ferment pas la liaison</translation>
+    </message>
+    <message>
+        <source>the line leaves the workspace</source>
+        <translation>la ligne sort de l'espace de travail</translation>
+    </message>
+    <message>
+        <source>the arms cannot follow the straight line closely enough</source>
+        <translation>les bras ne peuvent pas suivre la ligne droite d'assez près</translation>
+    </message>
+    <message>
+        <source>stopped after %1 mm: %2</source>
+        <translation>arrêté après %1 mm : %2</translation>
+    </message>
+    <message>
+        <source>no jog direction</source>
+        <translation>aucune direction de déplacement</translation>
+    </message>
+    <message>
+        <source>no safe travel to that point</source>
+        <translation>aucun trajet sûr vers ce point</translation>
+    </message>
+    <message>
+        <source>the point is out of reach</source>
+        <translation>le point est hors de portée</translation>
+    </message>
+    <message>
+        <source>the job has no pen-down strokes to frame</source>
+        <translation>le travail n'a aucun trait stylo baissé à encadrer</translation>
+    </message>
+    <message>
+        <source>cannot reach the frame's first corner: %1</source>
+        <translation>impossible d'atteindre le premier coin du cadre : %1</translation>
+    </message>
+    <message>
+        <source>frame edge %1: %2</source>
+        <translation>côté du cadre %1 : %2</translation>
+    </message>
+</context>
+<context>
     <name>MapPainter</name>
     <message>
         <source>Transmission angle at the pen (deg)</source>
@@ -216,6 +263,69 @@
     <message>
         <source>Resolution (um per motor step)</source>
         <translation>Résolution (µm par pas moteur)</translation>
+    </message>
+</context>
+<context>
+    <name>MotionCheck</name>
+    <message>
+        <source>G2/G3 arcs are not arcs in joint space (X and Y are motor angles): plan the drawing with 'fivebar plan', which turns arcs into checked straight segments</source>
+        <translation>les arcs G2/G3 ne sont pas des arcs dans l'espace articulaire (X et Y sont des angles moteur) : planifiez le dessin avec 'fivebar plan', qui transforme les arcs en segments droits vérifiés</translation>
+    </message>
+    <message>
+        <source>probing (G38) is not supported on a five-bar machine</source>
+        <translation>le palpage (G38) n'est pas pris en charge sur une machine à cinq barres</translation>
+    </message>
+    <message>
+        <source>G20 (inches) would scale the motor angles by 25.4: X and Y are degrees, use G21</source>
+        <translation>G20 (pouces) multiplierait les angles moteur par 25,4 : X et Y sont en degrés, utilisez G21</translation>
+    </message>
+    <message>
+        <source>G10/G92 change the coordinates the checks rely on: %1</source>
+        <translation>G10/G92 changent les coordonnées sur lesquelles reposent les vérifications : %1</translation>
+    </message>
+    <message>
+        <source>G55-G59 select another work coordinate system; the checked link works in G54</source>
+        <translation>G55-G59 choisissent un autre système de coordonnées de travail ; la liaison vérifiée travaille en G54</translation>
+    </message>
+    <message>
+        <source>a jog ($J=) takes only G90, G91, G53 and G21</source>
+        <translation>un déplacement manuel ($J=) n'accepte que G90, G91, G53 et G21</translation>
+    </message>
+    <message>
+        <source>the board would refuse the jog (error:15)</source>
+        <translation>la carte refuserait le déplacement (error:15)</translation>
+    </message>
+    <message>
+        <source>the board would stop with a soft-limit alarm (ALARM:2)</source>
+        <translation>la carte s'arrêterait avec une alarme de fin de course logicielle (ALARM:2)</translation>
+    </message>
+    <message>
+        <source>the target %1 takes motor %2 to %3 deg in machine coordinates, outside the board's soft-limit travel %4..0 deg ($%5=%6): %7; home the machine or set its reference so that the travel matches the profile, or choose a target inside it</source>
+        <translation>la cible %1 amène le moteur %2 à %3 degrés en coordonnées machine, hors de la course logicielle de la carte %4..0 degrés ($%5=%6) : %7 ; faites la prise d'origine ou définissez la référence de sorte que la course corresponde au profil, ou choisissez une cible à l'intérieur</translation>
+    </message>
+    <message>
+        <source>set the machine's reference with 'fivebar reference' (or home it with 'fivebar home')</source>
+        <translation>définissez la référence de la machine avec 'fivebar reference' (ou faites sa prise d'origine avec 'fivebar home')</translation>
+    </message>
+    <message>
+        <source>choose a target inside the workspace (fivebar workspace shows it)</source>
+        <translation>choisissez une cible dans l'espace de travail ('fivebar workspace' le montre)</translation>
+    </message>
+    <message>
+        <source>(%1, %2) deg</source>
+        <translation>(%1, %2) degrés</translation>
+    </message>
+    <message>
+        <source>G28/G30 go to a position stored on the board, which is not known here; move to the point with a G0 line instead</source>
+        <translation>G28/G30 vont à une position enregistrée sur la carte, inconnue ici ; allez au point avec une ligne G0 à la place</translation>
+    </message>
+    <message>
+        <source>the machine's position %1 is not a safe pose of %2 (%3), so no move from it can be checked: %4 first</source>
+        <translation>la position de la machine %1 n'est pas une pose sûre de %2 (%3), donc aucun mouvement depuis elle ne peut être vérifié : %4 d'abord</translation>
+    </message>
+    <message>
+        <source>the move from %1 to %2 %3; %4</source>
+        <translation>le mouvement de %1 à %2 %3 ; %4</translation>
     </message>
 </context>
 <context>
@@ -470,6 +580,13 @@
     </message>
 </context>
 <context>
+    <name>SoftLimits</name>
+    <message>
+        <source>line %1 moves motor %2 to %3 deg in machine coordinates, outside the board's soft-limit travel %4..0 ($%5=%6)</source>
+        <translation>la ligne %1 amène le moteur %2 à %3 degrés en coordonnées machine, hors de la course logicielle de la carte %4..0 ($%5=%6)</translation>
+    </message>
+</context>
+<context>
     <name>WorkspaceLegend</name>
     <message>
         <source>type II &gt;= %1 deg, type I &gt;= %2 deg</source>
@@ -510,6 +627,308 @@
     <message>
         <source>singularity-free area: %1 cm²</source>
         <translation>surface sans singularité : %1 cm²</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::session::BoardPreflight</name>
+    <message>
+        <source>The board's soft limits would stop this job with an alarm (ALARM:2): %1. The board checks its travel ($130, $131) in machine coordinates, which the reference pose shifted against the drawing's. Home the machine, or make the board's settings match the profile (Machine settings...), then start again.</source>
+        <translation>Les fins de course logicielles de la carte arrêteraient ce travail avec une alarme (ALARM:2) : %1. La carte vérifie sa course ($130, $131) en coordonnées machine, que la pose de référence a décalées par rapport à celles du dessin. Faites la prise d'origine de la machine, ou alignez les réglages de la carte sur le profil (Réglages de la machine...), puis relancez.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::session::JogController</name>
+    <message>
+        <source>Jog refused: the machine is not connected, not idle, or a job is running.</source>
+        <translation>Déplacement refusé : la machine n'est pas connectée, pas au repos, ou une tâche est en cours.</translation>
+    </message>
+    <message>
+        <source>Jog stopped at the last safe point: %1</source>
+        <translation>Déplacement arrêté au dernier point sûr : %1</translation>
+    </message>
+    <message>
+        <source>Jog refused: %1</source>
+        <translation>Déplacement refusé : %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::session::MachineSession</name>
+    <message>
+        <source>Cannot open %1.</source>
+        <translation>Impossible d'ouvrir %1.</translation>
+    </message>
+    <message>
+        <source>Connected to %1.</source>
+        <translation>Connecté à %1.</translation>
+    </message>
+    <message>
+        <source>Disconnected.</source>
+        <translation>Déconnecté.</translation>
+    </message>
+    <message>
+        <source>Not connected: %1 was not sent.</source>
+        <translation>Non connecté : %1 n'a pas été envoyé.</translation>
+    </message>
+    <message>
+        <source>Not sent (%1): %2</source>
+        <translation>Non envoyé (%1) : %2</translation>
+    </message>
+    <message>
+        <source>A job is running: %1 was not sent.</source>
+        <translation>Une tâche est en cours : %1 n'a pas été envoyé.</translation>
+    </message>
+    <message>
+        <source>Jog refused: the machine is not idle, not connected or a job is running.</source>
+        <translation>Déplacement refusé : la machine n'est pas au repos, pas connectée, ou une tâche est en cours.</translation>
+    </message>
+    <message>
+        <source>%1 (jog in %2 checked moves)</source>
+        <translation>%1 (déplacement en %2 mouvements vérifiés)</translation>
+    </message>
+    <message>
+        <source>[soft reset]</source>
+        <translation>[réinitialisation logicielle]</translation>
+    </message>
+    <message>
+        <source>[feed hold]</source>
+        <translation>[pause d'avance]</translation>
+    </message>
+    <message>
+        <source>[cycle start]</source>
+        <translation>[départ cycle]</translation>
+    </message>
+    <message>
+        <source>%1 was rejected: %2</source>
+        <translation>%1 a été refusé : %2</translation>
+    </message>
+    <message>
+        <source>The machine is locked (alarm state). Unlock it with $X or home it with $H once you know where it stands.</source>
+        <translation>La machine est verrouillée (état d'alarme). Déverrouillez-la avec $X ou faites sa prise d'origine avec $H une fois que vous savez où elle se trouve.</translation>
+    </message>
+    <message>
+        <source>The board reset (Grbl %1).</source>
+        <translation>La carte a été réinitialisée (Grbl %1).</translation>
+    </message>
+    <message>
+        <source>Connection lost: %1</source>
+        <translation>Connexion perdue : %1</translation>
+    </message>
+    <message>
+        <source>the simulated machine</source>
+        <translation>la machine simulée</translation>
+    </message>
+    <message>
+        <source>set the reference pose (Machine panel) or home the machine</source>
+        <translation>définissez la pose de référence (panneau Machine) ou lancez le homing de la machine</translation>
+    </message>
+    <message>
+        <source>%1 at %2 baud</source>
+        <translation>%1 à %2 bauds</translation>
+    </message>
+    <message>
+        <source>Opened %1; waiting for the board to answer...</source>
+        <translation>%1 ouvert ; attente de la réponse de la carte...</translation>
+    </message>
+    <message>
+        <source>No GRBL board answered on %1 within %2 s. Check that the port is the machine's, that the baud rate matches its firmware (GRBL 1.1: usually 115200) and that it is powered.</source>
+        <translation>Aucune carte GRBL n'a répondu sur %1 en %2 s. Vérifiez que le port est celui de la machine, que le débit correspond à son firmware (GRBL 1.1 : souvent 115200) et qu'elle est alimentée.</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>Non envoyé : %1</translation>
+    </message>
+    <message>
+        <source>Unchecked: %1</source>
+        <translation>Non vérifié : %1</translation>
+    </message>
+    <message>
+        <source>The machine's position is not known yet (no status report with its work position): wait a moment, or set the reference pose.</source>
+        <translation>La position de la machine n'est pas encore connue (aucun rapport d'état avec sa position de travail) : patientez un instant ou définissez la pose de référence.</translation>
+    </message>
+    <message>
+        <source>The machine is still moving or busy: send a move when it stands still (Idle), so it can be checked from where the machine really is.</source>
+        <translation>La machine bouge encore ou est occupée : envoyez un déplacement quand elle est à l'arrêt (Idle), pour qu'il soit vérifié depuis sa position réelle.</translation>
+    </message>
+    <message>
+        <source>Console lines are sent UNCHECKED from now on.</source>
+        <translation>Les lignes de la console sont désormais envoyées SANS VÉRIFICATION.</translation>
+    </message>
+    <message>
+        <source>Console lines are checked again.</source>
+        <translation>Les lignes de la console sont de nouveau vérifiées.</translation>
+    </message>
+    <message>
+        <source>The machine must be connected, idle and its position known.</source>
+        <translation>La machine doit être connectée, au repos et sa position connue.</translation>
+    </message>
+    <message>
+        <source>The profile's home pose does not close the linkage.</source>
+        <translation>La position d'origine du profil ne ferme pas la chaîne articulée.</translation>
+    </message>
+    <message>
+        <source>No checked move to the home pose: %1</source>
+        <translation>Pas de déplacement vérifié vers la position d'origine : %1</translation>
+    </message>
+    <message>
+        <source>The move was not sent (see the console).</source>
+        <translation>Le déplacement n'a pas été envoyé (voir la console).</translation>
+    </message>
+    <message>
+        <source>choose a target inside the workspace</source>
+        <translation>choisissez une cible dans l'espace de travail</translation>
+    </message>
+    <message>
+        <source>Move not sent: %1</source>
+        <translation>Mouvement non envoyé : %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::session::RunController</name>
+    <message>
+        <source>The connection was closed during the run. The progress is saved beside the job: reconnect and resume.</source>
+        <translation>La connexion a été fermée pendant l'exécution. La progression est enregistrée à côté de la tâche : reconnectez et reprenez.</translation>
+    </message>
+    <message>
+        <source>Cannot start: connect the machine, wait until it is idle, and let the job plan first.</source>
+        <translation>Impossible de démarrer : connectez la machine, attendez qu'elle soit au repos et laissez d'abord la tâche se planifier.</translation>
+    </message>
+    <message>
+        <source>Cannot create the job folder %1.</source>
+        <translation>Impossible de créer le dossier de tâche %1.</translation>
+    </message>
+    <message>
+        <source>Nothing to resume: there is no saved progress beside %1.</source>
+        <translation>Rien à reprendre : aucune progression enregistrée à côté de %1.</translation>
+    </message>
+    <message>
+        <source>line %1 of %2</source>
+        <translation>ligne %1 sur %2</translation>
+    </message>
+    <message>
+        <source>The run of "%1" was interrupted at %2: %3</source>
+        <translation>L'exécution de « %1 » a été interrompue à %2 : %3</translation>
+    </message>
+    <message>
+        <source>press Resume</source>
+        <translation>appuyez sur Reprendre</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Reprendre</translation>
+    </message>
+    <message>
+        <source>The machine raised an alarm and the job stopped (the banner in the Machine panel says why). The progress is saved: clear the alarm (Reset, Unlock), check the pen stands where the studio shows it, then press Resume.</source>
+        <translation>La machine a déclenché une alarme et la tâche s'est arrêtée (le bandeau du panneau Machine indique pourquoi). La progression est enregistrée : acquittez l'alarme (Reset, Unlock), vérifiez que le stylo est bien là où le studio l'affiche, puis appuyez sur Reprendre.</translation>
+    </message>
+    <message>
+        <source>Resuming "%1"…</source>
+        <translation>Reprise de « %1 »…</translation>
+    </message>
+    <message>
+        <source>Running "%1"…</source>
+        <translation>Exécution de « %1 »…</translation>
+    </message>
+    <message>
+        <source>"%1" is drawn.</source>
+        <translation>« %1 » est tracé.</translation>
+    </message>
+    <message>
+        <source>Not started: %1</source>
+        <translation>Non démarré : %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::session::SettingsAdvice</name>
+    <message>
+        <source>soft limits are on, but this machine has no homing switches: the board measures its travel from where it was switched on, not from the reference pose, and stops the job with ALARM:2 when a move leaves that range.</source>
+        <translation>les limites logicielles sont actives, mais cette machine n'a pas de fins de course de homing : la carte mesure sa course depuis sa position à la mise sous tension, pas depuis la pose de référence, et arrête la tâche avec ALARM:2 quand un déplacement sort de cette plage.</translation>
+    </message>
+    <message>
+        <source>soft limits are off although the profile expects them.</source>
+        <translation>les limites logicielles sont désactivées alors que le profil les attend.</translation>
+    </message>
+    <message>
+        <source>hard limits are on: without limit switches wired, noise on the pins stops the machine with ALARM:1.</source>
+        <translation>les limites matérielles sont actives : sans fins de course câblés, du bruit sur les broches arrête la machine avec ALARM:1.</translation>
+    </message>
+    <message>
+        <source>hard limits are off although the profile expects them.</source>
+        <translation>les limites matérielles sont désactivées alors que le profil les attend.</translation>
+    </message>
+    <message>
+        <source>the homing cycle is on: the board starts locked and wants $H, which needs homing switches.</source>
+        <translation>le cycle de homing est actif : la carte démarre verrouillée et attend $H, qui nécessite des fins de course.</translation>
+    </message>
+    <message>
+        <source>the homing cycle is off although the profile has switches.</source>
+        <translation>le cycle de homing est désactivé alors que le profil a des fins de course.</translation>
+    </message>
+    <message>
+        <source>steps per degree differ: every motor angle would be wrong by the ratio, so the arms would leave the checked, safe poses.</source>
+        <translation>les pas par degré diffèrent : chaque angle moteur serait faux dans ce rapport, et les bras quitteraient les poses vérifiées et sûres.</translation>
+    </message>
+    <message>
+        <source>the board's maximum rate is lower: the job runs slower than planned and the time estimate is off.</source>
+        <translation>la vitesse maximale de la carte est plus basse : la tâche est plus lente que prévu et l'estimation du temps est fausse.</translation>
+    </message>
+    <message>
+        <source>the board's maximum rate is higher than the profile allows: the motors may lose steps.</source>
+        <translation>la vitesse maximale de la carte dépasse ce que le profil permet : les moteurs peuvent perdre des pas.</translation>
+    </message>
+    <message>
+        <source>the board accelerates more gently: the job takes longer than planned.</source>
+        <translation>la carte accélère plus doucement : la tâche dure plus longtemps que prévu.</translation>
+    </message>
+    <message>
+        <source>the board accelerates harder than the profile allows: the motors may lose steps.</source>
+        <translation>la carte accélère plus fort que ce que le profil permet : les moteurs peuvent perdre des pas.</translation>
+    </message>
+    <message>
+        <source>the motor's travel for soft limits differs: with soft limits on, a move beyond it stops the job with ALARM:2.</source>
+        <translation>la course du moteur pour les limites logicielles diffère : avec les limites logicielles actives, un déplacement au-delà arrête la tâche avec ALARM:2.</translation>
+    </message>
+    <message>
+        <source>the spindle (pen servo / laser) range differs: the pen may not lift or lower as planned.</source>
+        <translation>la plage de la broche (servo de stylo / laser) diffère : le stylo risque de ne pas se lever ou s'abaisser comme prévu.</translation>
+    </message>
+    <message>
+        <source>the junction deviation differs: corners run at other speeds than planned.</source>
+        <translation>la déviation de jonction diffère : les angles sont parcourus à d'autres vitesses que prévu.</translation>
+    </message>
+    <message>
+        <source>differs from what the profile expects.</source>
+        <translation>diffère de ce qu'attend le profil.</translation>
+    </message>
+    <message>
+        <source>not reported</source>
+        <translation>non signalé</translation>
+    </message>
+    <message>
+        <source>$%1 is %2 on the board, the profile wants %3: %4</source>
+        <translation>$%1 vaut %2 sur la carte, le profil attend %3 : %4</translation>
+    </message>
+    <message numerus="yes">
+        <source>The board's settings differ from the profile in %n place(s): %1.</source>
+        <translation>
+            <numerusform>Les réglages de la carte diffèrent du profil en %n endroit : %1.</numerusform>
+            <numerusform>Les réglages de la carte diffèrent du profil en %n endroits : %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>A job would stop or move wrongly with them.</source>
+        <translation>Une tâche s'arrêterait ou se déplacerait mal avec eux.</translation>
+    </message>
+    <message>
+        <source>The board's GRBL settings differ from the machine profile, and the job would not run as planned:</source>
+        <translation>Les réglages GRBL de la carte diffèrent du profil machine, et la tâche ne se déroulerait pas comme prévu :</translation>
+    </message>
+    <message>
+        <source>The board's GRBL settings differ from the machine profile:</source>
+        <translation>Les réglages GRBL de la carte diffèrent du profil machine :</translation>
+    </message>
+    <message>
+        <source>Write the profile's settings to the board (its current ones are saved to a backup file first), or start anyway.</source>
+        <translation>Écrivez les réglages du profil sur la carte (les actuels sont d'abord sauvegardés dans un fichier), ou démarrez quand même.</translation>
     </message>
 </context>
 <context>
@@ -1183,21 +1602,6 @@ La planification et le traçage peuvent être très longs. L'importer quand mêm
     </message>
 </context>
 <context>
-    <name>fivebar::session::JogController</name>
-    <message>
-        <source>Jog refused: the machine is not connected, not idle, or a job is running.</source>
-        <translation>Déplacement refusé : la machine n'est pas connectée, pas au repos, ou une tâche est en cours.</translation>
-    </message>
-    <message>
-        <source>Jog stopped at the last safe point: %1</source>
-        <translation>Déplacement arrêté au dernier point sûr : %1</translation>
-    </message>
-    <message>
-        <source>Jog refused: %1</source>
-        <translation>Déplacement refusé : %1</translation>
-    </message>
-</context>
-<context>
     <name>fivebar::widgets::JogPanel</name>
     <message>
         <source>Jog the pen %1 mm in X, %2 mm in Y per step; hold for a continuous jog</source>
@@ -1615,126 +2019,50 @@ Confirmez seulement si les bras sont exactement dans cette pose. S'ils sont aill
     </message>
 </context>
 <context>
-    <name>fivebar::session::MachineSession</name>
+    <name>fivebar::widgets::MachinePanels</name>
     <message>
-        <source>Cannot open %1.</source>
-        <translation>Impossible d'ouvrir %1.</translation>
+        <source>Machine</source>
+        <translation>Machine</translation>
     </message>
     <message>
-        <source>Connected to %1.</source>
-        <translation>Connecté à %1.</translation>
+        <source>Run</source>
+        <translation>Exécution</translation>
     </message>
     <message>
-        <source>Disconnected.</source>
-        <translation>Déconnecté.</translation>
+        <source>Jog</source>
+        <translation>Déplacement</translation>
     </message>
     <message>
-        <source>Not connected: %1 was not sent.</source>
-        <translation>Non connecté : %1 n'a pas été envoyé.</translation>
+        <source>Console</source>
+        <translation>Console</translation>
     </message>
     <message>
-        <source>Not sent (%1): %2</source>
-        <translation>Non envoyé (%1) : %2</translation>
+        <source>Machine profile</source>
+        <translation>Profil</translation>
     </message>
     <message>
-        <source>A job is running: %1 was not sent.</source>
-        <translation>Une tâche est en cours : %1 n'a pas été envoyé.</translation>
+        <source>Machine &amp;settings...</source>
+        <translation>&amp;Réglages de la machine…</translation>
     </message>
     <message>
-        <source>Jog refused: the machine is not idle, not connected or a job is running.</source>
-        <translation>Déplacement refusé : la machine n'est pas au repos, pas connectée, ou une tâche est en cours.</translation>
+        <source>A job is running</source>
+        <translation>Une tâche est en cours</translation>
     </message>
     <message>
-        <source>%1 (jog in %2 checked moves)</source>
-        <translation>%1 (déplacement en %2 mouvements vérifiés)</translation>
+        <source>The machine is drawing "%1". Quitting the studio would leave it without its stream of lines.
+
+Hold, stop and quit: the machine stops cleanly and the progress is saved, so you can resume later.</source>
+        <translation>La machine trace « %1 ». Quitter le studio la priverait de son flux de lignes.
+
+Pause, arrêter et quitter : la machine s'arrête proprement et la progression est enregistrée, vous pourrez reprendre plus tard.</translation>
     </message>
     <message>
-        <source>[soft reset]</source>
-        <translation>[réinitialisation logicielle]</translation>
+        <source>Hold, stop and quit</source>
+        <translation>Pause, arrêter et quitter</translation>
     </message>
     <message>
-        <source>[feed hold]</source>
-        <translation>[pause d'avance]</translation>
-    </message>
-    <message>
-        <source>[cycle start]</source>
-        <translation>[départ cycle]</translation>
-    </message>
-    <message>
-        <source>%1 was rejected: %2</source>
-        <translation>%1 a été refusé : %2</translation>
-    </message>
-    <message>
-        <source>The machine is locked (alarm state). Unlock it with $X or home it with $H once you know where it stands.</source>
-        <translation>La machine est verrouillée (état d'alarme). Déverrouillez-la avec $X ou faites sa prise d'origine avec $H une fois que vous savez où elle se trouve.</translation>
-    </message>
-    <message>
-        <source>The board reset (Grbl %1).</source>
-        <translation>La carte a été réinitialisée (Grbl %1).</translation>
-    </message>
-    <message>
-        <source>Connection lost: %1</source>
-        <translation>Connexion perdue : %1</translation>
-    </message>
-    <message>
-        <source>the simulated machine</source>
-        <translation>la machine simulée</translation>
-    </message>
-    <message>
-        <source>set the reference pose (Machine panel) or home the machine</source>
-        <translation>définissez la pose de référence (panneau Machine) ou lancez le homing de la machine</translation>
-    </message>
-    <message>
-        <source>%1 at %2 baud</source>
-        <translation>%1 à %2 bauds</translation>
-    </message>
-    <message>
-        <source>Opened %1; waiting for the board to answer...</source>
-        <translation>%1 ouvert ; attente de la réponse de la carte...</translation>
-    </message>
-    <message>
-        <source>No GRBL board answered on %1 within %2 s. Check that the port is the machine's, that the baud rate matches its firmware (GRBL 1.1: usually 115200) and that it is powered.</source>
-        <translation>Aucune carte GRBL n'a répondu sur %1 en %2 s. Vérifiez que le port est celui de la machine, que le débit correspond à son firmware (GRBL 1.1 : souvent 115200) et qu'elle est alimentée.</translation>
-    </message>
-    <message>
-        <source>Not sent: %1</source>
-        <translation>Non envoyé : %1</translation>
-    </message>
-    <message>
-        <source>Unchecked: %1</source>
-        <translation>Non vérifié : %1</translation>
-    </message>
-    <message>
-        <source>The machine's position is not known yet (no status report with its work position): wait a moment, or set the reference pose.</source>
-        <translation>La position de la machine n'est pas encore connue (aucun rapport d'état avec sa position de travail) : patientez un instant ou définissez la pose de référence.</translation>
-    </message>
-    <message>
-        <source>The machine is still moving or busy: send a move when it stands still (Idle), so it can be checked from where the machine really is.</source>
-        <translation>La machine bouge encore ou est occupée : envoyez un déplacement quand elle est à l'arrêt (Idle), pour qu'il soit vérifié depuis sa position réelle.</translation>
-    </message>
-    <message>
-        <source>Console lines are sent UNCHECKED from now on.</source>
-        <translation>Les lignes de la console sont désormais envoyées SANS VÉRIFICATION.</translation>
-    </message>
-    <message>
-        <source>Console lines are checked again.</source>
-        <translation>Les lignes de la console sont de nouveau vérifiées.</translation>
-    </message>
-    <message>
-        <source>The machine must be connected, idle and its position known.</source>
-        <translation>La machine doit être connectée, au repos et sa position connue.</translation>
-    </message>
-    <message>
-        <source>The profile's home pose does not close the linkage.</source>
-        <translation>La position d'origine du profil ne ferme pas la chaîne articulée.</translation>
-    </message>
-    <message>
-        <source>No checked move to the home pose: %1</source>
-        <translation>Pas de déplacement vérifié vers la position d'origine : %1</translation>
-    </message>
-    <message>
-        <source>The move was not sent (see the console).</source>
-        <translation>Le déplacement n'a pas été envoyé (voir la console).</translation>
+        <source>Keep running</source>
+        <translation>Continuer</translation>
     </message>
 </context>
 <context>
@@ -1843,53 +2171,6 @@ Confirmez seulement si les bras sont exactement dans cette pose. S'ils sont aill
     <message>
         <source>yes</source>
         <translation>oui</translation>
-    </message>
-</context>
-<context>
-    <name>fivebar::widgets::MachinePanels</name>
-    <message>
-        <source>Machine</source>
-        <translation>Machine</translation>
-    </message>
-    <message>
-        <source>Run</source>
-        <translation>Exécution</translation>
-    </message>
-    <message>
-        <source>Jog</source>
-        <translation>Déplacement</translation>
-    </message>
-    <message>
-        <source>Console</source>
-        <translation>Console</translation>
-    </message>
-    <message>
-        <source>Machine profile</source>
-        <translation>Profil</translation>
-    </message>
-    <message>
-        <source>Machine &amp;settings...</source>
-        <translation>&amp;Réglages de la machine…</translation>
-    </message>
-    <message>
-        <source>A job is running</source>
-        <translation>Une tâche est en cours</translation>
-    </message>
-    <message>
-        <source>The machine is drawing "%1". Quitting the studio would leave it without its stream of lines.
-
-Hold, stop and quit: the machine stops cleanly and the progress is saved, so you can resume later.</source>
-        <translation>La machine trace « %1 ». Quitter le studio la priverait de son flux de lignes.
-
-Pause, arrêter et quitter : la machine s'arrête proprement et la progression est enregistrée, vous pourrez reprendre plus tard.</translation>
-    </message>
-    <message>
-        <source>Hold, stop and quit</source>
-        <translation>Pause, arrêter et quitter</translation>
-    </message>
-    <message>
-        <source>Keep running</source>
-        <translation>Continuer</translation>
     </message>
 </context>
 <context>
@@ -2402,61 +2683,6 @@ Pause, arrêter et quitter : la machine s'arrête proprement et la progression e
     </message>
 </context>
 <context>
-    <name>fivebar::session::RunController</name>
-    <message>
-        <source>Not started: the board's soft limits would stop this job with an alarm (ALARM:2): %1. The board checks its travel ($130, $131) in machine coordinates, which the reference pose shifted against the drawing's. Home the machine, or make the board's settings match the profile (Machine settings...), then start again.</source>
-        <translation>Non démarré : les limites logicielles de la carte arrêteraient ce travail par une alarme (ALARM:2) : %1. La carte vérifie sa course ($130, $131) en coordonnées machine, que la pose de référence a décalées par rapport à celles du dessin. Faites la prise d'origine de la machine, ou alignez les réglages de la carte sur le profil (Réglages de la machine…), puis relancez.</translation>
-    </message>
-    <message>
-        <source>The connection was closed during the run. The progress is saved beside the job: reconnect and resume.</source>
-        <translation>La connexion a été fermée pendant l'exécution. La progression est enregistrée à côté de la tâche : reconnectez et reprenez.</translation>
-    </message>
-    <message>
-        <source>Cannot start: connect the machine, wait until it is idle, and let the job plan first.</source>
-        <translation>Impossible de démarrer : connectez la machine, attendez qu'elle soit au repos et laissez d'abord la tâche se planifier.</translation>
-    </message>
-    <message>
-        <source>Cannot create the job folder %1.</source>
-        <translation>Impossible de créer le dossier de tâche %1.</translation>
-    </message>
-    <message>
-        <source>Nothing to resume: there is no saved progress beside %1.</source>
-        <translation>Rien à reprendre : aucune progression enregistrée à côté de %1.</translation>
-    </message>
-    <message>
-        <source>line %1 of %2</source>
-        <translation>ligne %1 sur %2</translation>
-    </message>
-    <message>
-        <source>The run of "%1" was interrupted at %2: %3</source>
-        <translation>L'exécution de « %1 » a été interrompue à %2 : %3</translation>
-    </message>
-    <message>
-        <source>press Resume</source>
-        <translation>appuyez sur Reprendre</translation>
-    </message>
-    <message>
-        <source>Resume</source>
-        <translation>Reprendre</translation>
-    </message>
-    <message>
-        <source>The machine raised an alarm and the job stopped (the banner in the Machine panel says why). The progress is saved: clear the alarm (Reset, Unlock), check the pen stands where the studio shows it, then press Resume.</source>
-        <translation>La machine a déclenché une alarme et la tâche s'est arrêtée (le bandeau du panneau Machine indique pourquoi). La progression est enregistrée : acquittez l'alarme (Reset, Unlock), vérifiez que le stylo est bien là où le studio l'affiche, puis appuyez sur Reprendre.</translation>
-    </message>
-    <message>
-        <source>Resuming "%1"…</source>
-        <translation>Reprise de « %1 »…</translation>
-    </message>
-    <message>
-        <source>Running "%1"…</source>
-        <translation>Exécution de « %1 »…</translation>
-    </message>
-    <message>
-        <source>"%1" is drawn.</source>
-        <translation>« %1 » est tracé.</translation>
-    </message>
-</context>
-<context>
     <name>fivebar::widgets::RunPanel</name>
     <message>
         <source>Ready</source>
@@ -2597,100 +2823,6 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     <message>
         <source>%1 left (on hold)</source>
         <translation>%1 restant (en pause)</translation>
-    </message>
-</context>
-<context>
-    <name>fivebar::session::SettingsAdvice</name>
-    <message>
-        <source>soft limits are on, but this machine has no homing switches: the board measures its travel from where it was switched on, not from the reference pose, and stops the job with ALARM:2 when a move leaves that range.</source>
-        <translation>les limites logicielles sont actives, mais cette machine n'a pas de fins de course de homing : la carte mesure sa course depuis sa position à la mise sous tension, pas depuis la pose de référence, et arrête la tâche avec ALARM:2 quand un déplacement sort de cette plage.</translation>
-    </message>
-    <message>
-        <source>soft limits are off although the profile expects them.</source>
-        <translation>les limites logicielles sont désactivées alors que le profil les attend.</translation>
-    </message>
-    <message>
-        <source>hard limits are on: without limit switches wired, noise on the pins stops the machine with ALARM:1.</source>
-        <translation>les limites matérielles sont actives : sans fins de course câblés, du bruit sur les broches arrête la machine avec ALARM:1.</translation>
-    </message>
-    <message>
-        <source>hard limits are off although the profile expects them.</source>
-        <translation>les limites matérielles sont désactivées alors que le profil les attend.</translation>
-    </message>
-    <message>
-        <source>the homing cycle is on: the board starts locked and wants $H, which needs homing switches.</source>
-        <translation>le cycle de homing est actif : la carte démarre verrouillée et attend $H, qui nécessite des fins de course.</translation>
-    </message>
-    <message>
-        <source>the homing cycle is off although the profile has switches.</source>
-        <translation>le cycle de homing est désactivé alors que le profil a des fins de course.</translation>
-    </message>
-    <message>
-        <source>steps per degree differ: every motor angle would be wrong by the ratio, so the arms would leave the checked, safe poses.</source>
-        <translation>les pas par degré diffèrent : chaque angle moteur serait faux dans ce rapport, et les bras quitteraient les poses vérifiées et sûres.</translation>
-    </message>
-    <message>
-        <source>the board's maximum rate is lower: the job runs slower than planned and the time estimate is off.</source>
-        <translation>la vitesse maximale de la carte est plus basse : la tâche est plus lente que prévu et l'estimation du temps est fausse.</translation>
-    </message>
-    <message>
-        <source>the board's maximum rate is higher than the profile allows: the motors may lose steps.</source>
-        <translation>la vitesse maximale de la carte dépasse ce que le profil permet : les moteurs peuvent perdre des pas.</translation>
-    </message>
-    <message>
-        <source>the board accelerates more gently: the job takes longer than planned.</source>
-        <translation>la carte accélère plus doucement : la tâche dure plus longtemps que prévu.</translation>
-    </message>
-    <message>
-        <source>the board accelerates harder than the profile allows: the motors may lose steps.</source>
-        <translation>la carte accélère plus fort que ce que le profil permet : les moteurs peuvent perdre des pas.</translation>
-    </message>
-    <message>
-        <source>the motor's travel for soft limits differs: with soft limits on, a move beyond it stops the job with ALARM:2.</source>
-        <translation>la course du moteur pour les limites logicielles diffère : avec les limites logicielles actives, un déplacement au-delà arrête la tâche avec ALARM:2.</translation>
-    </message>
-    <message>
-        <source>the spindle (pen servo / laser) range differs: the pen may not lift or lower as planned.</source>
-        <translation>la plage de la broche (servo de stylo / laser) diffère : le stylo risque de ne pas se lever ou s'abaisser comme prévu.</translation>
-    </message>
-    <message>
-        <source>the junction deviation differs: corners run at other speeds than planned.</source>
-        <translation>la déviation de jonction diffère : les angles sont parcourus à d'autres vitesses que prévu.</translation>
-    </message>
-    <message>
-        <source>differs from what the profile expects.</source>
-        <translation>diffère de ce qu'attend le profil.</translation>
-    </message>
-    <message>
-        <source>not reported</source>
-        <translation>non signalé</translation>
-    </message>
-    <message>
-        <source>$%1 is %2 on the board, the profile wants %3: %4</source>
-        <translation>$%1 vaut %2 sur la carte, le profil attend %3 : %4</translation>
-    </message>
-    <message numerus="yes">
-        <source>The board's settings differ from the profile in %n place(s): %1.</source>
-        <translation>
-            <numerusform>Les réglages de la carte diffèrent du profil en %n endroit : %1.</numerusform>
-            <numerusform>Les réglages de la carte diffèrent du profil en %n endroits : %1.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>A job would stop or move wrongly with them.</source>
-        <translation>Une tâche s'arrêterait ou se déplacerait mal avec eux.</translation>
-    </message>
-    <message>
-        <source>The board's GRBL settings differ from the machine profile, and the job would not run as planned:</source>
-        <translation>Les réglages GRBL de la carte diffèrent du profil machine, et la tâche ne se déroulerait pas comme prévu :</translation>
-    </message>
-    <message>
-        <source>The board's GRBL settings differ from the machine profile:</source>
-        <translation>Les réglages GRBL de la carte diffèrent du profil machine :</translation>
-    </message>
-    <message>
-        <source>Write the profile's settings to the board (its current ones are saved to a backup file first), or start anyway.</source>
-        <translation>Écrivez les réglages du profil sur la carte (les actuels sont d'abord sauvegardés dans un fichier), ou démarrez quand même.</translation>
     </message>
 </context>
 <context>
