@@ -127,6 +127,7 @@ void GrblProtocol::handleLine(std::string_view raw) {
       }
       Ack ack{inFlight_.front().id, std::move(inFlight_.front().text),
               p.kind == LineKind::Error ? p.code : 0};
+      if (ack.ok()) noteSettingWrite(ack.line);
       bytesInFlight_ -= int(ack.line.size()) + 1;
       inFlight_.pop_front();
       for (auto* l : listeners_) l->onAck(ack);
@@ -170,6 +171,7 @@ void GrblProtocol::handleLine(std::string_view raw) {
       return;
     }
     case LineKind::Status: handleStatus(p.status); return;
+    case LineKind::Setting: settings_[p.settingId] = p.settingValue; return;
     default: return;
   }
 }
@@ -208,6 +210,7 @@ void GrblProtocol::disconnected(const std::string& reason) {
   if (!connected_) return;
   connected_ = false;
   resetCounters(nullptr, nullptr);
+  settings_.clear();
   queue_.clear();
   statusOutstanding_ = false;
   for (auto* l : listeners_) l->onDisconnected(reason);
@@ -225,6 +228,21 @@ std::optional<JointAngles> GrblProtocol::motorAngles() const {
   const std::optional<Axes> w = workPositionDeg();
   if (!w) return std::nullopt;
   return JointAngles{radFromDeg(w->x()), radFromDeg(w->y())};
+}
+
+std::uint64_t GrblProtocol::requestSettings() {
+  const EnqueueResult r = enqueue("$$");
+  return r.ok() ? r.id : 0;
+}
+
+// "$130=180.000" acknowledged: the board now holds it.
+void GrblProtocol::noteSettingWrite(const std::string& line) {
+  if (line.size() < 4 || line[0] != '$' || !std::isdigit(static_cast<unsigned char>(line[1]))) return;
+  const std::size_t eq = line.find('=');
+  if (eq == std::string::npos) return;
+  const auto id = parseNumber(std::string_view(line).substr(1, eq - 1));
+  const auto value = parseNumber(std::string_view(line).substr(eq + 1));
+  if (id && value) settings_[int(*id)] = *value;
 }
 
 std::uint64_t GrblProtocol::requestParameters() {

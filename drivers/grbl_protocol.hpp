@@ -141,6 +141,11 @@ class GrblProtocol {
   bool parametersPending() const { return parametersId_ != 0; }
   // Stored positions (machine coordinates) from the last "$#": "G28", "G30", "G54".., "G92".
   std::optional<Axes> parameter(const std::string& name) const;
+  // The board's $ settings as last listed (a "$$" answer, whoever asked) or written (an
+  // acknowledged "$N=V"); empty before. Kept over resets (they live in the board's EEPROM).
+  const std::map<int, double>& boardSettings() const { return settings_; }
+  // Sends "$$"; returns the line's id (0 when it could not be queued).
+  std::uint64_t requestSettings();
   // Raw machine position (MPos) in degrees, when known.
   std::optional<Axes> machinePositionDeg() const;
 
@@ -154,6 +159,7 @@ class GrblProtocol {
   void handleLine(std::string_view raw);
   void handleStatus(const StatusReport& r);
   void offsetFromParameters();
+  void noteSettingWrite(const std::string& line);
   void resetCounters(std::vector<std::uint64_t>* lost, std::vector<std::uint64_t>* dropped);
 
   Writer write_;
@@ -171,6 +177,7 @@ class GrblProtocol {
   StatusReport lastStatus_;
   std::optional<Axes> wco_;
   std::map<std::string, Axes> params_;
+  std::map<int, double> settings_;
   std::string activeSystem_ = "G54";
   std::uint64_t parametersId_ = 0;
   std::string version_;

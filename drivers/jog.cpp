@@ -11,6 +11,8 @@
 namespace fivebar::jog {
 namespace {
 
+Message noLinkage() { return FB_TR("Jog", "the current motor angles do not close the linkage"); }
+
 std::string deg3(double rad) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3f", degFromRad(rad));
@@ -76,20 +78,22 @@ JogPlan walkLine(const MachineProfile& p, const JointAngles& start, const Vec2& 
   while (distanceMm - done > 1e-9) {
     step = std::min(step * 2.0, distanceMm - done);
     std::optional<JointAngles> next;
-    std::string why;
+    Message why;
     while (step >= kMinSubMoveMm || step >= distanceMm - done - 1e-12) {
       const Vec2 target = here + dir * step;
       next = ikNear(p, target, mode, q);
-      if (!next) { why = "the line leaves the workspace"; }
-      else if (deviationMm(p, q, *next, here, target) > maxDeviationMm) { next.reset(); why = "curved"; }
-      else if (const MoveCheck c = checkJointMove(p, q, *next); !c.ok()) { next.reset(); why = describe(c); }
+      if (!next) { why = FB_TR("Jog", "the line leaves the workspace"); }
+      else if (deviationMm(p, q, *next, here, target) > maxDeviationMm) {
+        next.reset();
+        why = FB_TR("Jog", "the arms cannot follow the straight line closely enough");
+      } else if (const MoveCheck c = checkJointMove(p, q, *next); !c.ok()) { next.reset(); why = describeMove(c); }
       if (next) break;
       step *= 0.5;
       if (step < kMinSubMoveMm) break;
     }
     if (!next) {
       plan.status = plan.lines.empty() ? JogStatus::Blocked : JogStatus::Clipped;
-      plan.reason = "stopped after " + std::to_string(done).substr(0, 6) + " mm: " + why;
+      plan.reason = FB_TR("Jog", "stopped after %1 mm: %2").arg(done, 2).arg(why);
       return plan;
     }
     const Vec2 target = here + dir * step;
@@ -115,7 +119,7 @@ JogPlan planCartesianJog(const MachineProfile& p, const JointAngles& currentComm
   if (!here || direction.norm() == 0.0) {
     JogPlan plan;
     plan.status = JogStatus::NoPosition;
-    plan.reason = here ? "no jog direction" : "the current motor angles do not close the linkage";
+    plan.reason = here ? FB_TR("Jog", "no jog direction") : noLinkage();
     return plan;
   }
   return walkLine(p, current, here->pen, direction.normalized(), distanceMm, speedMmPerS, maxDeviationMm,
@@ -132,7 +136,7 @@ JogPlan planMotorJog(const MachineProfile& p, const JointAngles& currentCommande
   if (!c.ok()) {
     // Clip just short of the first problem.
     const double f = std::max(0.0, c.atFraction - 0.02);
-    plan.reason = describe(c);
+    plan.reason = describeMove(c);
     target = {current.theta1 + f * (target.theta1 - current.theta1),
               current.theta2 + f * (target.theta2 - current.theta2)};
     if (f <= 0.0 || !checkJointMove(p, current, target).ok()) {
@@ -173,14 +177,14 @@ JogPlan planGoTo(const MachineProfile& p, const JointAngles& currentCommanded, c
   const auto here = penAt(p, current);
   if (!here) {
     plan.status = JogStatus::NoPosition;
-    plan.reason = "the current motor angles do not close the linkage";
+    plan.reason = noLinkage();
     return plan;
   }
   const auto q = ikNear(p, targetMm, here->mode, current);
   const auto travel = q ? planSafeTravel(p, current, *q) : std::nullopt;
   if (!travel) {
     plan.status = JogStatus::Blocked;
-    plan.reason = q ? "no safe travel to that point" : "the point is out of reach";
+    plan.reason = q ? FB_TR("Jog", "no safe travel to that point") : FB_TR("Jog", "the point is out of reach");
     return plan;
   }
   for (const std::string& s : job::penUpCommands(p.tool)) plan.lines.push_back(s);
@@ -236,7 +240,7 @@ JogPlan planFrame(const MachineProfile& p, const JointAngles& current, const job
     }
   if (xy.empty() || !mode) {
     plan.status = JogStatus::Blocked;
-    plan.reason = "the job has no pen-down strokes to frame";
+    plan.reason = FB_TR("Jog", "the job has no pen-down strokes to frame");
     return plan;
   }
   std::vector<Vec2> corners = convexHull(xy);
@@ -251,7 +255,7 @@ JogPlan planFrame(const MachineProfile& p, const JointAngles& current, const job
   else travel.status = JogStatus::Blocked;
   if (!travel.ok()) {
     plan.status = JogStatus::Blocked;
-    plan.reason = "cannot reach the frame's first corner: " + travel.reason;
+    plan.reason = FB_TR("Jog", "cannot reach the frame's first corner: %1").arg(travel.reason);
     return plan;
   }
   plan = travel;
@@ -262,7 +266,7 @@ JogPlan planFrame(const MachineProfile& p, const JointAngles& current, const job
                                   kDefaultDeviationMm, *mode, false);
     if (edge.status != JogStatus::Ok) {
       plan.status = JogStatus::Blocked;
-      plan.reason = "frame edge " + std::to_string(i) + ": " + edge.reason;
+      plan.reason = FB_TR("Jog", "frame edge %1: %2").arg(i).arg(edge.reason);
       return plan;
     }
     plan.lines.insert(plan.lines.end(), edge.lines.begin(), edge.lines.end());

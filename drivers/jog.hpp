@@ -15,6 +15,7 @@
 
 #include "core/kinematics/kinematics.hpp"
 #include "core/machine/profile.hpp"
+#include "core/support/message.hpp"
 #include "gcode_job.hpp"
 
 namespace fivebar::jog {
@@ -34,7 +35,7 @@ struct JogPlan {
   std::vector<std::string> lines;        // $J= or G-code lines, in order
   std::vector<JointAngles> targets;      // joint target of each motion line (rad, commanded)
   double lengthMm = 0.0;                 // XY length covered
-  std::string reason;                    // for Clipped / Blocked / NoPosition
+  Message reason;                        // for Clipped / Blocked / NoPosition (context "Jog")
   bool ok() const { return status == JogStatus::Ok || status == JogStatus::Clipped; }
 };
 

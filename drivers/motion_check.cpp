@@ -7,12 +7,11 @@
 #include "core/planning/safety.hpp"
 #include "gcode_words.hpp"
 #include "grbl_parser.hpp"
+#include "soft_limits.hpp"
 
 namespace fivebar::motion {
 namespace {
 
-constexpr const char* kReferenceHint =
-    "set the machine's reference with 'fivebar reference' (or home it with 'fivebar home')";
 
 bool isCode(double value, double code) { return std::abs(value - code) < 1e-6; }
 
@@ -22,36 +21,81 @@ JointAngles jointsOf(const MachineProfile& profile, const Axes3& workDeg) {
   return kinematicFromCommanded(profile.calibration, {radFromDeg(workDeg[0]), radFromDeg(workDeg[1])});
 }
 
-LineCheck refuse(std::string reason) {
+LineCheck refuse(Message reason) {
   LineCheck c;
   c.verdict = Verdict::Refused;
   c.reason = std::move(reason);
   return c;
 }
 
-// The reason a G word makes the line uncheckable, or "" when it is fine.
-std::string refusedCode(double g, bool jog) {
+// The reason a G word makes the line uncheckable, or an empty message when it is fine.
+Message refusedCode(double g, bool jog) {
   if (isCode(g, 2) || isCode(g, 3))
-    return "G2/G3 arcs are not arcs in joint space (X and Y are motor angles): plan the drawing "
-           "with 'fivebar plan', which turns arcs into checked straight segments";
-  if (g >= 38.0 && g < 39.0) return "probing (G38) is not supported on a five-bar machine";
+    return FB_TR("MotionCheck",
+                 "G2/G3 arcs are not arcs in joint space (X and Y are motor angles): plan the drawing "
+                 "with 'fivebar plan', which turns arcs into checked straight segments");
+  if (g >= 38.0 && g < 39.0)
+    return FB_TR("MotionCheck", "probing (G38) is not supported on a five-bar machine");
   if (isCode(g, 20))
-    return "G20 (inches) would scale the motor angles by 25.4: X and Y are degrees, use G21";
+    return FB_TR("MotionCheck",
+                 "G20 (inches) would scale the motor angles by 25.4: X and Y are degrees, use G21");
   if (isCode(g, 10) || (g >= 92.0 && g < 93.0))
-    return "G10/G92 change the coordinates the checks rely on: " + std::string(kReferenceHint);
+    return FB_TR("MotionCheck", "G10/G92 change the coordinates the checks rely on: %1").arg(referenceHint());
   if (g >= 55.0 && g < 60.0)
-    return "G55-G59 select another work coordinate system; the checked link works in G54";
+    return FB_TR("MotionCheck",
+                 "G55-G59 select another work coordinate system; the checked link works in G54");
   if (jog && !(isCode(g, 90) || isCode(g, 91) || isCode(g, 53) || isCode(g, 21)))
-    return "a jog ($J=) takes only G90, G91, G53 and G21";
+    return FB_TR("MotionCheck", "a jog ($J=) takes only G90, G91, G53 and G21");
+  return {};
+}
+
+// The board's soft-limit check (GRBL limits_soft_check on every target, in machine coordinates)
+// of a line interpretLine accepted; an empty message when the board would take it.
+Message softLimitRefusal(const LineCheck& c, const BoardPose& pose) {
+  if (c.verdict != Verdict::Motion || !pose.softTravelDeg) return {};
+  const std::array<double, 2>& travel = *pose.softTravelDeg;
+  for (const Axes3& t : c.targetsWork) {
+    const std::array<double, 2> machine{t[0] + pose.wco[0], t[1] + pose.wco[1]};
+    const auto axis = setup::axisOutsideTravel(machine, travel);
+    if (!axis) continue;
+    const std::size_t a = std::size_t(*axis);
+    Message outcome = c.jog ? FB_TR("MotionCheck", "the board would refuse the jog (error:15)")
+                            : FB_TR("MotionCheck",
+                                    "the board would stop with a soft-limit alarm (ALARM:2)");
+    return FB_TR("MotionCheck",
+                 "the target %1 takes motor %2 to %3 deg in machine coordinates, outside the "
+                 "board's soft-limit travel %4..0 deg ($%5=%6): %7; home the machine or set its "
+                 "reference so that the travel matches the profile, or choose a target inside it")
+        .arg(anglesMessage(t[0], t[1]))
+        .arg(*axis + 1)
+        .arg(machine[a], 3)
+        .arg(-travel[a], 3)
+        .arg(130 + *axis)
+        .arg(travel[a], 3)
+        .arg(std::move(outcome));
+  }
   return {};
 }
 
 }  // namespace
 
+Message referenceHint() {
+  return FB_TR("MotionCheck",
+               "set the machine's reference with 'fivebar reference' (or home it with 'fivebar home')");
+}
+
+Message workspaceHint() {
+  return FB_TR("MotionCheck", "choose a target inside the workspace (fivebar workspace shows it)");
+}
+
 std::string anglesText(double theta1Deg, double theta2Deg) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "(%.3f, %.3f) deg", theta1Deg, theta2Deg);
   return buf;
+}
+
+Message anglesMessage(double theta1Deg, double theta2Deg) {
+  return FB_TR("MotionCheck", "(%1, %2) deg").arg(theta1Deg, 3).arg(theta2Deg, 3);
 }
 
 LineCheck interpretLine(std::string_view line, const BoardPose& pose) {
@@ -72,7 +116,7 @@ LineCheck interpretLine(std::string_view line, const BoardPose& pose) {
   std::optional<double> goHome;
   for (const gcode::Word& word : w.words) {
     if (word.letter != 'G') continue;
-    if (std::string why = refusedCode(word.value, out.jog); !why.empty()) return refuse(why);
+    if (Message why = refusedCode(word.value, out.jog); !why.empty()) return refuse(std::move(why));
     if (isCode(word.value, 90)) absolute = true;
     if (isCode(word.value, 91)) absolute = false;
     if (isCode(word.value, 53)) machineCoords = true;
@@ -91,8 +135,9 @@ LineCheck interpretLine(std::string_view line, const BoardPose& pose) {
   if (goHome) {
     const auto& stored = isCode(*goHome, 28) ? pose.g28Machine : pose.g30Machine;
     if (!stored)
-      return refuse("G28/G30 go to a position stored on the board, which is not known here; "
-                    "move to the point with a G0 line instead");
+      return refuse(FB_TR("MotionCheck",
+                          "G28/G30 go to a position stored on the board, which is not known here; "
+                          "move to the point with a G0 line instead"));
     if (w.has('X') || w.has('Y') || w.has('Z')) out.targetsWork.push_back(target);
     Axes3 home{};
     for (size_t i = 0; i < 3; ++i) home[i] = (*stored)[i] - pose.wco[i];
@@ -120,21 +165,47 @@ void applyLine(std::string_view line, const LineCheck& check, BoardPose& pose) {
 LineCheck checkLine(const MachineProfile& profile, std::string_view line, const BoardPose& pose) {
   LineCheck c = interpretLine(line, pose);
   if (c.verdict != Verdict::Motion) return c;
+  if (Message why = softLimitRefusal(c, pose); !why.empty()) return refuse(std::move(why));
   const MoveCheck here = checkPose(profile, jointsOf(profile, pose.workDeg));
   if (!here.ok())
-    return refuse("the machine's position " + anglesText(pose.workDeg[0], pose.workDeg[1]) +
-                  " is not a safe pose of " + profile.name + " (" + std::string(toString(here.status)) +
-                  "), so no move from it can be checked: " + kReferenceHint + " first");
+    return refuse(FB_TR("MotionCheck",
+                        "the machine's position %1 is not a safe pose of %2 (%3), so no move from "
+                        "it can be checked: %4 first")
+                      .arg(anglesMessage(pose.workDeg[0], pose.workDeg[1]))
+                      .arg(profile.name)
+                      .arg(std::string(toString(here.status)))
+                      .arg(referenceHint()));
   Axes3 from = pose.workDeg;
   for (const Axes3& to : c.targetsWork) {
     const MoveCheck m = checkJointMove(profile, jointsOf(profile, from), jointsOf(profile, to));
     if (!m.ok())
-      return refuse("the move from " + anglesText(from[0], from[1]) + " to " +
-                    anglesText(to[0], to[1]) + " " + describe(m) +
-                    "; choose a target inside the workspace (fivebar workspace shows it)");
+      return refuse(FB_TR("MotionCheck",
+                          "the move from %1 to %2 %3; %4")
+                        .arg(anglesMessage(from[0], from[1]))
+                        .arg(anglesMessage(to[0], to[1]))
+                        .arg(describeMove(m))
+                        .arg(workspaceHint()));
     from = to;
   }
   return c;
+}
+
+LinesCheck checkBoardLines(const std::vector<std::string>& lines, BoardPose pose) {
+  LinesCheck out;
+  for (const std::string& line : lines) {
+    const LineCheck c = interpretLine(line, pose);
+    if (!c.ok()) {
+      out.reason = c.reason;
+      return out;
+    }
+    if (Message why = softLimitRefusal(c, pose); !why.empty()) {
+      out.reason = std::move(why);
+      return out;
+    }
+    applyLine(line, c, pose);
+    ++out.passing;
+  }
+  return out;
 }
 
 std::optional<BoardPose> boardPoseOf(const grbl::GrblProtocol& protocol) {
@@ -145,6 +216,7 @@ std::optional<BoardPose> boardPoseOf(const grbl::GrblProtocol& protocol) {
   if (const auto& wco = protocol.workOffset()) pose.wco = wco->v;
   if (const auto g28 = protocol.parameter("G28")) pose.g28Machine = g28->v;
   if (const auto g30 = protocol.parameter("G30")) pose.g30Machine = g30->v;
+  pose.softTravelDeg = setup::softLimitTravelDeg(protocol.boardSettings());
   return pose;
 }
 
@@ -172,7 +244,7 @@ FileCheck checkFile(const MachineProfile& profile, std::string_view text,
     start = end + 1;
     ++fileLine;
     const LineCheck c = interpretLine(raw, pose);
-    if (!c.ok()) return fail(fileLine, gcode::compact(raw), c.reason);
+    if (!c.ok()) return fail(fileLine, gcode::compact(raw), c.reason.text());
     if (c.systemCommand)
       return fail(fileLine, gcode::compact(raw),
                   "system commands and settings do not belong in a job; use fivebar send or "

@@ -5,9 +5,13 @@
 // that cannot be checked are refused: G2/G3 (an arc in joint space is no arc on paper), G38
 // probing, G20 (inches would scale the angles), coordinate changes G10/G92/G55-G59 (only the
 // reference action, `fivebar reference`, sets coordinates). Non-motion lines and "$" commands
-// pass. Used by `fivebar send`, `fivebar stream` (the whole file before the first byte), the
-// reference / home commands and the studio. Pure; X/Y are theta1/theta2 in degrees (work
-// coordinates), Z in mm.
+// pass. With the board's soft limits on ($20=1, travel $130/$131 known), every target is also
+// checked in MACHINE coordinates (work + WCO) against the board's travel, as GRBL 1.1h does
+// (soft_limits.hpp): a line the board would answer with ALARM:2 (or a jog with error:15) is
+// refused before a byte is sent. Used by `fivebar send`, `fivebar stream` (the whole file before
+// the first byte), the reference / home commands and the studio (console, jog, go-to, go to home,
+// frame). Pure; X/Y are theta1/theta2 in degrees (work coordinates), Z in mm. Reasons are
+// translatable Messages (context "MotionCheck"; the CLI prints their English text()).
 #pragma once
 
 #include <array>
@@ -19,6 +23,7 @@
 
 #include "core/kinematics/kinematics.hpp"
 #include "core/machine/profile.hpp"
+#include "core/support/message.hpp"
 #include "grbl_protocol.hpp"
 
 namespace fivebar::motion {
@@ -26,13 +31,16 @@ namespace fivebar::motion {
 using Axes3 = std::array<double, 3>;  // X, Y deg; Z mm
 
 // What the check knows about the board: its work position, work offset (MPos = WPos + WCO),
-// distance mode, and the stored G28 / G30 positions (machine coordinates, from `$#`).
+// distance mode, the stored G28 / G30 positions (machine coordinates, from `$#`) and, when the
+// board's soft limits are on ($20=1), their travel ($130, $131 in deg: targets must lie within
+// -travel..0 in machine coordinates).
 struct BoardPose {
   Axes3 workDeg{0.0, 0.0, 0.0};
   Axes3 wco{0.0, 0.0, 0.0};
   bool absolute = true;  // G90 (true) or G91
   std::optional<Axes3> g28Machine;
   std::optional<Axes3> g30Machine;
+  std::optional<std::array<double, 2>> softTravelDeg;  // nullopt: soft limits off or not known
 };
 
 enum class Verdict {
@@ -43,7 +51,7 @@ enum class Verdict {
 
 struct LineCheck {
   Verdict verdict = Verdict::Pass;
-  std::string reason;                 // Refused: why, and what to do instead
+  Message reason;                     // Refused: why, and what to do instead
   std::vector<Axes3> targetsWork;     // Motion: successive targets in work coordinates
   bool jog = false;                   // a $J= line
   bool systemCommand = false;         // a "$" line other than $J= (the pose may change: re-read it)
@@ -52,6 +60,7 @@ struct LineCheck {
 
 // The board's pose as the protocol knows it (work position, offset, stored G28/G30 from `$#`);
 // nullopt while the work position is not known (no report yet, or MPos without a known WCO).
+// The soft-limit travel comes from the board's settings as the protocol last saw them ($$).
 std::optional<BoardPose> boardPoseOf(const grbl::GrblProtocol& protocol);
 
 // Reads one line (comments and spaces allowed) against `pose` without checking the joints:
@@ -66,8 +75,26 @@ void applyLine(std::string_view line, const LineCheck& check, BoardPose& pose);
 // (the reference is probably not set).
 LineCheck checkLine(const MachineProfile& profile, std::string_view line, const BoardPose& pose);
 
+// The lines of a move planned on the host (jog, go-to, go to home pose, frame: the planner has
+// checked every sub-move against the workspace, joint limits and singularity margin with the same
+// core checks) read from `pose` one after another and checked against the board: the soft-limit
+// travel and the lines the link refuses (arcs, coordinate changes...). `passing` leading lines
+// may be sent; `reason` says why the next one may not.
+struct LinesCheck {
+  std::size_t passing = 0;
+  Message reason;
+  bool ok(std::size_t lineCount) const { return passing == lineCount; }
+};
+LinesCheck checkBoardLines(const std::vector<std::string>& lines, BoardPose pose);
+
+// The advice in the reasons, in the CLI's words (nested messages, so that the studio can say
+// them with its buttons): set the reference / home; choose a target inside the workspace.
+Message referenceHint();
+Message workspaceHint();
+
 // "(12.345, -6.789) deg"
 std::string anglesText(double theta1Deg, double theta2Deg);
+Message anglesMessage(double theta1Deg, double theta2Deg);
 
 // A whole G-code file checked before the first byte is sent: every line read from `start`
 // (work coordinates, the job's start pose), every joint move checked along the path. The first

@@ -8,6 +8,7 @@ PoseSync::State PoseSync::step(double nowS) {
   if (!started_) {
     started_ = true;
     askedParameters_ = false;
+    askedSettings_ = false;
     deadlineS_ = nowS + timeoutS_;
     reportsAtStart_ = protocol_.statusReportsSeen();
     lastPollS_ = -1e300;
@@ -24,7 +25,14 @@ PoseSync::State PoseSync::step(double nowS) {
                      st == MachineState::Door || st == MachineState::Check;
   if (fresh && still && !protocol_.parametersPending()) {
     const bool storedKnown = !wantStored_ || (protocol_.parameter("G28") && protocol_.parameter("G30"));
-    if (protocol_.workPositionDeg() && storedKnown) return State::Ready;
+    // Settings: known, or the "$$" asked for was answered (a board without $20 has none to check).
+    const bool settingsKnown = !wantSettings_ || protocol_.boardSettings().count(20) > 0 ||
+                               (askedSettings_ && protocol_.idleLink());
+    if (protocol_.workPositionDeg() && storedKnown && settingsKnown) return State::Ready;
+    if (!settingsKnown && !askedSettings_ && protocol_.idleLink()) {
+      askedSettings_ = true;
+      protocol_.requestSettings();
+    }
     if (!askedParameters_ && protocol_.idleLink()) {
       askedParameters_ = true;
       if (protocol_.requestParameters() != 0) reportsAtStart_ = protocol_.statusReportsSeen();
@@ -37,6 +45,7 @@ PoseSync::State PoseSync::step(double nowS) {
                               " (state " + std::string(toString(st)) + ")"
                         : "the board did not report its work offset (WCO: or $#)" +
                               std::string(wantStored_ ? " or its stored G28/G30 positions" : "") +
+                              std::string(wantSettings_ ? " or its settings ($$)" : "") +
                               " within " + timeText();
     return State::Failed;
   }

@@ -24,6 +24,9 @@ class PoseSync {
   // Also needs the stored G28/G30 positions (a G28/G30 line is to be checked): asks "$#" even
   // when the work offset came with a status report.
   void wantStoredPositions(bool on) { wantStored_ = on; }
+  // Also needs the board's settings ($20 soft limits, $130/$131 travel: the motion check's board
+  // part): asks "$$" once when the protocol has not seen them yet.
+  void wantSettings(bool on) { wantSettings_ = on; }
   State step(double nowS);
   const std::string& problem() const { return problem_; }
 
@@ -33,6 +36,8 @@ class PoseSync {
   bool started_ = false;
   bool askedParameters_ = false;
   bool wantStored_ = false;
+  bool wantSettings_ = false;
+  bool askedSettings_ = false;
   double deadlineS_ = 0.0;
   double lastPollS_ = -1e300;
   std::uint64_t reportsAtStart_ = 0;

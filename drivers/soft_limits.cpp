@@ -1,6 +1,5 @@
 #include "drivers/soft_limits.hpp"
 
-#include <cstdio>
 
 namespace fivebar::setup {
 namespace {
@@ -9,7 +8,10 @@ namespace {
 // texts leave only rounding below this.
 constexpr double kSoftLimitToleranceDeg = 1e-9;
 
-std::optional<int> outside(const std::array<double, 2>& machineDeg, const std::array<double, 2>& travelDeg) {
+}  // namespace
+
+std::optional<int> axisOutsideTravel(const std::array<double, 2>& machineDeg,
+                                     const std::array<double, 2>& travelDeg) {
   for (int axis = 0; axis < 2; ++axis) {
     const double m = machineDeg[std::size_t(axis)];
     if (m > kSoftLimitToleranceDeg || m < -travelDeg[std::size_t(axis)] - kSoftLimitToleranceDeg) return axis;
@@ -17,25 +19,29 @@ std::optional<int> outside(const std::array<double, 2>& machineDeg, const std::a
   return std::nullopt;
 }
 
-}  // namespace
-
 bool softLimitsOn(const Settings& board) {
   const auto it = board.find(20);
   return it != board.end() && it->second == 1.0;
 }
 
-std::optional<SoftLimitHit> firstSoftLimitHit(const job::GcodeJob& job, const Settings& board,
-                                              const std::array<double, 2>& wcoDeg) {
+std::optional<std::array<double, 2>> softLimitTravelDeg(const Settings& board) {
   if (!softLimitsOn(board)) return std::nullopt;
   const auto travel = [&](int id) {
     const auto it = board.find(id);
     return it == board.end() ? 0.0 : it->second;
   };
-  const std::array<double, 2> travelDeg{travel(130), travel(131)};
+  return std::array<double, 2>{travel(130), travel(131)};
+}
+
+std::optional<SoftLimitHit> firstSoftLimitHit(const job::GcodeJob& job, const Settings& board,
+                                              const std::array<double, 2>& wcoDeg) {
+  const auto travel = softLimitTravelDeg(board);
+  if (!travel) return std::nullopt;
+  const std::array<double, 2> travelDeg = *travel;
   const auto hit = [&](std::size_t index, int fileLine, const std::array<double, 2>& workDeg)
       -> std::optional<SoftLimitHit> {
     const std::array<double, 2> machine{workDeg[0] + wcoDeg[0], workDeg[1] + wcoDeg[1]};
-    const auto axis = outside(machine, travelDeg);
+    const auto axis = axisOutsideTravel(machine, travelDeg);
     if (!axis) return std::nullopt;
     return SoftLimitHit{index, fileLine, *axis, machine[std::size_t(*axis)], travelDeg[std::size_t(*axis)]};
   };
@@ -47,13 +53,18 @@ std::optional<SoftLimitHit> firstSoftLimitHit(const job::GcodeJob& job, const Se
   return std::nullopt;
 }
 
-std::string describe(const SoftLimitHit& hit) {
-  char text[320];
-  std::snprintf(text, sizeof text,
-                "line %d moves motor %d to %.3f deg in machine coordinates, outside the board's "
-                "soft-limit travel %.3f..0 ($%d=%.3f)",
-                hit.fileLine, hit.axis + 1, hit.machineDeg, -hit.travelDeg, 130 + hit.axis, hit.travelDeg);
-  return text;
+Message describeHit(const SoftLimitHit& hit) {
+  return FB_TR("SoftLimits",
+               "line %1 moves motor %2 to %3 deg in machine coordinates, outside the board's "
+               "soft-limit travel %4..0 ($%5=%6)")
+      .arg(hit.fileLine)
+      .arg(hit.axis + 1)
+      .arg(hit.machineDeg, 3)
+      .arg(-hit.travelDeg, 3)
+      .arg(130 + hit.axis)
+      .arg(hit.travelDeg, 3);
 }
+
+std::string describe(const SoftLimitHit& hit) { return describeHit(hit).text(); }
 
 }  // namespace fivebar::setup

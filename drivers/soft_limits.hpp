@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 
+#include "core/support/message.hpp"
 #include "drivers/gcode_job.hpp"
 #include "drivers/machine_setup.hpp"
 
@@ -27,6 +28,15 @@ struct SoftLimitHit {
 // Whether the board's settings turn soft limits on ($20=1).
 bool softLimitsOn(const Settings& board);
 
+// The board's soft-limit travel ($130, $131 in deg) when soft limits are on; nullopt otherwise
+// (off, or the settings not known).
+std::optional<std::array<double, 2>> softLimitTravelDeg(const Settings& board);
+
+// The first axis (0: X, 1: Y) of a target in machine coordinates (deg) that lies outside the
+// travel -travelDeg..0, as GRBL's limits_soft_check decides; nullopt when inside.
+std::optional<int> axisOutsideTravel(const std::array<double, 2>& machineDeg,
+                                     const std::array<double, 2>& travelDeg);
+
 // The first motion line of `job` whose X/Y target (work coordinates, deg) plus the board's work
 // offset wcoDeg lies outside the board's soft-limit travel (GRBL checks targets only); nullopt
 // when soft limits are off or every target is inside.
@@ -34,7 +44,8 @@ std::optional<SoftLimitHit> firstSoftLimitHit(const job::GcodeJob& job, const Se
                                               const std::array<double, 2>& wcoDeg);
 
 // "line 12 moves motor 1 to 4.500 deg in machine coordinates, outside the board's soft-limit
-// travel -180.000..0 ($130=180.000)" (English).
+// travel -180.000..0 ($130=180.000)": translatable (context "SoftLimits"), describe its English.
+Message describeHit(const SoftLimitHit& hit);
 std::string describe(const SoftLimitHit& hit);
 
 }  // namespace fivebar::setup

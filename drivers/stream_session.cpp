@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/kinematics/units.hpp"
+#include "soft_limits.hpp"
 #include "core/planning/safety.hpp"
 #include "motion_check.hpp"
 #include "resume.hpp"
@@ -48,6 +49,7 @@ bool StreamSession::begin(std::string* error) {
   runner_->changed = [this] { onRunnerChanged(); };
   phase_ = Phase::Sync;
   poseSync_ = std::make_unique<grbl::PoseSync>(link_.protocol(), options_.syncTimeoutS);
+  poseSync_->wantSettings(options_.checked);  // the board's soft limits
   return true;
 }
 
@@ -128,6 +130,7 @@ void StreamSession::startStreaming(double nowS) {
   if (!resumeFrom_) {
     std::vector<std::string> approach;
     if (options_.checked && !planApproach(approach)) return;
+    if (options_.checked && !withinBoardLimits(approach, 0)) return;
     runner_->start(0, approach, nowS);
     return;
   }
@@ -158,7 +161,32 @@ void StreamSession::startStreaming(double nowS) {
     finish(false, "cannot resume: " + plan.message);
     return;
   }
+  if (options_.checked && !withinBoardLimits(plan.preamble, plan.continueFrom)) return;
   runner_->start(plan.continueFrom, plan.preamble, nowS);
+}
+
+// The motion check's board part before the first byte: the approach (or resume preamble) line by
+// line from the reported pose, then every target of the job from `fromIndex` on, against the
+// board's soft-limit travel in machine coordinates (GRBL would stop with ALARM:2 part-way).
+bool StreamSession::withinBoardLimits(const std::vector<std::string>& preamble, std::size_t fromIndex) {
+  const auto pose = motion::boardPoseOf(link_.protocol());
+  if (!pose || !pose->softTravelDeg) return true;
+  if (const motion::LinesCheck c = motion::checkBoardLines(preamble, *pose); !c.ok(preamble.size())) {
+    finish(false, "refused, nothing was sent: the move to the job's start: " + c.reason.text());
+    return false;
+  }
+  job::GcodeJob rest = job_;
+  rest.lines.erase(rest.lines.begin(),
+                   rest.lines.begin() + std::ptrdiff_t(std::min(fromIndex, rest.lines.size())));
+  const auto hit = setup::firstSoftLimitHit(rest, link_.protocol().boardSettings(),
+                                            {pose->wco[0], pose->wco[1]});
+  if (!hit) return true;
+  finish(false, "refused, nothing was sent: " + setup::describe(*hit) +
+                    ": the board would stop the job there with ALARM:2. Its travel is checked in "
+                    "machine coordinates, which the reference shifted against the job's: home the "
+                    "machine ('fivebar home'), or make the board's settings match the profile "
+                    "('fivebar setup'), then stream again");
+  return false;
 }
 
 bool StreamSession::planApproach(std::vector<std::string>& preamble) {

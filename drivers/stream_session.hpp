@@ -57,6 +57,7 @@ class StreamSession : public QObject {
   bool checkJob(const std::string& text, std::string* error);
   bool sameResumePoint(const job::JobProgress& saved) const;
   bool planApproach(std::vector<std::string>& preamble);
+  bool withinBoardLimits(const std::vector<std::string>& preamble, std::size_t fromIndex);
   void onRunnerChanged();
   void save(const std::string& reason);
   void finish(bool ok, const std::string& message);

@@ -33,17 +33,22 @@ jog::JogPlan JogController::plan(const JogDirection& direction, double amount) c
   if (!start) {
     jog::JogPlan refused;
     refused.status = jog::JogStatus::NoPosition;
-    refused.reason = "the machine position is not known yet";
+    refused.reason = FB_TR("Jog", "the machine position is not known yet");
     return refused;
   }
+  return session_.boardChecked(plannedFrom(*start, direction, amount), true);
+}
+
+jog::JogPlan JogController::plannedFrom(const JointAngles& start, const JogDirection& direction,
+                                        double amount) const {
   const MachineProfile& profile = session_.profile();
   if (direction.kind == JogDirection::Kind::Cartesian) {
-    return jog::planCartesianJog(profile, *start, direction.xy, amount, speedMmPerS_);
+    return jog::planCartesianJog(profile, start, direction.xy, amount, speedMmPerS_);
   }
   const double maxRadPerS = direction.motor == 1 ? profile.motors.maxSpeedRadPerS1
                                                  : profile.motors.maxSpeedRadPerS2;
   const double speedRadPerS = std::min(radFromDeg(kMotorSpeedDegPerS), maxRadPerS);
-  return jog::planMotorJog(profile, *start, direction.motor, direction.sign * amount,
+  return jog::planMotorJog(profile, start, direction.motor, direction.sign * amount,
                            degFromRad(speedRadPerS) * 60.0);
 }
 
@@ -122,11 +127,11 @@ void JogController::report(const jog::JogPlan& p) {
   switch (p.status) {
     case jog::JogStatus::Ok: emit message(QString()); break;
     case jog::JogStatus::Clipped:
-      emit message(tr("Jog stopped at the last safe point: %1").arg(QString::fromStdString(p.reason)));
+      emit message(tr("Jog stopped at the last safe point: %1").arg(MachineSession::studioText(p.reason)));
       break;
     case jog::JogStatus::Blocked:
     case jog::JogStatus::NoPosition:
-      emit message(tr("Jog refused: %1").arg(QString::fromStdString(p.reason)));
+      emit message(tr("Jog refused: %1").arg(MachineSession::studioText(p.reason)));
       break;
   }
 }

@@ -56,7 +56,9 @@ class JogController : public QObject {
   void message(const QString& text);  // what happened: clipped, refused (empty: all fine)
 
  private:
+  // The jog from where a new jog starts, cut at the board's soft limits (MachineSession::boardChecked).
   jog::JogPlan plan(const JogDirection& direction, double amount) const;
+  jog::JogPlan plannedFrom(const JointAngles& start, const JogDirection& direction, double amount) const;
   void topUp();
   // Seconds of motion between the reported position and the end of what was sent.
   double leadS(const JogDirection& direction) const;

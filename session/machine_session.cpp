@@ -9,6 +9,7 @@
 #include "drivers/motion_check.hpp"
 #include "drivers/serial_transport.hpp"
 #include "drivers/simulated_transport.hpp"
+#include "session/core_message.hpp"
 
 namespace fivebar::session {
 namespace {
@@ -17,15 +18,19 @@ constexpr int kSimClockMs = 5;
 
 QString fromStd(const std::string& s) { return QString::fromStdString(s); }
 
-// The motion check's reasons name the CLI's commands; in the studio the same actions are buttons.
-QString inStudioWords(const std::string& reason) {
-  QString text = fromStd(reason);
-  text.replace(QStringLiteral("set the machine's reference with 'fivebar reference' (or home it with "
-                              "'fivebar home')"),
-               MachineSession::tr("set the reference pose (Machine panel) or home the machine"));
-  text.replace(QStringLiteral(" (fivebar workspace shows it)"), QString());
+}  // namespace
+
+// The motion check's reasons in the user's language; their advice names the CLI's commands,
+// which in the studio are buttons.
+QString MachineSession::studioText(const Message& reason) {
+  QString text = translated(reason);
+  text.replace(translated(motion::referenceHint()),
+               tr("set the reference pose (Machine panel) or home the machine"));
+  text.replace(translated(motion::workspaceHint()), tr("choose a target inside the workspace"));
   return text;
 }
+
+namespace {
 
 }  // namespace
 
@@ -231,7 +236,7 @@ bool MachineSession::checkConsoleLine(const std::string& line, QString* refusal)
   pose.absolute = consoleAbsolute_;
   const motion::LineCheck interpreted = motion::interpretLine(line, pose);
   if (!interpreted.ok()) {
-    *refusal = inStudioWords(interpreted.reason);
+    *refusal = studioText(interpreted.reason);
     return false;
   }
   if (interpreted.verdict == motion::Verdict::Motion) {
@@ -247,7 +252,7 @@ bool MachineSession::checkConsoleLine(const std::string& line, QString* refusal)
     }
     const motion::LineCheck checked = motion::checkLine(inputs_.profile(), line, pose);
     if (!checked.ok()) {
-      *refusal = inStudioWords(checked.reason);
+      *refusal = studioText(checked.reason);
       return false;
     }
   }
@@ -286,6 +291,11 @@ void MachineSession::readBoardSettings() {
   settingsSync_->read();
 }
 
+std::unique_ptr<setup::SettingsSync> MachineSession::makeSettingsSync() {
+  if (!link_) return nullptr;
+  return std::make_unique<setup::SettingsSync>(link_->protocol());
+}
+
 bool MachineSession::readingBoardSettings() const {
   return settingsSync_ && (settingsSync_->state() == setup::SetupState::Reading ||
                            settingsSync_->state() == setup::SetupState::Writing);
@@ -302,6 +312,28 @@ std::vector<setup::SettingDiff> MachineSession::settingDifferences() const {
   return setup::compare(*boardSettings_, setup::expectedSettings(inputs_.profile()));
 }
 
+jog::JogPlan MachineSession::boardChecked(jog::JogPlan plan, bool clip) const {
+  if (!plan.ok() || !link_) return plan;
+  std::optional<motion::BoardPose> pose = motion::boardPoseOf(link_->protocol());
+  const auto start = jogStart();
+  if (!pose || !start) return plan;
+  pose->workDeg[0] = degFromRad(start->theta1);
+  pose->workDeg[1] = degFromRad(start->theta2);
+  pose->absolute = consoleAbsolute_;
+  const motion::LinesCheck c = motion::checkBoardLines(plan.lines, *pose);
+  if (c.ok(plan.lines.size())) return plan;
+  std::size_t motionLines = 0;
+  for (std::size_t i = 0; i < c.passing; ++i)
+    if (motion::interpretLine(plan.lines[i], motion::BoardPose{}).verdict == motion::Verdict::Motion)
+      ++motionLines;
+  const bool keep = clip && motionLines > 0;
+  plan.lines.resize(keep ? c.passing : 0);
+  plan.targets.resize(keep ? std::min(motionLines, plan.targets.size()) : 0);
+  plan.status = keep ? jog::JogStatus::Clipped : jog::JogStatus::Blocked;
+  plan.reason = c.reason;
+  return plan;
+}
+
 bool MachineSession::sendJog(const jog::JogPlan& plan) {
   if (!canJog()) {
     emit consoleLine(tr("Jog refused: the machine is not idle, not connected or a job is running."),
@@ -309,6 +341,13 @@ bool MachineSession::sendJog(const jog::JogPlan& plan) {
     return false;
   }
   if (!plan.ok()) return false;
+  // The one motion check's board part, whoever planned the move (jog, go-to, home pose, frame).
+  if (const jog::JogPlan checked = boardChecked(plan, false); !checked.ok()) {
+    const QString why = studioText(checked.reason);
+    emit consoleLine(tr("Move not sent: %1").arg(why), ConsoleKind::Problem);
+    emit lineRefused(why);
+    return false;
+  }
   const bool logEach = plan.lines.size() <= 3;
   std::vector<std::uint64_t> ids;
   bool sent = true;
@@ -358,9 +397,9 @@ bool MachineSession::goToHomePose(QString* why) {
     if (why) *why = tr("The profile's home pose does not close the linkage.");
     return false;
   }
-  const jog::JogPlan plan = jog::planGoTo(p, *from, home.p);
+  const jog::JogPlan plan = boardChecked(jog::planGoTo(p, *from, home.p), false);
   if (!plan.ok()) {
-    if (why) *why = tr("No checked move to the home pose: %1").arg(fromStd(plan.reason));
+    if (why) *why = tr("No checked move to the home pose: %1").arg(studioText(plan.reason));
     return false;
   }
   if (!sendJog(plan)) {

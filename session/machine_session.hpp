@@ -20,6 +20,7 @@
 #include "drivers/machine_setup.hpp"
 #include "drivers/sim_machine.hpp"
 #include "drivers/jog.hpp"
+#include "session/machine_ports.hpp"
 #include "session/studio_inputs.hpp"
 
 namespace fivebar {
@@ -45,7 +46,12 @@ struct MachineProblem {
   bool needsReset = false;  // the board said "Reset to continue" ($X is ignored until then)
 };
 
-class MachineSession : public QObject, private grbl::ProtocolListener {
+class MachineSession : public QObject,
+                       public ConnectionPort,
+                       public RecoveryPort,
+                       public JogPort,
+                       public BoardSettingsPort,
+                       private grbl::ProtocolListener {
   Q_OBJECT
  public:
   static constexpr double kPollIntervalS = 0.2;  // 5 Hz status polling (GRBL's maximum)
@@ -61,9 +67,9 @@ class MachineSession : public QObject, private grbl::ProtocolListener {
   // per wall-clock time. False with *error when the link cannot open. A link that opened is
   // "connecting" until the board's first status report (then connectionChanged(true)); without
   // one within kConnectTimeoutMs it is closed again and connectFailed says so.
-  bool connectSimulated(double speedup, const sim::Fault& fault, QString* error);
-  bool connectSerial(const QString& portPath, int baudRate, QString* error);
-  void disconnectMachine();
+  bool connectSimulated(double speedup, const sim::Fault& fault, QString* error) override;
+  bool connectSerial(const QString& portPath, int baudRate, QString* error) override;
+  void disconnectMachine() override;
   bool isConnected() const { return link_ != nullptr && answered_; }
   bool isConnecting() const { return link_ != nullptr && !answered_; }
   QString linkName() const;
@@ -88,17 +94,18 @@ class MachineSession : public QObject, private grbl::ProtocolListener {
   const MachineProblem& problem() const { return problem_; }
   const MachineProfile& profile() const { return inputs_.profile(); }
   // Where a new jog starts: the end of the jog still in progress, else the reported angles.
-  std::optional<JointAngles> jogStart() const;
+  std::optional<JointAngles> jogStart() const override;
   bool jobActive() const { return jobActive_; }
   // True when no jog of ours may still be moving (its end confirmed by quiet status reports).
   bool jogSettled() const { return settle_.settled(); }
   // True when jogging and console commands may be sent now (connected, no job, not in alarm).
-  bool canJog() const;
+  bool canJog() const override;
   PenState penState() const { return pen_; }
   void setPenState(PenState pen);
 
   // --- the board's $ settings, read on connect (and again after a write) ---
-  void readBoardSettings();
+  void readBoardSettings() override;
+  std::unique_ptr<setup::SettingsSync> makeSettingsSync() override;
   bool boardSettingsKnown() const { return boardSettings_.has_value(); }
   bool readingBoardSettings() const;
   // The board's settings as last read (nullopt while unknown).
@@ -119,21 +126,31 @@ class MachineSession : public QObject, private grbl::ProtocolListener {
   // --- commands (each returns false and logs why when it cannot be sent) ---
   // A console line: checked (see setUncheckedConsole); false with *refusal when refused.
   bool sendLine(const QString& line, QString* refusal = nullptr);
-  bool sendJog(const jog::JogPlan& plan);
+  // A host-planned move (jog, go-to, home pose, frame). Refused (false, logged, lineRefused) when
+  // the board's part of the motion check refuses any of its lines (see boardChecked).
+  bool sendJog(const jog::JogPlan& plan) override;
+  // The board's part of the one motion check (motion::checkBoardLines: the board's soft-limit
+  // travel in machine coordinates, the lines the link refuses) on a plan read from jogStart().
+  // A plan with a refused line is cut before it: Clipped when clip and a motion line is left (a
+  // jog stops at the last target the board takes), else Blocked; the reason says why.
+  jog::JogPlan boardChecked(jog::JogPlan plan, bool clip) const override;
+  // A motion check or jog reason in the user's language, with the studio's words for the CLI's
+  // commands in its advice.
+  static QString studioText(const Message& reason);
   void cancelJog();
-  void unlock();
+  void unlock() override;
   // $H with homing switches; otherwise ($X when in alarm and) the reference pose.
-  void home();
-  void setReferencePose();  // G10 L20 P0: "the machine now stands at the profile's home pose"
+  void home() override;
+  void setReferencePose() override;  // G10 L20 P0: "the machine now stands at the profile's home pose"
   // A checked pen-up move to the profile's home pose (the reference must be set); false with
   // *why when it cannot be planned or sent.
-  bool goToHomePose(QString* why = nullptr);
-  void softReset();
+  bool goToHomePose(QString* why = nullptr) override;
+  void softReset() override;
   void feedHold();
   void cycleStart();
-  bool penUp();
-  bool penDown();
-  void dismissProblem();
+  bool penUp() override;
+  bool penDown() override;
+  void dismissProblem() override;
 
   // RunController marks the time a job streams (the console hides its "ok"s, jog is refused).
   void setJobActive(bool active);
@@ -146,7 +163,7 @@ class MachineSession : public QObject, private grbl::ProtocolListener {
   void problemChanged();
   void consoleLine(const QString& text, fivebar::session::ConsoleKind kind);
   void jobActiveChanged(bool active);
-  void lineRefused(const QString& reason);  // a console line the motion check refused
+  void lineRefused(const QString& reason);  // a console line or move the motion check refused
   void uncheckedConsoleChanged(bool on);
   void penStateChanged();
   void boardSettingsChanged();  // read (or failed); see settingDifferences()

@@ -8,7 +8,8 @@
 namespace fivebar::session {
 
 MachineSide::MachineSide(const StudioInputs& inputs, QObject* parent)
-    : QObject(parent), session_(inputs), run_(inputs, session_), jog_(session_), console_(session_) {
+    : QObject(parent), session_(inputs), view_(session_), run_(inputs, session_), jog_(session_), console_(session_),
+      preflight_(inputs, session_) {
   setObjectName(QStringLiteral("machineSide"));
 }
 

@@ -7,9 +7,11 @@
 
 #include <QObject>
 
+#include "session/board_preflight.hpp"
 #include "session/console_port.hpp"
 #include "session/jog_controller.hpp"
 #include "session/machine_session.hpp"
+#include "session/machine_view.hpp"
 #include "session/run_controller.hpp"
 #include "session/studio_inputs.hpp"
 
@@ -24,10 +26,19 @@ class MachineSide : public QObject {
   explicit MachineSide(const StudioInputs& inputs, QObject* parent = nullptr);
 
   MachineSession& session() { return session_; }
+  // The narrow doors the panels are handed (session/machine_ports.hpp): the read-only view and
+  // one port per kind of command.
+  MachineView& view() { return view_; }
+  ConnectionPort& connection() { return session_; }
+  RecoveryPort& recovery() { return session_; }
+  JogPort& jogPort() { return session_; }
+  BoardSettingsPort& boardSettings() { return session_; }
   RunController& run() { return run_; }
   JogController& jog() { return jog_; }
   // The console panel's narrow view of the session.
   ConsolePort& console() { return console_; }
+  // The planned job against the board's soft limits, for the pre-flight problem list.
+  BoardPreflight& boardPreflight() { return preflight_; }
 
   // Connects the built-in simulated machine and declares the pose it stands in the profile's home
   // pose (the --demo start, like a user pressing "Set reference pose"); false with the reason in
@@ -41,9 +52,11 @@ class MachineSide : public QObject {
 
  private:
   MachineSession session_;
+  MachineView view_;
   RunController run_;
   JogController jog_;
   ConsolePort console_;
+  BoardPreflight preflight_;
 };
 
 }  // namespace fivebar::session

@@ -7,7 +7,7 @@
 #include <QStandardPaths>
 
 #include "core/output/gcode.hpp"
-#include "drivers/soft_limits.hpp"
+#include "session/board_preflight.hpp"
 
 namespace fivebar::session {
 namespace {
@@ -106,18 +106,8 @@ QString RunController::guiMessage(const QString& message) const {
 RunController::~RunController() { dropStream(); }
 
 QString RunController::boardLimitProblem(const std::string& gcode, int afterLine) const {
-  const auto& board = session_.boardSettings();
-  const auto wco = session_.workOffsetDeg();
-  if (!board || !wco || !setup::softLimitsOn(*board)) return {};
-  job::GcodeJob parsed = job::parseJob(gcode, job::rulesFor(inputs_.profile()));
-  std::erase_if(parsed.lines, [afterLine](const job::JobLine& l) { return l.fileLine <= afterLine; });
-  const auto hit = setup::firstSoftLimitHit(parsed, *board, *wco);
-  if (!hit) return {};
-  return tr("Not started: the board's soft limits would stop this job with an alarm (ALARM:2): %1. "
-            "The board checks its travel ($130, $131) in machine coordinates, which the reference "
-            "pose shifted against the drawing's. Home the machine, or make the board's settings "
-            "match the profile (Machine settings...), then start again.")
-      .arg(QString::fromStdString(setup::describe(*hit)));
+  const QString why = session::boardLimitProblem(session_, inputs_.profile(), gcode, afterLine);
+  return why.isEmpty() ? why : tr("Not started: %1").arg(why);
 }
 
 void RunController::setJobDirectory(const QString& dir) {

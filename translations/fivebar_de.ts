@@ -1958,6 +1958,14 @@ Bestätigen Sie nur, wenn die Arme jetzt genau in dieser Stellung stehen. Stehen
         <source>The move was not sent (see the console).</source>
         <translation>Die Bewegung wurde nicht gesendet (siehe Konsole).</translation>
     </message>
+    <message>
+        <source>choose a target inside the workspace</source>
+        <translation>wählen Sie ein Ziel innerhalb des Arbeitsbereichs</translation>
+    </message>
+    <message>
+        <source>Move not sent: %1</source>
+        <translation>Bewegung nicht gesendet: %1</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachineSettingsDialog</name>
@@ -2680,6 +2688,10 @@ Anhalten, stoppen und beenden: Die Maschine hält sauber an und der Fortschritt 
     <message>
         <source>"%1" is drawn.</source>
         <translation>„%1“ ist gezeichnet.</translation>
+    </message>
+    <message>
+        <source>Not started: %1</source>
+        <translation>Nicht gestartet: %1</translation>
     </message>
 </context>
 <context>
@@ -4252,6 +4264,130 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
     <message>
         <source>the line near (%1, %2) mm has no clear ends</source>
         <translation>die Linie bei (%1, %2) mm hat keine klaren Enden</translation>
+    </message>
+</context>
+<context>
+    <name>Jog</name>
+    <message>
+        <source>the machine position is not known yet</source>
+        <translation>die Position der Maschine ist noch nicht bekannt</translation>
+    </message>
+    <message>
+        <source>the current motor angles do not close the linkage</source>
+        <translation>die aktuellen Motorwinkel schließen das Gestänge nicht</translation>
+    </message>
+    <message>
+        <source>the line leaves the workspace</source>
+        <translation>die Linie verlässt den Arbeitsbereich</translation>
+    </message>
+    <message>
+        <source>the arms cannot follow the straight line closely enough</source>
+        <translation>die Arme können der geraden Linie nicht genau genug folgen</translation>
+    </message>
+    <message>
+        <source>stopped after %1 mm: %2</source>
+        <translation>nach %1 mm angehalten: %2</translation>
+    </message>
+    <message>
+        <source>no jog direction</source>
+        <translation>keine Verfahrrichtung</translation>
+    </message>
+    <message>
+        <source>no safe travel to that point</source>
+        <translation>kein sicherer Weg zu diesem Punkt</translation>
+    </message>
+    <message>
+        <source>the point is out of reach</source>
+        <translation>der Punkt ist außer Reichweite</translation>
+    </message>
+    <message>
+        <source>the job has no pen-down strokes to frame</source>
+        <translation>der Auftrag hat keine Striche mit abgesenktem Stift, die umrahmt werden könnten</translation>
+    </message>
+    <message>
+        <source>cannot reach the frame's first corner: %1</source>
+        <translation>die erste Ecke des Rahmens ist nicht erreichbar: %1</translation>
+    </message>
+    <message>
+        <source>frame edge %1: %2</source>
+        <translation>Rahmenkante %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>MotionCheck</name>
+    <message>
+        <source>G2/G3 arcs are not arcs in joint space (X and Y are motor angles): plan the drawing with 'fivebar plan', which turns arcs into checked straight segments</source>
+        <translation>G2/G3-Bögen sind im Gelenkraum keine Bögen (X und Y sind Motorwinkel): planen Sie die Zeichnung mit 'fivebar plan', das Bögen in geprüfte gerade Segmente umwandelt</translation>
+    </message>
+    <message>
+        <source>probing (G38) is not supported on a five-bar machine</source>
+        <translation>Antasten (G38) wird auf einer Fünfgelenkmaschine nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>G20 (inches) would scale the motor angles by 25.4: X and Y are degrees, use G21</source>
+        <translation>G20 (Zoll) würde die Motorwinkel mit 25,4 skalieren: X und Y sind Grad, verwenden Sie G21</translation>
+    </message>
+    <message>
+        <source>G10/G92 change the coordinates the checks rely on: %1</source>
+        <translation>G10/G92 ändern die Koordinaten, auf denen die Prüfungen beruhen: %1</translation>
+    </message>
+    <message>
+        <source>G55-G59 select another work coordinate system; the checked link works in G54</source>
+        <translation>G55-G59 wählen ein anderes Werkstückkoordinatensystem; die geprüfte Verbindung arbeitet in G54</translation>
+    </message>
+    <message>
+        <source>a jog ($J=) takes only G90, G91, G53 and G21</source>
+        <translation>ein Verfahrbefehl ($J=) akzeptiert nur G90, G91, G53 und G21</translation>
+    </message>
+    <message>
+        <source>the board would refuse the jog (error:15)</source>
+        <translation>die Steuerung würde das Verfahren ablehnen (error:15)</translation>
+    </message>
+    <message>
+        <source>the board would stop with a soft-limit alarm (ALARM:2)</source>
+        <translation>die Steuerung würde mit einem Software-Endlagen-Alarm anhalten (ALARM:2)</translation>
+    </message>
+    <message>
+        <source>the target %1 takes motor %2 to %3 deg in machine coordinates, outside the board's soft-limit travel %4..0 deg ($%5=%6): %7; home the machine or set its reference so that the travel matches the profile, or choose a target inside it</source>
+        <translation>das Ziel %1 bringt Motor %2 auf %3 Grad in Maschinenkoordinaten, außerhalb des Software-Verfahrwegs der Steuerung %4..0 Grad ($%5=%6): %7; referenzieren Sie die Maschine oder setzen Sie ihre Referenz so, dass der Verfahrweg zum Profil passt, oder wählen Sie ein Ziel darin</translation>
+    </message>
+    <message>
+        <source>set the machine's reference with 'fivebar reference' (or home it with 'fivebar home')</source>
+        <translation>setzen Sie die Referenz der Maschine mit 'fivebar reference' (oder referenzfahren Sie sie mit 'fivebar home')</translation>
+    </message>
+    <message>
+        <source>choose a target inside the workspace (fivebar workspace shows it)</source>
+        <translation>wählen Sie ein Ziel innerhalb des Arbeitsbereichs ('fivebar workspace' zeigt ihn)</translation>
+    </message>
+    <message>
+        <source>(%1, %2) deg</source>
+        <translation>(%1, %2) Grad</translation>
+    </message>
+    <message>
+        <source>G28/G30 go to a position stored on the board, which is not known here; move to the point with a G0 line instead</source>
+        <translation>G28/G30 fahren zu einer auf der Steuerung gespeicherten Position, die hier nicht bekannt ist; fahren Sie den Punkt stattdessen mit einer G0-Zeile an</translation>
+    </message>
+    <message>
+        <source>the machine's position %1 is not a safe pose of %2 (%3), so no move from it can be checked: %4 first</source>
+        <translation>die Position der Maschine %1 ist keine sichere Stellung von %2 (%3), daher kann keine Bewegung von ihr aus geprüft werden: %4 zuerst</translation>
+    </message>
+    <message>
+        <source>the move from %1 to %2 %3; %4</source>
+        <translation>die Bewegung von %1 nach %2 %3; %4</translation>
+    </message>
+</context>
+<context>
+    <name>SoftLimits</name>
+    <message>
+        <source>line %1 moves motor %2 to %3 deg in machine coordinates, outside the board's soft-limit travel %4..0 ($%5=%6)</source>
+        <translation>Zeile %1 bringt Motor %2 auf %3 Grad in Maschinenkoordinaten, außerhalb des Software-Verfahrwegs der Steuerung %4..0 ($%5=%6)</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::session::BoardPreflight</name>
+    <message>
+        <source>The board's soft limits would stop this job with an alarm (ALARM:2): %1. The board checks its travel ($130, $131) in machine coordinates, which the reference pose shifted against the drawing's. Home the machine, or make the board's settings match the profile (Machine settings...), then start again.</source>
+        <translation>Die Software-Endlagen der Steuerung würden diesen Auftrag mit einem Alarm anhalten (ALARM:2): %1. Die Steuerung prüft ihren Verfahrweg ($130, $131) in Maschinenkoordinaten, die die Referenzstellung gegenüber denen der Zeichnung verschoben hat. Referenzfahren Sie die Maschine oder gleichen Sie die Einstellungen der Steuerung an das Profil an (Maschineneinstellungen...) und starten Sie dann erneut.</translation>
     </message>
 </context>
 </TS>

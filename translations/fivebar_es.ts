@@ -1958,6 +1958,14 @@ Confirme solo si los brazos están ahora exactamente en esa pose. Si están en o
         <source>The move was not sent (see the console).</source>
         <translation>El movimiento no se envió (véase la consola).</translation>
     </message>
+    <message>
+        <source>choose a target inside the workspace</source>
+        <translation>elija un objetivo dentro del espacio de trabajo</translation>
+    </message>
+    <message>
+        <source>Move not sent: %1</source>
+        <translation>Movimiento no enviado: %1</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachineSettingsDialog</name>
@@ -2680,6 +2688,10 @@ Pausar, detener y salir: la máquina se detiene limpiamente y el progreso se gua
     <message>
         <source>"%1" is drawn.</source>
         <translation>"%1" está dibujado.</translation>
+    </message>
+    <message>
+        <source>Not started: %1</source>
+        <translation>No iniciado: %1</translation>
     </message>
 </context>
 <context>
@@ -4252,6 +4264,130 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     <message>
         <source>the line near (%1, %2) mm has no clear ends</source>
         <translation>la línea cerca de (%1, %2) mm no tiene extremos claros</translation>
+    </message>
+</context>
+<context>
+    <name>Jog</name>
+    <message>
+        <source>the machine position is not known yet</source>
+        <translation>la posición de la máquina aún no se conoce</translation>
+    </message>
+    <message>
+        <source>the current motor angles do not close the linkage</source>
+        <translation>los ángulos actuales de los motores no cierran el mecanismo</translation>
+    </message>
+    <message>
+        <source>the line leaves the workspace</source>
+        <translation>la línea sale del espacio de trabajo</translation>
+    </message>
+    <message>
+        <source>the arms cannot follow the straight line closely enough</source>
+        <translation>los brazos no pueden seguir la línea recta con suficiente precisión</translation>
+    </message>
+    <message>
+        <source>stopped after %1 mm: %2</source>
+        <translation>detenido tras %1 mm: %2</translation>
+    </message>
+    <message>
+        <source>no jog direction</source>
+        <translation>sin dirección de desplazamiento</translation>
+    </message>
+    <message>
+        <source>no safe travel to that point</source>
+        <translation>no hay un recorrido seguro hasta ese punto</translation>
+    </message>
+    <message>
+        <source>the point is out of reach</source>
+        <translation>el punto está fuera de alcance</translation>
+    </message>
+    <message>
+        <source>the job has no pen-down strokes to frame</source>
+        <translation>el trabajo no tiene trazos con el lápiz bajado que enmarcar</translation>
+    </message>
+    <message>
+        <source>cannot reach the frame's first corner: %1</source>
+        <translation>no se puede alcanzar la primera esquina del marco: %1</translation>
+    </message>
+    <message>
+        <source>frame edge %1: %2</source>
+        <translation>lado del marco %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>MotionCheck</name>
+    <message>
+        <source>G2/G3 arcs are not arcs in joint space (X and Y are motor angles): plan the drawing with 'fivebar plan', which turns arcs into checked straight segments</source>
+        <translation>los arcos G2/G3 no son arcos en el espacio articular (X e Y son ángulos de motor): planifique el dibujo con 'fivebar plan', que convierte los arcos en segmentos rectos comprobados</translation>
+    </message>
+    <message>
+        <source>probing (G38) is not supported on a five-bar machine</source>
+        <translation>el palpado (G38) no está disponible en una máquina de cinco barras</translation>
+    </message>
+    <message>
+        <source>G20 (inches) would scale the motor angles by 25.4: X and Y are degrees, use G21</source>
+        <translation>G20 (pulgadas) escalaría los ángulos de los motores por 25,4: X e Y son grados, use G21</translation>
+    </message>
+    <message>
+        <source>G10/G92 change the coordinates the checks rely on: %1</source>
+        <translation>G10/G92 cambian las coordenadas en las que se basan las comprobaciones: %1</translation>
+    </message>
+    <message>
+        <source>G55-G59 select another work coordinate system; the checked link works in G54</source>
+        <translation>G55-G59 seleccionan otro sistema de coordenadas de trabajo; el enlace comprobado trabaja en G54</translation>
+    </message>
+    <message>
+        <source>a jog ($J=) takes only G90, G91, G53 and G21</source>
+        <translation>un desplazamiento manual ($J=) solo admite G90, G91, G53 y G21</translation>
+    </message>
+    <message>
+        <source>the board would refuse the jog (error:15)</source>
+        <translation>la placa rechazaría el desplazamiento (error:15)</translation>
+    </message>
+    <message>
+        <source>the board would stop with a soft-limit alarm (ALARM:2)</source>
+        <translation>la placa se detendría con una alarma de límite por software (ALARM:2)</translation>
+    </message>
+    <message>
+        <source>the target %1 takes motor %2 to %3 deg in machine coordinates, outside the board's soft-limit travel %4..0 deg ($%5=%6): %7; home the machine or set its reference so that the travel matches the profile, or choose a target inside it</source>
+        <translation>el objetivo %1 lleva el motor %2 a %3 grados en coordenadas de máquina, fuera del recorrido por software de la placa %4..0 grados ($%5=%6): %7; haga el referenciado de la máquina o fije su referencia para que el recorrido coincida con el perfil, o elija un objetivo dentro de él</translation>
+    </message>
+    <message>
+        <source>set the machine's reference with 'fivebar reference' (or home it with 'fivebar home')</source>
+        <translation>fije la referencia de la máquina con 'fivebar reference' (o haga su referenciado con 'fivebar home')</translation>
+    </message>
+    <message>
+        <source>choose a target inside the workspace (fivebar workspace shows it)</source>
+        <translation>elija un objetivo dentro del espacio de trabajo ('fivebar workspace' lo muestra)</translation>
+    </message>
+    <message>
+        <source>(%1, %2) deg</source>
+        <translation>(%1, %2) grados</translation>
+    </message>
+    <message>
+        <source>G28/G30 go to a position stored on the board, which is not known here; move to the point with a G0 line instead</source>
+        <translation>G28/G30 van a una posición guardada en la placa que aquí no se conoce; vaya al punto con una línea G0 en su lugar</translation>
+    </message>
+    <message>
+        <source>the machine's position %1 is not a safe pose of %2 (%3), so no move from it can be checked: %4 first</source>
+        <translation>la posición de la máquina %1 no es una pose segura de %2 (%3), así que ningún movimiento desde ella puede comprobarse: primero %4</translation>
+    </message>
+    <message>
+        <source>the move from %1 to %2 %3; %4</source>
+        <translation>el movimiento de %1 a %2 %3; %4</translation>
+    </message>
+</context>
+<context>
+    <name>SoftLimits</name>
+    <message>
+        <source>line %1 moves motor %2 to %3 deg in machine coordinates, outside the board's soft-limit travel %4..0 ($%5=%6)</source>
+        <translation>la línea %1 lleva el motor %2 a %3 grados en coordenadas de máquina, fuera del recorrido por software de la placa %4..0 ($%5=%6)</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::session::BoardPreflight</name>
+    <message>
+        <source>The board's soft limits would stop this job with an alarm (ALARM:2): %1. The board checks its travel ($130, $131) in machine coordinates, which the reference pose shifted against the drawing's. Home the machine, or make the board's settings match the profile (Machine settings...), then start again.</source>
+        <translation>Los límites por software de la placa detendrían este trabajo con una alarma (ALARM:2): %1. La placa comprueba su recorrido ($130, $131) en coordenadas de máquina, que la pose de referencia desplazó respecto a las del dibujo. Haga el referenciado de la máquina o ajuste la configuración de la placa al perfil (Configuración de la máquina...) y vuelva a empezar.</translation>
     </message>
 </context>
 </TS>

@@ -1958,6 +1958,14 @@ Confirmez seulement si les bras sont exactement dans cette pose. S'ils sont aill
         <source>The move was not sent (see the console).</source>
         <translation>Le déplacement n'a pas été envoyé (voir la console).</translation>
     </message>
+    <message>
+        <source>choose a target inside the workspace</source>
+        <translation>choisissez une cible dans l'espace de travail</translation>
+    </message>
+    <message>
+        <source>Move not sent: %1</source>
+        <translation>Mouvement non envoyé : %1</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachineSettingsDialog</name>
@@ -2680,6 +2688,10 @@ Pause, arrêter et quitter : la machine s'arrête proprement et la progression e
     <message>
         <source>"%1" is drawn.</source>
         <translation>« %1 » est tracé.</translation>
+    </message>
+    <message>
+        <source>Not started: %1</source>
+        <translation>Non démarré : %1</translation>
     </message>
 </context>
 <context>
@@ -4252,6 +4264,130 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     <message>
         <source>the line near (%1, %2) mm has no clear ends</source>
         <translation>la ligne près de (%1, %2) mm n'a pas d'extrémités nettes</translation>
+    </message>
+</context>
+<context>
+    <name>Jog</name>
+    <message>
+        <source>the machine position is not known yet</source>
+        <translation>la position de la machine n'est pas encore connue</translation>
+    </message>
+    <message>
+        <source>the current motor angles do not close the linkage</source>
+        <translation>les angles actuels des moteurs ne ferment pas la liaison</translation>
+    </message>
+    <message>
+        <source>the line leaves the workspace</source>
+        <translation>la ligne sort de l'espace de travail</translation>
+    </message>
+    <message>
+        <source>the arms cannot follow the straight line closely enough</source>
+        <translation>les bras ne peuvent pas suivre la ligne droite d'assez près</translation>
+    </message>
+    <message>
+        <source>stopped after %1 mm: %2</source>
+        <translation>arrêté après %1 mm : %2</translation>
+    </message>
+    <message>
+        <source>no jog direction</source>
+        <translation>aucune direction de déplacement</translation>
+    </message>
+    <message>
+        <source>no safe travel to that point</source>
+        <translation>aucun trajet sûr vers ce point</translation>
+    </message>
+    <message>
+        <source>the point is out of reach</source>
+        <translation>le point est hors de portée</translation>
+    </message>
+    <message>
+        <source>the job has no pen-down strokes to frame</source>
+        <translation>le travail n'a aucun trait stylo baissé à encadrer</translation>
+    </message>
+    <message>
+        <source>cannot reach the frame's first corner: %1</source>
+        <translation>impossible d'atteindre le premier coin du cadre : %1</translation>
+    </message>
+    <message>
+        <source>frame edge %1: %2</source>
+        <translation>côté du cadre %1 : %2</translation>
+    </message>
+</context>
+<context>
+    <name>MotionCheck</name>
+    <message>
+        <source>G2/G3 arcs are not arcs in joint space (X and Y are motor angles): plan the drawing with 'fivebar plan', which turns arcs into checked straight segments</source>
+        <translation>les arcs G2/G3 ne sont pas des arcs dans l'espace articulaire (X et Y sont des angles moteur) : planifiez le dessin avec 'fivebar plan', qui transforme les arcs en segments droits vérifiés</translation>
+    </message>
+    <message>
+        <source>probing (G38) is not supported on a five-bar machine</source>
+        <translation>le palpage (G38) n'est pas pris en charge sur une machine à cinq barres</translation>
+    </message>
+    <message>
+        <source>G20 (inches) would scale the motor angles by 25.4: X and Y are degrees, use G21</source>
+        <translation>G20 (pouces) multiplierait les angles moteur par 25,4 : X et Y sont en degrés, utilisez G21</translation>
+    </message>
+    <message>
+        <source>G10/G92 change the coordinates the checks rely on: %1</source>
+        <translation>G10/G92 changent les coordonnées sur lesquelles reposent les vérifications : %1</translation>
+    </message>
+    <message>
+        <source>G55-G59 select another work coordinate system; the checked link works in G54</source>
+        <translation>G55-G59 choisissent un autre système de coordonnées de travail ; la liaison vérifiée travaille en G54</translation>
+    </message>
+    <message>
+        <source>a jog ($J=) takes only G90, G91, G53 and G21</source>
+        <translation>un déplacement manuel ($J=) n'accepte que G90, G91, G53 et G21</translation>
+    </message>
+    <message>
+        <source>the board would refuse the jog (error:15)</source>
+        <translation>la carte refuserait le déplacement (error:15)</translation>
+    </message>
+    <message>
+        <source>the board would stop with a soft-limit alarm (ALARM:2)</source>
+        <translation>la carte s'arrêterait avec une alarme de fin de course logicielle (ALARM:2)</translation>
+    </message>
+    <message>
+        <source>the target %1 takes motor %2 to %3 deg in machine coordinates, outside the board's soft-limit travel %4..0 deg ($%5=%6): %7; home the machine or set its reference so that the travel matches the profile, or choose a target inside it</source>
+        <translation>la cible %1 amène le moteur %2 à %3 degrés en coordonnées machine, hors de la course logicielle de la carte %4..0 degrés ($%5=%6) : %7 ; faites la prise d'origine ou définissez la référence de sorte que la course corresponde au profil, ou choisissez une cible à l'intérieur</translation>
+    </message>
+    <message>
+        <source>set the machine's reference with 'fivebar reference' (or home it with 'fivebar home')</source>
+        <translation>définissez la référence de la machine avec 'fivebar reference' (ou faites sa prise d'origine avec 'fivebar home')</translation>
+    </message>
+    <message>
+        <source>choose a target inside the workspace (fivebar workspace shows it)</source>
+        <translation>choisissez une cible dans l'espace de travail ('fivebar workspace' le montre)</translation>
+    </message>
+    <message>
+        <source>(%1, %2) deg</source>
+        <translation>(%1, %2) degrés</translation>
+    </message>
+    <message>
+        <source>G28/G30 go to a position stored on the board, which is not known here; move to the point with a G0 line instead</source>
+        <translation>G28/G30 vont à une position enregistrée sur la carte, inconnue ici ; allez au point avec une ligne G0 à la place</translation>
+    </message>
+    <message>
+        <source>the machine's position %1 is not a safe pose of %2 (%3), so no move from it can be checked: %4 first</source>
+        <translation>la position de la machine %1 n'est pas une pose sûre de %2 (%3), donc aucun mouvement depuis elle ne peut être vérifié : %4 d'abord</translation>
+    </message>
+    <message>
+        <source>the move from %1 to %2 %3; %4</source>
+        <translation>le mouvement de %1 à %2 %3 ; %4</translation>
+    </message>
+</context>
+<context>
+    <name>SoftLimits</name>
+    <message>
+        <source>line %1 moves motor %2 to %3 deg in machine coordinates, outside the board's soft-limit travel %4..0 ($%5=%6)</source>
+        <translation>la ligne %1 amène le moteur %2 à %3 degrés en coordonnées machine, hors de la course logicielle de la carte %4..0 ($%5=%6)</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::session::BoardPreflight</name>
+    <message>
+        <source>The board's soft limits would stop this job with an alarm (ALARM:2): %1. The board checks its travel ($130, $131) in machine coordinates, which the reference pose shifted against the drawing's. Home the machine, or make the board's settings match the profile (Machine settings...), then start again.</source>
+        <translation>Les fins de course logicielles de la carte arrêteraient ce travail avec une alarme (ALARM:2) : %1. La carte vérifie sa course ($130, $131) en coordonnées machine, que la pose de référence a décalées par rapport à celles du dessin. Faites la prise d'origine de la machine, ou alignez les réglages de la carte sur le profil (Réglages de la machine...), puis relancez.</translation>
     </message>
 </context>
 </TS>

@@ -26,7 +26,9 @@ constexpr const char* kSendHelp =
     "$# for the work offset). Every line that can move the machine - G0/G1 with X or Y, $J=,\n"
     "G28/G30, G53 moves - is checked from that pose along its joint-linear move: workspace,\n"
     "joint limits and the type II singularity margin of the --machine profile, as jog and job\n"
-    "moves are. A refused line is not sent, and nothing after it. Always refused: G2/G3 (no arc\n"
+    "moves are, and - when the board's soft limits are on ($20=1; its $$ is read first) - against\n"
+    "the board's travel $130/$131 in machine coordinates, so no line raises ALARM:2. A refused\n"
+    "line is not sent, and nothing after it. Always refused: G2/G3 (no arc\n"
     "in joint space), G38 probing, G20, G10/G92/G55-G59 coordinate changes (use fivebar\n"
     "reference). Without --machine, lines that move the machine are refused; non-motion lines\n"
     "and $ commands pass. --unchecked sends motion lines without the check (a warning is\n"
@@ -48,6 +50,7 @@ class Sender : public grbl::ProtocolListener {
       : link_(link), lines_(std::move(lines)), timeoutS_(timeoutS), profile_(std::move(profile)),
         unchecked_(unchecked), poseSync_(link.protocol(), timeoutS) {
     link_.protocol().addListener(this);
+    poseSync_.wantSettings(profile_.has_value() && !unchecked_);  // the board's soft limits
   }
   ~Sender() override { link_.protocol().removeListener(this); }
 
@@ -155,14 +158,14 @@ class Sender : public grbl::ProtocolListener {
       if (c.verdict == motion::Verdict::Pass) return true;
       fail("refused '" + line + "': " +
            (c.verdict == motion::Verdict::Refused
-                ? c.reason
+                ? c.reason.text()
                 : std::string("it moves the machine; give --machine PRESET|FILE so that the move "
                               "can be checked against the machine's workspace")));
       return false;
     }
     const motion::LineCheck c = motion::checkLine(*profile_, line, pose_.value_or(motion::BoardPose{}));
     if (!c.ok()) {
-      fail("refused '" + line + "' (not sent): " + c.reason);
+      fail("refused '" + line + "' (not sent): " + c.reason.text());
       return false;
     }
     if (c.systemCommand) {

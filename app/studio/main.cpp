@@ -148,7 +148,7 @@ int main(int argc, char** argv) {
   MainWindow window(*profile);
   window.show();
 
-  if (parser.isSet(fill) && !fivebar::widgets::applyFillOption(window, parser.value(fill))) {
+  if (parser.isSet(fill) && !fivebar::widgets::applyFillOption(window.fillOptions(), parser.value(fill))) {
     std::fprintf(stderr, "fivebar-studio: --fill: expected outline, hatch[:SPACING[:ANGLE]] or none, got '%s'\n",
                  qPrintable(parser.value(fill)));
     return 2;

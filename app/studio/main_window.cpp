@@ -77,10 +77,14 @@ MainWindow::MainWindow(const MachineProfile& profile, QWidget* parent) : QMainWi
   machinePanels_ = new MachinePanels(*machine_, *doc_, *canvas_, *machineLayer_, this);
   machinePanels_->addPanels([this](QWidget* panel, const QString& title, const QString& name,
                                    Qt::DockWidgetArea area) { return addMachinePanel(panel, title, name, area); });
+  // The board's soft limits in the pre-flight list while connected to a board with $20=1.
+  connect(&machine_->boardPreflight(), &session::BoardPreflight::changed, previewPanel_,
+          &PreviewPanel::setMachineProblem);
   machineMenu_->addSeparator();
   machineMenu_->addAction(machinePanels_->settingsAction());
   machineMenu_->addAction(DesignDialog::createAction(*doc_, *canvas_, this));
-  calibrateAction_ = widgets::calibration::CalibrationWizard::createAction(*doc_, &machine_->session(), canvas_, this);
+  calibrateAction_ = widgets::calibration::CalibrationWizard::createAction(*doc_, &machine_->session(), canvas_, this,
+                                                                          calibrationWizard_);
   machineMenu_->addAction(calibrateAction_);
   // The simulated machine's true (imperfect) build: its menu entry, status badge and canvas trace.
   widgets::calibration::installSimulatedMachine(*doc_, machine_->session(), *canvas_, *machineMenu_,
@@ -128,7 +132,7 @@ QDockWidget* MainWindow::dock(const QString& objectName) const {
 
 widgets::calibration::CalibrationWizard* MainWindow::calibrationWizard() const {
   // Created by the Calibrate action on first use (widgets/calibration/calibration_wizard.cpp).
-  return findChild<widgets::calibration::CalibrationWizard*>(QString(), Qt::FindDirectChildrenOnly);
+  return calibrationWizard_.data();
 }
 
 void MainWindow::createCanvas() {
@@ -188,9 +192,9 @@ void MainWindow::createDocks() {
                             QStringLiteral("dockPlacement"), Qt::LeftDockWidgetArea);
   auto* layers = addDock(new LayersPanel(*doc_, this), tr("Layers"), QStringLiteral("dockLayers"),
                          Qt::LeftDockWidgetArea);
-  auto* previewPanel = new PreviewPanel(*preview_, *jobLayer_, this);
-  connect(previewPanel, &PreviewPanel::showLocation, canvas_, &CanvasView::centerOn);
-  auto* preview = addDock(previewPanel, tr("Job preview"), QStringLiteral("dockPreview"),
+  previewPanel_ = new PreviewPanel(*preview_, *jobLayer_, this);
+  connect(previewPanel_, &PreviewPanel::showLocation, canvas_, &CanvasView::centerOn);
+  auto* preview = addDock(previewPanel_, tr("Job preview"), QStringLiteral("dockPreview"),
                           Qt::RightDockWidgetArea);
   auto* sim = addDock(new SimulationPanel(*simulation_, *doc_, this), tr("Simulation"),
                       QStringLiteral("dockSimulation"), Qt::RightDockWidgetArea);
@@ -200,7 +204,8 @@ void MainWindow::createDocks() {
   rightTabs_ = sim;
   // Fills of the next import (widgets/panels/fill_options_box.hpp) next to the layers; the import
   // warnings (widgets/panels/import_warnings_panel.hpp) at the bottom, raised when an import brings some.
-  tabifyDockWidget(layers, addDock(new FillOptionsBox(*importer_, *doc_, this), tr("Fills"),
+  fillOptions_ = new FillOptionsBox(*importer_, *doc_, this);
+  tabifyDockWidget(layers, addDock(fillOptions_, tr("Fills"),
                                    QStringLiteral("dockFills"), Qt::LeftDockWidgetArea));
   auto* warnings = new ImportWarningsPanel(this);
   auto* warningsDock = addDock(warnings, tr("Import warnings"), QStringLiteral("dockImportWarnings"),

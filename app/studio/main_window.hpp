@@ -7,6 +7,7 @@
 #pragma once
 
 #include <QMainWindow>
+#include <QPointer>
 #include <QString>
 #include <vector>
 #include <memory>
@@ -30,6 +31,8 @@ class DocumentInputs;
 class MachineLayer;
 class MachinePanels;
 class PlacementPanel;
+class PreviewPanel;
+class FillOptionsBox;
 class PlacementTool;
 class PreviewController;
 class SimulationController;
@@ -66,6 +69,7 @@ class MainWindow : public QMainWindow {
   session::MachineSide& machine() { return *machine_; }
   widgets::MachinePanels& machinePanels() { return *machinePanels_; }
   widgets::PlacementPanel& placementPanel() { return *placementPanel_; }
+  widgets::FillOptionsBox& fillOptions() { return *fillOptions_; }
   // A dock by its object name ("dockPlacement", "dockJog", ...); nullptr when there is none.
   QDockWidget* dock(const QString& objectName) const;
   // Machine > Calibrate..., and the wizard it opened (nullptr before the first use).
@@ -108,6 +112,9 @@ class MainWindow : public QMainWindow {
   widgets::PlacementTool* placementTool_ = nullptr;
   FileActions* files_ = nullptr;
   widgets::PlacementPanel* placementPanel_ = nullptr;
+  widgets::PreviewPanel* previewPanel_ = nullptr;
+  widgets::FillOptionsBox* fillOptions_ = nullptr;
+  QPointer<widgets::calibration::CalibrationWizard> calibrationWizard_;  // created on first use
   widgets::DocumentInputs* inputs_ = nullptr;
   session::MachineSide* machine_ = nullptr;
   widgets::MachinePanels* machinePanels_ = nullptr;

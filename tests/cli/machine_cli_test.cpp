@@ -193,6 +193,39 @@ TEST_F(MachineCli, StreamApproachesTheJobsStartFromTheRealPose) {
   EXPECT_NEAR(mpos()[1], 2.0, step());
 }
 
+// With the board's soft limits on, send and stream refuse a target outside its travel (machine
+// coordinates) before a byte is sent; unchecked, the same line raises ALARM:2 on the board.
+TEST_F(MachineCli, SendAndStreamRefuseTargetsOutsideTheBoardsSoftLimits) {
+  ASSERT_TRUE(startSim({"--set-up", "--referenced"}));
+  // Homing and soft limits on, 1 deg of travel below the reference (home = machine 0,0).
+  const CliResult on = run({"send", "--port", pty_, "$22=1", "$20=1", "$130=1", "$131=1"});
+  ASSERT_EQ(on.exitCode, 0) << on.err;
+  const std::string up = "G1X" + deg3(profile_.homeAngles.theta1 + radFromDeg(0.5)) + "Y" + homeY() + "F600";
+  const CliResult refused = run({"send", "--port", pty_, "--machine", "maker-plotter", up});
+  EXPECT_EQ(refused.exitCode, 1);
+  EXPECT_NE(refused.err.find("not sent"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("ALARM:2"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("$130=1.000"), std::string::npos) << refused.err;
+  const std::string jog = "$J=G90X" + homeX() + "Y" + deg3(profile_.homeAngles.theta2 + radFromDeg(0.5)) + "F600";
+  const CliResult jogRefused = run({"send", "--port", pty_, "--machine", "maker-plotter", jog});
+  EXPECT_EQ(jogRefused.exitCode, 1);
+  EXPECT_NE(jogRefused.err.find("error:15"), std::string::npos) << jogRefused.err;
+  const std::string job = writeJob("up.gcode", "G21 G90\nG0X" + homeX() + "Y" + homeY() + "\n" + up + "\n");
+  const CliResult stream = run({"stream", job, "--port", pty_, "--machine", "maker-plotter"});
+  EXPECT_EQ(stream.exitCode, 1);
+  EXPECT_NE(stream.err.find("ALARM:2"), std::string::npos) << stream.err;
+  EXPECT_NE(stream.err.find("nothing was sent"), std::string::npos) << stream.err;
+  std::string s = status();
+  EXPECT_NE(s.find("<Idle"), std::string::npos) << "no alarm: " << s;
+  EXPECT_NE(s.find("MPos:0.000,0.000,0.000"), std::string::npos) << "nothing moved: " << s;
+  // Inside the travel the line passes; unchecked, the refused line really raises ALARM:2.
+  const std::string down = "G1X" + deg3(profile_.homeAngles.theta1 - radFromDeg(0.5)) + "Y" + homeY() + "F600";
+  const CliResult inside = run({"send", "--port", pty_, "--machine", "maker-plotter", down});
+  EXPECT_EQ(inside.exitCode, 0) << inside.err;
+  const CliResult expert = run({"send", "--port", pty_, "--unchecked", "--timeout", "1", up});
+  EXPECT_NE(expert.out.find("ALARM:2"), std::string::npos) << expert.out << expert.err;
+}
+
 TEST(FivebarSim, HelpWorks) {
   const int status = std::system((quote(FIVEBAR_SIM_EXE) + " --help >/dev/null").c_str());
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);

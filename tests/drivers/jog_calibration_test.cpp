@@ -95,7 +95,7 @@ TEST(JogCalibration, MotionCheckAppliesTheOffsetBeforeTheWorkspaceCheck) {
   EXPECT_TRUE(motion::checkLine(plain, line, pose).ok());
   const motion::LineCheck c = motion::checkLine(shifted, line, pose);
   EXPECT_FALSE(c.ok());
-  EXPECT_NE(c.reason.find("is not a safe pose"), std::string::npos) << c.reason;
+  EXPECT_NE(c.reason.text().find("is not a safe pose"), std::string::npos) << c.reason;
 }
 
 }  // namespace

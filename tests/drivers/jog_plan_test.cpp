@@ -110,7 +110,7 @@ TEST(JogPlanner, GoToReachesThePointOrSaysWhyNot) {
   }
   const JogPlan far = jog::planGoTo(profile, profile.homeAngles, Vec2(0.0, 900.0));
   EXPECT_EQ(far.status, JogStatus::Blocked);
-  EXPECT_NE(far.reason.find("out of reach"), std::string::npos) << far.reason;
+  EXPECT_NE(far.reason.text().find("out of reach"), std::string::npos) << far.reason;
 }
 
 }  // namespace

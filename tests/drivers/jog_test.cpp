@@ -51,7 +51,7 @@ TEST(CartesianJog, StopsAtTheLastSafePointInsteadOfLeavingTheWorkspace) {
   const jog::JogPlan plan = jog::planCartesianJog(p, p.homeAngles, Vec2(0, 1), 2000.0, 50.0);
   EXPECT_EQ(plan.status, jog::JogStatus::Clipped);
   EXPECT_LT(plan.lengthMm, 2000.0);
-  EXPECT_NE(plan.reason.find("stopped after"), std::string::npos) << plan.reason;
+  EXPECT_NE(plan.reason.text().find("stopped after"), std::string::npos) << plan.reason;
   JointAngles prev = p.homeAngles;
   for (const JointAngles& q : plan.targets) {
     EXPECT_TRUE(checkJointMove(p, prev, q).ok());

@@ -46,7 +46,7 @@ TEST(MotionCheck, UnsafeMovesAreRefusedWithTheReason) {
   const MoveCheck core = checkJointMove(p, {radFromDeg(home.workDeg[0]), radFromDeg(home.workDeg[1])},
                                         {radFromDeg(beyond), radFromDeg(home.workDeg[1])});
   EXPECT_FALSE(core.ok());
-  EXPECT_NE(far.reason.find(describe(core)), std::string::npos) << far.reason;
+  EXPECT_NE(far.reason.text().find(describe(core)), std::string::npos) << far.reason;
   // Relative moves (G91) and jogs are read from the current pose.
   EXPECT_EQ(motion::checkLine(p, "G91 G0 X" + fmt(beyond - home.workDeg[0]), home).verdict, Verdict::Refused);
   EXPECT_EQ(motion::checkLine(p, "$J=G91X" + fmt(beyond - home.workDeg[0]) + "F100", home).verdict,
@@ -72,7 +72,7 @@ TEST(MotionCheck, LinesThatCannotBeCheckedAreRefused) {
     EXPECT_EQ(c.verdict, Verdict::Refused) << line;
     EXPECT_FALSE(c.reason.empty()) << line;
   }
-  EXPECT_NE(motion::checkLine(p, "G10L20P0X0Y0", home).reason.find("fivebar reference"), std::string::npos);
+  EXPECT_NE(motion::checkLine(p, "G10L20P0X0Y0", home).reason.text().find("fivebar reference"), std::string::npos);
   // G28 goes to a stored position: refused while it is unknown, checked once known.
   EXPECT_EQ(motion::checkLine(p, "G28", home).verdict, Verdict::Refused);
   motion::BoardPose stored = home;

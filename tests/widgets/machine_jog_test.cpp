@@ -25,7 +25,7 @@ TEST(JogPanel, ArrowStepMovesTheSimulatedMachine) {
   MachineRig rig;
   ASSERT_TRUE(rig.connect(4.0));
   ASSERT_TRUE(rig.waitIdle());
-  widgets::JogPanel panel(rig.session, rig.jog);
+  widgets::JogPanel panel(rig.view, rig.session, rig.session, rig.jog);
   const Vec2 before = *rig.session.penMm();
   // Step 10 mm, then a tap (press + release) on "+X".
   panel.controller().setStep(10.0);
@@ -43,7 +43,7 @@ TEST(JogPanel, MotorButtonTurnsOneMotor) {
   MachineRig rig;
   ASSERT_TRUE(rig.connect(4.0));
   ASSERT_TRUE(rig.waitIdle());
-  widgets::JogPanel panel(rig.session, rig.jog);
+  widgets::JogPanel panel(rig.view, rig.session, rig.session, rig.jog);
   const JointAngles before = *rig.session.motorAngles();
   panel.controller().setStep(1.0);
   panel.motorButton(2, -1)->click();
@@ -58,7 +58,7 @@ TEST(JogPanel, HoldingStreamsAContinuousJogAndReleaseStopsIt) {
   MachineRig rig;
   ASSERT_TRUE(rig.connect(1.0));
   ASSERT_TRUE(rig.waitIdle());
-  widgets::JogPanel panel(rig.session, rig.jog);
+  widgets::JogPanel panel(rig.view, rig.session, rig.session, rig.jog);
   panel.controller().setStep(0.1);
   panel.controller().setSpeedMmPerS(20.0);
   const Vec2 before = *rig.session.penMm();
@@ -82,7 +82,7 @@ TEST(JogPanel, GoToPreviewsThenMovesOnConfirm) {
   MachineRig rig;
   ASSERT_TRUE(rig.connect(8.0));
   ASSERT_TRUE(rig.waitIdle());
-  widgets::JogPanel panel(rig.session, rig.jog);
+  widgets::JogPanel panel(rig.view, rig.session, rig.session, rig.jog);
   const Vec2 start = *rig.session.penMm();
   const Vec2 target = start + Vec2(-20.0, 10.0);
   panel.goToTool().pick(QPointF(target.x(), target.y()));
@@ -114,7 +114,7 @@ TEST(JogPanel, ArrowKeysJogWhereverTheFocusIsButInTextFields) {
   auto* canvas = new widgets::CanvasView(&window);
   auto* button = new QPushButton(QStringLiteral("elsewhere"), &window);
   auto* field = new QLineEdit(&window);
-  auto* panel = new widgets::JogPanel(rig.session, rig.jog, &window);
+  auto* panel = new widgets::JogPanel(rig.view, rig.session, rig.session, rig.jog, &window);
   layout->addWidget(canvas);
   layout->addWidget(button);
   layout->addWidget(field);

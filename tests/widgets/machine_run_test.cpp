@@ -73,8 +73,8 @@ TEST(RunPanel, RunsThePlannedJobToCompletionAndColoursWhatIsDone) {
   ASSERT_TRUE(rig.planned()) << rig.preview.result().message.toStdString();
   ASSERT_TRUE(rig.connect(25.0));
   ASSERT_TRUE(rig.waitIdle());
-  widgets::RunPanel panel(rig.run, rig.session);
-  widgets::RunLayer layer(rig.run, rig.session);
+  widgets::RunPanel panel(rig.run, rig.view, rig.session);
+  widgets::RunLayer layer(rig.run, rig.view);
   ASSERT_TRUE(panel.startButton()->isEnabled());
   // Connected before Start: a fast run may end while the test waits for its first strokes.
   bool finished = false, ok = false;
@@ -130,7 +130,7 @@ TEST(RunPanel, ResumesAfterTheLinkDropsAlsoAfterARestart) {
   // "Restart": a new controller and panel on the same job folder offer the resume.
   session::RunController restarted(rig.inputs, rig.session);
   restarted.setJobDirectory(rig.dir.path());
-  widgets::RunPanel panel(restarted, rig.session);
+  widgets::RunPanel panel(restarted, rig.view, rig.session);
   ASSERT_TRUE(restarted.savedProgress().has_value());
   EXPECT_FALSE(panel.resumeButton()->isHidden());
   EXPECT_FALSE(panel.resumeButton()->isEnabled());  // not connected yet
@@ -161,7 +161,7 @@ TEST(RunPanel, StartExplainsTheBoardsSettingsMismatchFirst) {
   ASSERT_TRUE(rig.waitIdle());
   rig.session.readBoardSettings();
   ASSERT_TRUE(waitUntil([&] { return !rig.session.settingDifferences().empty(); }, 5000));
-  widgets::RunPanel panel(rig.run, rig.session);
+  widgets::RunPanel panel(rig.run, rig.view, rig.session);
   bool opened = false;
   panel.setOpenSettings([&] { opened = true; });
   QString text;
@@ -187,12 +187,49 @@ TEST(RunPanel, StartExplainsTheBoardsSettingsMismatchFirst) {
   ASSERT_TRUE(waitUntil([&] { return !rig.run.running(); }, 20000));
 }
 
+// A saved run is offered by name; a new Start asks before it discards it (Cancel keeps it).
+TEST(RunPanel, StartAsksBeforeItDiscardsTheSavedRun) {
+  RunRig rig;
+  ASSERT_TRUE(rig.planned()) << rig.preview.result().message.toStdString();
+  ASSERT_TRUE(rig.connect(25.0));
+  ASSERT_TRUE(rig.waitIdle());
+  ASSERT_TRUE(waitUntil([&] { return rig.session.boardSettingsKnown(); }, 5000));
+  const std::string gcode = writeGcode(*rig.preview.result().job, rig.doc.profile());
+  {
+    QFile file(rig.run.jobPath());
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write(gcode.data(), qint64(gcode.size()));
+  }
+  job::JobProgress progress;
+  progress.jobHash = job::sha256Hex(gcode);
+  progress.totalLines = 10;
+  progress.lastAckedLine = progress.lastCompletedLine = 5;
+  progress.reason = "stopped by the user";
+  const std::string progressPath = job::progressPathFor(rig.run.jobPath().toStdString());
+  ASSERT_EQ(job::saveProgress(progress, progressPath), "");
+  widgets::RunPanel panel(rig.run, rig.view, rig.session);
+  EXPECT_FALSE(panel.resumeLabel()->isHidden());
+  EXPECT_TRUE(panel.resumeLabel()->text().contains(QStringLiteral("\"square\""))) << panel.resumeLabel()->text().toStdString();
+  QString text;
+  test::answerBox(QStringLiteral("discardResumeQuestion"), QString(), QMessageBox::Cancel, &text);
+  panel.startButton()->click();
+  EXPECT_TRUE(text.contains(QStringLiteral("discards this saved progress"))) << text.toStdString();
+  EXPECT_TRUE(text.contains(QStringLiteral("square"))) << text.toStdString();
+  EXPECT_FALSE(rig.run.running());
+  EXPECT_TRUE(QFile::exists(QString::fromStdString(progressPath))) << "Cancel keeps the saved run";
+  test::answerBox(QStringLiteral("discardResumeQuestion"), QStringLiteral("discardAndStart"));
+  panel.startButton()->click();
+  EXPECT_TRUE(rig.run.running()) << rig.run.lastMessage().toStdString();
+  rig.run.stop();
+  ASSERT_TRUE(waitUntil([&] { return !rig.run.running(); }, 20000));
+}
+
 TEST(RunPanel, EtaFollowsThePlanAndStandsStillOnHold) {
   RunRig rig;
   ASSERT_TRUE(rig.planned()) << rig.preview.result().message.toStdString();
   ASSERT_TRUE(rig.connect(2.0));
   ASSERT_TRUE(rig.waitIdle());
-  widgets::RunPanel panel(rig.run, rig.session);
+  widgets::RunPanel panel(rig.run, rig.view, rig.session);
   ASSERT_TRUE(rig.run.start());
   const double total = rig.run.etaS();
   ASSERT_GT(total, 0.0);
@@ -225,8 +262,8 @@ TEST(RunPanel, AlarmThenUnlockThenResumeFinishesAndNewJobsClearTheOldOverlay) {
   ASSERT_TRUE(rig.connect(25.0, sim::Fault{sim::FaultKind::AlarmAfter, 50}));
   ASSERT_TRUE(rig.setReference());
   ASSERT_TRUE(rig.waitIdle());
-  widgets::RunPanel panel(rig.run, rig.session);
-  widgets::RunLayer layer(rig.run, rig.session);
+  widgets::RunPanel panel(rig.run, rig.view, rig.session);
+  widgets::RunLayer layer(rig.run, rig.view);
   ASSERT_TRUE(rig.run.start());
   ASSERT_TRUE(waitUntil([&] { return !rig.run.running(); }, 45000));
   EXPECT_NE(rig.run.state(), job::RunState::Finished);

@@ -99,7 +99,7 @@ TEST(ReferencePose, IsSetOnlyAfterConfirmationAndGoHomeReturnsByACheckedMove) {
   MachineRig rig;
   ASSERT_TRUE(rig.connect(8.0));
   ASSERT_TRUE(rig.waitIdle());
-  widgets::JogPanel jog(rig.session, rig.jog);
+  widgets::JogPanel jog(rig.view, rig.session, rig.session, rig.jog);
   const MachineProfile& p = rig.doc.profile();
   // Move away from the home pose by 5 degrees of motor 1.
   const jog::JogPlan plan =
@@ -140,7 +140,7 @@ TEST(Connection, IsNotConnectedWithoutGrblAndNamesPortAndBaud) {
   char name[256] = {};
   ASSERT_EQ(openpty(&master, &slave, name, nullptr, nullptr), 0);
   MachineRig rig;
-  widgets::MachinePanel panel(rig.session);
+  widgets::MachinePanel panel(rig.view, rig.session, rig.session);
   QSignalSpy failed(&rig.session, &session::MachineSession::connectFailed);
   QString error;
   ASSERT_TRUE(rig.session.connectSerial(QString::fromLatin1(name), 115200, &error)) << error.toStdString();

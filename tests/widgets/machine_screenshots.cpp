@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
 
   // 2a. The reference pose is asked for; the board's settings differ from the profile.
   grabNextBox(QStringLiteral("referencePoseQuestion"), outDir + QStringLiteral("/machine-reference-question.png"));
-  widgets::requestReferencePose(&window, session);
+  widgets::requestReferencePose(&window, session.profile(), session);
   QFile::remove(QString::fromStdString(job::progressPathFor(machine->run().jobPath().toStdString())));
   session.sendLine(QStringLiteral("$100=10"));
   waitUntil([&] { return session.state() == grbl::MachineState::Idle; }, 5000);

@@ -30,7 +30,7 @@ void pressKey(QWidget* w, int key) {
 
 TEST(MachinePanel, ConnectsTheSimulatedMachineAndShowsItsStatus) {
   MachineRig rig;
-  widgets::MachinePanel panel(rig.session);
+  widgets::MachinePanel panel(rig.view, rig.session, rig.session);
   EXPECT_EQ(panel.portBox()->currentIndex(), 0);  // the simulated machine comes first
   panel.connectButton()->click();
   // "Connected" only once the board answered with a status report.
@@ -51,6 +51,14 @@ TEST(MachinePanel, ConnectsTheSimulatedMachineAndShowsItsStatus) {
   const MachineProfile& p = rig.doc.profile();
   EXPECT_NEAR(degFromRad(q.theta1), degFromRad(p.homeAngles.theta1), 1.0 / p.motors.stepsPerDeg1);
   EXPECT_NEAR(degFromRad(q.theta2), degFromRad(p.homeAngles.theta2), 1.0 / p.motors.stepsPerDeg2);
+  // The pen state is in Status: not known after connecting, then what the pen commands set.
+  ASSERT_TRUE(rig.waitIdle());
+  EXPECT_EQ(panel.penLabel()->text(), widgets::MachinePanel::tr("not known yet"));
+  ASSERT_TRUE(rig.session.penDown());
+  EXPECT_EQ(panel.penLabel()->text(), widgets::MachinePanel::tr("down (drawing)"));
+  ASSERT_TRUE(waitUntil([&] { return rig.session.canJog(); }, 5000));
+  ASSERT_TRUE(rig.session.penUp());
+  EXPECT_EQ(panel.penLabel()->text(), widgets::MachinePanel::tr("up"));
   panel.disconnectButton()->click();
   EXPECT_FALSE(rig.session.isConnected());
   EXPECT_TRUE(panel.connectButton()->isEnabled());
@@ -62,7 +70,7 @@ TEST(MachineBanner, AlarmShowsTheExplanationAndResetThenUnlockClearsIt) {
   // studio sends on connect to compare the settings with the profile.
   ASSERT_TRUE(rig.connect(4.0, sim::Fault{sim::FaultKind::AlarmAfter, 2}));
   ASSERT_TRUE(waitUntil([&] { return rig.session.boardSettingsKnown(); }, 5000));
-  widgets::MachineBanner banner(rig.session);
+  widgets::MachineBanner banner(rig.view, rig.session);
   EXPECT_TRUE(banner.isHidden());
   ASSERT_TRUE(rig.session.sendLine(QStringLiteral("G4P0.01")));
   ASSERT_TRUE(waitUntil([&] { return rig.session.problem().kind == session::MachineProblem::Kind::Alarm; }, 5000));
@@ -88,7 +96,7 @@ TEST(MachineBanner, RejectedLineShowsTheErrorTextAndCanBeDismissed) {
   MachineRig rig;
   ASSERT_TRUE(rig.connect(4.0));
   ASSERT_TRUE(rig.waitIdle());
-  widgets::MachineBanner banner(rig.session);
+  widgets::MachineBanner banner(rig.view, rig.session);
   // A move without a feed rate: GRBL answers error:22 and nothing moves.
   ASSERT_TRUE(rig.session.sendLine(QStringLiteral("G1X150")));
   ASSERT_TRUE(waitUntil([&] { return rig.session.problem().kind == session::MachineProblem::Kind::Error; }, 5000));

@@ -34,7 +34,7 @@ int rowOf(const QTableWidget& table, int id) {
 TEST(MachineSettingsDialog, RefusesWithoutAMachine) {
   MachineRig rig;
   QTemporaryDir dir;
-  widgets::MachineSettingsDialog dialog(rig.session, dir.path());
+  widgets::MachineSettingsDialog dialog(rig.view, rig.session, dir.path());
   EXPECT_FALSE(dialog.readBoard());
   EXPECT_TRUE(dialog.statusLabel()->text().contains(QStringLiteral("Connect")))
       << dialog.statusLabel()->text().toStdString();
@@ -49,7 +49,7 @@ TEST(MachineSettingsDialog, FindsChangedSettingsAndWritesThemBackAfterABackup) {
   const setup::Settings wanted = setup::expectedSettings(rig.session.profile());
   ASSERT_TRUE(wanted.count(100) && wanted.count(110));
   QTemporaryDir dir;
-  widgets::MachineSettingsDialog dialog(rig.session, dir.path() + QStringLiteral("/backups"));
+  widgets::MachineSettingsDialog dialog(rig.view, rig.session, dir.path() + QStringLiteral("/backups"));
   // What the fresh board already differs in (the simulator's defaults are GRBL's, not all the
   // profile's), compared on the board's own report.
   ASSERT_TRUE(dialog.readBoard());

@@ -11,6 +11,7 @@
 
 #include "core/machine/profile.hpp"
 #include "session/machine_session.hpp"
+#include "session/machine_view.hpp"
 #include "tests/widgets/event_wait.hpp"
 #include "session/console_port.hpp"
 #include "session/jog_controller.hpp"
@@ -26,7 +27,8 @@ inline MachineProfile makerPlotter() { return *preset("maker-plotter"); }
 // connect() opens the simulated machine and waits for it to report.
 struct MachineRig {
   explicit MachineRig(MachineProfile profile = makerPlotter())
-      : doc(std::move(profile)), preview(doc), inputs(doc, &preview), session(inputs), jog(session), consolePort(session) {}
+      : doc(std::move(profile)), preview(doc), inputs(doc, &preview), session(inputs), view(session), jog(session),
+        consolePort(session) {}
   bool connect(double speedup, sim::Fault fault = {}) {
     QString error;
     if (!session.connectSimulated(speedup, fault, &error)) return false;
@@ -55,6 +57,7 @@ struct MachineRig {
   widgets::PreviewController preview;
   widgets::DocumentInputs inputs;
   session::MachineSession session;
+  session::MachineView view;  // the panels' read-only view; the session itself is every port
   session::JogController jog;
   session::ConsolePort consolePort;
 };

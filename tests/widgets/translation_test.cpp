@@ -54,6 +54,8 @@
 #include "widgets/canvas/job_layer.hpp"
 #include "session/run_controller.hpp"
 #include "widgets/machine/run_panel.hpp"
+#include "drivers/motion_check.hpp"
+#include "session/board_preflight.hpp"
 #include "widgets/panels/simulation_panel.hpp"
 #include "widgets/document/studio_document.hpp"
 
@@ -87,7 +89,8 @@ std::set<QString> runtimeContexts() {
         &calibration::SheetLayer::staticMetaObject, &calibration::AccuracyPage::staticMetaObject,
         &calibration::DistancesBox::staticMetaObject, &calibration::SimTraceLayer::staticMetaObject,
         &calibration::SimulatedMachineDialog::staticMetaObject, &calibration::SimulatedTruth::staticMetaObject,
-        &calibration::SimulatedTruthBadge::staticMetaObject, &calibration::TrueMachineForm::staticMetaObject})
+        &calibration::SimulatedTruthBadge::staticMetaObject, &calibration::TrueMachineForm::staticMetaObject,
+        &fivebar::session::BoardPreflight::staticMetaObject})
     names.insert(QString::fromLatin1(m->className()));
   for (const char* c : {"QObject", "main", "DocumentCommands", "JobPipeline", "MapPainter",
                         "WorkspaceLegend", "ImportWarningsPanel", "DesignPainter", "ImportWarning",
@@ -95,7 +98,9 @@ std::set<QString> runtimeContexts() {
                         "CalibrationWizard",
                         // the core's messages (core/support/message.hpp, widgets::translated)
                         "Placement", "Planner", "Preflight", "Safety", "Profile", "CalibrationFit",
-                        "CalibrationPattern", "CalibrationScan", "Design", "ImportError"})
+                        "CalibrationPattern", "CalibrationScan", "Design", "ImportError",
+                        // the drivers' messages the studio translates (session::translated)
+                        "Jog", "MotionCheck", "SoftLimits"})
     names.insert(QString::fromLatin1(c));
   return names;
 }
@@ -351,6 +356,32 @@ std::set<QString> sameAsEnglish(const QString& tsPath) {
 // The main window built under each translator (German, French, Spanish) shows no text it shows
 // in English, except words that are the same in both languages, texts without letters (numbers,
 // units) and file names.
+// The motion check's refusals (drivers, English in the CLI) are shown in the user's language in
+// the studio, numbers with the decimal comma, the CLI's advice in the studio's words.
+TEST(Translations, MotionCheckRefusalIsShownInGerman) {
+  QTranslator translator;
+  ASSERT_TRUE(translator.load(QStringLiteral(":/i18n/fivebar_de.qm")));
+  ASSERT_TRUE(QCoreApplication::installTranslator(&translator));
+  const QLocale before;
+  QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+  fivebar::motion::BoardPose pose;
+  pose.workDeg = {10.0, 10.0, 0.0};
+  pose.wco = {-50.0, -30.0, 0.0};
+  pose.softTravelDeg = std::array<double, 2>{100.0, 80.0};
+  const fivebar::motion::LinesCheck board = fivebar::motion::checkBoardLines({"G0X50.5Y10"}, pose);
+  const fivebar::motion::LineCheck g92 = fivebar::motion::interpretLine("G92X0Y0", pose);
+  const QString soft = fivebar::session::MachineSession::studioText(board.reason);
+  const QString coords = fivebar::session::MachineSession::studioText(g92.reason);
+  QLocale::setDefault(before);
+  QCoreApplication::removeTranslator(&translator);
+  EXPECT_TRUE(soft.contains(QStringLiteral("Maschinenkoordinaten"))) << soft.toStdString();
+  EXPECT_TRUE(soft.contains(QStringLiteral("0,500"))) << soft.toStdString();
+  EXPECT_TRUE(soft.contains(QStringLiteral("ALARM:2"))) << soft.toStdString();
+  EXPECT_FALSE(coords.contains(QStringLiteral("fivebar reference"))) << coords.toStdString();
+  EXPECT_TRUE(coords.contains(QStringLiteral("G10/G92"))) << coords.toStdString();
+  EXPECT_NE(coords.toStdString(), g92.reason.text());
+}
+
 TEST(Translations, MainWindowShowsNoEnglish) {
   const auto profile = fivebar::preset("maker-plotter");
   ASSERT_TRUE(profile.has_value());

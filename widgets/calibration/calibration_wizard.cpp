@@ -75,12 +75,12 @@ CalibrationWizard::CalibrationWizard(StudioDocument& doc, session::MachineSessio
 CalibrationWizard::~CalibrationWizard() = default;
 
 QAction* CalibrationWizard::createAction(StudioDocument& doc, session::MachineSession* session,
-                                         CanvasView* canvas, QWidget* parent) {
+                                         CanvasView* canvas, QWidget* parent,
+                                         QPointer<CalibrationWizard>& wizard) {
   auto* action = new QAction(tr("&Calibrate..."), parent);
   action->setObjectName(QStringLiteral("calibrateAction"));
   action->setStatusTip(tr("Measure a drawn pattern and correct the profile's link lengths and motor zeros"));
-  QObject::connect(action, &QAction::triggered, parent, [&doc, session, canvas, parent] {
-    auto* wizard = parent->findChild<CalibrationWizard*>();
+  QObject::connect(action, &QAction::triggered, parent, [&doc, session, canvas, parent, &wizard] {
     if (!wizard) {
       wizard = new CalibrationWizard(doc, session, parent);
       wizard->attachCanvas(canvas);

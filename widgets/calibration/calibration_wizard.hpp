@@ -6,6 +6,7 @@
 // The fit is core's (core/calibration/fit.hpp); this only shows it and carries the data.
 #pragma once
 
+#include <QPointer>
 #include <QWizard>
 #include <memory>
 #include <optional>
@@ -51,8 +52,10 @@ class CalibrationWizard : public QWizard {
   CalibrationWizard(StudioDocument& doc, session::MachineSession* session, QWidget* parent = nullptr);
   ~CalibrationWizard() override;
   // Machine > Calibrate...; the sheet is shown on `canvas` (may be null) while the wizard is open.
+  // The wizard is created on first use as the parent's child and kept in `wizard` (owned by the
+  // composition root, which must outlive the action's use).
   static QAction* createAction(StudioDocument& doc, session::MachineSession* session, CanvasView* canvas,
-                               QWidget* parent);
+                               QWidget* parent, QPointer<CalibrationWizard>& wizard);
   // Shows the sheet (plan and the simulated machine's true trace) on the studio's canvas.
   void attachCanvas(CanvasView* canvas);
   void showOnCanvas(std::vector<std::vector<Vec2>> plan, std::vector<std::vector<Vec2>> trace);

@@ -13,6 +13,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLocale>
+#include <QPointer>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QTableWidget>
@@ -69,11 +70,12 @@ QAction* DesignDialog::createAction(StudioDocument& doc, CanvasView& canvas, QWi
   auto* action = new QAction(tr("&Design..."), parent);
   action->setObjectName(QStringLiteral("designAction"));
   action->setStatusTip(tr("Choose link lengths for a paper size"));
-  QObject::connect(action, &QAction::triggered, parent, [&doc, &canvas, parent] {
-    auto* dialog = parent->findChild<DesignDialog*>();
-    if (!dialog) dialog = new DesignDialog(doc, canvas, parent);
-    dialog->show();
-    dialog->raise();
+  // The dialog, once created, is the parent's child; the action's holder keeps track of it.
+  auto dialog = std::make_shared<QPointer<DesignDialog>>();
+  QObject::connect(action, &QAction::triggered, parent, [&doc, &canvas, parent, dialog] {
+    if (!*dialog) *dialog = new DesignDialog(doc, canvas, parent);
+    (*dialog)->show();
+    (*dialog)->raise();
   });
   return action;
 }

@@ -1,22 +1,11 @@
-// The core's messages (core/support/message.hpp) in the user's language: the template
-// translated with QCoreApplication::translate(context, template) from translations/*.ts, real
-// numbers written by QLocale (1,5 in German, French and Spanish), nested messages translated
-// on their own; verbatim messages are shown as they are. The markers are substituted as
-// QString::arg(a1, a2, ...) does (core substituteArgs), so the CLI's English and the studio's
-// text differ only by the translation and the number format. A message with a studio wording
-// (Message::inStudio: the CLI's names command-line options) is shown in that wording.
+// The core's messages in the user's language: session/core_message.hpp (Qt Core, so the session
+// layer translates the motion check's refusals with the same function).
 #pragma once
 
-#include <QLocale>
-#include <QString>
-#include <QStringList>
-#include <vector>
-
-#include "core/support/message.hpp"
+#include "session/core_message.hpp"
 
 namespace fivebar::widgets {
 
-QString translated(const Message& message, const QLocale& locale = QLocale());
-QStringList translated(const std::vector<Message>& messages, const QLocale& locale = QLocale());
+using session::translated;
 
 }  // namespace fivebar::widgets

@@ -7,36 +7,37 @@
 
 namespace fivebar::widgets {
 
-GoToTool::GoToTool(session::MachineSession& session, QObject* parent) : QObject(parent), session_(session) {
-  connect(&session_, &session::MachineSession::connectionChanged, this, [this] { cancel(); });
+GoToTool::GoToTool(session::MachineView& view, session::JogPort& jog, QObject* parent)
+    : QObject(parent), view_(view), jog_(jog) {
+  connect(&view_, &session::MachineView::connectionChanged, this, [this] { cancel(); });
 }
 
 void GoToTool::pick(QPointF machineMm) {
   target_ = machineMm;
-  const auto start = session_.jogStart();
-  if (!start || !session_.isConnected()) {
+  const auto start = jog_.jogStart();
+  if (!start || !view_.isConnected()) {
     pending_.reset();
     pendingPathMm_.clear();
     emit picked(false, tr("Connect the machine first: its position is not known."));
     emit repaintNeeded();
     return;
   }
-  pending_ = jog::planGoTo(session_.profile(), *start, Vec2(machineMm.x(), machineMm.y()));
-  pendingPathMm_ = jog::penPathMm(session_.profile(), *start, *pending_);
+  pending_ = jog_.boardChecked(jog::planGoTo(view_.profile(), *start, Vec2(machineMm.x(), machineMm.y())), false);
+  pendingPathMm_ = jog::penPathMm(view_.profile(), *start, *pending_);
   if (pending_->ok()) {
     emit picked(true, tr("Go to %1, %2 mm? The dashed path is the pen's travel (%3 checked moves).")
                           .arg(QLocale().toString(machineMm.x(), 'f', 1))
                           .arg(QLocale().toString(machineMm.y(), 'f', 1))
                           .arg(pending_->targets.size()));
   } else {
-    emit picked(false, tr("Cannot go there: %1").arg(QString::fromStdString(pending_->reason)));
+    emit picked(false, tr("Cannot go there: %1").arg(session::MachineSession::studioText(pending_->reason)));
   }
   emit repaintNeeded();
 }
 
 bool GoToTool::confirm() {
   if (!pending_ || !pending_->ok()) return false;
-  const bool sent = session_.sendJog(*pending_);
+  const bool sent = jog_.sendJog(*pending_);
   if (sent) cancel();
   return sent;
 }
@@ -67,7 +68,7 @@ bool GoToTool::mouseRelease(QMouseEvent*, const ViewTransform&) { return false; 
 void GoToTool::paintOverlay(QPainter& painter, const ViewTransform& view) {
   painter.save();
   painter.setRenderHint(QPainter::Antialiasing);
-  const auto pen = session_.penMm();
+  const auto pen = view_.penMm();
   if (!target_ && hoverMm_ && pen) {  // a light hint line from the pen to the cursor
     painter.setPen(QPen(palette::travel(), 1.0, Qt::DotLine));
     painter.drawLine(view.widgetFromMachine(QPointF(pen->x(), pen->y())),

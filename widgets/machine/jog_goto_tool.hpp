@@ -9,14 +9,16 @@
 
 #include "widgets/canvas/canvas_layer.hpp"
 #include "drivers/jog.hpp"
-#include "session/machine_session.hpp"
+#include "session/machine_ports.hpp"
+#include "session/machine_view.hpp"
 
 namespace fivebar::widgets {
 
 class GoToTool : public QObject, public CanvasTool {
   Q_OBJECT
  public:
-  explicit GoToTool(session::MachineSession& session, QObject* parent = nullptr);
+  // Sees the session's state and may only plan and send checked moves (JogPort).
+  GoToTool(session::MachineView& view, session::JogPort& jog, QObject* parent = nullptr);
 
   // Plans a go-to to a machine-frame point (what a click does).
   void pick(QPointF machineMm);
@@ -41,7 +43,8 @@ class GoToTool : public QObject, public CanvasTool {
   void repaintNeeded();
 
  private:
-  session::MachineSession& session_;
+  session::MachineView& view_;
+  session::JogPort& jog_;
   std::optional<QPointF> target_;
   std::optional<jog::JogPlan> pending_;
   std::vector<Vec2> pendingPathMm_;  // the pen's path of pending_ (machine frame)

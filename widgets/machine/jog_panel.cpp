@@ -40,8 +40,9 @@ std::optional<session::JogDirection> directionOfKey(int key) {
 
 }  // namespace
 
-JogPanel::JogPanel(session::MachineSession& session, session::JogController& controller, QWidget* parent)
-    : QWidget(parent), session_(session), controller_(controller), goTo_(session) {
+JogPanel::JogPanel(session::MachineView& view, session::JogPort& jog, session::RecoveryPort& recovery,
+                   session::JogController& controller, QWidget* parent)
+    : QWidget(parent), view_(view), jog_(jog), recovery_(recovery), controller_(controller), goTo_(view, jog) {
   setObjectName(QStringLiteral("jogPanel"));
   // XY arrows: row 0 is +Y (the machine frame's y points toward the work area, up on screen).
   const QString arrowText[3][3] = {{QStringLiteral("↖"), QStringLiteral("↑"), QStringLiteral("↗")},
@@ -143,13 +144,13 @@ JogPanel::JogPanel(session::MachineSession& session, session::JogController& con
   controller_.setStep(kSteps[1]);
   connect(speed_, &QDoubleSpinBox::valueChanged, this, [this](double v) { controller_.setSpeedMmPerS(v); });
   controller_.setSpeedMmPerS(kDefaultSpeedMmPerS);
-  connect(home_, &QPushButton::clicked, this, [this] { requestHome(this, session_); });
+  connect(home_, &QPushButton::clicked, this, [this] { requestHome(this, view_.profile(), recovery_); });
   connect(goHome_, &QPushButton::clicked, this, [this] {
     QString why;
-    if (!session_.goToHomePose(&why)) message_->setText(why);
+    if (!jog_.goToHomePose(&why)) message_->setText(why);
   });
-  connect(penUp_, &QPushButton::clicked, &session_, &session::MachineSession::penUp);
-  connect(penDown_, &QPushButton::clicked, &session_, &session::MachineSession::penDown);
+  connect(penUp_, &QPushButton::clicked, this, [this] { jog_.penUp(); });
+  connect(penDown_, &QPushButton::clicked, this, [this] { jog_.penDown(); });
   connect(goToButton_, &QPushButton::toggled, this, &JogPanel::setGoToActive);
   connect(confirm_, &QPushButton::clicked, &goTo_, &GoToTool::confirm);
   connect(cancel_, &QPushButton::clicked, &goTo_, &GoToTool::cancel);
@@ -159,9 +160,9 @@ JogPanel::JogPanel(session::MachineSession& session, session::JogController& con
     if (canvas_) canvas_->update();
   });
   connect(&controller_, &session::JogController::message, message_, &QLabel::setText);
-  connect(&session_, &session::MachineSession::connectionChanged, this, &JogPanel::refreshEnabled);
-  connect(&session_, &session::MachineSession::statusUpdated, this, &JogPanel::refreshEnabled);
-  connect(&session_, &session::MachineSession::jobActiveChanged, this, &JogPanel::refreshEnabled);
+  connect(&view_, &session::MachineView::connectionChanged, this, &JogPanel::refreshEnabled);
+  connect(&view_, &session::MachineView::statusUpdated, this, &JogPanel::refreshEnabled);
+  connect(&view_, &session::MachineView::jobActiveChanged, this, &JogPanel::refreshEnabled);
   refreshEnabled();
 }
 
@@ -217,7 +218,7 @@ bool JogPanel::eventFilter(QObject* watched, QEvent* event) {
     if (!here || keepsItsArrows(widget)) return false;
   }
   auto* key = static_cast<QKeyEvent*>(event);
-  if (!session_.isConnected()) return false;
+  if (!view_.isConnected()) return false;
   const bool press = event->type() == QEvent::KeyPress;
   if (const auto dir = directionOfKey(key->key())) {
     if (!key->isAutoRepeat()) press ? controller_.press(*dir) : controller_.release();
@@ -226,8 +227,8 @@ bool JogPanel::eventFilter(QObject* watched, QEvent* event) {
   if (!press || key->isAutoRepeat()) return false;
   if (!onCanvas) return false;  // Page Up/Down, Return and Escape stay the canvas's
   switch (key->key()) {
-    case Qt::Key_PageUp: session_.penUp(); return true;
-    case Qt::Key_PageDown: session_.penDown(); return true;
+    case Qt::Key_PageUp: jog_.penUp(); return true;
+    case Qt::Key_PageDown: jog_.penDown(); return true;
     case Qt::Key_Return:
     case Qt::Key_Enter: return goTo_.confirm();
     case Qt::Key_Escape:
@@ -260,10 +261,10 @@ void JogPanel::onPicked(bool ok, const QString& text) {
 }
 
 void JogPanel::refreshEnabled() {
-  const bool usable = session_.isConnected() && !session_.jobActive() &&
-                      session_.state() != grbl::MachineState::Alarm;
+  const bool usable = view_.isConnected() && !view_.jobActive() &&
+                      view_.state() != grbl::MachineState::Alarm;
   for (QWidget* w : moveWidgets_) w->setEnabled(usable);
-  const bool homing = session_.profile().hasHomingSwitches;
+  const bool homing = view_.profile().hasHomingSwitches;
   home_->setText(homing ? tr("Home ($H)") : tr("Set reference pose"));
   home_->setToolTip(homing ? tr("Run the homing cycle")
                            : tr("Declare that the machine now stands at the profile's home pose"));

@@ -25,7 +25,10 @@ class JogPanel : public QWidget {
   Q_OBJECT
  public:
   // The controller (session::MachineSide::jog()) plans and sends the moves; both must outlive the panel.
-  JogPanel(session::MachineSession& session, session::JogController& controller, QWidget* parent = nullptr);
+  // It sees the session's state (view), sends moves only through the JogPort and the
+  // controller, and may set the reference pose or home (recovery).
+  JogPanel(session::MachineView& view, session::JogPort& jog, session::RecoveryPort& recovery,
+           session::JogController& controller, QWidget* parent = nullptr);
   ~JogPanel() override;
 
   // The go-to tool on the canvas, and keyboard jogging: arrow keys anywhere in the panel's
@@ -53,7 +56,9 @@ class JogPanel : public QWidget {
   void refreshEnabled();
   void onPicked(bool ok, const QString& text);
 
-  session::MachineSession& session_;
+  session::MachineView& view_;
+  session::JogPort& jog_;
+  session::RecoveryPort& recovery_;
   session::JogController& controller_;
   GoToTool goTo_;
   CanvasView* canvas_ = nullptr;

@@ -9,8 +9,8 @@
 
 namespace fivebar::widgets {
 
-MachineBanner::MachineBanner(session::MachineSession& session, QWidget* parent)
-    : QFrame(parent), session_(session) {
+MachineBanner::MachineBanner(session::MachineView& view, session::RecoveryPort& recovery, QWidget* parent)
+    : QFrame(parent), view_(view), recovery_(recovery) {
   setObjectName(QStringLiteral("machineBanner"));
   setFrameShape(QFrame::StyledPanel);
   title_ = new QLabel(this);
@@ -41,17 +41,17 @@ MachineBanner::MachineBanner(session::MachineSession& session, QWidget* parent)
   layout->addWidget(message_);
   layout->addLayout(buttons);
 
-  connect(reset_, &QPushButton::clicked, &session_, &session::MachineSession::softReset);
-  connect(unlock_, &QPushButton::clicked, &session_, &session::MachineSession::unlock);
-  connect(home_, &QPushButton::clicked, this, [this] { requestHome(this, session_); });
-  connect(dismiss_, &QPushButton::clicked, &session_, &session::MachineSession::dismissProblem);
-  connect(&session_, &session::MachineSession::problemChanged, this, &MachineBanner::refresh);
-  connect(&session_, &session::MachineSession::connectionChanged, this, &MachineBanner::refresh);
+  connect(reset_, &QPushButton::clicked, this, [this] { recovery_.softReset(); });
+  connect(unlock_, &QPushButton::clicked, this, [this] { recovery_.unlock(); });
+  connect(home_, &QPushButton::clicked, this, [this] { requestHome(this, view_.profile(), recovery_); });
+  connect(dismiss_, &QPushButton::clicked, this, [this] { recovery_.dismissProblem(); });
+  connect(&view_, &session::MachineView::problemChanged, this, &MachineBanner::refresh);
+  connect(&view_, &session::MachineView::connectionChanged, this, &MachineBanner::refresh);
   refresh();
 }
 
 void MachineBanner::refresh() {
-  const session::MachineProblem& p = session_.problem();
+  const session::MachineProblem& p = view_.problem();
   const bool alarm = p.kind == session::MachineProblem::Kind::Alarm;
   setVisible(p.kind != session::MachineProblem::Kind::None);
   setStyleSheet(alarm ? QStringLiteral("#machineBanner { background: #fee2e2; border: 1px solid #dc2626; "
@@ -67,7 +67,7 @@ void MachineBanner::refresh() {
   QString text = p.text;
   if (alarm && p.needsReset) text += QLatin1Char('\n') + tr("The board waits for a reset first: press Reset, then Unlock.");
   message_->setText(text);
-  const bool homing = session_.profile().hasHomingSwitches;
+  const bool homing = view_.profile().hasHomingSwitches;
   home_->setText(homing ? tr("Home ($H)") : tr("Set reference pose"));
   home_->setToolTip(homing ? tr("Run the homing cycle; the machine moves to its switches.")
                            : tr("Declare that the machine now stands at the profile's home pose "

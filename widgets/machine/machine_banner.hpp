@@ -1,11 +1,12 @@
-// The alarm / error banner: shown while MachineSession reports a problem, it says what happened
+// The alarm / error banner: shown while the session (MachineView) reports a problem, it says what happened
 // and what to do (the drivers' code tables) and offers the way out: Reset (when the board
 // demands one), Unlock ($X), Home ($H) or Set reference pose, and Dismiss for an error answer.
 #pragma once
 
 #include <QFrame>
 
-#include "session/machine_session.hpp"
+#include "session/machine_ports.hpp"
+#include "session/machine_view.hpp"
 
 class QLabel;
 class QPushButton;
@@ -15,7 +16,8 @@ namespace fivebar::widgets {
 class MachineBanner : public QFrame {
   Q_OBJECT
  public:
-  explicit MachineBanner(session::MachineSession& session, QWidget* parent = nullptr);
+  // Sees the session's state and may only recover (unlock, reset, home, reference, dismiss).
+  MachineBanner(session::MachineView& view, session::RecoveryPort& recovery, QWidget* parent = nullptr);
 
   QLabel* message() const { return message_; }
   QPushButton* unlockButton() const { return unlock_; }
@@ -27,7 +29,8 @@ class MachineBanner : public QFrame {
   void refresh();
 
  private:
-  session::MachineSession& session_;
+  session::MachineView& view_;
+  session::RecoveryPort& recovery_;
   QLabel* title_ = nullptr;
   QLabel* message_ = nullptr;
   QPushButton* unlock_ = nullptr;

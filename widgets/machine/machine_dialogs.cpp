@@ -5,7 +5,8 @@
 #include <QPushButton>
 
 #include "core/kinematics/units.hpp"
-#include "session/machine_session.hpp"
+#include "core/machine/profile.hpp"
+#include "session/machine_ports.hpp"
 
 namespace fivebar::widgets {
 namespace {
@@ -38,16 +39,16 @@ bool confirmReferencePose(QWidget* parent, const MachineProfile& profile) {
   return box.clickedButton() == yes;
 }
 
-void requestReferencePose(QWidget* parent, session::MachineSession& session) {
-  if (confirmReferencePose(parent, session.profile())) session.setReferencePose();
+void requestReferencePose(QWidget* parent, const MachineProfile& profile, session::RecoveryPort& recovery) {
+  if (confirmReferencePose(parent, profile)) recovery.setReferencePose();
 }
 
-void requestHome(QWidget* parent, session::MachineSession& session) {
-  if (session.profile().hasHomingSwitches) {
-    session.home();
+void requestHome(QWidget* parent, const MachineProfile& profile, session::RecoveryPort& recovery) {
+  if (profile.hasHomingSwitches) {
+    recovery.home();
     return;
   }
-  if (confirmReferencePose(parent, session.profile())) session.home();
+  if (confirmReferencePose(parent, profile)) recovery.home();
 }
 
 }  // namespace fivebar::widgets

@@ -13,7 +13,7 @@ struct MachineProfile;
 }
 
 namespace fivebar::session {
-class MachineSession;
+class RecoveryPort;
 }
 
 namespace fivebar::widgets {
@@ -24,8 +24,8 @@ QString referencePoseQuestion(const MachineProfile& profile);
 // Asks; true when the user confirmed. Object name of the box: "referencePoseQuestion".
 bool confirmReferencePose(QWidget* parent, const MachineProfile& profile);
 // The home button: $H with homing switches; otherwise the reference pose after confirmation.
-void requestHome(QWidget* parent, session::MachineSession& session);
+void requestHome(QWidget* parent, const MachineProfile& profile, session::RecoveryPort& recovery);
 // "Set reference pose" after confirmation.
-void requestReferencePose(QWidget* parent, session::MachineSession& session);
+void requestReferencePose(QWidget* parent, const MachineProfile& profile, session::RecoveryPort& recovery);
 
 }  // namespace fivebar::widgets

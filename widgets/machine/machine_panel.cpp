@@ -55,8 +55,9 @@ QString stateName(grbl::MachineState state) {
   return QCoreApplication::translate("fivebar::widgets::MachinePanel", "Unknown");
 }
 
-MachinePanel::MachinePanel(session::MachineSession& session, QWidget* parent)
-    : QWidget(parent), session_(session) {
+MachinePanel::MachinePanel(session::MachineView& view, session::ConnectionPort& link,
+                           session::RecoveryPort& recovery, QWidget* parent)
+    : QWidget(parent), view_(view), connection_(link) {
   setObjectName(QStringLiteral("machinePanel"));
   ports_ = new QComboBox(this);
   ports_->setObjectName(QStringLiteral("machinePorts"));
@@ -64,7 +65,7 @@ MachinePanel::MachinePanel(session::MachineSession& session, QWidget* parent)
   refresh_->setToolTip(tr("List the serial ports again"));
   baud_ = new QComboBox(this);
   for (int rate : kBaudRates) baud_->addItem(QString::number(rate), rate);
-  baud_->setCurrentIndex(baud_->findData(session_.profile().baudRate));
+  baud_->setCurrentIndex(baud_->findData(view_.profile().baudRate));
   connect_ = new QPushButton(tr("Connect"), this);
   disconnect_ = new QPushButton(tr("Disconnect"), this);
   link_ = new QLabel(this);
@@ -88,7 +89,7 @@ MachinePanel::MachinePanel(session::MachineSession& session, QWidget* parent)
   connectionLayout->addLayout(buttonRow);
   connectionLayout->addWidget(link_);
 
-  banner_ = new MachineBanner(session_, this);
+  banner_ = new MachineBanner(view_, recovery, this);
 
   state_ = new QLabel(this);
   state_->setObjectName(QStringLiteral("machineState"));
@@ -139,14 +140,14 @@ MachinePanel::MachinePanel(session::MachineSession& session, QWidget* parent)
 
   connect(refresh_, &QPushButton::clicked, this, &MachinePanel::refreshPorts);
   connect(connect_, &QPushButton::clicked, this, &MachinePanel::connectSelected);
-  connect(disconnect_, &QPushButton::clicked, &session_, &session::MachineSession::disconnectMachine);
+  connect(disconnect_, &QPushButton::clicked, this, [this] { connection_.disconnectMachine(); });
   connect(ports_, &QComboBox::currentIndexChanged, this, &MachinePanel::refreshConnection);
-  connect(&session_, &session::MachineSession::connectionChanged, this, &MachinePanel::refreshConnection);
-  connect(&session_, &session::MachineSession::connectionChanged, this, &MachinePanel::refreshStatus);
-  connect(&session_, &session::MachineSession::statusUpdated, this, &MachinePanel::refreshStatus);
-  connect(&session_, &session::MachineSession::penStateChanged, this, &MachinePanel::refreshStatus);
-  connect(&session_, &session::MachineSession::boardSettingsChanged, this, &MachinePanel::refreshSettings);
-  connect(&session_, &session::MachineSession::connectFailed, this, &MachinePanel::onConnectFailed);
+  connect(&view_, &session::MachineView::connectionChanged, this, &MachinePanel::refreshConnection);
+  connect(&view_, &session::MachineView::connectionChanged, this, &MachinePanel::refreshStatus);
+  connect(&view_, &session::MachineView::statusUpdated, this, &MachinePanel::refreshStatus);
+  connect(&view_, &session::MachineView::penStateChanged, this, &MachinePanel::refreshStatus);
+  connect(&view_, &session::MachineView::boardSettingsChanged, this, &MachinePanel::refreshSettings);
+  connect(&view_, &session::MachineView::connectFailed, this, &MachinePanel::onConnectFailed);
   refreshPorts();
   refreshStatus();
   refreshSettings();
@@ -163,8 +164,8 @@ void MachinePanel::onConnectFailed(const QString& message) {
 }
 
 void MachinePanel::refreshSettings() {
-  const auto diffs = session_.settingDifferences();
-  settingsWarning_->setVisible(session_.isConnected() && !diffs.empty());
+  const auto diffs = view_.settingDifferences();
+  settingsWarning_->setVisible(view_.isConnected() && !diffs.empty());
   if (diffs.empty()) return;
   settingsText_->setText(session::settingsWarningText(diffs));
 }
@@ -189,41 +190,41 @@ void MachinePanel::connectSelected() {
   QString error;
   failure_.clear();
   const bool ok = id == kSimulatedId
-                      ? session_.connectSimulated(simSpeedup_, sim::Fault{}, &error)
-                      : session_.connectSerial(id, baud_->currentData().toInt(), &error);
+                      ? connection_.connectSimulated(simSpeedup_, sim::Fault{}, &error)
+                      : connection_.connectSerial(id, baud_->currentData().toInt(), &error);
   if (!ok) QMessageBox::warning(this, tr("Cannot connect"), error);
 }
 
 void MachinePanel::refreshConnection() {
-  const bool connected = session_.isConnected();
+  const bool connected = view_.isConnected();
   const bool simulated = ports_->currentData().toString() == kSimulatedId;
   refresh_->setEnabled(!connected);
   baud_->setEnabled(!connected && !simulated);
-  const bool connecting = session_.isConnecting();
+  const bool connecting = view_.isConnecting();
   connect_->setEnabled(!connected && !connecting);
   disconnect_->setEnabled(connected || connecting);
   ports_->setEnabled(!connected && !connecting);
   link_->setStyleSheet(!connected && !connecting && !failure_.isEmpty() ? QStringLiteral("color: #b91c1c")
                                                                         : QString());
-  if (connected) link_->setText(tr("Connected to %1").arg(session_.linkName()));
-  else if (connecting) link_->setText(tr("Connecting to %1: waiting for the board to answer...").arg(session_.linkName()));
+  if (connected) link_->setText(tr("Connected to %1").arg(view_.linkName()));
+  else if (connecting) link_->setText(tr("Connecting to %1: waiting for the board to answer...").arg(view_.linkName()));
   else link_->setText(failure_.isEmpty() ? tr("Not connected") : failure_);
 }
 
 void MachinePanel::refreshStatus() {
-  const grbl::StatusReport* report = session_.lastStatus();
-  const grbl::MachineState s = session_.isConnected() ? session_.state() : grbl::MachineState::Unknown;
-  state_->setText(session_.isConnected() ? stateName(s) : tr("Offline"));
+  const grbl::StatusReport* report = view_.lastStatus();
+  const grbl::MachineState s = view_.isConnected() ? view_.state() : grbl::MachineState::Unknown;
+  state_->setText(view_.isConnected() ? stateName(s) : tr("Offline"));
   state_->setStyleSheet(QStringLiteral("color: %1").arg(colourOfState(s)));
-  switch (session_.isConnected() ? session_.penState() : session::PenState::Unknown) {
+  switch (view_.isConnected() ? view_.penState() : session::PenState::Unknown) {
     case session::PenState::Up: pen_->setText(tr("up")); break;
     case session::PenState::Down: pen_->setText(tr("down (drawing)")); break;
-    case session::PenState::Unknown: pen_->setText(session_.isConnected() ? tr("not known yet") : QStringLiteral("–")); break;
+    case session::PenState::Unknown: pen_->setText(view_.isConnected() ? tr("not known yet") : QStringLiteral("–")); break;
   }
-  const auto pen = session_.penMm();
+  const auto pen = view_.penMm();
   xy_->setText(pen ? tr("%1, %2 mm").arg(QLocale().toString(pen->x(), 'f', 2)).arg(QLocale().toString(pen->y(), 'f', 2))
                    : QStringLiteral("–"));
-  const auto q = session_.motorAngles();
+  const auto q = view_.motorAngles();
   // Single poses are shown normalised to (-180, 180] (conventions.md).
   angles_->setText(q ? tr("%1°, %2°")
                            .arg(QLocale().toString(normalizeDeg(degFromRad(q->theta1)), 'f', 2))

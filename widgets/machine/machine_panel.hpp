@@ -1,12 +1,14 @@
 // The machine panel: connection (the built-in simulated machine, or a serial port listed with
 // QSerialPortInfo, and its baud rate), the alarm / error banner, and the status the board
 // reports: state, pen XY (mm), motor angles (deg), planner blocks and RX buffer bytes free.
-// It shows MachineSession's state and never stores it.
+// It shows the session's state (MachineView) and never stores it; it may only connect and
+// disconnect (ConnectionPort) and, in the banner, recover (RecoveryPort).
 #pragma once
 
 #include <QWidget>
 
-#include "session/machine_session.hpp"
+#include "session/machine_ports.hpp"
+#include "session/machine_view.hpp"
 
 #include <functional>
 
@@ -22,7 +24,8 @@ class MachineBanner;
 class MachinePanel : public QWidget {
   Q_OBJECT
  public:
-  explicit MachinePanel(session::MachineSession& session, QWidget* parent = nullptr);
+  MachinePanel(session::MachineView& view, session::ConnectionPort& connection,
+               session::RecoveryPort& recovery, QWidget* parent = nullptr);
 
   // Speed-up of the simulated machine connected from this panel (1 = real time).
   void setSimulationSpeedup(double speedup) { simSpeedup_ = speedup; }
@@ -50,7 +53,8 @@ class MachinePanel : public QWidget {
   void refreshSettings();
   void onConnectFailed(const QString& message);
 
-  session::MachineSession& session_;
+  session::MachineView& view_;
+  session::ConnectionPort& connection_;
   double simSpeedup_ = 1.0;
   QComboBox* ports_ = nullptr;
   QComboBox* baud_ = nullptr;

@@ -23,24 +23,25 @@ namespace fivebar::widgets {
 MachinePanels::MachinePanels(session::MachineSide& machine, StudioDocument& doc, CanvasView& canvas,
                              MachineLayer& machineLayer, QWidget* window)
     : QObject(window), machine_(machine), doc_(doc), canvas_(canvas), machineLayer_(machineLayer), window_(window) {
-  session::MachineSession& session = machine_.session();
-  runLayer_ = new RunLayer(machine_.run(), session, this);
+  session::MachineView& view = machine_.view();
+  runLayer_ = new RunLayer(machine_.run(), view, this);
   canvas_.addLayer(runLayer_);
   connect(runLayer_, &RunLayer::changed, &canvas_, qOverload<>(&QWidget::update));
   // The machine drawn on the canvas follows the connected machine's reported pose.
-  connect(&session, &session::MachineSession::statusUpdated, this,
-          [this] { machineLayer_.setExternalAngles(machine_.session().motorAngles()); });
-  connect(&session, &session::MachineSession::connectionChanged, this, [this](bool connected) {
+  connect(&view, &session::MachineView::statusUpdated, this,
+          [this] { machineLayer_.setExternalAngles(machine_.view().motorAngles()); });
+  connect(&view, &session::MachineView::connectionChanged, this, [this](bool connected) {
     if (!connected) machineLayer_.setExternalAngles(std::nullopt);
   });
 }
 
 void MachinePanels::addPanels(const AddDock& addDock) {
-  session::MachineSession& session = machine_.session();
-  machinePanel_ = new MachinePanel(session, window_);
-  jog_ = new JogPanel(session, machine_.jog(), window_);
+  // Each panel gets the session's read-only view and only the ports it needs.
+  session::MachineView& view = machine_.view();
+  machinePanel_ = new MachinePanel(view, machine_.connection(), machine_.recovery(), window_);
+  jog_ = new JogPanel(view, machine_.jogPort(), machine_.recovery(), machine_.jog(), window_);
   jog_->attachCanvas(&canvas_);
-  runPanel_ = new RunPanel(machine_.run(), session, window_);
+  runPanel_ = new RunPanel(machine_.run(), view, machine_.boardSettings(), window_);
   console_ = new ConsolePanel(machine_.console(), window_);
   profile_ = new ProfileEditor(doc_, window_);
   addDock(machinePanel_, tr("Machine"), QStringLiteral("dockMachine"), Qt::RightDockWidgetArea);
@@ -61,11 +62,11 @@ MachineSettingsDialog* MachinePanels::openSettingsDialog() {
   if (settingsDialog_ == nullptr) {
     const QString dir = QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
                             .filePath(QStringLiteral("settings-backups"));
-    settingsDialog_ = new MachineSettingsDialog(machine_.session(), dir, window_);
+    settingsDialog_ = new MachineSettingsDialog(machine_.view(), machine_.boardSettings(), dir, window_);
   }
   settingsDialog_->show();
   settingsDialog_->raise();
-  if (machine_.session().isConnected()) settingsDialog_->readBoard();
+  if (machine_.view().isConnected()) settingsDialog_->readBoard();
   return settingsDialog_;
 }
 

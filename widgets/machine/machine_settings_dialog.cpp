@@ -15,7 +15,8 @@
 #include <cstdio>
 #include <set>
 
-#include "session/machine_session.hpp"
+#include "session/machine_ports.hpp"
+#include "session/machine_view.hpp"
 
 namespace fivebar::widgets {
 namespace {
@@ -28,9 +29,9 @@ QString valueText(double v) {
 
 }  // namespace
 
-MachineSettingsDialog::MachineSettingsDialog(session::MachineSession& session, QString backupDir,
-                                             QWidget* parent)
-    : QDialog(parent), session_(session), backupDir_(std::move(backupDir)) {
+MachineSettingsDialog::MachineSettingsDialog(session::MachineView& view, session::BoardSettingsPort& settings,
+                                             QString backupDir, QWidget* parent)
+    : QDialog(parent), view_(view), settings_(settings), backupDir_(std::move(backupDir)) {
   setObjectName(QStringLiteral("machineSettingsDialog"));
   setWindowTitle(tr("Machine settings"));
   auto* layout = new QVBoxLayout(this);
@@ -59,13 +60,13 @@ MachineSettingsDialog::MachineSettingsDialog(session::MachineSession& session, Q
   connect(writeButton_, &QPushButton::clicked, this, &MachineSettingsDialog::confirmAndWrite);
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
   // The sync listens on the link's protocol: drop it before the link goes away.
-  connect(&session_, &session::MachineSession::aboutToDisconnect, this, [this] {
+  connect(&view_, &session::MachineView::aboutToDisconnect, this, [this] {
     sync_.reset();
     writing_ = false;
     status_->setText(tr("The machine was disconnected."));
     onSyncChanged();
   });
-  wanted_ = setup::expectedSettings(session_.profile());
+  wanted_ = setup::expectedSettings(view_.profile());
   fillTable();
   onSyncChanged();
   resize(560, 520);
@@ -78,14 +79,14 @@ setup::SetupState MachineSettingsDialog::state() const {
 }
 
 bool MachineSettingsDialog::boardBusy(QString* why) const {
-  if (!session_.isConnected() || session_.link() == nullptr) {
+  if (!view_.isConnected()) {
     *why = tr("Connect the machine first.");
-  } else if (session_.jobActive()) {
+  } else if (view_.jobActive()) {
     *why = tr("A job is running.");
   } else if (state() == setup::SetupState::Reading || state() == setup::SetupState::Writing) {
     *why = tr("Still talking to the board.");
   } else {
-    const grbl::MachineState s = session_.state();
+    const grbl::MachineState s = view_.state();
     if (s == grbl::MachineState::Idle || s == grbl::MachineState::Alarm) return false;
     *why = tr("The machine must be idle (or in alarm) to change settings.");
   }
@@ -99,10 +100,14 @@ bool MachineSettingsDialog::readBoard() {
     return false;
   }
   if (!sync_) {
-    sync_ = std::make_unique<setup::SettingsSync>(session_.link()->protocol());
+    sync_ = settings_.makeSettingsSync();
+    if (!sync_) {
+      status_->setText(tr("Connect the machine first."));
+      return false;
+    }
     sync_->changed = [this] { onSyncChanged(); };
   }
-  wanted_ = setup::expectedSettings(session_.profile());
+  wanted_ = setup::expectedSettings(view_.profile());
   writing_ = false;
   diffs_.clear();
   sync_->read();
@@ -170,7 +175,7 @@ void MachineSettingsDialog::onSyncChanged() {
   }
   fillTable();
   const bool idle = s != setup::SetupState::Reading && s != setup::SetupState::Writing;
-  readButton_->setEnabled(idle && session_.isConnected());
+  readButton_->setEnabled(idle && view_.isConnected());
   writeButton_->setEnabled(idle && s == setup::SetupState::Done && !writing_ && !diffs_.empty());
   emit stateChanged();
 }

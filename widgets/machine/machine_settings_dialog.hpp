@@ -1,7 +1,8 @@
 // Machine settings dialog: reads the board's GRBL settings ($$), shows them next to what the
 // machine profile expects (drivers/machine_setup.hpp: steps/deg, rates, accelerations, soft
 // limits...), and on confirmation saves a backup of the board's values to a file and writes the
-// differences one at a time. All machine traffic goes through the MachineSession's link.
+// differences one at a time. All machine traffic goes through a SettingsSync the session hands
+// out (BoardSettingsPort); the dialog sees the rest of the session only through MachineView.
 #pragma once
 
 #include <QDialog>
@@ -16,7 +17,8 @@ class QPushButton;
 class QTableWidget;
 
 namespace fivebar::session {
-class MachineSession;
+class BoardSettingsPort;
+class MachineView;
 }
 
 namespace fivebar::widgets {
@@ -26,7 +28,8 @@ class MachineSettingsDialog : public QDialog {
   Q_OBJECT
  public:
   // backupDir: folder of the backup files written before any change (created when missing).
-  MachineSettingsDialog(session::MachineSession& session, QString backupDir, QWidget* parent = nullptr);
+  MachineSettingsDialog(session::MachineView& view, session::BoardSettingsPort& settings, QString backupDir,
+                        QWidget* parent = nullptr);
   ~MachineSettingsDialog() override;
 
   // Sends $$; false (with the reason in statusLabel) when the machine is not connected, a job
@@ -54,7 +57,8 @@ class MachineSettingsDialog : public QDialog {
   void confirmAndWrite();
   std::string saveBackup(const std::string& text);
 
-  session::MachineSession& session_;
+  session::MachineView& view_;
+  session::BoardSettingsPort& settings_;
   QString backupDir_;
   std::unique_ptr<setup::SettingsSync> sync_;
   setup::Settings wanted_;

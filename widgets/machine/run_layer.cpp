@@ -8,12 +8,12 @@ namespace fivebar::widgets {
 
 QColor runDoneColour() { return QColor(0x16, 0xa3, 0x4a); }  // green: apart from the speed colours
 
-RunLayer::RunLayer(const session::RunController& run, const session::MachineSession& session, QObject* parent)
-    : QObject(parent), run_(run), session_(session) {
+RunLayer::RunLayer(const session::RunController& run, const session::MachineView& view, QObject* parent)
+    : QObject(parent), run_(run), view_(view) {
   connect(&run_, &session::RunController::runChanged, this, &RunLayer::rebuild);
   connect(&run_, &session::RunController::progressChanged, this, &RunLayer::changed);
-  connect(&session_, &session::MachineSession::statusUpdated, this, &RunLayer::changed);
-  connect(&session_, &session::MachineSession::connectionChanged, this, &RunLayer::changed);
+  connect(&view_, &session::MachineView::statusUpdated, this, &RunLayer::changed);
+  connect(&view_, &session::MachineView::connectionChanged, this, &RunLayer::changed);
 }
 
 void RunLayer::rebuild() {
@@ -22,7 +22,7 @@ void RunLayer::rebuild() {
   builtFor_ = job;
   segments_.clear();
   if (job == nullptr) return;
-  const MachineProfile& profile = session_.profile();
+  const MachineProfile& profile = view_.profile();
   std::optional<QPointF> previous;
   for (std::size_t i = 0; i < job->lines.size(); ++i) {
     const job::JobLine& line = job->lines[i];
@@ -62,7 +62,7 @@ void RunLayer::paint(QPainter& painter, const ViewTransform& view) {
     painter.drawLines(lines.data(), int(lines.size()));
     painter.resetTransform();
   }
-  if (const auto p = session_.penMm()) {
+  if (const auto p = view_.penMm()) {
     const QPointF at = view.widgetFromMachine(QPointF(p->x(), p->y()));
     painter.setRenderHint(QPainter::Antialiasing);
     painter.setPen(QPen(runDoneColour(), 2.0));

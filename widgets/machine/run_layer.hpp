@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "widgets/canvas/canvas_layer.hpp"
+#include "session/machine_view.hpp"
 #include "session/run_controller.hpp"
 
 namespace fivebar::widgets {
@@ -18,7 +19,7 @@ namespace fivebar::widgets {
 class RunLayer : public QObject, public CanvasLayer {
   Q_OBJECT
  public:
-  RunLayer(const session::RunController& run, const session::MachineSession& session, QObject* parent = nullptr);
+  RunLayer(const session::RunController& run, const session::MachineView& view, QObject* parent = nullptr);
 
   void paint(QPainter& painter, const ViewTransform& view) override;
   // Pen-down segments (machine frame, mm) executed so far.
@@ -36,7 +37,7 @@ class RunLayer : public QObject, public CanvasLayer {
     QLineF mm;
   };
   const session::RunController& run_;
-  const session::MachineSession& session_;
+  const session::MachineView& view_;
   const job::GcodeJob* builtFor_ = nullptr;
   std::vector<Segment> segments_;  // in line order
 };

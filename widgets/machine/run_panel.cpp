@@ -44,8 +44,9 @@ QString formatTimeLeft(double seconds) {
   return QCoreApplication::translate("fivebar::widgets::RunPanel", "%1 s").arg(s);
 }
 
-RunPanel::RunPanel(session::RunController& run, session::MachineSession& session, QWidget* parent)
-    : QWidget(parent), run_(run), session_(session) {
+RunPanel::RunPanel(session::RunController& run, session::MachineView& view,
+                   session::BoardSettingsPort& settings, QWidget* parent)
+    : QWidget(parent), run_(run), view_(view), settings_(settings) {
   setObjectName(QStringLiteral("runPanel"));
   start_ = new QPushButton(tr("Start"), this);
   start_->setToolTip(tr("Write the planned job as G-code and stream it to the machine"));
@@ -128,6 +129,7 @@ bool RunPanel::confirmDiscardResume() {
                   QMessageBox::NoButton, this);
   box.setObjectName(QStringLiteral("discardResumeQuestion"));
   QPushButton* start = box.addButton(tr("Discard and start over"), QMessageBox::DestructiveRole);
+  start->setObjectName(QStringLiteral("discardAndStart"));
   box.addButton(QMessageBox::Cancel)->setText(tr("Cancel"));
   box.setDefaultButton(qobject_cast<QPushButton*>(box.button(QMessageBox::Cancel)));
   box.exec();
@@ -137,13 +139,13 @@ bool RunPanel::confirmDiscardResume() {
 // The board's $ settings against the profile's: a difference is explained before the machine
 // moves (soft limits, steps/deg, rates), with the offer to write the profile's values.
 bool RunPanel::confirmSettings() {
-  if (!session_.boardSettingsKnown()) {
-    session_.readBoardSettings();
+  if (!view_.boardSettingsKnown()) {
+    settings_.readBoardSettings();
     message_->setText(tr("Reading the board's settings to compare them with the profile: press "
                          "Start again in a moment."));
     return false;
   }
-  const auto diffs = session_.settingDifferences();
+  const auto diffs = view_.settingDifferences();
   if (diffs.empty()) return true;
   QMessageBox box(QMessageBox::Warning, tr("The board's settings differ"), session::settingsMismatchText(diffs),
                   QMessageBox::NoButton, this);

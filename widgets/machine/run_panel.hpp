@@ -5,6 +5,8 @@
 
 #include <QWidget>
 
+#include "session/machine_ports.hpp"
+#include "session/machine_view.hpp"
 #include "session/run_controller.hpp"
 
 #include <functional>
@@ -18,7 +20,10 @@ namespace fivebar::widgets {
 class RunPanel : public QWidget {
   Q_OBJECT
  public:
-  RunPanel(session::RunController& run, session::MachineSession& session, QWidget* parent = nullptr);
+  // Runs through the RunController; sees the session's state (view) and may ask it to read the
+  // board's settings before Start (settings).
+  RunPanel(session::RunController& run, session::MachineView& view, session::BoardSettingsPort& settings,
+           QWidget* parent = nullptr);
 
   QPushButton* startButton() const { return start_; }
   QPushButton* holdButton() const { return hold_; }
@@ -45,7 +50,8 @@ class RunPanel : public QWidget {
   bool confirmSettings();
 
   session::RunController& run_;
-  session::MachineSession& session_;
+  session::MachineView& view_;
+  session::BoardSettingsPort& settings_;
   QPushButton* start_ = nullptr;
   QPushButton* hold_ = nullptr;
   QPushButton* continue_ = nullptr;

@@ -90,11 +90,10 @@ void FillOptionsBox::updateEnabled() {
   apply_->setEnabled(QFileInfo(doc_.fileName()).isFile() && !importer_.busy());
 }
 
-bool applyFillOption(QWidget& window, const QString& text) {
+bool applyFillOption(FillOptionsBox& box, const QString& text) {
   const QStringList parts = text.split(u':');
   const auto mode = fillModeFromString(parts.front().toStdString());
-  auto* box = window.findChild<FillOptionsBox*>();
-  if (!mode || !box || parts.size() > 3 || (parts.size() > 1 && *mode != FillMode::Hatch)) return false;
+  if (!mode || parts.size() > 3 || (parts.size() > 1 && *mode != FillMode::Hatch)) return false;
   HatchSettings hatch;
   hatch.spacingMm = 0.5;
   hatch.angleRad = std::numbers::pi / 4.0;
@@ -102,7 +101,7 @@ bool applyFillOption(QWidget& window, const QString& text) {
   if (parts.size() > 1) hatch.spacingMm = parts[1].toDouble(&ok);
   if (ok && parts.size() > 2) hatch.angleRad = radFromDeg(parts[2].toDouble(&ok));
   if (!ok || !validate(hatch).empty()) return false;
-  box->setChoice(*mode, hatch);
+  box.setChoice(*mode, hatch);
   return true;
 }
 

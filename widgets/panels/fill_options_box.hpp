@@ -39,7 +39,8 @@ class FillOptionsBox : public QGroupBox {
   QPushButton* apply_ = nullptr;
 };
 
-// "--fill MODE[:SPACING_MM[:ANGLE_DEG]]" for the window's FillOptionsBox; false when malformed.
-bool applyFillOption(QWidget& window, const QString& text);
+// "--fill MODE[:SPACING_MM[:ANGLE_DEG]]" for the window's FillOptionsBox (passed by the composition
+// root, MainWindow::fillOptions()); false when malformed.
+bool applyFillOption(FillOptionsBox& box, const QString& text);
 
 }  // namespace fivebar::widgets

@@ -112,6 +112,7 @@ PreviewPanel::PreviewPanel(PreviewController& preview, JobLayer& layer, QWidget*
   });
   connect(problems_, &QListWidget::currentRowChanged, this, [this](int row) {
     const auto& problems = preview_.result().problems;
+    if (!machineProblem_.isEmpty()) --row;  // the board's problem comes first; it has no place
     if (row < 0 || row >= static_cast<int>(problems.size())) {
       layer_.setMarker(std::nullopt);
       return;
@@ -170,6 +171,12 @@ void PreviewPanel::showResult() {
   }
   scrubLabel_->setText(tr("Moves shown: %1 of %2").arg(moves).arg(moves));
   problems_->clear();
+  if (!machineProblem_.isEmpty()) {
+    auto* item = new QListWidgetItem(machineProblem_, problems_);
+    item->setForeground(palette::problem());
+    item->setToolTip(machineProblem_);
+    item->setData(Qt::UserRole, QStringLiteral("board"));
+  }
   for (const PreviewProblem& p : r.problems) {
     QString text = p.text;
     if (!p.fixes.isEmpty()) text += QStringLiteral("\n") + tr("What to do: %1").arg(p.fixes.join(tr("; ")));
@@ -177,10 +184,16 @@ void PreviewPanel::showResult() {
     item->setForeground(palette::problem());
     item->setToolTip(text);
   }
-  if (r.problems.empty() && r.status == PreviewStatus::Planned) {
+  if (r.problems.empty() && machineProblem_.isEmpty() && r.status == PreviewStatus::Planned) {
     auto* item = new QListWidgetItem(tr("No problems: every move is reachable and safe."), problems_);
     item->setFlags(Qt::NoItemFlags);
   }
+}
+
+void PreviewPanel::setMachineProblem(const QString& problem) {
+  if (problem == machineProblem_) return;
+  machineProblem_ = problem;
+  showResult();
 }
 
 }  // namespace fivebar::widgets

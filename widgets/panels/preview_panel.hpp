@@ -39,6 +39,11 @@ class PreviewPanel : public QWidget {
   QSlider* scrubber() const { return scrubber_; }
   QLabel* statistics() const { return stats_; }
 
+ public slots:
+  // A problem found outside the plan (the connected board's soft limits, session/board_preflight):
+  // listed first among the pre-flight problems; "" removes it.
+  void setMachineProblem(const QString& problem);
+
  signals:
   // A problem was chosen: centre the canvas here (machine frame, mm).
   void showLocation(QPointF machineMm);
@@ -57,6 +62,7 @@ class PreviewPanel : public QWidget {
   QSlider* scrubber_ = nullptr;
   QLabel* scrubLabel_ = nullptr;
   QListWidget* problems_ = nullptr;
+  QString machineProblem_;
 };
 
 // "1 h 02 min", "3 min 05 s", "12.4 s".

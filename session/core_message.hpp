@@ -1,0 +1,23 @@
+// The core's messages (core/support/message.hpp) in the user's language: the template
+// translated with QCoreApplication::translate(context, template) from translations/*.ts, real
+// numbers written by QLocale (1,5 in German, French and Spanish), nested messages translated
+// on their own; verbatim messages are shown as they are. The markers are substituted as
+// QString::arg(a1, a2, ...) does (core substituteArgs), so the CLI's English and the studio's
+// text differ only by the translation and the number format. Qt Core only: the session layer
+// translates the motion check's and the jog's refusals with it, the widgets everything else
+// (widgets/document/core_message.hpp).
+#pragma once
+
+#include <QLocale>
+#include <QString>
+#include <QStringList>
+#include <vector>
+
+#include "core/support/message.hpp"
+
+namespace fivebar::session {
+
+QString translated(const Message& message, const QLocale& locale = QLocale());
+QStringList translated(const std::vector<Message>& messages, const QLocale& locale = QLocale());
+
+}  // namespace fivebar::session
