@@ -83,11 +83,13 @@ MainWindow::MainWindow(const MachineProfile& profile, QWidget* parent) : QMainWi
   machineMenu_->addSeparator();
   machineMenu_->addAction(machinePanels_->settingsAction());
   machineMenu_->addAction(DesignDialog::createAction(*doc_, *canvas_, this));
-  calibrateAction_ = widgets::calibration::CalibrationWizard::createAction(*doc_, &machine_->session(), canvas_, this,
-                                                                          calibrationWizard_);
+  // The simulated machine's true (imperfect) build, shared by the wizard and its own menu entry,
+  // status badge and canvas trace.
+  simulatedTruth_ = new widgets::calibration::SimulatedTruth(*doc_, machine_->session());
+  calibrateAction_ = widgets::calibration::CalibrationWizard::createAction(
+      *doc_, &machine_->session(), simulatedTruth_, canvas_, this, calibrationWizard_);
   machineMenu_->addAction(calibrateAction_);
-  // The simulated machine's true (imperfect) build: its menu entry, status badge and canvas trace.
-  widgets::calibration::installSimulatedMachine(*doc_, machine_->session(), *canvas_, *machineMenu_,
+  widgets::calibration::installSimulatedMachine(*simulatedTruth_, machine_->session(), *canvas_, *machineMenu_,
                                                 *statusBar(), this);
   cursorLabel_ = new QLabel(this);
   statusBar()->addPermanentWidget(cursorLabel_);

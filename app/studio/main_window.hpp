@@ -42,6 +42,7 @@ class WorkspaceLayer;
 class WorkspaceLegendLayer;
 namespace calibration {
 class CalibrationWizard;
+class SimulatedTruth;
 }
 }  // namespace fivebar::widgets
 
@@ -75,6 +76,8 @@ class MainWindow : public QMainWindow {
   // Machine > Calibrate..., and the wizard it opened (nullptr before the first use).
   QAction* calibrateAction() const { return calibrateAction_; }
   widgets::calibration::CalibrationWizard* calibrationWizard() const;
+  // The simulated machine's true (imperfect) build, Machine > Simulated machine...
+  widgets::calibration::SimulatedTruth& simulatedTruth() { return *simulatedTruth_; }
 
   // The machine side's place in the window: the panel goes into a dock (restored with the
   // others), its toggle into the Machine menu.
@@ -119,6 +122,7 @@ class MainWindow : public QMainWindow {
   session::MachineSide* machine_ = nullptr;
   widgets::MachinePanels* machinePanels_ = nullptr;
   QAction* calibrateAction_ = nullptr;
+  widgets::calibration::SimulatedTruth* simulatedTruth_ = nullptr;  // the machine session's child
   std::vector<QDockWidget*> docks_;  // in the order they were created
   std::unique_ptr<widgets::WorkspaceLegendLayer> legendLayer_;
   QDockWidget* leftTabs_ = nullptr;   // tab group machine panels join on each side

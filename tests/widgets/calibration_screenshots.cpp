@@ -114,6 +114,6 @@ int main(int argc, char** argv) {
   waitUntil([&] { return !machine->run().running(); }, 240000);
   ok = grab(window, out + QStringLiteral("/simulated-machine-canvas") + suffix) && ok;
   // Leave the saved setting as it was before (the screenshots' own settings folder).
-  fivebar::widgets::calibration::SimulatedTruth::of(window.document(), session).makePerfect(true);
+  window.simulatedTruth().makePerfect(true);
   return ok ? 0 : 1;
 }

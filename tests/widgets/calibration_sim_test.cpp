@@ -41,7 +41,8 @@ struct Rig : test::MachineRig {
   Rig() {
     truth().setSettingsFile(dir.filePath(QStringLiteral("settings.ini")));
   }
-  SimulatedTruth& truth() { return SimulatedTruth::of(doc, session); }
+  SimulatedTruth& truth() { return simulated; }
+  SimulatedTruth simulated{doc, session};  // the studio's one setting, as MainWindow makes it
   QTemporaryDir dir;
 };
 
@@ -104,7 +105,7 @@ TEST(SimulatedMachine, IsSavedWhereItIsSetAndKeptAcrossACalibration) {
   rig.truth().setTruth(t, true);
   {
     test::MachineRig other;  // the next start of the studio
-    SimulatedTruth& again = SimulatedTruth::of(other.doc, other.session);
+    SimulatedTruth again(other.doc, other.session);
     again.setSettingsFile(rig.dir.filePath(QStringLiteral("settings.ini")));
     EXPECT_FALSE(again.active());
     again.load();
@@ -132,7 +133,7 @@ TEST(SimulatedMachine, IsSavedWhereItIsSetAndKeptAcrossACalibration) {
 
 TEST(SimulatedMachine, TheWizardLeavesNoHiddenImperfectMachineBehind) {
   Rig rig;
-  CalibrationWizard w(rig.doc, &rig.session);
+  CalibrationWizard w(rig.doc, &rig.session, &rig.truth());
   w.show();
   w.next();
   ASSERT_EQ(w.currentId(), CalibrationWizard::kDrawPage);
@@ -159,7 +160,7 @@ TEST(SimulatedMachine, TheWizardLeavesNoHiddenImperfectMachineBehind) {
 // The wizard's preview of the simulated sheet is what the simulated machine then really draws.
 TEST(SimulatedMachine, TheWizardPreviewIsWhatTheSimulatedMachineDraws) {
   Rig rig;
-  CalibrationWizard w(rig.doc, &rig.session);
+  CalibrationWizard w(rig.doc, &rig.session, &rig.truth());
   w.show();
   w.patternPage()->accuracyChoice()->setChecked(true);  // a short pattern
   ASSERT_TRUE(rig.connect(400.0));
@@ -188,7 +189,7 @@ TEST(SimulatedMachine, TheWizardPreviewIsWhatTheSimulatedMachineDraws) {
 
 TEST(CalibrationDistances, TheRulerFormCalibratesTheSimulatedMachine) {
   Rig rig;
-  CalibrationWizard w(rig.doc, &rig.session);
+  CalibrationWizard w(rig.doc, &rig.session, &rig.truth());
   w.show();
   w.next();
   w.next();
@@ -210,7 +211,7 @@ TEST(CalibrationDistances, TheRulerFormCalibratesTheSimulatedMachine) {
 
 TEST(CalibrationDistances, NamesTheBadRow) {
   Rig rig;
-  CalibrationWizard w(rig.doc, &rig.session);
+  CalibrationWizard w(rig.doc, &rig.session, &rig.truth());
   w.show();
   w.next();
   w.next();
@@ -254,7 +255,7 @@ TEST(CalibrationDistances, NamesTheBadRow) {
 
 TEST(CalibrationAccuracy, TypedLinesGiveTheFigureAndBadCellsAreNamed) {
   Rig rig;
-  CalibrationWizard w(rig.doc, &rig.session);
+  CalibrationWizard w(rig.doc, &rig.session, &rig.truth());
   w.show();
   w.patternPage()->accuracyChoice()->setChecked(true);
   w.next();
@@ -281,7 +282,7 @@ TEST(CalibrationAccuracy, TypedLinesGiveTheFigureAndBadCellsAreNamed) {
 // Calibrated on the simulated sheet, the accuracy lines come out truer to length and no less straight.
 TEST(CalibrationAccuracy, BeforeAndAfterOnTheSimulatedMachine) {
   Rig rig;
-  CalibrationWizard w(rig.doc, &rig.session);
+  CalibrationWizard w(rig.doc, &rig.session, &rig.truth());
   w.show();
   w.next();
   w.next();
@@ -310,7 +311,7 @@ TEST(CalibrationAccuracy, BeforeAndAfterOnTheSimulatedMachine) {
 // A scan of the accuracy lines fills the chosen sheet's columns; a bad scan is named.
 TEST(CalibrationAccuracy, AScanOfTheLinesFillsTheChosenColumns) {
   Rig rig;
-  CalibrationWizard w(rig.doc, &rig.session);
+  CalibrationWizard w(rig.doc, &rig.session, &rig.truth());
   w.show();
   w.patternPage()->accuracyChoice()->setChecked(true);
   w.next();

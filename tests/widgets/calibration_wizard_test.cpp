@@ -18,6 +18,7 @@
 #include "test_support.hpp"
 #include "tests/calibration/synthetic_scan.hpp"
 #include "widgets/calibration/calibration_wizard.hpp"
+#include "widgets/calibration/simulated_machine.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
 
 namespace fivebar {
@@ -29,7 +30,8 @@ using widgets::calibration::CalibrationWizard;
 constexpr int kX = 4, kY = 5;  // the measure table's x, y columns
 
 struct WizardRig : test::MachineRig {
-  WizardRig() : wizard(doc, &session) { wizard.show(); }
+  WizardRig() : wizard(doc, &session, &truth) { wizard.show(); }
+  widgets::calibration::SimulatedTruth truth{doc, session};  // as MainWindow makes it
   CalibrationWizard wizard;
 };
 

@@ -36,18 +36,16 @@ std::optional<double> typedNumber(QString text) {
   return v;
 }
 
-CalibrationWizard::CalibrationWizard(StudioDocument& doc, session::MachineSession* session, QWidget* parent)
-    : QWizard(parent), doc_(doc), session_(session) {
+CalibrationWizard::CalibrationWizard(StudioDocument& doc, session::MachineSession* session,
+                                     SimulatedTruth* truth, QWidget* parent)
+    : QWizard(parent), doc_(doc), session_(session), simTruth_(session ? truth : nullptr) {
   setObjectName(QStringLiteral("calibrationWizard"));
   setWindowTitle(tr("Calibrate the machine"));
   setWizardStyle(QWizard::ClassicStyle);
   setOption(QWizard::NoBackButtonOnStartPage);
   nominal = doc.profile();
   builtFrom = nominal.geometry;
-  if (session_) {
-    simTruth_ = &SimulatedTruth::of(doc_, *session_);
-    builtFrom = simTruth_->builtFrom();
-  }
+  if (simTruth_) builtFrom = simTruth_->builtFrom();
   patternPage_ = new PatternPage(*this);
   drawPage_ = new DrawPage(*this);
   measurePage_ = new MeasurePage(*this);
@@ -75,14 +73,14 @@ CalibrationWizard::CalibrationWizard(StudioDocument& doc, session::MachineSessio
 CalibrationWizard::~CalibrationWizard() = default;
 
 QAction* CalibrationWizard::createAction(StudioDocument& doc, session::MachineSession* session,
-                                         CanvasView* canvas, QWidget* parent,
+                                         SimulatedTruth* truth, CanvasView* canvas, QWidget* parent,
                                          QPointer<CalibrationWizard>& wizard) {
   auto* action = new QAction(tr("&Calibrate..."), parent);
   action->setObjectName(QStringLiteral("calibrateAction"));
   action->setStatusTip(tr("Measure a drawn pattern and correct the profile's link lengths and motor zeros"));
-  QObject::connect(action, &QAction::triggered, parent, [&doc, session, canvas, parent, &wizard] {
+  QObject::connect(action, &QAction::triggered, parent, [&doc, session, truth, canvas, parent, &wizard] {
     if (!wizard) {
-      wizard = new CalibrationWizard(doc, session, parent);
+      wizard = new CalibrationWizard(doc, session, truth, parent);
       wizard->attachCanvas(canvas);
     }
     wizard->show();

@@ -48,14 +48,16 @@ class CalibrationWizard : public QWizard {
  public:
   enum PageId { kPatternPage, kDrawPage, kMeasurePage, kFitPage, kApplyPage, kVerifyPage, kAccuracyPage };
 
-  // `session` may be null (no machine side): drawing then means exporting the G-code.
-  CalibrationWizard(StudioDocument& doc, session::MachineSession* session, QWidget* parent = nullptr);
+  // `session` may be null (no machine side): drawing then means exporting the G-code. `truth` is
+  // the studio's simulated-machine setting (null without a session or without one).
+  CalibrationWizard(StudioDocument& doc, session::MachineSession* session, SimulatedTruth* truth,
+                    QWidget* parent = nullptr);
   ~CalibrationWizard() override;
   // Machine > Calibrate...; the sheet is shown on `canvas` (may be null) while the wizard is open.
   // The wizard is created on first use as the parent's child and kept in `wizard` (owned by the
   // composition root, which must outlive the action's use).
-  static QAction* createAction(StudioDocument& doc, session::MachineSession* session, CanvasView* canvas,
-                               QWidget* parent, QPointer<CalibrationWizard>& wizard);
+  static QAction* createAction(StudioDocument& doc, session::MachineSession* session, SimulatedTruth* truth,
+                               CanvasView* canvas, QWidget* parent, QPointer<CalibrationWizard>& wizard);
   // Shows the sheet (plan and the simulated machine's true trace) on the studio's canvas.
   void attachCanvas(CanvasView* canvas);
   void showOnCanvas(std::vector<std::vector<Vec2>> plan, std::vector<std::vector<Vec2>> trace);

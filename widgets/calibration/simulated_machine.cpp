@@ -52,12 +52,6 @@ SimulatedTruth::SimulatedTruth(const StudioDocument& doc, session::MachineSessio
   connect(&doc_, &StudioDocument::profileChanged, this, &SimulatedTruth::onProfileChanged);
 }
 
-SimulatedTruth& SimulatedTruth::of(const StudioDocument& doc, session::MachineSession& session) {
-  if (auto* existing = session.findChild<SimulatedTruth*>(QString(), Qt::FindDirectChildrenOnly))
-    return *existing;
-  return *new SimulatedTruth(doc, session);
-}
-
 std::unique_ptr<QSettings> SimulatedTruth::settings() const {
   if (settingsFile_.isEmpty()) return std::make_unique<QSettings>();
   return std::make_unique<QSettings>(settingsFile_, QSettings::IniFormat);
@@ -252,9 +246,8 @@ void SimulatedTruthBadge::mousePressEvent(QMouseEvent* event) {
 }
 
 // ---------------------------------------------------------------------------------------------
-void installSimulatedMachine(const StudioDocument& doc, session::MachineSession& session, CanvasView& canvas,
+void installSimulatedMachine(SimulatedTruth& truth, session::MachineSession& session, CanvasView& canvas,
                              QMenu& menu, QStatusBar& statusBar, QWidget* window) {
-  SimulatedTruth& truth = SimulatedTruth::of(doc, session);
   truth.load();
   auto* dialog = new SimulatedMachineDialog(truth, window);
   QAction* action = menu.addAction(SimulatedMachineDialog::tr("Simulated &machine..."));

@@ -37,10 +37,9 @@ namespace fivebar::widgets::calibration {
 class SimulatedTruth : public QObject {
   Q_OBJECT
  public:
-  // Created as a child of `session` (see of()); starts perfect, the saved setting is read by load().
+  // Created by the composition root (one per machine session, as the session's child); starts
+  // perfect, the saved setting is read by load().
   SimulatedTruth(const StudioDocument& doc, session::MachineSession& session);
-  // The session's setting, created (perfect) on first use.
-  static SimulatedTruth& of(const StudioDocument& doc, session::MachineSession& session);
 
   const TrueMachine& truth() const { return truth_; }
   bool active() const { return !truth_.perfect(); }
@@ -130,7 +129,7 @@ class SimulatedTruthBadge : public QLabel {
 
 // The studio's composition of the above: the saved setting loaded, "Simulated machine..." in
 // `menu`, the badge in `statusBar`, the pen's true trace on `canvas`.
-void installSimulatedMachine(const StudioDocument& doc, session::MachineSession& session, CanvasView& canvas,
+void installSimulatedMachine(SimulatedTruth& truth, session::MachineSession& session, CanvasView& canvas,
                              QMenu& menu, QStatusBar& statusBar, QWidget* window);
 
 }  // namespace fivebar::widgets::calibration
