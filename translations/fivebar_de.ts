@@ -4142,6 +4142,105 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
     </message>
 </context>
 <context>
+    <name>CalibrationFile</name>
+    <message>
+        <source>%1: header must be '%2'</source>
+        <translation>%1: die Kopfzeile muss „%2“ lauten</translation>
+    </message>
+    <message>
+        <source>%1: %2 fields, expected %3</source>
+        <translation>%1: %2 Felder, erwartet %3</translation>
+    </message>
+    <message>
+        <source>%1: empty file (expected the header '%2')</source>
+        <translation>%1: leere Datei (erwartet wird die Kopfzeile „%2“)</translation>
+    </message>
+    <message>
+        <source>%1: %2: '%3' is not a number</source>
+        <translation>%1: %2: „%3“ ist keine Zahl</translation>
+    </message>
+    <message>
+        <source>%1: cannot open the file</source>
+        <translation>%1: die Datei lässt sich nicht öffnen</translation>
+    </message>
+    <message>
+        <source>%1: id: '%2' is not a positive integer</source>
+        <translation>%1: id: „%2“ ist keine positive ganze Zahl</translation>
+    </message>
+    <message>
+        <source>%1: id: duplicate id %2</source>
+        <translation>%1: id: doppelte ID %2</translation>
+    </message>
+    <message>
+        <source>%1: kind: '%2' is not grid or backlash</source>
+        <translation>%1: kind: „%2“ ist weder grid noch backlash</translation>
+    </message>
+    <message>
+        <source>%1: %2: '%3' is not + or -</source>
+        <translation>%1: %2: „%3“ ist weder + noch -</translation>
+    </message>
+    <message>
+        <source>%1: group: '%2' is not a non-negative integer</source>
+        <translation>%1: group: „%2“ ist keine nicht negative ganze Zahl</translation>
+    </message>
+    <message>
+        <source>%1: motor: '%2' is not 0, 1 or 2</source>
+        <translation>%1: motor: „%2“ ist nicht 0, 1 oder 2</translation>
+    </message>
+    <message>
+        <source>%1: a backlash mark needs a group and a motor, a grid mark neither</source>
+        <translation>%1: eine Spielmarke braucht eine Gruppe und einen Motor, eine Rastermarke keins von beiden</translation>
+    </message>
+    <message>
+        <source>%1: ring_radius_mm: '%2' is not a positive number</source>
+        <translation>%1: ring_radius_mm: „%2“ ist keine positive Zahl</translation>
+    </message>
+    <message>
+        <source>%1: no marks</source>
+        <translation>%1: keine Marken</translation>
+    </message>
+    <message>
+        <source>%1: backlash row %2 has %3 marks, expected 3</source>
+        <translation>%1: Spielreihe %2 hat %3 Marken, erwartet 3</translation>
+    </message>
+    <message>
+        <source>%1: the file is empty (expected a header line: %2)</source>
+        <translation>%1: die Datei ist leer (erwartet wird eine Kopfzeile: %2)</translation>
+    </message>
+    <message>
+        <source>%1: the header has no column %2 (expected %3)</source>
+        <translation>%1: der Kopfzeile fehlt die Spalte %2 (erwartet %3)</translation>
+    </message>
+    <message>
+        <source>%1: missing field %2</source>
+        <translation>%1: Feld %2 fehlt</translation>
+    </message>
+    <message>
+        <source>%1: %2 is not a number: "%3"</source>
+        <translation>%1: %2 ist keine Zahl: „%3“</translation>
+    </message>
+    <message>
+        <source>%1: duplicate mark id %2 (first on line %3)</source>
+        <translation>%1: doppelte Marken-ID %2 (zuerst in Zeile %3)</translation>
+    </message>
+    <message>
+        <source>%1: a distance from mark %2 to itself</source>
+        <translation>%1: ein Abstand von Marke %2 zu sich selbst</translation>
+    </message>
+    <message>
+        <source>%1: distance_mm must be positive</source>
+        <translation>%1: distance_mm muss positiv sein</translation>
+    </message>
+    <message>
+        <source>%1: duplicate distance %2-%3 (first on line %4)</source>
+        <translation>%1: doppelter Abstand %2-%3 (zuerst in Zeile %4)</translation>
+    </message>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation>%1 lässt sich nicht öffnen: %2</translation>
+    </message>
+</context>
+<context>
     <name>CalibrationFit</name>
     <message>
         <source>the measurements do not depend on %1 at all</source>
@@ -4174,6 +4273,18 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
     <message>
         <source>line %1: mark %2 is not in the marks file</source>
         <translation>Zeile %1: Marke %2 steht nicht in der Markendatei</translation>
+    </message>
+    <message>
+        <source>only %1 grid marks measured: at least 3 are needed to place the sheet</source>
+        <translation>nur %1 Rastermarken gemessen: mindestens 3 sind nötig, um das Blatt zu platzieren</translation>
+    </message>
+    <message>
+        <source>the measured grid marks all lie on one point</source>
+        <translation>die gemessenen Rastermarken liegen alle auf einem Punkt</translation>
+    </message>
+    <message>
+        <source>no backlash row has all three marks measured</source>
+        <translation>keine Spielreihe hat alle drei Marken gemessen</translation>
     </message>
 </context>
 <context>

@@ -4142,6 +4142,105 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     </message>
 </context>
 <context>
+    <name>CalibrationFile</name>
+    <message>
+        <source>%1: header must be '%2'</source>
+        <translation>%1: el encabezado debe ser «%2»</translation>
+    </message>
+    <message>
+        <source>%1: %2 fields, expected %3</source>
+        <translation>%1: %2 campos, se esperaban %3</translation>
+    </message>
+    <message>
+        <source>%1: empty file (expected the header '%2')</source>
+        <translation>%1: archivo vacío (se esperaba el encabezado «%2»)</translation>
+    </message>
+    <message>
+        <source>%1: %2: '%3' is not a number</source>
+        <translation>%1: %2: «%3» no es un número</translation>
+    </message>
+    <message>
+        <source>%1: cannot open the file</source>
+        <translation>%1: no se puede abrir el archivo</translation>
+    </message>
+    <message>
+        <source>%1: id: '%2' is not a positive integer</source>
+        <translation>%1: id: «%2» no es un entero positivo</translation>
+    </message>
+    <message>
+        <source>%1: id: duplicate id %2</source>
+        <translation>%1: id: id %2 duplicado</translation>
+    </message>
+    <message>
+        <source>%1: kind: '%2' is not grid or backlash</source>
+        <translation>%1: kind: «%2» no es grid ni backlash</translation>
+    </message>
+    <message>
+        <source>%1: %2: '%3' is not + or -</source>
+        <translation>%1: %2: «%3» no es + ni -</translation>
+    </message>
+    <message>
+        <source>%1: group: '%2' is not a non-negative integer</source>
+        <translation>%1: group: «%2» no es un entero no negativo</translation>
+    </message>
+    <message>
+        <source>%1: motor: '%2' is not 0, 1 or 2</source>
+        <translation>%1: motor: «%2» no es 0, 1 ni 2</translation>
+    </message>
+    <message>
+        <source>%1: a backlash mark needs a group and a motor, a grid mark neither</source>
+        <translation>%1: una marca de holgura necesita un grupo y un motor; una marca de cuadrícula, ninguno</translation>
+    </message>
+    <message>
+        <source>%1: ring_radius_mm: '%2' is not a positive number</source>
+        <translation>%1: ring_radius_mm: «%2» no es un número positivo</translation>
+    </message>
+    <message>
+        <source>%1: no marks</source>
+        <translation>%1: ninguna marca</translation>
+    </message>
+    <message>
+        <source>%1: backlash row %2 has %3 marks, expected 3</source>
+        <translation>%1: la fila de holgura %2 tiene %3 marcas; se esperaban 3</translation>
+    </message>
+    <message>
+        <source>%1: the file is empty (expected a header line: %2)</source>
+        <translation>%1: el archivo está vacío (se esperaba una línea de encabezado: %2)</translation>
+    </message>
+    <message>
+        <source>%1: the header has no column %2 (expected %3)</source>
+        <translation>%1: el encabezado no tiene la columna %2 (se esperaba %3)</translation>
+    </message>
+    <message>
+        <source>%1: missing field %2</source>
+        <translation>%1: falta el campo %2</translation>
+    </message>
+    <message>
+        <source>%1: %2 is not a number: "%3"</source>
+        <translation>%1: %2 no es un número: «%3»</translation>
+    </message>
+    <message>
+        <source>%1: duplicate mark id %2 (first on line %3)</source>
+        <translation>%1: id de marca %2 duplicado (primero en la línea %3)</translation>
+    </message>
+    <message>
+        <source>%1: a distance from mark %2 to itself</source>
+        <translation>%1: una distancia de la marca %2 a sí misma</translation>
+    </message>
+    <message>
+        <source>%1: distance_mm must be positive</source>
+        <translation>%1: distance_mm debe ser positiva</translation>
+    </message>
+    <message>
+        <source>%1: duplicate distance %2-%3 (first on line %4)</source>
+        <translation>%1: distancia %2-%3 duplicada (primero en la línea %4)</translation>
+    </message>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation>no se puede abrir %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>CalibrationFit</name>
     <message>
         <source>the measurements do not depend on %1 at all</source>
@@ -4174,6 +4273,18 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     <message>
         <source>line %1: mark %2 is not in the marks file</source>
         <translation>línea %1: la marca %2 no está en el archivo de marcas</translation>
+    </message>
+    <message>
+        <source>only %1 grid marks measured: at least 3 are needed to place the sheet</source>
+        <translation>solo se midieron %1 marcas de cuadrícula: se necesitan al menos 3 para situar la hoja</translation>
+    </message>
+    <message>
+        <source>the measured grid marks all lie on one point</source>
+        <translation>las marcas de cuadrícula medidas están todas en un mismo punto</translation>
+    </message>
+    <message>
+        <source>no backlash row has all three marks measured</source>
+        <translation>ninguna fila de holgura tiene medidas sus tres marcas</translation>
     </message>
 </context>
 <context>

@@ -4142,6 +4142,105 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     </message>
 </context>
 <context>
+    <name>CalibrationFile</name>
+    <message>
+        <source>%1: header must be '%2'</source>
+        <translation>%1 : l'en-tête doit être « %2 »</translation>
+    </message>
+    <message>
+        <source>%1: %2 fields, expected %3</source>
+        <translation>%1 : %2 champs, %3 attendus</translation>
+    </message>
+    <message>
+        <source>%1: empty file (expected the header '%2')</source>
+        <translation>%1 : fichier vide (en-tête « %2 » attendu)</translation>
+    </message>
+    <message>
+        <source>%1: %2: '%3' is not a number</source>
+        <translation>%1 : %2 : « %3 » n'est pas un nombre</translation>
+    </message>
+    <message>
+        <source>%1: cannot open the file</source>
+        <translation>%1 : impossible d'ouvrir le fichier</translation>
+    </message>
+    <message>
+        <source>%1: id: '%2' is not a positive integer</source>
+        <translation>%1 : id : « %2 » n'est pas un entier positif</translation>
+    </message>
+    <message>
+        <source>%1: id: duplicate id %2</source>
+        <translation>%1 : id : identifiant %2 en double</translation>
+    </message>
+    <message>
+        <source>%1: kind: '%2' is not grid or backlash</source>
+        <translation>%1 : kind : « %2 » n'est ni grid ni backlash</translation>
+    </message>
+    <message>
+        <source>%1: %2: '%3' is not + or -</source>
+        <translation>%1 : %2 : « %3 » n'est ni + ni -</translation>
+    </message>
+    <message>
+        <source>%1: group: '%2' is not a non-negative integer</source>
+        <translation>%1 : group : « %2 » n'est pas un entier positif ou nul</translation>
+    </message>
+    <message>
+        <source>%1: motor: '%2' is not 0, 1 or 2</source>
+        <translation>%1 : motor : « %2 » n'est pas 0, 1 ou 2</translation>
+    </message>
+    <message>
+        <source>%1: a backlash mark needs a group and a motor, a grid mark neither</source>
+        <translation>%1 : une marque de jeu a besoin d'un groupe et d'un moteur, une marque de grille d'aucun des deux</translation>
+    </message>
+    <message>
+        <source>%1: ring_radius_mm: '%2' is not a positive number</source>
+        <translation>%1 : ring_radius_mm : « %2 » n'est pas un nombre positif</translation>
+    </message>
+    <message>
+        <source>%1: no marks</source>
+        <translation>%1 : aucune marque</translation>
+    </message>
+    <message>
+        <source>%1: backlash row %2 has %3 marks, expected 3</source>
+        <translation>%1 : la rangée de jeu %2 a %3 marques, 3 attendues</translation>
+    </message>
+    <message>
+        <source>%1: the file is empty (expected a header line: %2)</source>
+        <translation>%1 : le fichier est vide (ligne d'en-tête attendue : %2)</translation>
+    </message>
+    <message>
+        <source>%1: the header has no column %2 (expected %3)</source>
+        <translation>%1 : l'en-tête n'a pas de colonne %2 (attendu : %3)</translation>
+    </message>
+    <message>
+        <source>%1: missing field %2</source>
+        <translation>%1 : champ %2 manquant</translation>
+    </message>
+    <message>
+        <source>%1: %2 is not a number: "%3"</source>
+        <translation>%1 : %2 n'est pas un nombre : « %3 »</translation>
+    </message>
+    <message>
+        <source>%1: duplicate mark id %2 (first on line %3)</source>
+        <translation>%1 : identifiant de marque %2 en double (d'abord à la ligne %3)</translation>
+    </message>
+    <message>
+        <source>%1: a distance from mark %2 to itself</source>
+        <translation>%1 : une distance de la marque %2 à elle-même</translation>
+    </message>
+    <message>
+        <source>%1: distance_mm must be positive</source>
+        <translation>%1 : distance_mm doit être positive</translation>
+    </message>
+    <message>
+        <source>%1: duplicate distance %2-%3 (first on line %4)</source>
+        <translation>%1 : distance %2-%3 en double (d'abord à la ligne %4)</translation>
+    </message>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation>impossible d'ouvrir %1 : %2</translation>
+    </message>
+</context>
+<context>
     <name>CalibrationFit</name>
     <message>
         <source>the measurements do not depend on %1 at all</source>
@@ -4174,6 +4273,18 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     <message>
         <source>line %1: mark %2 is not in the marks file</source>
         <translation>ligne %1 : le repère %2 n'est pas dans le fichier des repères</translation>
+    </message>
+    <message>
+        <source>only %1 grid marks measured: at least 3 are needed to place the sheet</source>
+        <translation>seulement %1 marques de grille mesurées : il en faut au moins 3 pour placer la feuille</translation>
+    </message>
+    <message>
+        <source>the measured grid marks all lie on one point</source>
+        <translation>les marques de grille mesurées sont toutes au même point</translation>
+    </message>
+    <message>
+        <source>no backlash row has all three marks measured</source>
+        <translation>aucune rangée de jeu n'a ses trois marques mesurées</translation>
     </message>
 </context>
 <context>

@@ -129,17 +129,21 @@ std::optional<BacklashEstimate> backlashOf(const std::string& marksPath, const s
                                            const std::string& measuredText, const std::string& reversedPath,
                                            std::string& error) {
   std::string marksText, reversedText;
-  if (!readTextFile(marksPath, marksText, error) || !readTextFile(reversedPath, reversedText, error)) return {};
+  Message why;
+  if (!readTextFile(marksPath, marksText, why) || !readTextFile(reversedPath, reversedText, why)) {
+    error = why.text();
+    return std::nullopt;
+  }
   const MarksLoad marks = parseMarksCsv(marksText, marksPath);
   if (!marks.ok()) {
-    error = marks.error + " (--reversed needs the full MARKS.csv of `fivebar calibrate pattern`)";
+    error = marks.error.text() + " (--reversed needs the full MARKS.csv of `fivebar calibrate pattern`)";
     return {};
   }
   std::map<int, Vec2> measuredById;
   for (const auto& [path, text] : {std::pair{measuredPath, measuredText}, std::pair{reversedPath, reversedText}}) {
     const MeasuredLoad m = parseMeasuredCsv(text, path);
     if (!m.ok()) {
-      error = m.error;
+      error = m.error.text();
       return {};
     }
     for (const MeasuredMark& x : m.marks) measuredById[x.id] = x.measuredMm;
@@ -158,7 +162,7 @@ std::optional<BacklashEstimate> backlashOf(const std::string& marksPath, const s
   }
   BacklashEstimate b = estimateBacklash(pattern, measuredById);
   if (!b.ok()) {
-    error = reversedPath + ": " + b.error;
+    error = reversedPath + ": " + b.error.text();
     return {};
   }
   return b;
@@ -173,9 +177,9 @@ int fit(const Options& o) {
     return 1;
   };
   std::string text, error;
-  if (!readTextFile(measuredPath, text, error)) return fail(error);
+  if (Message why; !readTextFile(measuredPath, text, why)) return fail(why.text());
   const MeasurementRead read = readMeasurements(text, measuredPath);
-  if (!read.ok()) return fail(read.error);
+  if (!read.ok()) return fail(read.error.text());
   std::optional<BacklashEstimate> backlash;
   if (const auto reversedPath = o.value("--reversed")) {
     const auto marksPath = o.value("--marks");
@@ -192,9 +196,9 @@ int fit(const Options& o) {
     const auto marksPath = o.value("--marks");
     if (!marksPath) return fail(measuredPath + " holds distances: give the marks' angles with --marks MARKS.csv");
     std::string marksText;
-    if (!readTextFile(*marksPath, marksText, error)) return fail(error);
+    if (Message why; !readTextFile(*marksPath, marksText, why)) return fail(why.text());
     const MarkPosesRead marks = readMarkPoses(marksText, *marksPath);
-    if (!marks.ok()) return fail(marks.error);
+    if (!marks.ok()) return fail(marks.error.text());
     result = fitDistances(*nominal, marks.marks, read.distances, options);
     if (result.status == FitStatus::BadInput && result.reason.text().rfind("line ", 0) == 0)
       return fail(measuredPath + ":" + result.reason.text().substr(5));

@@ -61,13 +61,12 @@ BacklashEstimate estimateBacklash(const std::vector<PatternMark>& marks,
         machine.push_back(m.nominalMm);
       }
   if (paper.size() < 3) {
-    e.error = "only " + std::to_string(paper.size()) +
-              " grid marks measured: at least 3 are needed to place the sheet";
+    e.error = FB_TR("CalibrationFit", "only %1 grid marks measured: at least 3 are needed to place the sheet").arg(paper.size());
     return e;
   }
   const std::optional<RigidFit> fit = fitRigid(paper, machine);
   if (!fit) {
-    e.error = "the measured grid marks all lie on one point";
+    e.error = FB_TR("CalibrationFit", "the measured grid marks all lie on one point");
     return e;
   }
   std::map<int, std::vector<const PatternMark*>> rows;
@@ -97,7 +96,7 @@ BacklashEstimate estimateBacklash(const std::vector<PatternMark>& marks,
     (k == 1 ? e.rowsMotor1 : e.rowsMotor2) += 1;
   }
   if (e.rows.empty()) {
-    e.error = "no backlash row has all three marks measured";
+    e.error = FB_TR("CalibrationFit", "no backlash row has all three marks measured");
     return e;
   }
   e.play.motor1Rad = e.rowsMotor1 > 0 ? sum[0] / e.rowsMotor1 : 0.0;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/support/message.hpp"
 #include "core/calibration/pattern.hpp"
 #include "core/planning/backlash_compensation.hpp"
 #include "core/planning/job.hpp"
@@ -47,7 +48,7 @@ struct BacklashEstimate {
   std::vector<BacklashRowEstimate> rows;  // every measured row
   int rowsMotor1 = 0;
   int rowsMotor2 = 0;
-  std::string error;                      // empty when ok
+  Message error;                          // empty when ok (translatable)
   bool ok() const { return error.empty(); }
 };
 

@@ -50,7 +50,7 @@ std::optional<int> integer(const std::string& s) {
 // Reads lines of a CSV with a fixed header; calls row(fields, where) for each non-empty line.
 // Returns an error message or empty.
 template <typename Row>
-std::string readCsv(const std::string& text, const std::string& source, const std::string& header,
+Message readCsv(const std::string& text, const std::string& source, const std::string& header,
                     Row row) {
   std::istringstream in(text);
   std::string line;
@@ -63,20 +63,20 @@ std::string readCsv(const std::string& text, const std::string& source, const st
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     const std::vector<std::string> f = splitFields(line);
     if (!sawHeader) {
-      if (f != names) return where + ": header must be '" + header + "'";
+      if (f != names) return FB_TR("CalibrationFile", "%1: header must be '%2'").arg(where).arg(header);
       sawHeader = true;
       continue;
     }
     if (f.size() != names.size())
-      return where + ": " + std::to_string(f.size()) + " fields, expected " + std::to_string(names.size());
-    if (std::string e = row(f, names, where); !e.empty()) return e;
+      return FB_TR("CalibrationFile", "%1: %2 fields, expected %3").arg(where).arg(f.size()).arg(names.size());
+    if (Message e = row(f, names, where); !e.empty()) return e;
   }
-  if (!sawHeader) return source + ": empty file (expected the header '" + header + "')";
+  if (!sawHeader) return FB_TR("CalibrationFile", "%1: empty file (expected the header '%2')").arg(source).arg(header);
   return {};
 }
 
-std::string notNumber(const std::string& where, const std::string& field, const std::string& v) {
-  return where + ": " + field + ": '" + v + "' is not a number";
+Message notNumber(const std::string& where, const std::string& field, const std::string& v) {
+  return FB_TR("CalibrationFile", "%1: %2: '%3' is not a number").arg(where).arg(field).arg(v);
 }
 
 std::optional<Approach> approachOf(const std::string& s) {
@@ -85,10 +85,10 @@ std::optional<Approach> approachOf(const std::string& s) {
   return std::nullopt;
 }
 
-std::string fileText(const std::string& path, std::string& error) {
+std::string fileText(const std::string& path, Message& error) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    error = path + ": cannot open the file";
+    error = FB_TR("CalibrationFile", "%1: cannot open the file").arg(path);
     return {};
   }
   std::ostringstream s;
@@ -117,11 +117,11 @@ MarksLoad parseMarksCsv(const std::string& text, const std::string& source) {
   std::map<int, int> rowCount;
   out.error = readCsv(text, source, kMarksCsvHeader, [&](const std::vector<std::string>& f,
                                                         const std::vector<std::string>& names,
-                                                        const std::string& where) -> std::string {
+                                                        const std::string& where) -> Message {
     MarkRecord r;
     const auto id = integer(f[0]);
-    if (!id || *id <= 0) return where + ": id: '" + f[0] + "' is not a positive integer";
-    if (!ids.insert(*id).second) return where + ": id: duplicate id " + f[0];
+    if (!id || *id <= 0) return FB_TR("CalibrationFile", "%1: id: '%2' is not a positive integer").arg(where).arg(f[0]);
+    if (!ids.insert(*id).second) return FB_TR("CalibrationFile", "%1: id: duplicate id %2").arg(where).arg(f[0]);
     r.mark.id = *id;
     double v[4];
     for (int k = 0; k < 4; ++k) {
@@ -133,31 +133,30 @@ MarksLoad parseMarksCsv(const std::string& text, const std::string& source) {
     r.mark.nominalMm = Vec2(v[2], v[3]);
     if (f[5] == "grid") r.mark.kind = MarkKind::Grid;
     else if (f[5] == "backlash") r.mark.kind = MarkKind::Backlash;
-    else return where + ": kind: '" + f[5] + "' is not grid or backlash";
+    else return FB_TR("CalibrationFile", "%1: kind: '%2' is not grid or backlash").arg(where).arg(f[5]);
     const auto a1 = approachOf(f[6]), a2 = approachOf(f[7]);
-    if (!a1) return where + ": approach1: '" + f[6] + "' is not + or -";
-    if (!a2) return where + ": approach2: '" + f[7] + "' is not + or -";
+    if (!a1) return FB_TR("CalibrationFile", "%1: %2: '%3' is not + or -").arg(where).arg("approach1").arg(f[6]);
+    if (!a2) return FB_TR("CalibrationFile", "%1: %2: '%3' is not + or -").arg(where).arg("approach2").arg(f[7]);
     r.mark.approach1 = *a1;
     r.mark.approach2 = *a2;
     const auto group = integer(f[8]), motor = integer(f[9]);
-    if (!group || *group < 0) return where + ": group: '" + f[8] + "' is not a non-negative integer";
-    if (!motor || *motor < 0 || *motor > 2) return where + ": motor: '" + f[9] + "' is not 0, 1 or 2";
+    if (!group || *group < 0) return FB_TR("CalibrationFile", "%1: group: '%2' is not a non-negative integer").arg(where).arg(f[8]);
+    if (!motor || *motor < 0 || *motor > 2) return FB_TR("CalibrationFile", "%1: motor: '%2' is not 0, 1 or 2").arg(where).arg(f[9]);
     r.mark.group = *group;
     r.mark.motor = *motor;
     if ((r.mark.kind == MarkKind::Backlash) != (*group > 0 && *motor > 0))
-      return where + ": a backlash mark needs a group and a motor, a grid mark neither";
+      return FB_TR("CalibrationFile", "%1: a backlash mark needs a group and a motor, a grid mark neither").arg(where);
     if (r.mark.kind == MarkKind::Backlash) r.mark.rowIndex = rowCount[*group]++;
     const auto ring = number(f[10]);
-    if (!ring || *ring <= 0.0) return where + ": ring_radius_mm: '" + f[10] + "' is not a positive number";
+    if (!ring || *ring <= 0.0) return FB_TR("CalibrationFile", "%1: ring_radius_mm: '%2' is not a positive number").arg(where).arg(f[10]);
     r.ringRadiusMm = *ring;
     out.marks.push_back(r);
     return {};
   });
-  if (out.error.empty() && out.marks.empty()) out.error = source + ": no marks";
+  if (out.error.empty() && out.marks.empty()) out.error = FB_TR("CalibrationFile", "%1: no marks").arg(source);
   for (const auto& [group, n] : rowCount)
     if (out.error.empty() && n != 3)
-      out.error = source + ": backlash row " + std::to_string(group) + " has " + std::to_string(n) +
-                  " marks, expected 3";
+      out.error = FB_TR("CalibrationFile", "%1: backlash row %2 has %3 marks, expected 3").arg(source).arg(group).arg(n);
   if (!out.error.empty()) out.marks.clear();
   return out;
 }
@@ -182,11 +181,11 @@ MeasuredLoad parseMeasuredCsv(const std::string& text, const std::string& source
   std::set<int> ids;
   out.error = readCsv(text, source, kMeasuredCsvHeader, [&](const std::vector<std::string>& f,
                                                            const std::vector<std::string>& names,
-                                                           const std::string& where) -> std::string {
+                                                           const std::string& where) -> Message {
     MeasuredMark m;
     const auto id = integer(f[0]);
-    if (!id || *id <= 0) return where + ": id: '" + f[0] + "' is not a positive integer";
-    if (!ids.insert(*id).second) return where + ": id: duplicate id " + f[0];
+    if (!id || *id <= 0) return FB_TR("CalibrationFile", "%1: id: '%2' is not a positive integer").arg(where).arg(f[0]);
+    if (!ids.insert(*id).second) return FB_TR("CalibrationFile", "%1: id: duplicate id %2").arg(where).arg(f[0]);
     m.id = *id;
     double v[4];
     for (int k = 0; k < 4; ++k) {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/support/message.hpp"
 #include "core/calibration/pattern.hpp"
 
 namespace fivebar {
@@ -29,7 +30,7 @@ struct MarkRecord {
 };
 struct MarksLoad {
   std::vector<MarkRecord> marks;
-  std::string error;  // "MARKS.csv:7: theta2_deg: 'abc' is not a number"; empty when ok
+  Message error;  // "MARKS.csv:7: theta2_deg: 'abc' is not a number"; empty when ok (translatable)
   bool ok() const { return error.empty(); }
 };
 // Parses MARKS.csv text; `source` names it in errors. Checks the header, every field, unique ids.
@@ -47,7 +48,7 @@ struct MeasuredMark {
 std::string measuredCsv(const std::vector<MeasuredMark>& marks);
 struct MeasuredLoad {
   std::vector<MeasuredMark> marks;
-  std::string error;
+  Message error;  // translatable
   bool ok() const { return error.empty(); }
 };
 MeasuredLoad parseMeasuredCsv(const std::string& text, const std::string& source);

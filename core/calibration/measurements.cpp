@@ -36,7 +36,7 @@ struct Table {
   std::map<std::string, std::size_t> column;
   std::vector<std::pair<int, std::vector<std::string>>> rows;
   int headerLine = 0;
-  std::string where(int line) const { return source + ":" + std::to_string(line) + ": "; }
+  std::string where(int line) const { return source + ":" + std::to_string(line); }
 };
 
 Table parse(const std::string& text, const std::string& source) {
@@ -61,22 +61,22 @@ Table parse(const std::string& text, const std::string& source) {
 }
 
 // Error text for the first column of `names` the header lacks; empty when it has them all.
-std::string missingColumn(const Table& t, const std::vector<std::string>& names) {
+Message missingColumn(const Table& t, const std::vector<std::string>& names) {
   std::string all;
   for (const std::string& n : names) all += (all.empty() ? "" : ",") + n;
-  if (t.headerLine == 0) return t.source + ": the file is empty (expected a header line: " + all + ")";
+  if (t.headerLine == 0) return FB_TR("CalibrationFile", "%1: the file is empty (expected a header line: %2)").arg(t.source).arg(all);
   for (const std::string& n : names)
     if (!t.column.count(n))
-      return t.where(t.headerLine) + "the header has no column " + n + " (expected " + all + ")";
+      return FB_TR("CalibrationFile", "%1: the header has no column %2 (expected %3)").arg(t.where(t.headerLine)).arg(n).arg(all);
   return {};
 }
 
 // A field of a row: its text, or an error when the row is too short or the field empty.
 bool field(const Table& t, int line, const std::vector<std::string>& row, const std::string& name,
-           std::string& value, std::string& error) {
+           std::string& value, Message& error) {
   const std::size_t i = t.column.at(name);
   if (i >= row.size() || row[i].empty()) {
-    error = t.where(line) + "missing field " + name;
+    error = FB_TR("CalibrationFile", "%1: missing field %2").arg(t.where(line)).arg(name);
     return false;
   }
   value = row[i];
@@ -84,13 +84,13 @@ bool field(const Table& t, int line, const std::vector<std::string>& row, const 
 }
 
 bool number(const Table& t, int line, const std::vector<std::string>& row, const std::string& name,
-            double& value, std::string& error) {
+            double& value, Message& error) {
   std::string text;
   if (!field(t, line, row, name, text, error)) return false;
   const char* end = text.data() + text.size();
   const auto [ptr, ec] = std::from_chars(text.data(), end, value);
   if (ec != std::errc() || ptr != end || !std::isfinite(value)) {
-    error = t.where(line) + name + " is not a number: \"" + text + "\"";
+    error = FB_TR("CalibrationFile", "%1: %2 is not a number: \"%3\"").arg(t.where(line)).arg(name).arg(text);
     return false;
   }
   return true;
@@ -98,13 +98,13 @@ bool number(const Table& t, int line, const std::vector<std::string>& row, const
 
 // The id and commanded angles of a mark row; checks the id is new.
 bool markRow(const Table& t, int line, const std::vector<std::string>& row, std::map<std::string, int>& seen,
-             std::string& id, JointAngles& q, std::string& error) {
+             std::string& id, JointAngles& q, Message& error) {
   double t1 = 0.0, t2 = 0.0;
   if (!field(t, line, row, "id", id, error) || !number(t, line, row, "theta1_deg", t1, error) ||
       !number(t, line, row, "theta2_deg", t2, error))
     return false;
   if (auto [it, fresh] = seen.emplace(id, line); !fresh) {
-    error = t.where(line) + "duplicate mark id " + id + " (first on line " + std::to_string(it->second) + ")";
+    error = FB_TR("CalibrationFile", "%1: duplicate mark id %2 (first on line %3)").arg(t.where(line)).arg(id).arg(it->second);
     return false;
   }
   q = {radFromDeg(t1), radFromDeg(t2)};
@@ -118,7 +118,7 @@ MeasurementRead readMeasurements(const std::string& text, const std::string& sou
   const Table t = parse(text, source);
   if (t.column.count("id_a") || t.column.count("id_b") || t.column.count("distance_mm")) {
     r.form = MeasurementForm::Distances;
-    if ((r.error = missingColumn(t, {"id_a", "id_b", "distance_mm"})).size()) return r;
+    if (!(r.error = missingColumn(t, {"id_a", "id_b", "distance_mm"})).empty()) return r;
     std::map<std::pair<std::string, std::string>, int> seen;
     for (const auto& [line, row] : t.rows) {
       DistanceMeasurement d;
@@ -126,17 +126,21 @@ MeasurementRead readMeasurements(const std::string& text, const std::string& sou
       if (!field(t, line, row, "id_a", d.idA, r.error) || !field(t, line, row, "id_b", d.idB, r.error) ||
           !number(t, line, row, "distance_mm", d.distanceMm, r.error))
         return r;
-      if (d.idA == d.idB) return r.error = t.where(line) + "a distance from mark " + d.idA + " to itself", r;
-      if (!(d.distanceMm > 0.0)) return r.error = t.where(line) + "distance_mm must be positive", r;
+      if (d.idA == d.idB) return r.error = FB_TR("CalibrationFile", "%1: a distance from mark %2 to itself").arg(t.where(line)).arg(d.idA), r;
+      if (!(d.distanceMm > 0.0)) return r.error = FB_TR("CalibrationFile", "%1: distance_mm must be positive").arg(t.where(line)), r;
       const auto key = std::minmax(d.idA, d.idB);
       if (auto [it, fresh] = seen.emplace(key, line); !fresh)
-        return r.error = t.where(line) + "duplicate distance " + d.idA + "-" + d.idB + " (first on line " +
-                         std::to_string(it->second) + ")", r;
+        return r.error = FB_TR("CalibrationFile", "%1: duplicate distance %2-%3 (first on line %4)")
+                             .arg(t.where(line))
+                             .arg(d.idA)
+                             .arg(d.idB)
+                             .arg(it->second),
+               r;
       r.distances.push_back(d);
     }
     return r;
   }
-  if ((r.error = missingColumn(t, {"id", "theta1_deg", "theta2_deg", "x_mm", "y_mm"})).size()) return r;
+  if (!(r.error = missingColumn(t, {"id", "theta1_deg", "theta2_deg", "x_mm", "y_mm"})).empty()) return r;
   std::map<std::string, int> seen;
   for (const auto& [line, row] : t.rows) {
     MarkMeasurement m;
@@ -154,7 +158,7 @@ MeasurementRead readMeasurements(const std::string& text, const std::string& sou
 MarkPosesRead readMarkPoses(const std::string& text, const std::string& source) {
   MarkPosesRead r;
   const Table t = parse(text, source);
-  if ((r.error = missingColumn(t, {"id", "theta1_deg", "theta2_deg"})).size()) return r;
+  if (!(r.error = missingColumn(t, {"id", "theta1_deg", "theta2_deg"})).empty()) return r;
   std::map<std::string, int> seen;
   for (const auto& [line, row] : t.rows) {
     MarkPose m;
@@ -165,10 +169,10 @@ MarkPosesRead readMarkPoses(const std::string& text, const std::string& source) 
   return r;
 }
 
-bool readTextFile(const std::string& path, std::string& text, std::string& error) {
+bool readTextFile(const std::string& path, std::string& text, Message& error) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    error = "cannot open " + path + ": " + std::strerror(errno);
+    error = FB_TR("CalibrationFile", "cannot open %1: %2").arg(path).arg(std::strerror(errno));
     return false;
   }
   std::ostringstream s;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/support/message.hpp"
 #include "core/calibration/fit.hpp"
 
 namespace fivebar::calibration {
@@ -20,7 +21,7 @@ struct MeasurementRead {
   MeasurementForm form = MeasurementForm::Marks;
   std::vector<MarkMeasurement> marks;         // form Marks
   std::vector<DistanceMeasurement> distances;  // form Distances
-  std::string error;                          // "FILE:LINE: message"; empty on success
+  Message error;                              // "FILE:LINE: message"; empty on success (translatable)
   bool ok() const { return error.empty(); }
 };
 
@@ -29,12 +30,12 @@ MeasurementRead readMeasurements(const std::string& text, const std::string& sou
 
 struct MarkPosesRead {
   std::vector<MarkPose> marks;
-  std::string error;
+  Message error;  // translatable
   bool ok() const { return error.empty(); }
 };
 MarkPosesRead readMarkPoses(const std::string& text, const std::string& sourceName);
 
 // The whole file's text; an error message naming the file when it cannot be read.
-bool readTextFile(const std::string& path, std::string& text, std::string& error);
+bool readTextFile(const std::string& path, std::string& text, Message& error);
 
 }  // namespace fivebar::calibration

@@ -253,7 +253,7 @@ TEST(BacklashEstimate, FromThePatternsRows) {
     EXPECT_NEAR(degFromRad(e.play.motor2Rad), 0.3, 0.03) << "imperfect " << imperfect;
   }
   // Too few marks: a reason.
-  EXPECT_NE(estimateBacklash(pr.pattern->marks, {{1, Vec2(0, 0)}}).error.find("at least 3"), std::string::npos);
+  EXPECT_NE(estimateBacklash(pr.pattern->marks, {{1, Vec2(0, 0)}}).error.text().find("at least 3"), std::string::npos);
 }
 
 }  // namespace

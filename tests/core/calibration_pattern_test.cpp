@@ -233,7 +233,7 @@ TEST(MarksCsv, RoundTripAndErrorsNameTheLineAndField) {
             "M.csv:2: theta2_deg: 'abc' is not a number");
   EXPECT_EQ(parseMarksCsv(h + "1,10,20,0,0,grid,+,+,0,0,2.5\n1,1,2,3,4,grid,+,+,0,0,2.5\n", "M.csv").error,
             "M.csv:3: id: duplicate id 1");
-  EXPECT_EQ(parseMarksCsv("id,x\n", "M.csv").error.rfind("M.csv:1: header must be", 0), 0u);
+  EXPECT_EQ(parseMarksCsv("id,x\n", "M.csv").error.text().rfind("M.csv:1: header must be", 0), 0u);
   EXPECT_EQ(parseMarksCsv(h + "1,10,20,0,0,grid,+,+,0,0\n", "M.csv").error, "M.csv:2: 10 fields, expected 11");
   EXPECT_EQ(parseMarksCsv(h + "1,10,20,0,0,grid,up,+,0,0,2.5\n", "M.csv").error,
             "M.csv:2: approach1: 'up' is not + or -");

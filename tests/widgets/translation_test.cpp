@@ -32,6 +32,7 @@
 #include "widgets/panels/fill_options_box.hpp"
 #include "widgets/design/design_dialog.hpp"
 #include "widgets/design/pareto_plot.hpp"
+#include "core/calibration/measurements.hpp"
 #include "core/import/svg_import.hpp"
 #include "widgets/document/core_message.hpp"
 #include "widgets/document/import_controller.hpp"
@@ -98,7 +99,7 @@ std::set<QString> runtimeContexts() {
                         "CalibrationWizard",
                         // the core's messages (core/support/message.hpp, widgets::translated)
                         "Placement", "Planner", "Preflight", "Safety", "Profile", "CalibrationFit",
-                        "CalibrationPattern", "CalibrationScan", "Design", "ImportError",
+                        "CalibrationPattern", "CalibrationScan", "CalibrationFile", "Design", "ImportError",
                         // the drivers' messages the studio translates (session::translated)
                         "Jog", "MotionCheck", "SoftLimits"})
     names.insert(QString::fromLatin1(c));
@@ -256,6 +257,21 @@ TEST(Translations, ProfileProblemsAreShownInFrench) {
   QCoreApplication::removeTranslator(&translator);
   EXPECT_EQ(type, QStringLiteral("schema doit être une chaîne, et non un nombre")) << type.toStdString();
   EXPECT_TRUE(json.startsWith(QStringLiteral("p.json:2:13 : JSON invalide : "))) << json.toStdString();
+}
+
+// A measurements file the wizard cannot read is named, with its line and column, in the user's
+// language; the CLI's English is unchanged.
+TEST(Translations, CalibrationFileProblemsAreShownInGerman) {
+  const fivebar::calibration::MeasurementRead read = fivebar::calibration::readMeasurements(
+      "id,theta1_deg,theta2_deg,x_mm,y_mm\n1,100,60,abc,5\n", "m.csv");
+  ASSERT_FALSE(read.ok());
+  QTranslator translator;
+  ASSERT_TRUE(translator.load(QStringLiteral(":/i18n/fivebar_de.qm")));
+  ASSERT_TRUE(QCoreApplication::installTranslator(&translator));
+  const QString shown = fivebar::widgets::translated(read.error);
+  QCoreApplication::removeTranslator(&translator);
+  EXPECT_EQ(read.error.text(), "m.csv:2: x_mm is not a number: \"abc\"");
+  EXPECT_EQ(shown, QStringLiteral("m.csv:2: x_mm ist keine Zahl: „abc“"));
 }
 
 // An SVG that cannot be imported is refused in the user's language (the file, line and element

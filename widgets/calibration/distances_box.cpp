@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "core/calibration/measurements.hpp"
+#include "widgets/document/core_message.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
 
 namespace fivebar::widgets::calibration {
@@ -168,14 +169,15 @@ bool DistancesBox::read(std::vector<DistanceRow>* out, QString* error) const {
 }
 
 bool DistancesBox::loadCsv(const QString& path, QString* error) {
-  std::string text, why;
+  std::string text;
+  Message why;
   if (!fivebar::calibration::readTextFile(path.toStdString(), text, why)) {
-    *error = QString::fromStdString(why);
+    *error = translated(why);
     return false;
   }
   const auto read = fivebar::calibration::readMeasurements(text, path.toStdString());
   if (!read.ok()) {
-    *error = QString::fromStdString(read.error);
+    *error = translated(read.error);
     return false;
   }
   if (read.form != fivebar::calibration::MeasurementForm::Distances) {

@@ -125,7 +125,7 @@ void FitPage::initializePage() {
                          .arg(degFromRad(b.play.motor1Rad), 0, 'f', 2)
                          .arg(degFromRad(b.play.motor2Rad), 0, 'f', 2);
     } else {
-      backlashText = tr("Backlash not measured: %1").arg(QString::fromStdString(b.error));
+      backlashText = tr("Backlash not measured: %1").arg(translated(b.error));
     }
     w_.backlash = b;
   }

@@ -301,7 +301,7 @@ bool MeasurePage::loadCsv(const QString& path, QString* error) {
   }
   const MeasuredLoad load = parseMeasuredCsv(file.readAll().toStdString(), path.toStdString());
   if (!load.ok()) {
-    *error = QString::fromStdString(load.error);
+    *error = translated(load.error);
     return false;
   }
   std::map<int, Vec2> byId;
