@@ -37,8 +37,8 @@ std::optional<double> typedNumber(QString text) {
 }
 
 CalibrationWizard::CalibrationWizard(StudioDocument& doc, session::MachineSession* session,
-                                     SimulatedTruth* truth, QWidget* parent)
-    : QWizard(parent), doc_(doc), session_(session), simTruth_(session ? truth : nullptr) {
+                                     SimulatedTruth* simulatedTruth, QWidget* parent)
+    : QWizard(parent), doc_(doc), session_(session), simTruth_(session ? simulatedTruth : nullptr) {
   setObjectName(QStringLiteral("calibrationWizard"));
   setWindowTitle(tr("Calibrate the machine"));
   setWizardStyle(QWizard::ClassicStyle);

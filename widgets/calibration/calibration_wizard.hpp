@@ -48,9 +48,9 @@ class CalibrationWizard : public QWizard {
  public:
   enum PageId { kPatternPage, kDrawPage, kMeasurePage, kFitPage, kApplyPage, kVerifyPage, kAccuracyPage };
 
-  // `session` may be null (no machine side): drawing then means exporting the G-code. `truth` is
-  // the studio's simulated-machine setting (null without a session or without one).
-  CalibrationWizard(StudioDocument& doc, session::MachineSession* session, SimulatedTruth* truth,
+  // `session` may be null (no machine side): drawing then means exporting the G-code.
+  // `simulatedTruth` is the studio's simulated-machine setting (null without a session).
+  CalibrationWizard(StudioDocument& doc, session::MachineSession* session, SimulatedTruth* simulatedTruth,
                     QWidget* parent = nullptr);
   ~CalibrationWizard() override;
   // Machine > Calibrate...; the sheet is shown on `canvas` (may be null) while the wizard is open.
