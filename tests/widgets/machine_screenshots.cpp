@@ -4,6 +4,7 @@
 //   machine-run.png      the demo job running, the executed part coloured on the canvas
 //   machine-goto.png     a go-to previewed on the canvas, waiting for confirmation
 //   machine-alarm.png    an alarm banner with its way out, and the profile editor's inline message
+//   machine-quit-while-running.png  quitting while a job runs asks first
 //   machine-reference-question.png  "Set reference pose" asks first
 //   machine-settings-warning.png    the board's $ settings differ from the profile (machine panel)
 //   machine-settings-mismatch.png   ... and Start explains it before the machine moves
@@ -108,6 +109,10 @@ int main(int argc, char** argv) {
     return s.totalLines > 0 && s.linesCompleted * 100 >= s.totalLines * 45;
   }, 120000);
   if (!grab(window, outDir + QStringLiteral("/machine-run.png"))) status = 1;
+  // 1b. Quitting while it runs asks first ("Keep running" is the default; the grab rejects it).
+  grabNextBox(QStringLiteral("quitWhileRunning"), outDir + QStringLiteral("/machine-quit-while-running.png"));
+  window.close();
+  if (!window.isVisible() || !machine->run().running()) status = 1;
   machine->run().stop();
   waitUntil([&] { return !machine->run().running(); }, 30000);
   waitUntil([&] { return session.state() == grbl::MachineState::Idle && session.jogSettled(); }, 10000);
