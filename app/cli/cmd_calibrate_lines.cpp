@@ -24,19 +24,6 @@ constexpr const char* kHelp =
     "  -o, --output LINES.csv  line,length_mm,length_error_mm,straightness_mm,x0_mm,y0_mm,x1_mm,y1_mm\n"
     "                          (ends in mm from the image's lower left corner, y up)\n";
 
-double dpiFrom(const std::string& text) {
-  size_t used = 0;
-  double v = 0.0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !std::isfinite(v) || !(v > 0.0))
-    throw UsageError("--dpi needs a positive number, got '" + text + "'");
-  return v;
-}
-
 std::string linesCsv(const LineScanOutcome& scan) {
   std::ostringstream out;
   out << "line,length_mm,length_error_mm,straightness_mm,x0_mm,y0_mm,x1_mm,y1_mm\n";
@@ -54,7 +41,7 @@ std::string linesCsv(const LineScanOutcome& scan) {
 int run(const Options& o) {
   if (!o.positional().empty()) throw UsageError("unexpected argument '" + o.positional()[0] + "'");
   const std::string imagePath = o.required("--image");
-  const double dpi = dpiFrom(o.required("--dpi"));
+  const double dpi = numberArg(o.required("--dpi"), "--dpi", true);
   int argc = 1;
   char name[] = "fivebar";
   char* argv[] = {name, nullptr};

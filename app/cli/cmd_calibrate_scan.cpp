@@ -27,26 +27,13 @@ constexpr const char* kHelp =
     "  --reversed REVERSED.csv    the same for the backlash rows' middle marks\n"
     "Prints each motor's backlash measured by the backlash rows.\n";
 
-double dpiFrom(const std::string& text) {
-  size_t used = 0;
-  double v = 0.0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !std::isfinite(v) || !(v > 0.0))
-    throw UsageError("--dpi needs a positive number, got '" + text + "'");
-  return v;
-}
-
 int run(const Options& o) {
   if (!o.positional().empty()) throw UsageError("unexpected argument '" + o.positional()[0] + "'");
   const std::string output = o.value("--output").value_or("");
   if (output.empty()) throw UsageError("missing required option -o MEASURED.csv");
   const std::string marksPath = o.required("--marks");
   const std::string imagePath = o.required("--image");
-  const double dpi = dpiFrom(o.required("--dpi"));
+  const double dpi = numberArg(o.required("--dpi"), "--dpi", true);
   const MarksLoad marks = loadMarksCsv(marksPath);
   if (!marks.ok()) {
     std::cerr << "fivebar calibrate scan: " << marks.error << "\n";

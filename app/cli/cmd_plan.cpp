@@ -47,19 +47,6 @@ constexpr const char* kSettingsHelp =
     "usage: fivebar grbl-settings --machine PRESET|FILE\n"
     "Prints the GRBL $ settings the profile expects, one per line (send them once).\n";
 
-double parseNumber(const std::string& text, const std::string& option) {
-  size_t used = 0;
-  double v = 0.0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !std::isfinite(v))
-    throw UsageError(option + " needs a number, got '" + text + "'");
-  return v;
-}
-
 // Writes PATH.part next to `path` with `fill`, then renames it over `path`: an interrupted or
 // failed write never leaves a truncated file under the output's name.
 template <typename Fill>
@@ -107,10 +94,10 @@ PlanOptions planOptionsFrom(const Options& o) {
     if (!pair) throw UsageError("--at needs X,Y in mm, got '" + *at + "'");
     p.atMm = Vec2(pair->first, pair->second);
   }
-  if (const auto s = o.value("--scale")) p.scale = parseNumber(*s, "--scale");
+  if (const auto s = o.value("--scale")) p.scale = numberArg(*s, "--scale");
   if (!(p.scale > 0.0)) throw UsageError("--scale must be positive");
-  if (const auto r = o.value("--rotate")) p.rotationRad = radFromDeg(parseNumber(*r, "--rotate"));
-  if (const auto t = o.value("--tolerance")) p.toleranceMm = parseNumber(*t, "--tolerance");
+  if (const auto r = o.value("--rotate")) p.rotationRad = radFromDeg(numberArg(*r, "--rotate"));
+  if (const auto t = o.value("--tolerance")) p.toleranceMm = numberArg(*t, "--tolerance");
   if (!(p.toleranceMm > 0.0)) throw UsageError("--tolerance must be positive");
   p.fit = o.flag("--fit");
   p.optimise = !o.flag("--no-optimise");

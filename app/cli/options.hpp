@@ -2,6 +2,7 @@
 // option is an error that names it.
 #pragma once
 
+#include <cmath>
 #include <map>
 #include <optional>
 #include <set>
@@ -14,6 +15,22 @@ namespace fivebar::cli {
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+// The value of a numeric option, whole ("12.5", not "12.5mm"), finite and, when `positive`,
+// above zero; anything else is a UsageError naming the option and the text given.
+inline double numberArg(const std::string& text, const std::string& option, bool positive = false) {
+  size_t used = 0;
+  double v = 0.0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !std::isfinite(v) || (positive && !(v > 0.0)))
+    throw UsageError(option + (positive ? " needs a positive number, got '" : " needs a number, got '") +
+                     text + "'");
+  return v;
+}
 
 class Options {
  public:

@@ -99,8 +99,9 @@ TEST(PenOffsetConsumers, WorkspaceMapsAreOfThePen) {
         if (!ik.ok() || !map.reachable[i]) continue;
         // The linkage's margins at the pose that puts the pen there (where that pose is the
         // mode's pose of P: away from a leg's stretch the chain's elbow is).
-        const IkResult atP = inverse(p.geometry, P, mode);
-        if (atP.ok() && std::abs(std::remainder(atP.angles.theta1 - ik.angles.theta1, 2.0 * kPi)) < 1e-6) {
+        const IkResult linkageAtP = inverse(p.geometry, P, mode);
+        if (linkageAtP.ok() &&
+            std::abs(std::remainder(linkageAtP.angles.theta1 - ik.angles.theta1, 2.0 * kPi)) < 1e-6) {
           const PointSample atDistal = evaluatePoint(p.geometry, plain, mode, P);
           EXPECT_NEAR(map.typeIIMarginRadMap[i], atDistal.typeIIMarginRad, 1e-5);
           EXPECT_NEAR(map.typeIMarginRadMap[i], atDistal.typeIMarginRad, 1e-5);

@@ -169,7 +169,9 @@ TEST(SoftLimits, MotionCheckAgreesWithTheSimulatedBoard) {
     // A status report or two later: the move ran to its end, or the alarm came.
     link.runUntil([&] { return link.protocol.state() == grbl::MachineState::Alarm; }, 0.6);
     alarm = link.protocol.state() == grbl::MachineState::Alarm;
-    if (!alarm) ASSERT_TRUE(idle()) << line;
+    if (!alarm) {
+      ASSERT_TRUE(idle()) << line;
+    }
     if (jog) {
       // GRBL answers a jog beyond the travel with error:15 and moves nothing.
       EXPECT_FALSE(alarm) << line << " seed 20261202";

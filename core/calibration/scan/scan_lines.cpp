@@ -149,8 +149,9 @@ std::optional<ScannedLine> measureLine(const QImage& grey, const scan::Blob& blo
     const double x = (s.t - tStart) / kBinPx - 0.5;  // in bins, 0 = the first bin's centre
     const auto k0 = static_cast<long>(std::ceil(x - kTentPx / kBinPx));
     const auto k1 = static_cast<long>(std::floor(x + kTentPx / kBinPx));
-    for (long k = std::max(0L, k0); k <= std::min(k1, static_cast<long>(f.size()) - 1); ++k)
-      f[static_cast<size_t>(k)] += s.v * std::max(0.0, 1.0 - std::abs(x - static_cast<double>(k)) * kBinPx / kTentPx);
+    for (long bin = std::max(0L, k0); bin <= std::min(k1, static_cast<long>(f.size()) - 1); ++bin)
+      f[static_cast<size_t>(bin)] +=
+          s.v * std::max(0.0, 1.0 - std::abs(x - static_cast<double>(bin)) * kBinPx / kTentPx);
   }
   const auto a = crossing(f, tStart, 0, +1, 0.5 * inkPerPx);
   const auto b = crossing(f, tStart, static_cast<int>(f.size()) - 1, -1, 0.5 * inkPerPx);
