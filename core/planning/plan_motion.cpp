@@ -622,10 +622,7 @@ PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Lay
     out.job = PlannedJob();
     return out;
   }
-  if (options.keepBlockTimings)
-    out.blockTimings = estimateJobTime(out.job, profile);
-  else
-    fillJobTimes(out.job, profile);
+  fillJobTimes(out.job, profile);
   clock.lap("time estimate");
   if (out.job.moves.size() <= kTimeOptimalMaxMoves) {
     std::vector<double> layerSpeeds;

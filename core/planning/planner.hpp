@@ -40,9 +40,6 @@ struct PlanOptions {
   bool optimise = true;     // join, reverse and reorder strokes to cut travel time
   double minSegmentDurationS = 0.005;
   int maxListedProblems = 20;  // problems listed in an infeasible report
-  // Keep the per-move GRBL timings of the time estimate in PlanResult::blockTimings (about 50
-  // bytes a move), for a caller that animates the job (Trajectory) without timing it again.
-  bool keepBlockTimings = false;
   // Set from another thread to stop planning early (status Cancelled); may be null.
   const std::atomic<bool>* cancel = nullptr;
 };
@@ -125,7 +122,6 @@ struct PlanResult {
   Message placementNote;        // "scaled to 62 % to fit the workspace" when planJob scaled down
   double requiredFlatteningToleranceMm = 0.0;  // CoarseDrawing: work-frame mm to import with
   StageTimes timings;           // wall-clock seconds per pipeline stage
-  std::vector<GrblBlockTiming> blockTimings;  // per move, with PlanOptions::keepBlockTimings
   bool ok() const { return status == PlanStatus::Ok; }
 };
 

@@ -88,9 +88,11 @@ double trapezoidTime(double length, double v0, double vn, double v1, double a) {
 // durations, when those are given, and with `startTimes` their start times from clock 0.
 class TimingSink {
  public:
-  TimingSink(std::vector<GrblBlockTiming>* out, std::vector<JobMove>* moves, size_t first,
+  // out: nullptr, or the timings of the moves from `outFirst` on, indexed by move - outFirst
+  // (this sink writes its part's slice).
+  TimingSink(GrblBlockTiming* out, size_t outFirst, std::vector<JobMove>* moves, size_t first,
              bool startTimes)
-      : out_(out), moves_(moves), next_(first), startTimes_(startTimes) {}
+      : out_(out), outFirst_(outFirst), moves_(moves), next_(first), startTimes_(startTimes) {}
   void emit(size_t input, const GrblBlockTiming& t) {
     close(input);
     put(t);
@@ -109,10 +111,11 @@ class TimingSink {
       m.durationS = t.durationS;
       clockS_ += t.durationS;
     }
-    if (out_ != nullptr) out_->push_back(t);
+    if (out_ != nullptr) out_[next_ - outFirst_] = t;
     ++next_;
   }
-  std::vector<GrblBlockTiming>* out_;
+  GrblBlockTiming* out_;
+  size_t outFirst_;
   std::vector<JobMove>* moves_;
   size_t next_;
   bool startTimes_;
@@ -307,6 +310,24 @@ struct JobPart {
   double z = 0.0;
 };
 
+// The part [begin, end), begin being 0 or a synchronising move: where the moves before it left
+// the joints and Z.
+JobPart partFrom(const PlannedJob& job, const MachineProfile& profile, size_t begin, size_t end) {
+  JobPart part{begin, end, job.start, profile.tool.zUpMm};
+  bool haveAt = false, haveZ = profile.tool.kind != ToolKind::ZAxis;
+  for (size_t i = begin; i-- > 0 && !(haveAt && haveZ);) {
+    const JobMove& m = job.moves[i];
+    if (!haveAt && isMotion(m.kind)) {
+      part.at = m.target;
+      haveAt = true;
+    } else if (!haveZ && (m.kind == JobMoveKind::PenUp || m.kind == JobMoveKind::PenDown)) {
+      part.z = m.toolValue;
+      haveZ = true;
+    }
+  }
+  return part;
+}
+
 // Jobs smaller than this are timed in one part: a thread costs more than it saves.
 constexpr size_t kMinMovesToSplit = 20000;
 
@@ -323,20 +344,8 @@ std::vector<JobPart> jobParts(const PlannedJob& job, const MachineProfile& profi
     else if (synchronises(job.moves[n / 2 - d], profile.tool.kind)) cut = n / 2 - d;
   }
   if (cut == 0) return parts;
-  JobPart second{cut, n, job.start, profile.tool.zUpMm};
-  bool haveAt = false, haveZ = profile.tool.kind != ToolKind::ZAxis;
-  for (size_t i = cut; i-- > 0 && !(haveAt && haveZ);) {
-    const JobMove& m = job.moves[i];
-    if (!haveAt && isMotion(m.kind)) {
-      second.at = m.target;
-      haveAt = true;
-    } else if (!haveZ && (m.kind == JobMoveKind::PenUp || m.kind == JobMoveKind::PenDown)) {
-      second.z = m.toolValue;
-      haveZ = true;
-    }
-  }
   parts[0].end = cut;
-  parts.push_back(second);
+  parts.push_back(partFrom(job, profile, cut, n));
   return parts;
 }
 
@@ -420,26 +429,20 @@ struct InputCollector {
   }
 };
 
-void reserveTimings(std::vector<GrblBlockTiming>& out, size_t n) {
-  out.reserve(n);
-  adviseHugePages(out.data(), n * sizeof(GrblBlockTiming));
-}
-
 // Times the job's moves (durations, start times, total) in one or two parts on up to two threads,
-// and with `timings` also returns every move's timing. The parts are independent and the start
-// times are summed in move order afterwards, so the figures are those of one sequential pass.
+// and with `timings` also returns every move's timing (each part writes its own slice). The parts
+// are independent and the start times are summed in move order afterwards, so the figures are
+// those of one sequential pass.
 void timeJob(PlannedJob& job, const MachineProfile& profile, std::vector<GrblBlockTiming>* timings) {
   const GrblTimeModel model = grblTimeModelOf(profile);
   const std::vector<JobPart> parts = jobParts(job, profile);
-  std::vector<std::vector<GrblBlockTiming>> partTimings(parts.size());
   std::vector<double> partClockS(parts.size(), 0.0);
+  if (timings != nullptr) {
+    reserveWithHugePages(*timings, job.moves.size());
+    timings->resize(job.moves.size());
+  }
   parallelFor(parts.size(), planningThreads(), [&](size_t k) {
-    std::vector<GrblBlockTiming>* out = nullptr;
-    if (timings != nullptr) {
-      out = k == 0 ? timings : &partTimings[k];
-      reserveTimings(*out, k == 0 ? job.moves.size() : parts[k].end - parts[k].begin);
-    }
-    TimingSink sink(out, &job.moves, parts[k].begin, k == 0);
+    TimingSink sink(timings != nullptr ? timings->data() : nullptr, 0, &job.moves, parts[k].begin, k == 0);
     Planner planner(model, sink);
     feedJob(job, profile, parts[k], planner);
     planner.endChain();
@@ -452,8 +455,6 @@ void timeJob(PlannedJob& job, const MachineProfile& profile, std::vector<GrblBlo
       job.moves[i].startTimeS = clockS;
       clockS += job.moves[i].durationS;
     }
-    if (timings != nullptr)
-      timings->insert(timings->end(), partTimings[k].begin(), partTimings[k].end());
   }
   job.summary.estimatedTimeS = clockS;
 }
@@ -474,8 +475,9 @@ GrblTimeModel grblTimeModelOf(const MachineProfile& profile) {
 std::vector<GrblBlockTiming> estimateBlocks(const std::vector<GrblBlockInput>& inputs,
                                             const GrblTimeModel& model) {
   std::vector<GrblBlockTiming> out;
-  reserveTimings(out, inputs.size());
-  TimingSink sink(&out, nullptr, 0, false);
+  reserveWithHugePages(out, inputs.size());
+  out.resize(inputs.size());
+  TimingSink sink(out.data(), 0, nullptr, 0, false);
   Planner planner(model, sink);
   for (size_t i = 0; i < inputs.size(); ++i) {
     const GrblBlockInput& in = inputs[i];
@@ -531,5 +533,27 @@ std::vector<GrblBlockTiming> estimateJobTime(PlannedJob& job, const MachineProfi
 }
 
 void fillJobTimes(PlannedJob& job, const MachineProfile& profile) { timeJob(job, profile, nullptr); }
+
+TimedChain timeChainAround(const PlannedJob& job, const MachineProfile& profile, size_t moveIndex) {
+  const size_t n = job.moves.size();
+  TimedChain chain;
+  if (moveIndex >= n) return chain;
+  const ToolKind tool = profile.tool.kind;
+  size_t begin = moveIndex;
+  while (begin > 0 && !synchronises(job.moves[begin], tool)) --begin;
+  size_t end = moveIndex + 1;
+  while (end < n && !synchronises(job.moves[end], tool)) ++end;
+  const JobPart part = partFrom(job, profile, begin, end);
+  chain.begin = begin;
+  chain.end = end;
+  chain.timings.resize(end - begin);
+  TimingSink sink(chain.timings.data(), begin, nullptr, begin, false);
+  const GrblTimeModel model = grblTimeModelOf(profile);
+  Planner planner(model, sink);
+  feedJob(job, profile, part, planner);
+  planner.endChain();
+  sink.close(end);
+  return chain;
+}
 
 }  // namespace fivebar

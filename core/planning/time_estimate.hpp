@@ -60,4 +60,15 @@ std::vector<GrblBlockTiming> estimateJobTime(PlannedJob& job, const MachineProfi
 // move, tens of MB on a large job): for the planner, which only needs the moves' times.
 void fillJobTimes(PlannedJob& job, const MachineProfile& profile);
 
+// The moves around one move that GRBL's planner times on their own: from the last synchronising
+// command at or before it (servo M3/M5, G4, M0; or the job's start) up to the next one (or the
+// job's end). The machine is at rest where such a chain starts, so its timings are exactly those
+// the whole job's estimate gives its moves (estimateJobTime), for a fraction of the work and
+// memory: the trajectory times a large job chain by chain, as it is sampled.
+struct TimedChain {
+  size_t begin = 0, end = 0;               // moves [begin, end)
+  std::vector<GrblBlockTiming> timings;    // timings[i - begin] of move i
+};
+TimedChain timeChainAround(const PlannedJob& job, const MachineProfile& profile, size_t moveIndex);
+
 }  // namespace fivebar

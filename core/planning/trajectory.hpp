@@ -3,8 +3,10 @@
 // state and do not belong here.
 #pragma once
 
-#include <optional>
+#include <cstdint>
 #include <memory>
+#include <mutex>
+#include <optional>
 #include <vector>
 
 #include "core/planning/job.hpp"
@@ -25,27 +27,35 @@ struct TrajectorySample {
 class Trajectory {
  public:
   Trajectory() = default;
-  // Times the job with the GRBL model (also fills the job copy's durations).
+  // Copies the job and times it with the GRBL model (fills the copy's start times and durations).
   Trajectory(const PlannedJob& job, const MachineProfile& profile);
-  // A job the planner timed already: `timings` are its per-move GRBL timings
-  // (PlanOptions::keepBlockTimings, or estimateJobTime); the job is shared, not copied.
-  Trajectory(std::shared_ptr<const PlannedJob> job, std::vector<GrblBlockTiming> timings,
-             const MachineProfile& profile);
+  // A job timed already (planJob fills every move's start time and duration): shared, not
+  // copied. Built at once: the GRBL timing inside each move (trapezoid speeds) is computed chain
+  // by chain as the trajectory is sampled (timeChainAround), not for the whole job up front.
+  Trajectory(std::shared_ptr<const PlannedJob> job, const MachineProfile& profile);
 
   double durationS() const { return durationS_; }
   const PlannedJob& job() const { return *job_; }
-  // Pose at time t (clamped to [0, durationS()]). Continuous in t.
+  // Pose at time t (clamped to [0, durationS()]). Continuous in t. Thread-safe.
   TrajectorySample at(double timeS) const;
 
  private:
-  void index();  // from_ and penDownAfter_
+  // One chain of moves timed (time_estimate.hpp), with the pose before each move and the tool
+  // state after it.
+  struct Chain {
+    TimedChain timed;
+    std::vector<JointAngles> from;      // from[i - begin]: pose before move i
+    std::vector<std::uint8_t> downAfter;  // downAfter[i - begin]: tool down after move i
+  };
+  std::shared_ptr<const Chain> chainAround(std::size_t moveIndex) const;
+
   std::shared_ptr<const PlannedJob> job_ = std::make_shared<const PlannedJob>();
-  Geometry geometry_;
+  std::shared_ptr<const MachineProfile> profile_ = std::make_shared<const MachineProfile>();
   std::optional<PenOffset> pen_;  // the profile's calibrated pen offset
-  std::vector<GrblBlockTiming> timings_;
-  std::vector<JointAngles> from_;   // pose before each move
-  std::vector<bool> penDownAfter_;  // tool state after each move
   double durationS_ = 0.0;
+  // The chain sampled last (an animation samples one chain many times in a row).
+  mutable std::mutex mutex_;
+  mutable std::shared_ptr<const Chain> chain_;
 };
 
 }  // namespace fivebar

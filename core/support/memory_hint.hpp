@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -25,6 +26,13 @@ inline void adviseHugePages(const void* data, std::size_t bytes) {
   (void)data;
   (void)bytes;
 #endif
+}
+
+// reserve(n), with the hint for the reserved buffer (before anything is written to it).
+template <typename T>
+void reserveWithHugePages(std::vector<T>& v, std::size_t n) {
+  v.reserve(n);
+  adviseHugePages(v.data(), v.capacity() * sizeof(T));
 }
 
 }  // namespace fivebar

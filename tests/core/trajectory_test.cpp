@@ -2,9 +2,10 @@
 // pose at each move's end time is its target, p is the FK of q, the pen state follows the tool.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
-#include <stdexcept>
+#include <random>
 
 #include "core/planning/planner.hpp"
 #include "core/planning/trajectory.hpp"
@@ -72,35 +73,114 @@ TEST(Trajectory, MoveEndsHitTheTargetsAndPenStateFollows) {
 namespace fivebar {
 namespace {
 
-// The studio's trajectory reuses the planner's own timing (PlanOptions::keepBlockTimings) and
-// shares the job: it samples exactly as one that copies the job and times it again.
-TEST(Trajectory, PlannerTimingsGiveTheSameTrajectory) {
-  const MachineProfile p = *preset("maker-plotter");
+// A drawing of many short strokes (seeded): with a pen servo, a chain per stroke.
+Drawing strokes(int count) {
+  std::mt19937 rng(20261202);
+  std::uniform_real_distribution<double> x(0, 60), y(0, 40), turn(-1.0, 1.0);
   Drawing d;
   d.layers.resize(1);
-  d.layers[0].paths.push_back({{{0, 0}, {30, 0}, {30, 20}, {5, 25}}, false});
-  PlanOptions o;
-  o.atMm = Vec2(0, 170);
-  o.keepBlockTimings = true;
-  PlanResult r = planJob(d, p, o);
-  ASSERT_TRUE(r.ok()) << r.message;
-  ASSERT_EQ(r.blockTimings.size(), r.job.moves.size());
-  const Trajectory copied(r.job, p);
-  auto job = std::make_shared<const PlannedJob>(r.job);
-  const Trajectory shared(job, r.blockTimings, p);
-  EXPECT_EQ(&shared.job(), job.get());  // not copied
-  ASSERT_DOUBLE_EQ(shared.durationS(), copied.durationS());
-  for (int k = 0; k <= 500; ++k) {
-    const double t = copied.durationS() * k / 500.0;
-    const TrajectorySample a = copied.at(t), b = shared.at(t);
-    EXPECT_EQ(a.moveIndex, b.moveIndex);
-    EXPECT_DOUBLE_EQ(a.q.theta1, b.q.theta1);
-    EXPECT_DOUBLE_EQ(a.q.theta2, b.q.theta2);
-    EXPECT_EQ(a.penDown, b.penDown);
+  for (int k = 0; k < count; ++k) {
+    Polyline line;
+    Vec2 at(x(rng), y(rng));
+    double heading = 0.0;
+    for (int j = 0; j < 6; ++j) {
+      line.points.push_back(at);
+      heading += turn(rng);
+      at += 3.0 * Vec2(std::cos(heading), std::sin(heading));
+    }
+    d.layers[0].paths.push_back(line);
   }
-  // A timing list that does not fit the job is refused, not read out of bounds.
-  r.blockTimings.pop_back();
-  EXPECT_THROW(Trajectory(job, r.blockTimings, p), std::invalid_argument);
+  return d;
+}
+
+// Timing a job chain by chain (what the studio's trajectory does as it is sampled) gives every
+// move exactly the timing the whole job's estimate gives it: with a pen servo (a chain per
+// stroke), a Z axis and a laser (no pen command synchronises: one chain), on a job large enough
+// for the whole-job estimate to time it in two parts on two threads.
+TEST(Trajectory, ChainTimingsAreTheWholeJobsTimings) {
+  for (const ToolKind tool : {ToolKind::PenServo, ToolKind::ZAxis, ToolKind::Laser}) {
+    MachineProfile p = *preset("maker-plotter");
+    p.tool.kind = tool;
+    PlanOptions o;
+    o.atMm = Vec2(-30, 150);
+    const PlanResult r = planJob(strokes(tool == ToolKind::PenServo ? 3000 : 300), p, o);
+    ASSERT_TRUE(r.ok()) << r.message;
+    PlannedJob whole = r.job;
+    const std::vector<GrblBlockTiming> expected = estimateJobTime(whole, p);
+    ASSERT_EQ(expected.size(), r.job.moves.size());
+    if (tool == ToolKind::PenServo) {
+      ASSERT_GT(r.job.moves.size(), 20000u);  // the whole-job estimate times it in two parts
+    }
+    std::size_t chains = 0;
+    for (std::size_t i = 0; i < r.job.moves.size();) {
+      const TimedChain c = timeChainAround(r.job, p, i);
+      ASSERT_EQ(c.begin, i);
+      ASSERT_GT(c.end, c.begin);
+      for (std::size_t k = c.begin; k < c.end; ++k) {
+        const GrblBlockTiming& a = c.timings[k - c.begin];
+        const GrblBlockTiming& b = expected[k];
+        ASSERT_EQ(a.durationS, b.durationS) << "move " << k;
+        ASSERT_EQ(a.entryPerS, b.entryPerS) << "move " << k;
+        ASSERT_EQ(a.exitPerS, b.exitPerS) << "move " << k;
+        ASSERT_EQ(a.nominalPerS, b.nominalPerS) << "move " << k;
+        ASSERT_EQ(a.accelPerS2, b.accelPerS2) << "move " << k;
+        ASSERT_EQ(a.lengthUnits, b.lengthUnits) << "move " << k;
+      }
+      // Any move of the chain finds the same chain.
+      const TimedChain again = timeChainAround(r.job, p, (c.begin + c.end) / 2);
+      EXPECT_EQ(again.begin, c.begin);
+      EXPECT_EQ(again.end, c.end);
+      i = c.end;
+      ++chains;
+    }
+    if (tool == ToolKind::PenServo) {
+      EXPECT_GT(chains, 3000u);
+    } else {
+      EXPECT_EQ(chains, 1u);
+    }
+  }
+}
+
+// The studio's trajectory shares the planned job (not copied) and samples each move with the
+// whole job's GRBL timing: the pose inside a move is where the trapezoid of that timing puts it.
+TEST(Trajectory, SharedJobSamplesWithTheWholeJobsTimings) {
+  const MachineProfile p = *preset("maker-plotter");
+  const PlanResult r = planJob(strokes(40), p, [] {
+    PlanOptions o;
+    o.atMm = Vec2(-30, 150);
+    return o;
+  }());
+  ASSERT_TRUE(r.ok()) << r.message;
+  auto job = std::make_shared<const PlannedJob>(r.job);
+  const Trajectory shared(job, p);
+  EXPECT_EQ(&shared.job(), job.get());  // not copied
+  PlannedJob whole = r.job;
+  const std::vector<GrblBlockTiming> expected = estimateJobTime(whole, p);
+  ASSERT_DOUBLE_EQ(shared.durationS(), whole.summary.estimatedTimeS);
+  JointAngles before = r.job.start;
+  int sampled = 0;
+  // Moves in a scattered order, so that chains are left and found again.
+  std::vector<std::size_t> order(r.job.moves.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::shuffle(order.begin(), order.end(), std::mt19937(7));
+  std::vector<JointAngles> from(r.job.moves.size());
+  for (std::size_t i = 0; i < r.job.moves.size(); ++i) {
+    from[i] = before;
+    if (isMotion(r.job.moves[i].kind)) before = r.job.moves[i].target;
+  }
+  for (const std::size_t i : order) {
+    const JobMove& m = r.job.moves[i];
+    if (!isMotion(m.kind) || expected[i].lengthUnits <= 0.0 || m.durationS <= 0.0) continue;
+    const double t = m.startTimeS + 0.3 * m.durationS;
+    const TrajectorySample s = shared.at(t);
+    ASSERT_EQ(s.moveIndex, static_cast<int>(i));
+    const double u = distanceAt(expected[i], t - m.startTimeS) / expected[i].lengthUnits;
+    EXPECT_NEAR(s.q.theta1, from[i].theta1 + u * (m.target.theta1 - from[i].theta1), 1e-12);
+    EXPECT_NEAR(s.q.theta2, from[i].theta2 + u * (m.target.theta2 - from[i].theta2), 1e-12);
+    EXPECT_EQ(s.penDown, m.kind == JobMoveKind::Draw);
+    ++sampled;
+  }
+  EXPECT_GT(sampled, 200);
 }
 
 }  // namespace

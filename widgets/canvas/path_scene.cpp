@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "core/support/memory_hint.hpp"
 #include "widgets/canvas/studio_palette.hpp"
 
 namespace fivebar::widgets {
@@ -74,6 +75,53 @@ PathScene::LevelPaths simplifyLevel(const PathScene::LevelPaths& in, double tole
   return out;
 }
 
+// A level's simplified paths, as the bucketing reads them.
+struct LevelView {
+  const PathScene::LevelPaths& p;
+  std::size_t pathCount() const { return p.pathCount(); }
+  std::size_t segmentCount() const { return p.segmentCount(); }
+  std::size_t begin(std::size_t i) const { return p.begin[i]; }
+  std::size_t end(std::size_t i) const { return p.begin[i + 1]; }
+  const QPointF& point(std::size_t k) const { return p.points[k]; }
+  int order(std::size_t, std::size_t k) const { return p.orders[k]; }
+  int colourClass(std::size_t, std::size_t k) const { return p.classes[k]; }
+};
+
+// Colour class of the segment that starts at point k of path p: travel, problem, or the speed
+// shade (the fastest shade without speeds).
+struct Classifier {
+  const ScenePathList& list;
+  double speedScale = 0.0;
+  int operator()(const ScenePathList::Info& p, std::size_t k) const {
+    if (p.kind == PathKind::Travel) return PathScene::kTravelClass;
+    if (p.flagged) return PathScene::kProblemClass;
+    if (list.speedsMmPerS.empty() || std::isnan(list.speedsMmPerS[k])) return 2 + PathScene::kSpeedClasses - 1;
+    const double t = list.speedsMmPerS[k] * speedScale;
+    return 2 + std::clamp(static_cast<int>(t * PathScene::kSpeedClasses), 0, PathScene::kSpeedClasses - 1);
+  }
+};
+
+// The scene's own paths (those with a segment, in drawing order), as the bucketing reads them.
+struct ListView {
+  const ScenePathList& list;
+  const std::vector<std::size_t>& byOrder;  // indices into list.paths
+  Classifier classOf;
+  std::size_t pathCount() const { return byOrder.size(); }
+  std::size_t segmentCount() const {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < pathCount(); ++i) n += end(i) - begin(i) - 1;
+    return n;
+  }
+  std::size_t begin(std::size_t i) const { return list.paths[byOrder[i]].pointBegin; }
+  std::size_t end(std::size_t i) const { return list.pointEnd(byOrder[i]); }
+  const QPointF& point(std::size_t k) const { return list.pointsMm[k]; }
+  int order(std::size_t i, std::size_t k) const {
+    const ScenePathList::Info& p = list.paths[byOrder[i]];
+    return p.firstOrder + static_cast<int>(k - p.pointBegin);
+  }
+  int colourClass(std::size_t i, std::size_t k) const { return classOf(list.paths[byOrder[i]], k); }
+};
+
 }  // namespace
 
 QColor PathScene::speedColour(double t) {
@@ -129,14 +177,32 @@ PathScene::PathScene(const ScenePathList& paths) {
   }
   if (segmentCount_ == 0) return;
   boundsMm_ = QRectF(QPointF(x0, y0), QPointF(x1, y1));
+  // Paths in drawing order, so that a stable bucket sort keeps orders ascending (the pipeline's
+  // paths come in that order already).
+  std::vector<std::size_t> order;
+  order.reserve(paths.paths.size());
+  for (std::size_t i = 0; i < paths.paths.size(); ++i)
+    if (paths.pointEnd(i) - paths.paths[i].pointBegin >= 2) order.push_back(i);
+  const auto byOrder = [&](std::size_t a, std::size_t b) {
+    return paths.paths[a].firstOrder < paths.paths[b].firstOrder;
+  };
+  if (!std::is_sorted(order.begin(), order.end(), byOrder)) std::stable_sort(order.begin(), order.end(), byOrder);
+  // A simplified path keeps at least one segment: with that many paths (a job or drawing of
+  // short lines) no coarser level can be useful, and the one level is bucketed straight from
+  // the paths, without copying their points first.
+  if (static_cast<double>(order.size()) > kUselessLevelShare * static_cast<double>(segmentCount_)) {
+    Level level;
+    bucket(ListView{paths, order, Classifier{paths, maxSpeed_ > 0.0f ? 1.0 / maxSpeed_ : 0.0}}, 0.0, level);
+    levels_.push_back(std::move(level));
+    return;
+  }
   // A pyramid: each level simplifies the previous one's points with a 4x larger tolerance, so
   // every level merges at most kMaxMergedPoints of the previous level's points per segment.
-  LevelPaths current = baseLevel(paths);
+  LevelPaths current = baseLevel(paths, order);
   double tolerance = 0.0;
   for (int l = 0; l < kMaxLevels; ++l) {
     if (tolerance > 0.0) {
-      // A simplified path keeps at least one segment: with that many paths no level can be
-      // useful, so the points are not even simplified (a job or drawing of short lines).
+      // No coarser level can be useful once nearly every segment is a path of its own.
       if (static_cast<double>(current.pathCount()) >
           kUselessLevelShare * static_cast<double>(current.segmentCount()))
         break;
@@ -149,58 +215,37 @@ PathScene::PathScene(const ScenePathList& paths) {
       current = std::move(simpler);
     }
     Level level;
-    bucket(current, tolerance, level);
+    bucket(LevelView{current}, tolerance, level);
     levels_.push_back(std::move(level));
     tolerance = (tolerance == 0.0) ? kFirstToleranceMm : tolerance * kLevelFactor;
   }
 }
 
-PathScene::LevelPaths PathScene::baseLevel(const ScenePathList& paths) const {
-  const double speedScale = maxSpeed_ > 0.0f ? 1.0 / maxSpeed_ : 0.0;
-  const bool speeds = !paths.speedsMmPerS.empty();
-  const auto classOf = [&](const ScenePathList::Info& p, std::size_t point) {
-    if (p.kind == PathKind::Travel) return kTravelClass;
-    if (p.flagged) return kProblemClass;
-    if (!speeds || std::isnan(paths.speedsMmPerS[point])) return 2 + kSpeedClasses - 1;
-    const double t = paths.speedsMmPerS[point] * speedScale;
-    return 2 + std::clamp(static_cast<int>(t * kSpeedClasses), 0, kSpeedClasses - 1);
-  };
-  // Paths in drawing order, so that a stable bucket sort keeps orders ascending (the pipeline's
-  // paths come in that order already).
-  std::vector<std::size_t> sorted;
-  sorted.reserve(paths.paths.size());
-  std::size_t points = 0;
-  for (std::size_t i = 0; i < paths.paths.size(); ++i)
-    if (paths.pointEnd(i) - paths.paths[i].pointBegin >= 2) {
-      sorted.push_back(i);
-      points += paths.pointEnd(i) - paths.paths[i].pointBegin;
-    }
-  const auto byOrder = [&](std::size_t a, std::size_t b) {
-    return paths.paths[a].firstOrder < paths.paths[b].firstOrder;
-  };
-  if (!std::is_sorted(sorted.begin(), sorted.end(), byOrder))
-    std::stable_sort(sorted.begin(), sorted.end(), byOrder);
+PathScene::LevelPaths PathScene::baseLevel(const ScenePathList& paths,
+                                           const std::vector<std::size_t>& order) const {
+  const ListView view{paths, order, Classifier{paths, maxSpeed_ > 0.0f ? 1.0 / maxSpeed_ : 0.0}};
   LevelPaths out;
-  out.points.reserve(points);
-  out.orders.reserve(points);
-  out.classes.reserve(points);
-  out.begin.reserve(sorted.size() + 1);
-  for (const std::size_t i : sorted) {
-    const ScenePathList::Info& p = paths.paths[i];
-    const std::size_t end = paths.pointEnd(i);
-    out.points.insert(out.points.end(), paths.pointsMm.begin() + static_cast<std::ptrdiff_t>(p.pointBegin),
+  const std::size_t points = segmentCount_ + order.size();
+  reserveWithHugePages(out.points, points);
+  reserveWithHugePages(out.orders, points);
+  reserveWithHugePages(out.classes, points);
+  reserveWithHugePages(out.begin, order.size() + 1);
+  for (std::size_t i = 0; i < view.pathCount(); ++i) {
+    const std::size_t begin = view.begin(i), end = view.end(i);
+    out.points.insert(out.points.end(), paths.pointsMm.begin() + static_cast<std::ptrdiff_t>(begin),
                       paths.pointsMm.begin() + static_cast<std::ptrdiff_t>(end));
-    for (std::size_t k = p.pointBegin; k < end; ++k) {
+    for (std::size_t k = begin; k < end; ++k) {
       const bool last = k + 1 == end;
-      out.orders.push_back(last ? 0 : p.firstOrder + static_cast<int>(k - p.pointBegin));
-      out.classes.push_back(static_cast<std::uint8_t>(last ? 0 : classOf(p, k)));
+      out.orders.push_back(last ? 0 : view.order(i, k));
+      out.classes.push_back(static_cast<std::uint8_t>(last ? 0 : view.colourClass(i, k)));
     }
     out.begin.push_back(out.points.size());
   }
   return out;
 }
 
-void PathScene::bucket(const LevelPaths& paths, double toleranceMm, Level& level) const {
+template <typename View>
+void PathScene::bucket(const View& paths, double toleranceMm, Level& level) const {
   level.toleranceMm = toleranceMm;
   const double cellW = std::max(boundsMm_.width() / kGrid, 1e-9);
   const double cellH = std::max(boundsMm_.height() / kGrid, 1e-9);
@@ -209,18 +254,23 @@ void PathScene::bucket(const LevelPaths& paths, double toleranceMm, Level& level
     const int by = std::clamp(static_cast<int>((m.y() - boundsMm_.top()) / cellH), 0, kGrid - 1);
     return by * kGrid + bx;
   };
-  // Key (class, bucket) of each segment, by the index of its first point (-1: a path's end).
-  std::vector<int> keys(paths.points.size(), -1);
-  for (std::size_t i = 0; i < paths.pathCount(); ++i)
-    for (std::size_t k = paths.begin[i]; k + 1 < paths.begin[i + 1]; ++k)
-      keys[k] = paths.classes[k] * kGrid * kGrid +
-                bucketOf((paths.points[k] + paths.points[k + 1]) * 0.5);
-  // Stable counting sort by key.
+  // Key (class, bucket) of each segment, segment after segment in drawing order.
   constexpr int kKeys = kClassCount * kGrid * kGrid;
+  static_assert(kKeys <= 65536, "keys are stored in 16 bits");
+  std::vector<std::uint16_t> keys;
+  reserveWithHugePages(keys, paths.segmentCount());
   std::vector<std::size_t> start(kKeys + 1, 0);
-  for (const int key : keys)
-    if (key >= 0) ++start[static_cast<std::size_t>(key) + 1];
+  for (std::size_t i = 0; i < paths.pathCount(); ++i)
+    for (std::size_t k = paths.begin(i); k + 1 < paths.end(i); ++k) {
+      const int key = paths.colourClass(i, k) * kGrid * kGrid +
+                      bucketOf((paths.point(k) + paths.point(k + 1)) * 0.5);
+      keys.push_back(static_cast<std::uint16_t>(key));
+      ++start[static_cast<std::size_t>(key) + 1];
+    }
+  // Stable counting sort by key.
   std::partial_sum(start.begin(), start.end(), start.begin());
+  reserveWithHugePages(level.lines, start.back());
+  reserveWithHugePages(level.orders, start.back());
   level.lines.resize(start.back());
   level.orders.resize(start.back());
   struct Box {
@@ -228,18 +278,19 @@ void PathScene::bucket(const LevelPaths& paths, double toleranceMm, Level& level
   };
   std::vector<Box> boxes(kGrid * kGrid);
   std::vector<std::size_t> next(start.begin(), start.end() - 1);
-  for (std::size_t k = 0; k < keys.size(); ++k) {
-    const int key = keys[k];
-    if (key < 0) continue;
-    const std::size_t at = next[static_cast<std::size_t>(key)]++;
-    const QPointF& p1 = paths.points[k];
-    const QPointF& p2 = paths.points[k + 1];
-    level.lines[at] = QLineF(p1, p2);
-    level.orders[at] = paths.orders[k];
-    Box& b = boxes[static_cast<std::size_t>(key % (kGrid * kGrid))];
-    b.x0 = std::min({b.x0, p1.x(), p2.x()}), b.x1 = std::max({b.x1, p1.x(), p2.x()});
-    b.y0 = std::min({b.y0, p1.y(), p2.y()}), b.y1 = std::max({b.y1, p1.y(), p2.y()});
-  }
+  std::size_t s = 0;
+  for (std::size_t i = 0; i < paths.pathCount(); ++i)
+    for (std::size_t k = paths.begin(i); k + 1 < paths.end(i); ++k) {
+      const int key = keys[s++];
+      const std::size_t at = next[static_cast<std::size_t>(key)]++;
+      const QPointF& p1 = paths.point(k);
+      const QPointF& p2 = paths.point(k + 1);
+      level.lines[at] = QLineF(p1, p2);
+      level.orders[at] = paths.order(i, k);
+      Box& b = boxes[static_cast<std::size_t>(key % (kGrid * kGrid))];
+      b.x0 = std::min({b.x0, p1.x(), p2.x()}), b.x1 = std::max({b.x1, p1.x(), p2.x()});
+      b.y0 = std::min({b.y0, p1.y(), p2.y()}), b.y1 = std::max({b.y1, p1.y(), p2.y()});
+    }
   level.bucketBounds.assign(kGrid * kGrid, QRectF());
   for (std::size_t i = 0; i < boxes.size(); ++i)
     if (boxes[i].x0 <= boxes[i].x1)

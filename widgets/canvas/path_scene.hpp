@@ -132,8 +132,11 @@ class PathScene {
     std::vector<Run> runs;         // sorted by class, then bucket
     std::vector<QRectF> bucketBounds;
   };
-  LevelPaths baseLevel(const ScenePathList& paths) const;
-  void bucket(const LevelPaths& paths, double toleranceMm, Level& level) const;
+  LevelPaths baseLevel(const ScenePathList& paths, const std::vector<std::size_t>& order) const;
+  // Buckets a level's segments; View (path_scene.cpp) reads a LevelPaths or, for a scene where
+  // no coarser level is useful, the ScenePathList itself (no copy of its points).
+  template <typename View>
+  void bucket(const View& paths, double toleranceMm, Level& level) const;
 
   std::vector<Level> levels_;
   std::size_t segmentCount_ = 0;

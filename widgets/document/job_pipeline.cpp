@@ -2,11 +2,11 @@
 
 #include <QCoreApplication>
 #include <QLocale>
-#include <future>
 #include <set>
 #include <utility>
 
 #include "core/kinematics/units.hpp"
+#include "core/support/memory_hint.hpp"
 #include "widgets/document/core_message.hpp"
 
 namespace fivebar::widgets {
@@ -40,9 +40,13 @@ std::shared_ptr<PathScene> drawingSceneOf(const std::vector<Stroke>& strokes,
 }  // namespace
 
 std::shared_ptr<PathScene> jobSceneOf(const PlannedJob& job) {
+  // Allocated once for the most a job can need (a path per motion move, a point more per path):
+  // counting first would read the moves (over 100 bytes each) twice, and reserved pages that are
+  // never written cost nothing. With the huge-page hint (memory_hint.hpp).
   ScenePathList paths;
-  paths.pointsMm.reserve(job.moves.size() + job.moves.size() / 2);
-  paths.speedsMmPerS.reserve(paths.pointsMm.capacity());
+  reserveWithHugePages(paths.pointsMm, 2 * job.moves.size());
+  reserveWithHugePages(paths.speedsMmPerS, 2 * job.moves.size());
+  reserveWithHugePages(paths.paths, job.moves.size());
   Vec2 at = job.startXY;
   bool open = false;  // a path of `kind` is being built
   PathKind kind = PathKind::Draw;
@@ -116,7 +120,6 @@ PreviewResult runPipeline(const PipelineInput& input) {
   PlanOptions options = studioPlanOptions(input.placement, input.modeSelection, input.toleranceMm);
   options.maxListedProblems = kListedProblems;
   options.cancel = input.cancel.get();
-  options.keepBlockTimings = true;  // the trajectory reuses the planner's timing
   std::string importError;
   std::optional<Drawing> refined;
   PlanResult plan = planRefining(*input.drawing, input.source, input.profile, options, refined, importError);
@@ -139,19 +142,13 @@ PreviewResult runPipeline(const PipelineInput& input) {
   // A planned job needs no drawing scene: its own scene (draw moves, travels hidden) shows the
   // drawing while the next plan runs (job_layer.cpp). Placing the drawing again and bucketing its
   // paths (0.7 s for 400k paths) is left to plans without a job, whose offending paths are shown.
-  // The job's trajectory is built on a second thread beside its scene (both only read the plan).
+  // The trajectory shares the job and times it chain by chain as it is sampled: nothing to build.
   std::shared_ptr<const PlannedJob> job;
-  std::future<void> trajectorySide;
   if (plan.status == PlanStatus::Ok) {
     job = std::make_shared<const PlannedJob>(std::move(plan.job));
-    trajectorySide = std::async(std::launch::async, [&out, &plan, &input, job] {
-      out.trajectory = std::make_shared<Trajectory>(job, std::move(plan.blockTimings), input.profile);
-    });
-  }
-  if (trajectorySide.valid()) {
+    out.trajectory = std::make_shared<Trajectory>(job, input.profile);
     out.jobScene = jobSceneOf(*job);
-    trajectorySide.get();
-    clock.lap("job scene and trajectory");
+    clock.lap("job scene");
   } else {
     out.drawingScene = drawingSceneOf(
         placeDrawing(out.refinedDrawing ? *out.refinedDrawing : *input.drawing, input.placement), out.problems);

@@ -64,7 +64,7 @@ struct PreviewResult {
   // Set when the planner needed the drawing flattened more finely: the drawing planned.
   std::shared_ptr<const Drawing> refinedDrawing;
   // Wall and CPU time of each stage: the planner's (PlanResult::timings), then the studio's own
-  // ("job scene and trajectory", the two built side by side; "drawing scene" when not planned).
+  // ("job scene"; "drawing scene" when not planned).
   StageTimes timings;
 };
 
