@@ -4,6 +4,7 @@
 
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -99,6 +100,49 @@ TEST_F(PlanCli, HatchFillDrawsTheLinesTheAreaNeeds) {
   EXPECT_EQ(bad.exitCode, 2);
   EXPECT_NE(bad.err.find("--fill must be outline, hatch or none, got 'solid'"), std::string::npos) << bad.err;
   EXPECT_EQ(plan(svg, "--hatch-spacing 1").exitCode, 2);  // needs --fill hatch
+}
+
+double scalePercent(const std::string& out) {
+  std::smatch m;
+  if (!std::regex_search(out, m, std::regex("scale ([0-9.]+) %"))) return -1.0;
+  return std::stod(m[1]);
+}
+
+// True size by default; --fit enlarges to the largest singularity-free rectangle; a drawing too
+// big is scaled down to that same rectangle and says so on stderr (only then). Numbers are
+// checked against each other, not against fixed figures.
+TEST_F(PlanCli, TrueSizeByDefaultFitOnRequestScaledDownWithANote) {
+  const std::string square = "<rect x=\"2\" y=\"2\" width=\"36\" height=\"36\" stroke=\"black\" fill=\"none\"/>";
+  const fs::path small = write("small.svg", doc(square));
+  std::string big = doc(square);
+  big.replace(big.find("width=\"40mm\" height=\"40mm\""), 26, "width=\"1000mm\" height=\"1000mm\"");
+  const fs::path large = write("large.svg", big);
+
+  const PlanRun trueSize = plan(small, "");
+  ASSERT_EQ(trueSize.exitCode, 0) << trueSize.err;
+  EXPECT_DOUBLE_EQ(scalePercent(trueSize.out), 100.0) << trueSize.out;
+  EXPECT_NEAR(penDownMm(trueSize.out), 4 * 36.0, 1.0) << trueSize.out;  // drawn at its own size
+  EXPECT_EQ(trueSize.err.find("scaled to"), std::string::npos) << trueSize.err;
+
+  const PlanRun fitted = plan(small, "--fit");
+  ASSERT_EQ(fitted.exitCode, 0) << fitted.err;
+  EXPECT_GT(scalePercent(fitted.out), 150.0) << fitted.out;  // enlarged only on request
+  EXPECT_EQ(fitted.err.find("scaled to"), std::string::npos) << fitted.err;
+
+  const PlanRun shrunk = plan(large, "");
+  ASSERT_EQ(shrunk.exitCode, 0) << shrunk.err;
+  const double percent = scalePercent(shrunk.out);
+  EXPECT_LT(percent, 100.0) << shrunk.out;
+  const std::string note = "fivebar plan: " + large.string() + ": scaled to " +
+                           std::to_string(static_cast<int>(std::lround(percent))) + " % to fit the workspace";
+  EXPECT_NE(shrunk.err.find(note), std::string::npos) << shrunk.err;
+  // The same rectangle as --fit: the same drawn length.
+  EXPECT_NEAR(penDownMm(shrunk.out), penDownMm(fitted.out), 1.0) << shrunk.out << fitted.out;
+  // --fit on the big drawing also fits it (no note: the user asked for it).
+  const PlanRun bigFit = plan(large, "--fit");
+  ASSERT_EQ(bigFit.exitCode, 0) << bigFit.err;
+  EXPECT_NEAR(penDownMm(bigFit.out), penDownMm(fitted.out), 1.0) << bigFit.out;
+  EXPECT_EQ(bigFit.err.find("scaled to"), std::string::npos) << bigFit.err;
 }
 
 }  // namespace
