@@ -8,12 +8,15 @@
 #include <QDir>
 #include <QFile>
 #include <QImage>
+#include <QLabel>
+#include <QLocale>
 #include <QMessageBox>
 #include <QPainter>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
+#include <set>
 
 #include "app/studio/main_window.hpp"
 #include "widgets/canvas/canvas_view.hpp"
@@ -25,6 +28,9 @@
 #include "widgets/document/studio_document.hpp"
 #include "widgets/canvas/studio_palette.hpp"
 #include "core/planning/auto_placement.hpp"
+#include "core/planning/planner.hpp"
+#include "widgets/canvas/view_transform.hpp"
+#include "widgets/document/job_pipeline.hpp"
 #include "widgets/canvas/workspace_cache.hpp"
 
 namespace fivebar::widgets {
@@ -101,6 +107,114 @@ TEST(StudioFlow, ImportPlacesTheDrawingAtTrueSizeInsideTheSafeRectangle) {
   EXPECT_FALSE(s.doc.hasDrawing());
   s.doc.undoStack()->redo();
   EXPECT_EQ(s.doc.placement().centerMm, placed.centerMm);
+}
+
+// A drawing too big for the workspace is scaled down on import to the rule's rectangle (the
+// scale `fivebar plan` picks), and the studio says so: the import's message and the Placement
+// panel's note.
+TEST(StudioFlow, ADrawingTooBigIsScaledDownAndTheStudioSaysSo) {
+  studio::MainWindow window(makerPlotter());
+  window.resize(1400, 900);
+  window.show();
+  window.importer().setInteractive(false);
+  QSignalSpy imported(&window.importer(), &ImportController::finished);
+  window.importer().openData(R"(<svg xmlns="http://www.w3.org/2000/svg" width="1000mm" height="1000mm" viewBox="0 0 40 40">
+  <rect x="2" y="2" width="36" height="36" fill="none" stroke="#000000"/></svg>)",
+                             QStringLiteral("poster.svg"));
+  ASSERT_TRUE(imported.wait(kWaitMs));
+  ASSERT_TRUE(imported.front().at(0).toBool());
+  const QString message = imported.front().at(1).toString();
+  const double scale = window.document().placement().scale;
+  EXPECT_LT(scale, 1.0);
+  const auto rule = autoPlacement(window.document().drawing(), window.document().profile(), std::nullopt, 0.0,
+                                  PlacementSizing::TrueSize);
+  ASSERT_TRUE(rule);
+  EXPECT_DOUBLE_EQ(scale, rule->placement.scale);  // the CLI's rule
+  const QString percent = QLocale().toString(scale * 100.0, 'f', scale * 100.0 < 10.0 ? 1 : 0);
+  EXPECT_EQ(message, QStringLiteral("scaled to %1 % to fit the workspace").arg(percent)) << message.toStdString();
+  auto* note = window.findChild<QLabel*>(QStringLiteral("placementNote"));
+  ASSERT_NE(note, nullptr);
+  EXPECT_TRUE(note->isVisible());
+  EXPECT_EQ(note->text(), message);
+}
+
+// Pre-flight paints only the offending path red: a drawing of two squares moved so that one
+// leaves the workspace is infeasible, its problems name that path only, and the drawing's scene
+// paints red pixels over it and none over the other square.
+TEST(StudioFlow, PreflightPaintsOnlyTheOffendingPathRed) {
+  QTemporaryDir dir;
+  const QString path = dir.filePath(QStringLiteral("two-squares.svg"));
+  {
+    QFile f(path);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write(R"(<svg xmlns="http://www.w3.org/2000/svg" width="60mm" height="10mm" viewBox="0 0 60 10">
+  <rect x="1" y="1" width="8" height="8" fill="none" stroke="#000000"/>
+  <rect x="51" y="1" width="8" height="8" fill="none" stroke="#000000"/></svg>)");
+  }
+  Studio s;
+  ASSERT_TRUE(importAndWait(s, path));
+  // Move the drawing right, 1 mm at a time, until the planner finds the right square (path 1)
+  // outside while the left one (path 0) is still fine.
+  const auto problemPaths = [&](const Placement& at) {
+    std::set<int> paths;
+    const PlanResult r = planJob(s.doc.drawing(), s.doc.profile(), studioPlanOptions(at, std::nullopt, 0.1));
+    for (const PlanProblem& p : r.report.problems) paths.insert(p.pathIndex);
+    return paths;
+  };
+  Placement moved = s.doc.placement();
+  bool found = false;
+  for (int step = 0; step < 400 && !found; ++step) {
+    moved.centerMm.x() += 1.0;
+    found = problemPaths(moved) == std::set<int>{1};
+  }
+  ASSERT_TRUE(found) << "no placement with only the right square outside";
+  s.doc.setPlacement(moved);
+  const PreviewResult r = planAndWait(s);
+  ASSERT_EQ(r.status, PreviewStatus::Infeasible) << r.message.toStdString();
+  ASSERT_FALSE(r.problems.empty());
+  for (const PreviewProblem& p : r.problems) {
+    EXPECT_EQ(p.layerIndex, 0);
+    EXPECT_EQ(p.pathIndex, 1) << p.text.toStdString();
+  }
+  ASSERT_TRUE(r.drawingScene);
+  // Paint the drawing's scene and look at each square's outline.
+  const auto strokes = placeDrawing(s.doc.drawing(), moved);
+  const QRectF all = [&] {
+    const auto b = strokeBounds(strokes);
+    return QRectF(QPointF(b->x0, b->y0), QPointF(b->x1, b->y1));
+  }();
+  ViewTransform view;
+  view.setViewportPx(QSizeF(800, 200));
+  view.fit(all, 20.0);
+  QImage image(800, 200, QImage::Format_ARGB32_Premultiplied);
+  image.fill(Qt::white);
+  {
+    QPainter painter(&image);
+    r.drawingScene->paint(painter, view, ScenePaintOptions{});
+  }
+  const auto redAndInk = [&](int pathIndex) {
+    std::pair<int, int> counts{0, 0};
+    for (const Stroke& st : strokes) {
+      if (st.pathIndex != pathIndex) continue;
+      for (std::size_t k = 0; k + 1 < st.points.size(); ++k) {
+        const Vec2 mid = 0.5 * (st.points[k] + st.points[k + 1]);
+        const QPoint px = view.widgetFromMachine(QPointF(mid.x(), mid.y())).toPoint();
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const QColor c = image.pixelColor(px + QPoint(dx, dy));
+            if (c.rgb() == palette::problem().rgb()) ++counts.first;
+            else if (c.rgb() != QColor(Qt::white).rgb()) ++counts.second;
+          }
+      }
+    }
+    return counts;
+  };
+  const auto [goodRed, goodInk] = redAndInk(0);
+  const auto [badRed, badInk] = redAndInk(1);
+  EXPECT_EQ(goodRed, 0);
+  EXPECT_GT(goodInk, 0);
+  EXPECT_GT(badRed, 0);
+  (void)badInk;
 }
 
 TEST(StudioFlow, ImportErrorsNameTheFile) {
