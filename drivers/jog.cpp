@@ -187,6 +187,9 @@ JogPlan planGoTo(const MachineProfile& p, const JointAngles& currentCommanded, c
     plan.reason = q ? FB_TR("Jog", "no safe travel to that point") : FB_TR("Jog", "the point is out of reach");
     return plan;
   }
+  // Absolute targets whatever the console left the board in (a G91 typed there would make
+  // them relative).
+  plan.lines.push_back("G90");
   for (const std::string& s : job::penUpCommands(p.tool)) plan.lines.push_back(s);
   for (const JointAngles& kinematic : *travel) {
     const JointAngles w = commandedFromKinematic(p.calibration, kinematic);

@@ -3,6 +3,8 @@
 // cycle start and the pen. Every move passes the motion check (drivers/motion_check) first.
 #include "session/machine_session.hpp"
 
+#include <algorithm>
+
 #include "core/kinematics/units.hpp"
 #include "drivers/gcode_job.hpp"
 #include "drivers/grbl_codes.hpp"
@@ -187,6 +189,8 @@ bool MachineSession::sendJog(const jog::JogPlan& plan) {
   }
   settle_.jogSent(ids, sent && !plan.targets.empty() ? std::optional(plan.targets.back()) : std::nullopt);
   if (!sent) return false;
+  // A go-to sets absolute distance mode first (jog.cpp): the console's checks read lines so.
+  if (std::find(plan.lines.begin(), plan.lines.end(), "G90") != plan.lines.end()) consoleAbsolute_ = true;
   if (!logEach)
     emit consoleLine(tr("%1 (jog in %2 checked moves)")
                          .arg(QString::fromStdString(plan.lines.back()))

@@ -125,6 +125,17 @@ TEST(ReferencePose, IsSetOnlyAfterConfirmationAndGoHomeReturnsByACheckedMove) {
   ASSERT_TRUE(rig.waitIdle(15000));
   EXPECT_TRUE(near(*rig.session.motorAngles(), p.homeAngles, 0.05));
   EXPECT_EQ(rig.session.penState(), session::PenState::Up);
+  // After a G91 typed in the console the go-to still goes home: it sets G90 first.
+  ASSERT_TRUE(rig.session.sendJog(jog::planMotorJog(p, *rig.session.motorAngles(), 1, 5.0, 20.0 * 60.0)));
+  ASSERT_TRUE(waitUntil([&] { return !rig.session.jogSettled(); }, 1000));
+  ASSERT_TRUE(rig.waitIdle());
+  QString refusal;
+  ASSERT_TRUE(rig.session.sendLine(QStringLiteral("G91"), &refusal)) << refusal.toStdString();
+  ASSERT_TRUE(rig.waitIdle());
+  ASSERT_TRUE(rig.session.goToHomePose(&why)) << why.toStdString();
+  ASSERT_TRUE(waitUntil([&] { return !rig.session.jogSettled(); }, 1000));
+  ASSERT_TRUE(rig.waitIdle(15000));
+  EXPECT_TRUE(near(*rig.session.motorAngles(), p.homeAngles, 0.05));
   // Away again, then confirm: the pose where the machine stands becomes the home pose.
   ASSERT_TRUE(rig.session.sendJog(jog::planMotorJog(p, *rig.session.motorAngles(), 1, 5.0, 20.0 * 60.0)));
   ASSERT_TRUE(waitUntil([&] { return !rig.session.jogSettled(); }, 1000));
