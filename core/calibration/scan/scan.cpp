@@ -15,33 +15,50 @@ namespace {
 // The paper and the ink must differ by at least this many grey levels to find anything.
 constexpr double kMinContrast = 40.0;
 
+}  // namespace
+
+namespace scan {
+
 Message sourced(const std::string& source, Message m) {
   return std::move(Message(FB_TR("CalibrationScan", "%1: %2")).arg(source).arg(std::move(m)));
 }
 
-}  // namespace
+ReadyImage readyImage(const QImage& image, double dpi, const std::string& source) {
+  ReadyImage out;
+  if (!(dpi > 0.0) || !std::isfinite(dpi)) {
+    out.problem = sourced(source, FB_TR("CalibrationScan", "the dpi must be a positive number"));
+    return out;
+  }
+  if (image.isNull() || image.width() < 2 || image.height() < 2) {
+    out.problem = sourced(source, FB_TR("CalibrationScan", "the image is empty"));
+    return out;
+  }
+  out.grey = image.convertToFormat(QImage::Format_Grayscale8);
+  out.levels = levelsOf(out.grey);
+  const Levels& levels = out.levels;
+  if (levels.paper - levels.ink < kMinContrast)
+    out.problem = sourced(source, FB_TR("CalibrationScan", "no ink found (the image has almost no contrast)"));
+  return out;
+}
+
+}  // namespace scan
+
+using scan::sourced;
 
 ScanOutcome scanImage(const QImage& image, double dpi, const std::vector<MarkRecord>& marks,
                       const std::string& source) {
   ScanOutcome out;
-  if (!(dpi > 0.0) || !std::isfinite(dpi)) {
-    out.error = sourced(source, FB_TR("CalibrationScan", "the dpi must be a positive number"));
-    return out;
-  }
-  if (image.isNull() || image.width() < 2 || image.height() < 2) {
-    out.error = sourced(source, FB_TR("CalibrationScan", "the image is empty"));
-    return out;
-  }
   if (marks.empty()) {
     out.error = sourced(source, FB_TR("CalibrationScan", "the pattern has no marks"));
     return out;
   }
-  const QImage grey = image.convertToFormat(QImage::Format_Grayscale8);
-  const scan::Levels levels = scan::levelsOf(grey);
-  if (levels.paper - levels.ink < kMinContrast) {
-    out.error = sourced(source, FB_TR("CalibrationScan", "no ink found (the image has almost no contrast)"));
+  scan::ReadyImage ready = scan::readyImage(image, dpi, source);
+  if (ready.problem) {
+    out.error = std::move(*ready.problem);
     return out;
   }
+  const QImage& grey = ready.grey;
+  const scan::Levels& levels = ready.levels;
   const double pxPerMm = dpi / kMmPerInch;
   const double ringMm = 2.0 * marks.front().ringRadiusMm;
   const std::vector<scan::Blob> blobs = scan::darkBlobs(grey, levels);

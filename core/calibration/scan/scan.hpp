@@ -5,10 +5,12 @@
 #pragma once
 
 #include <QImage>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/calibration/marks_csv.hpp"
+#include "core/calibration/scan/scan_blobs.hpp"
 #include "core/support/message.hpp"
 
 namespace fivebar {
@@ -30,6 +32,20 @@ struct ScanOutcome {
 
 ScanOutcome scanImage(const QImage& image, double dpi, const std::vector<MarkRecord>& marks,
                       const std::string& source);
+
+namespace scan {
+// "SOURCE: what is wrong", the form of every scan problem.
+Message sourced(const std::string& source, Message m);
+// A scan ready to be read (marks or accuracy lines): the image in 8-bit grey with its paper and
+// ink levels, or the problem, named with `source`, when the dpi is not a positive number, the
+// image is empty or it has almost no contrast.
+struct ReadyImage {
+  QImage grey;
+  Levels levels;
+  std::optional<Message> problem;
+};
+ReadyImage readyImage(const QImage& image, double dpi, const std::string& source);
+}  // namespace scan
 // Reads the image (any format Qt reads: PNG, JPEG, ...) then scanImage.
 ScanOutcome scanFile(const std::string& path, double dpi, const std::vector<MarkRecord>& marks);
 

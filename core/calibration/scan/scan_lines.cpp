@@ -12,8 +12,6 @@
 namespace fivebar {
 namespace {
 
-// The paper and the ink must differ by at least this many grey levels (as for the marks).
-constexpr double kMinContrast = 40.0;
 // A line candidate is between these shares of the nominal length.
 constexpr double kMinLengthShare = 0.6;
 constexpr double kMaxLengthShare = 1.4;
@@ -203,11 +201,9 @@ std::optional<ScannedLine> measureLine(const QImage& grey, const scan::Blob& blo
   return line;
 }
 
-Message sourced(const std::string& source, Message m) {
-  return std::move(Message(FB_TR("CalibrationScan", "%1: %2")).arg(source).arg(std::move(m)));
-}
-
 }  // namespace
+
+using scan::sourced;
 
 std::vector<Vec2> ScannedLine::pointsMm() const {
   std::vector<Vec2> p{startMm};
@@ -219,20 +215,13 @@ std::vector<Vec2> ScannedLine::pointsMm() const {
 LineScanOutcome scanAccuracyLines(const QImage& image, double dpi, const std::string& source, int expectedLines,
                                   double nominalLengthMm) {
   LineScanOutcome out;
-  if (!(dpi > 0.0) || !std::isfinite(dpi)) {
-    out.error = sourced(source, FB_TR("CalibrationScan", "the dpi must be a positive number"));
+  scan::ReadyImage ready = scan::readyImage(image, dpi, source);
+  if (ready.problem) {
+    out.error = std::move(*ready.problem);
     return out;
   }
-  if (image.isNull() || image.width() < 2 || image.height() < 2) {
-    out.error = sourced(source, FB_TR("CalibrationScan", "the image is empty"));
-    return out;
-  }
-  const QImage grey = image.convertToFormat(QImage::Format_Grayscale8);
-  const scan::Levels levels = scan::levelsOf(grey);
-  if (levels.paper - levels.ink < kMinContrast) {
-    out.error = sourced(source, FB_TR("CalibrationScan", "no ink found (the image has almost no contrast)"));
-    return out;
-  }
+  const QImage& grey = ready.grey;
+  const scan::Levels& levels = ready.levels;
   const double pxPerMm = dpi / kMmPerInch;
   const double nominalPx = nominalLengthMm * pxPerMm;
   const double maxPenPx = kScanMaxPenMm * pxPerMm + 4.0;  // a blurred pen
