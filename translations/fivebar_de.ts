@@ -3938,6 +3938,10 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
         <translation>Mit --screenshot: Position der Simulation als Anteil des Auftrags (0 bis 1).</translation>
     </message>
     <message>
+        <source>Print how long opening and planning the drawing took, stage by stage, to stderr (as fivebar plan --timings).</source>
+        <translation>Ausgeben, wie lange das Öffnen und Planen der Zeichnung gedauert hat, Schritt für Schritt, auf stderr (wie fivebar plan --timings).</translation>
+    </message>
+    <message>
         <source>Machine profile: a preset name or a profile JSON file (default: the last one used, else maker-plotter).</source>
         <translation>Maschinenprofil: ein Vorgabename oder eine Profil-JSON-Datei (Standard: das zuletzt verwendete, sonst maker-plotter).</translation>
     </message>

@@ -3938,6 +3938,10 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
         <translation>Con --screenshot: posición de la simulación como fracción del trabajo (0 a 1).</translation>
     </message>
     <message>
+        <source>Print how long opening and planning the drawing took, stage by stage, to stderr (as fivebar plan --timings).</source>
+        <translation>Mostrar en stderr cuánto tardó abrir y planificar el dibujo, etapa por etapa (como fivebar plan --timings).</translation>
+    </message>
+    <message>
         <source>Machine profile: a preset name or a profile JSON file (default: the last one used, else maker-plotter).</source>
         <translation>Perfil de máquina: un nombre de preajuste o un archivo de perfil JSON (predeterminado: el último usado, si no, maker-plotter).</translation>
     </message>

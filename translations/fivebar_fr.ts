@@ -3938,6 +3938,10 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
         <translation>Avec --screenshot : position de la simulation en fraction de la tâche (0 à 1).</translation>
     </message>
     <message>
+        <source>Print how long opening and planning the drawing took, stage by stage, to stderr (as fivebar plan --timings).</source>
+        <translation>Afficher sur stderr la durée de l’ouverture et de la planification du dessin, étape par étape (comme fivebar plan --timings).</translation>
+    </message>
+    <message>
         <source>Machine profile: a preset name or a profile JSON file (default: the last one used, else maker-plotter).</source>
         <translation>Profil de machine : un nom de préréglage ou un fichier de profil JSON (par défaut : le dernier utilisé, sinon maker-plotter).</translation>
     </message>

@@ -18,6 +18,7 @@
 #include "app/studio/data_files.hpp"
 #include "app/studio/headless.hpp"
 #include "app/studio/main_window.hpp"
+#include "app/studio/plan_timings.hpp"
 #include "app/studio/startup.hpp"
 #include "widgets/panels/fill_options_box.hpp"
 #include "widgets/document/import_controller.hpp"
@@ -62,6 +63,10 @@ struct StudioOptions {
       QCoreApplication::translate("main", "Plan the drawing or project as the studio does, write "
                                           "the G-code and exit (no window)."),
       QStringLiteral("OUT.gcode")};
+  QCommandLineOption timings{
+      QStringLiteral("timings"),
+      QCoreApplication::translate("main", "Print how long opening and planning the drawing took, "
+                                          "stage by stage, to stderr (as fivebar plan --timings).")};
   QCommandLineOption fill{
       QStringLiteral("fill"),
       QCoreApplication::translate("main", "Filled shapes: outline (default), hatch or none; "
@@ -73,7 +78,7 @@ struct StudioOptions {
         QCoreApplication::translate("main", "Plan and simulate drawings for five-bar robots."));
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addOptions({demo, machine, lang, screenshot, overlay, atTime, exportGcode, fill});
+    parser.addOptions({demo, machine, lang, screenshot, overlay, atTime, exportGcode, fill, timings});
     parser.addPositionalArgument(
         QStringLiteral("drawing"),
         QCoreApplication::translate("main", "SVG drawing or project to open."),
@@ -154,6 +159,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   const QStringList files = parser.positionalArguments();
+  if (parser.isSet(options.timings)) fivebar::studio::printPlanTimings(window);
   if (!files.isEmpty()) {
     window.importer().openFile(files.front());
   } else if (parser.isSet(demo)) {

@@ -14,6 +14,7 @@
 #include <QFileInfo>
 #include <QMenu>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -332,6 +333,36 @@ TEST(ProjectFlow, TheMachineProfileIsRememberedAcrossRestarts) {
             preset("hoang2015")->name);
   QSettings().remove(QStringLiteral("machine/profileJson"));
   EXPECT_EQ(studio::startupProfile(std::nullopt, error)->name, makerPlotter().name);
+}
+
+// fivebar-studio --timings prints, once the opened drawing is planned, the time from opening it,
+// the import's share and every stage of the plan, in the form of `fivebar plan --timings`.
+TEST(ProjectFlow, StudioTimingsPrintTheImportAndEveryStage) {
+  QTemporaryDir dir;
+  const QString svg = dir.filePath(QStringLiteral("square.svg"));
+  {
+    QFile f(svg);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write(R"(<svg xmlns="http://www.w3.org/2000/svg" width="40mm" height="40mm" viewBox="0 0 40 40">
+  <rect x="2" y="2" width="36" height="36" fill="none" stroke="#000"/></svg>)");
+  }
+  QString err;
+  ASSERT_EQ(runTool(QStringLiteral(FIVEBAR_STUDIO),
+                    {svg, QStringLiteral("--machine"), QStringLiteral("maker-plotter"), QStringLiteral("--timings"),
+                     QStringLiteral("--screenshot"), dir.filePath(QStringLiteral("shot.png"))},
+                    &err),
+            0)
+      << err.toStdString();
+  const QRegularExpression total(QStringLiteral("fivebar-studio: opened and planned in (\\d+) ms\n"
+                                                "  import and placement: (\\d+) ms\n"));
+  const QRegularExpressionMatch m = total.match(err);
+  ASSERT_TRUE(m.hasMatch()) << err.toStdString();
+  EXPECT_GE(m.captured(1).toLongLong(), m.captured(2).toLongLong());  // the import is part of it
+  for (const char* stage : {"mode screening", "optimise", "segmentation, feeds, travel", "job scene"})
+    EXPECT_TRUE(QRegularExpression(QStringLiteral("\n  %1: \\d+ ms \\(cpu \\d+ ms\\)").arg(QLatin1String(stage)))
+                    .match(err)
+                    .hasMatch())
+        << stage << "\n" << err.toStdString();
 }
 
 }  // namespace

@@ -146,7 +146,7 @@ void ImportController::onFinished() {
   // Gone before any message box: a deleteLater alone waits for the box's own event loop to end,
   // and the dialog's minimum-duration timer could even show it over the error.
   closeProgressDialog();
-  ImportOutcome result = watcher_.result();
+  ImportOutcome result = watcher_.future().takeResult();  // moved out: the drawing is not copied
   const QString name = pendingName_;
   const bool waived = budgetWaived_;
   budgetWaived_ = false;
@@ -199,7 +199,7 @@ void ImportController::onFinished() {
     doc_.loadProject(job.drawing, job.source, placement, job.options.mode, job.options.toleranceMm,
                      job.profile, name);
   } else {
-    doc_.replaceDrawing(job.drawing, name, placement, job.source);
+    doc_.replaceDrawing(std::move(job.drawing), name, placement, job.source);
   }
   if (pendingRemember_) addRecent(name);
   emit warningsReported(name, translated(job.warnings));

@@ -54,9 +54,9 @@ WorkingMode StudioDocument::effectiveMode() const {
   return autoResolved_.value_or(profile_.defaultMode);
 }
 
-void StudioDocument::replaceDrawing(const Drawing& drawing, const QString& fileName,
+void StudioDocument::replaceDrawing(Drawing drawing, const QString& fileName,
                                     const Placement& placement, const DrawingSource& source) {
-  undo_.push(new ReplaceDrawingCommand(*this, drawing, fileName, placement, source));
+  undo_.push(new ReplaceDrawingCommand(*this, std::move(drawing), fileName, placement, source));
 }
 
 void StudioDocument::setPlacement(const Placement& placement, int gestureId) {

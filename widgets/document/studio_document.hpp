@@ -55,8 +55,9 @@ class StudioDocument : public QObject {
   QUndoStack* undoStack() { return &undo_; }
 
   // --- edits, each one undoable ---
-  // Replaces the drawing (an import) and places it.
-  void replaceDrawing(const Drawing& drawing, const QString& fileName, const Placement& placement,
+  // Replaces the drawing (an import) and places it. By value: an import moves its drawing in
+  // (hundreds of thousands of paths are not copied on the UI thread).
+  void replaceDrawing(Drawing drawing, const QString& fileName, const Placement& placement,
                       const DrawingSource& source = {});
   // Sets the placement. Calls with the same non-zero `gestureId` merge into one undo step (a
   // drag); see beginGesture().
