@@ -10,6 +10,10 @@
 #include <QGuiApplication>
 
 #include <atomic>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iostream>
 #include <chrono>
 #include <random>
 #include <thread>
@@ -185,6 +189,21 @@ BENCHMARK(BM_StudioCancel)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime
 }  // namespace fivebar
 
 int main(int argc, char** argv) {
+  // `--write-svg FILE`: the benchmark's drawing as an SVG (about 16 MB), to time the studio and
+  // the CLI end to end on it (fivebar-studio --timings, fivebar plan --timings).
+  if (argc == 3 && std::strcmp(argv[1], "--write-svg") == 0) {
+    std::ofstream out(argv[2]);
+    out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"150mm\" height=\"100mm\" viewBox=\"0 0 150 100\">\n";
+    char buf[128];
+    for (const fivebar::Polyline& line : fivebar::lines().layers[0].paths) {
+      std::snprintf(buf, sizeof buf, "<path d=\"M%.4f %.4fL%.4f %.4f\" stroke=\"#000\" fill=\"none\"/>\n",
+                    line.points[0].x(), line.points[0].y(), line.points[1].x(), line.points[1].y());
+      out << buf;
+    }
+    out << "</svg>\n";
+    std::cout << "wrote " << argv[2] << "\n";
+    return out ? 0 : 1;
+  }
   qputenv("QT_QPA_PLATFORM", "offscreen");
   QGuiApplication app(argc, argv);
   benchmark::Initialize(&argc, argv);

@@ -13,8 +13,8 @@ ReplaceDrawingCommand::ReplaceDrawingCommand(StudioDocument& doc, Drawing drawin
                                              DrawingSource source)
     : QUndoCommand(trCmd(QT_TRANSLATE_NOOP("DocumentCommands", "Import drawing"))),
       doc_(doc),
-      before_(doc.drawing()),
-      after_(std::move(drawing)),
+      before_(doc.drawingSnapshot()),
+      after_(std::make_shared<const Drawing>(std::move(drawing))),
       fileBefore_(doc.fileName()),
       fileAfter_(std::move(fileName)),
       sourceBefore_(doc.source()),

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <QUndoCommand>
+#include <memory>
 
 #include "widgets/document/studio_document.hpp"
 
@@ -17,7 +18,7 @@ class ReplaceDrawingCommand : public QUndoCommand {
 
  private:
   StudioDocument& doc_;
-  Drawing before_, after_;
+  std::shared_ptr<const Drawing> before_, after_;  // shared with the document, not copied
   QString fileBefore_, fileAfter_;
   DrawingSource sourceBefore_, sourceAfter_;
   Placement placementBefore_, placementAfter_;

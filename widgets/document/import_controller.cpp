@@ -196,7 +196,7 @@ void ImportController::onFinished() {
   }
   note_ = translated(job.note);
   if (job.isProject) {
-    doc_.loadProject(job.drawing, job.source, placement, job.options.mode, job.options.toleranceMm,
+    doc_.loadProject(std::move(job.drawing), job.source, placement, job.options.mode, job.options.toleranceMm,
                      job.profile, name);
   } else {
     doc_.replaceDrawing(std::move(job.drawing), name, placement, job.source);

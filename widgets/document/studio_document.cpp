@@ -12,14 +12,14 @@ StudioDocument::StudioDocument(MachineProfile profile, QObject* parent)
   connect(&undo_, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
 }
 
-void StudioDocument::loadProject(const Drawing& drawing, const DrawingSource& source,
+void StudioDocument::loadProject(Drawing drawing, const DrawingSource& source,
                                  const Placement& placement, ModeSelection mode, double toleranceMm,
                                  const MachineProfile& profile, const QString& projectPath) {
   undo_.clear();
   toleranceMm_ = toleranceMm;
   applyProfile(profile);
   applyModeSelection(mode);
-  applyDrawing(drawing, projectPath, source);
+  applyDrawing(std::make_shared<const Drawing>(std::move(drawing)), projectPath, source);
   applyPlacement(placement);
   markSaved(projectPath);
 }
@@ -27,19 +27,15 @@ void StudioDocument::loadProject(const Drawing& drawing, const DrawingSource& so
 void StudioDocument::applyRefinedDrawing(const Drawing& drawing) {
   Drawing refined = drawing;
   // The settings the user has now win over those the plan was made with.
-  for (std::size_t i = 0; i < refined.layers.size() && i < drawing_.layers.size(); ++i) {
-    if (refined.layers[i].id != drawing_.layers[i].id) return;  // a different drawing by now
-    refined.layers[i].visible = drawing_.layers[i].visible;
-    refined.layers[i].tool = drawing_.layers[i].tool;
+  for (std::size_t i = 0; i < refined.layers.size() && i < drawing_->layers.size(); ++i) {
+    if (refined.layers[i].id != drawing_->layers[i].id) return;  // a different drawing by now
+    refined.layers[i].visible = drawing_->layers[i].visible;
+    refined.layers[i].tool = drawing_->layers[i].tool;
   }
-  drawing_ = std::move(refined);
-  snapshot_.reset();
+  drawing_ = std::make_shared<const Drawing>(std::move(refined));
 }
 
-std::shared_ptr<const Drawing> StudioDocument::drawingSnapshot() const {
-  if (!snapshot_) snapshot_ = std::make_shared<const Drawing>(drawing_);
-  return snapshot_;
-}
+std::shared_ptr<const Drawing> StudioDocument::drawingSnapshot() const { return drawing_; }
 
 void StudioDocument::markSaved(const QString& path) {
   undo_.setClean();
@@ -70,8 +66,8 @@ void StudioDocument::setModeSelection(ModeSelection choice) {
 
 std::vector<LayerSettings> StudioDocument::layerSettings() const {
   std::vector<LayerSettings> out;
-  out.reserve(drawing_.layers.size());
-  for (const Layer& l : drawing_.layers) out.push_back({l.visible, l.tool, l.fill, l.hatch});
+  out.reserve(drawing_->layers.size());
+  for (const Layer& l : drawing_->layers) out.push_back({l.visible, l.tool, l.fill, l.hatch});
   return out;
 }
 
@@ -84,8 +80,8 @@ std::vector<int> identity(std::size_t n) {
 }  // namespace
 
 void StudioDocument::setLayerVisible(int layerIndex, bool visible) {
-  if (layerIndex < 0 || layerIndex >= static_cast<int>(drawing_.layers.size())) return;
-  if (drawing_.layers[layerIndex].visible == visible) return;
+  if (layerIndex < 0 || layerIndex >= static_cast<int>(drawing_->layers.size())) return;
+  if (drawing_->layers[layerIndex].visible == visible) return;
   auto settings = layerSettings();
   settings[layerIndex].visible = visible;
   undo_.push(new SetLayersCommand(*this, identity(settings.size()), settings,
@@ -93,7 +89,7 @@ void StudioDocument::setLayerVisible(int layerIndex, bool visible) {
 }
 
 void StudioDocument::moveLayer(int from, int to) {
-  const int n = static_cast<int>(drawing_.layers.size());
+  const int n = static_cast<int>(drawing_->layers.size());
   if (from < 0 || from >= n || to < 0 || to >= n || from == to) return;
   std::vector<int> order = identity(n);
   order.erase(order.begin() + from);
@@ -105,7 +101,7 @@ void StudioDocument::moveLayer(int from, int to) {
 }
 
 void StudioDocument::setLayerTool(int layerIndex, const LayerToolSettings& tool) {
-  if (layerIndex < 0 || layerIndex >= static_cast<int>(drawing_.layers.size())) return;
+  if (layerIndex < 0 || layerIndex >= static_cast<int>(drawing_->layers.size())) return;
   auto settings = layerSettings();
   settings[layerIndex].tool = tool;
   undo_.push(new SetLayersCommand(*this, identity(settings.size()), settings,
@@ -113,7 +109,7 @@ void StudioDocument::setLayerTool(int layerIndex, const LayerToolSettings& tool)
 }
 
 void StudioDocument::setLayerFill(int layerIndex, FillMode fill, const HatchSettings& hatch) {
-  if (layerIndex < 0 || layerIndex >= static_cast<int>(drawing_.layers.size())) return;
+  if (layerIndex < 0 || layerIndex >= static_cast<int>(drawing_->layers.size())) return;
   auto settings = layerSettings();
   if (settings[layerIndex].fill == fill && settings[layerIndex].hatch == hatch) return;
   settings[layerIndex].fill = fill;
@@ -131,10 +127,9 @@ void StudioDocument::setAutoResolvedMode(std::optional<WorkingMode> mode) {
   if (effectiveMode() != before) emit effectiveModeChanged();
 }
 
-void StudioDocument::applyDrawing(const Drawing& drawing, const QString& fileName,
+void StudioDocument::applyDrawing(std::shared_ptr<const Drawing> drawing, const QString& fileName,
                                   const DrawingSource& source) {
-  drawing_ = drawing;
-  snapshot_.reset();
+  drawing_ = std::move(drawing);
   fileName_ = fileName;
   source_ = source;
   emit drawingChanged();
@@ -158,17 +153,18 @@ void StudioDocument::applyModeSelection(ModeSelection choice) {
 
 void StudioDocument::applyLayers(const std::vector<int>& order,
                                  const std::vector<LayerSettings>& settings) {
+  auto edited = std::make_shared<Drawing>(*drawing_);
   std::vector<Layer> layers;
   layers.reserve(order.size());
-  for (int i : order) layers.push_back(std::move(drawing_.layers[i]));
+  for (int i : order) layers.push_back(std::move(edited->layers[i]));
   for (std::size_t i = 0; i < layers.size() && i < settings.size(); ++i) {
     layers[i].visible = settings[i].visible;
     layers[i].tool = settings[i].tool;
     layers[i].fill = settings[i].fill;
     layers[i].hatch = settings[i].hatch;
   }
-  drawing_.layers = std::move(layers);
-  snapshot_.reset();
+  edited->layers = std::move(layers);
+  drawing_ = std::move(edited);
   emit layersChanged();
   emit jobInputsChanged();
 }

@@ -35,10 +35,9 @@ class StudioDocument : public QObject {
  public:
   explicit StudioDocument(MachineProfile profile, QObject* parent = nullptr);
 
-  const Drawing& drawing() const { return drawing_; }
-  // The drawing as an immutable shared value for a planning run: copied once per change of the
-  // drawing (import, layers, refinement), not once per plan (a placement change plans again
-  // without copying hundreds of thousands of paths on the UI thread).
+  const Drawing& drawing() const { return *drawing_; }
+  // The drawing as an immutable shared value for a planning run: the document's own, never a
+  // copy (a placement change plans again without copying hundreds of thousands of paths).
   std::shared_ptr<const Drawing> drawingSnapshot() const;
   const Placement& placement() const { return placement_; }
   const MachineProfile& profile() const { return profile_; }
@@ -51,7 +50,7 @@ class StudioDocument : public QObject {
   // profile's default mode until a plan exists).
   WorkingMode effectiveMode() const;
   QString fileName() const { return fileName_; }
-  bool hasDrawing() const { return !drawing_.layers.empty(); }
+  bool hasDrawing() const { return !drawing_->layers.empty(); }
   QUndoStack* undoStack() { return &undo_; }
 
   // --- edits, each one undoable ---
@@ -80,7 +79,7 @@ class StudioDocument : public QObject {
 
   // Not an edit: the document becomes a loaded project (drawing, placement, layers, mode,
   // tolerance, machine); the undo history is cleared and the state counts as saved.
-  void loadProject(const Drawing& drawing, const DrawingSource& source, const Placement& placement,
+  void loadProject(Drawing drawing, const DrawingSource& source, const Placement& placement,
                    ModeSelection mode, double toleranceMm, const MachineProfile& profile,
                    const QString& projectPath);
   // Not an edit: the same drawing flattened more finely (the planner asked for it); keeps the
@@ -94,7 +93,7 @@ class StudioDocument : public QObject {
   bool isModified() const { return !undo_.isClean(); }
 
   // --- raw setters used only by the undo commands ---
-  void applyDrawing(const Drawing& drawing, const QString& fileName, const DrawingSource& source);
+  void applyDrawing(std::shared_ptr<const Drawing> drawing, const QString& fileName, const DrawingSource& source);
   void applyPlacement(const Placement& placement);
   void applyModeSelection(ModeSelection choice);
   // Reorders the layers (`order[i]` = current index of the layer moving to i), then sets the
@@ -116,8 +115,10 @@ class StudioDocument : public QObject {
   void jobInputsChanged();
 
  private:
-  Drawing drawing_;
-  mutable std::shared_ptr<const Drawing> snapshot_;  // of drawing_, null when outdated
+  // Immutable and shared: with the planner (drawingSnapshot), the undo stack and the import that
+  // made it, so that a drawing of hundreds of thousands of paths is never copied to be shared.
+  // An edit of its layers replaces it with an edited copy.
+  std::shared_ptr<const Drawing> drawing_ = std::make_shared<const Drawing>();
   Placement placement_;
   MachineProfile profile_;
   ModeSelection modeSelection_;
