@@ -168,8 +168,12 @@
         <translation>Zeile %1: %2</translation>
     </message>
     <message>
-        <source>line %1: &lt;%2&gt; attribute %3 contains %4</source>
-        <translation>Zeile %1: &lt;%2&gt; Attribut %3 enthält %4</translation>
+        <source>line %1: &lt;%2&gt; attribute %3 contains a value that is not a number (%4)</source>
+        <translation>Zeile %1: &lt;%2&gt; Attribut %3 enthält einen Wert, der keine Zahl ist (%4)</translation>
+    </message>
+    <message>
+        <source>line %1: &lt;%2&gt; attribute %3 contains a number beyond 1e300 (%4)</source>
+        <translation>Zeile %1: &lt;%2&gt; Attribut %3 enthält eine Zahl über 1e300 (%4)</translation>
     </message>
     <message>
         <source>line %1: &lt;%2&gt;</source>
@@ -3965,6 +3969,10 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
 <context>
     <name>Profile</name>
     <message>
+        <source>deg</source>
+        <translation>°</translation>
+    </message>
+    <message>
         <source>%1 must be a finite number of millimetres</source>
         <translation>%1 muss eine endliche Zahl in Millimetern sein</translation>
     </message>
@@ -4067,6 +4075,10 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
     <message>
         <source>%1 must be between %2 and %3 %4, got %5</source>
         <translation>%1 muss zwischen %2 und %3 %4 liegen, ist aber %5</translation>
+    </message>
+    <message>
+        <source>%1 must be between %2 and %3, got %4</source>
+        <translation>%1 muss zwischen %2 und %3 liegen, ist aber %4</translation>
     </message>
     <message>
         <source>cannot open %1: %2</source>

@@ -168,8 +168,12 @@
         <translation>línea %1: %2</translation>
     </message>
     <message>
-        <source>line %1: &lt;%2&gt; attribute %3 contains %4</source>
-        <translation>línea %1: &lt;%2&gt; atributo %3 contiene %4</translation>
+        <source>line %1: &lt;%2&gt; attribute %3 contains a value that is not a number (%4)</source>
+        <translation>línea %1: &lt;%2&gt; atributo %3 contiene un valor que no es un número (%4)</translation>
+    </message>
+    <message>
+        <source>line %1: &lt;%2&gt; attribute %3 contains a number beyond 1e300 (%4)</source>
+        <translation>línea %1: &lt;%2&gt; atributo %3 contiene un número mayor que 1e300 (%4)</translation>
     </message>
     <message>
         <source>line %1: &lt;%2&gt;</source>
@@ -3965,6 +3969,10 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
 <context>
     <name>Profile</name>
     <message>
+        <source>deg</source>
+        <translation>°</translation>
+    </message>
+    <message>
         <source>%1 must be a finite number of millimetres</source>
         <translation>%1 debe ser un número finito de milímetros</translation>
     </message>
@@ -4067,6 +4075,10 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     <message>
         <source>%1 must be between %2 and %3 %4, got %5</source>
         <translation>%1 debe estar entre %2 y %3 %4, no %5</translation>
+    </message>
+    <message>
+        <source>%1 must be between %2 and %3, got %4</source>
+        <translation>%1 debe estar entre %2 y %3, no %4</translation>
     </message>
     <message>
         <source>cannot open %1: %2</source>

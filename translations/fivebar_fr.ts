@@ -168,8 +168,12 @@
         <translation>ligne %1 : %2</translation>
     </message>
     <message>
-        <source>line %1: &lt;%2&gt; attribute %3 contains %4</source>
-        <translation>ligne %1 : &lt;%2&gt; l'attribut %3 contient %4</translation>
+        <source>line %1: &lt;%2&gt; attribute %3 contains a value that is not a number (%4)</source>
+        <translation>ligne %1 : &lt;%2&gt; l'attribut %3 contient une valeur qui n'est pas un nombre (%4)</translation>
+    </message>
+    <message>
+        <source>line %1: &lt;%2&gt; attribute %3 contains a number beyond 1e300 (%4)</source>
+        <translation>ligne %1 : &lt;%2&gt; l'attribut %3 contient un nombre au-delà de 1e300 (%4)</translation>
     </message>
     <message>
         <source>line %1: &lt;%2&gt;</source>
@@ -3965,6 +3969,10 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
 <context>
     <name>Profile</name>
     <message>
+        <source>deg</source>
+        <translation>°</translation>
+    </message>
+    <message>
         <source>%1 must be a finite number of millimetres</source>
         <translation>%1 doit être un nombre fini de millimètres</translation>
     </message>
@@ -4067,6 +4075,10 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     <message>
         <source>%1 must be between %2 and %3 %4, got %5</source>
         <translation>%1 doit être compris entre %2 et %3 %4, et non %5</translation>
+    </message>
+    <message>
+        <source>%1 must be between %2 and %3, got %4</source>
+        <translation>%1 doit être compris entre %2 et %3, et non %4</translation>
     </message>
     <message>
         <source>cannot open %1: %2</source>

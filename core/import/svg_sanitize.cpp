@@ -152,14 +152,16 @@ void Sanitizer::recordRoot(const QXmlStreamAttributes& attributes) {
 bool Sanitizer::checkNumbers(QStringView tag, const QXmlStreamAttributes& attributes) {
   for (const QXmlStreamAttribute& a : attributes) {
     if (!a.namespaceUri().isEmpty() || !isGeometryAttribute(a.name())) continue;
-    if (const std::string bad = describeNonFiniteNumber(a.value()); !bad.empty()) {
+    if (const std::optional<NonFiniteNumber> bad = firstNonFiniteNumber(a.value())) {
       const QString id = attributes.value(QStringLiteral("id")).toString();
       fail(ImportStatus::InvalidNumber,
-           FB_TR("ImportError", "line %1: <%2> attribute %3 contains %4")
+           Message(bad->notANumber
+                       ? FB_TR("ImportError", "line %1: <%2> attribute %3 contains a value that is not a number (%4)")
+                       : FB_TR("ImportError", "line %1: <%2> attribute %3 contains a number beyond 1e300 (%4)"))
                .arg(static_cast<long long>(reader_.lineNumber()))
                .arg(tag.toString().toStdString() + (id.isEmpty() ? "" : " id=\"" + id.toStdString() + "\""))
                .arg(a.name().toString().toStdString())
-               .arg(bad));
+               .arg(bad->token));
       return false;
     }
   }

@@ -16,6 +16,7 @@
 #include <QString>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,8 +50,13 @@ struct SanitizeResult {
 // sanitiser applies to geometry attributes).
 bool hasNonFiniteNumber(QStringView value);
 
-// "a number beyond 1e300 (1e308)" / "a value that is not a number (nan)"; empty when none.
-std::string describeNonFiniteNumber(QStringView value);
+// The first non-finite number in the text: its token ("1e308", "nan") and whether it is not a
+// number at all (nan, inf) or a number beyond 1e300; nullopt when none.
+struct NonFiniteNumber {
+  std::string token;
+  bool notANumber = false;
+};
+std::optional<NonFiniteNumber> firstNonFiniteNumber(QStringView value);
 
 // Reads the whole device. dpi: user units per inch (nested <svg> lengths). progress(fraction of
 // input read) returns false to cancel.

@@ -263,17 +263,16 @@ qsizetype findNonFiniteNumber(QStringView value) {
 
 bool hasNonFiniteNumber(QStringView value) { return findNonFiniteNumber(value) >= 0; }
 
-std::string describeNonFiniteNumber(QStringView value) {
+std::optional<NonFiniteNumber> firstNonFiniteNumber(QStringView value) {
   const qsizetype at = findNonFiniteNumber(value);
-  if (at < 0) return {};
+  if (at < 0) return std::nullopt;
   qsizetype end = at;
   while (end < value.size() && end - at < 24 && !value[end].isSpace() && value[end] != u',' &&
          value[end] != u')' && value[end] != u';' && (end == at || value[end] != u'-'))
     ++end;
   const std::string token = value.mid(at, end - at).toString().toStdString();
   const char16_t c = value[at].unicode() | 0x20;
-  if (c == u'n' || c == u'i') return "a value that is not a number (" + token + ")";
-  return "a number beyond 1e300 (" + token + ")";
+  return NonFiniteNumber{token, c == u'n' || c == u'i'};
 }
 
 

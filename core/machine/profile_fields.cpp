@@ -250,12 +250,17 @@ std::vector<ValidationIssue> checkField(const ProfileField& f, double v) {
       break;
     case FieldRule::Between:
       if (v < f.validMin || v > f.validMax)
-        return {{path, FB_TR("Profile", "%1 must be between %2 and %3 %4, got %5")
-                           .arg(path)
-                           .argSignificant(f.validMin, 10)
-                           .argSignificant(f.validMax, 10)
-                           .arg(f.unit)
-                           .argSignificant(v, 10)}};
+        return {{path, *f.unit ? FB_TR("Profile", "%1 must be between %2 and %3 %4, got %5")
+                                     .arg(path)
+                                     .argSignificant(f.validMin, 10)
+                                     .argSignificant(f.validMax, 10)
+                                     .arg(Message("Profile", f.unit))  // "deg": "°" in the studio
+                                     .argSignificant(v, 10)
+                               : FB_TR("Profile", "%1 must be between %2 and %3, got %4")
+                                     .arg(path)
+                                     .argSignificant(f.validMin, 10)
+                                     .argSignificant(f.validMax, 10)
+                                     .argSignificant(v, 10)}};
       break;
     case FieldRule::Finite: break;
   }

@@ -94,6 +94,8 @@ TEST(ProfileFields, RulesComeFromTheTableAndMessagesNameThePath) {
   }
   const ProfileField& delay = *findProfileField("tool.penUpDelayS");
   EXPECT_EQ(checkField(delay, 11.0).at(0).message, "tool.penUpDelayS must be between 0 and 10 s, got 11");
+  EXPECT_EQ(checkField(*findProfileField("calibration.version"), 5.0).at(0).message,
+            "calibration.version must be between 1 and 1, got 5");  // no unit, no gap
   const ProfileField& w = *findProfileField("geometry.w");
   EXPECT_TRUE(checkField(w, 0.0).empty());
   EXPECT_EQ(checkField(w, -2.0).at(0).message, "geometry.w must be zero or positive, got -2");

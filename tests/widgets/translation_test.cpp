@@ -28,6 +28,7 @@
 #include "widgets/calibration/wizard_pages.hpp"
 #include "app/studio/main_window.hpp"
 #include "core/machine/profile.hpp"
+#include "core/machine/profile_fields.hpp"
 #include "widgets/machine/console_panel.hpp"
 #include "widgets/panels/fill_options_box.hpp"
 #include "widgets/design/design_dialog.hpp"
@@ -237,6 +238,11 @@ TEST(Translations, ProfileProblemsAreShownInFrench) {
   fivebar::widgets::ProfileEditor editor(doc);
   editor.numberField("geometry.a1")->setValue(-1.5);
   const QString shown = editor.messageFor("geometry.a1")->text();
+  // A range's unit is the studio's too ("deg" is "°"); a range without a unit has none.
+  const QString offset = fivebar::widgets::translated(
+      fivebar::checkField(*fivebar::findProfileField("calibration.zeroOffsetDeg1"), 200.0).at(0).message);
+  const QString version = fivebar::widgets::translated(
+      fivebar::checkField(*fivebar::findProfileField("calibration.version"), 5.0).at(0).message);
   std::string english;
   for (const fivebar::ValidationIssue& i : fivebar::validate(bad))
     if (i.field == "geometry.a1" && english.empty()) english = i.message.text();
@@ -245,6 +251,8 @@ TEST(Translations, ProfileProblemsAreShownInFrench) {
   QLocale::setDefault(before);
   QCoreApplication::removeTranslator(&translator);
   EXPECT_EQ(english, "geometry.a1 must be positive, got -1.5");
+  EXPECT_TRUE(offset.contains(QStringLiteral(" et 180 °, et non 200"))) << offset.toStdString();
+  EXPECT_TRUE(version.endsWith(QStringLiteral(" et 1, et non 5"))) << version.toStdString();
   EXPECT_TRUE(shown.startsWith(QStringLiteral("geometry.a1 doit être positif, et non -1,5\n")))
       << shown.toStdString();
   EXPECT_TRUE(shown.contains(QStringLiteral("a1 vaut -1,5 mm ; la valeur doit être positive")))
