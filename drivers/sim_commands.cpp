@@ -162,7 +162,7 @@ SimMachine::LineResult SimMachine::executeGcode(const std::string& line, bool jo
   } else if (goHome) {
     if (axisWords && !motion(w, jog, true)) return LineResult::Done;
     const Axes3 home = w.hasCode('G', 28) ? g28_ : g30_;
-    if (!checkMode_ && !withinLimits(home)) { raiseAlarm(2, true); okOwed_ = true; return LineResult::Done; }
+    if (!checkMode_ && !withinLimits(home)) { softLimitViolated(); return LineResult::Done; }
     if (!checkMode_) addBlock(home, 0.0, true, false);
   } else if (axisWords && !jog && (motionMode_ == 2 || motionMode_ == 3)) {
     if (!arc(w, motionMode_ == 2)) { restoreModal(); return LineResult::Done; }
@@ -191,7 +191,7 @@ bool SimMachine::motion(const gcode::Words& w, bool jog, bool rapidMove) {
       target[i] = machineCoords ? *v : absolute ? *v + wco_[i] : end[i] + *v;
   if (!withinLimits(target)) {
     if (jog) reply("error:15");
-    else { raiseAlarm(2, true); okOwed_ = true; }
+    else softLimitViolated();
     return false;
   }
   if (checkMode_) return true;
@@ -251,7 +251,7 @@ bool SimMachine::arc(const gcode::Words& w, bool clockwise) {
   const double tol = settings_[12];
   const auto segments = std::size_t(std::floor(std::abs(0.5 * travel * radius) /
                                                std::sqrt(tol * (2.0 * radius - tol))));
-  if (!withinLimits(target)) { raiseAlarm(2, true); okOwed_ = true; return false; }
+  if (!withinLimits(target)) { softLimitViolated(); return false; }
   if (checkMode_) return true;
   arcFeedPerMin_ = feedPerMin_;
   for (std::size_t k = 1; k < segments; ++k) {

@@ -147,7 +147,7 @@ void SimMachine::realtimeByte(char c) {
       jogCancel_ = true;  // a feed hold during a jog cancels it
     }
   } else if (c == rt::kCycleStart) {
-    if (state_ == MachineState::Hold) {
+    if (state_ == MachineState::Hold && !softLimitStop_) {  // no resuming a soft-limit stop
       holding_ = false;
       state_ = planner_.empty() ? MachineState::Idle : MachineState::Run;
       serviceLines();
@@ -199,7 +199,7 @@ void SimMachine::softReset() {
   rx_.clear();
   arcSegments_.clear();
   haveCurrent_ = false;
-  holding_ = jogCancel_ = criticalAlarm_ = false;
+  holding_ = jogCancel_ = criticalAlarm_ = softLimitStop_ = false;
   dwellLeftS_ = 0.0;
   dwellStarted_ = false;
   // gc_init: G0 G54 G17 G21 G90 G94 M5 M9, G92 cleared.
@@ -248,7 +248,7 @@ void SimMachine::raiseAlarm(int code, bool critical) {
   setPen(false);
   planner_.clear();
   spindleOn_ = coolantFlood_ = false;  // mc_reset stops the spindle and the coolant
-  holding_ = jogCancel_ = false;
+  holding_ = jogCancel_ = softLimitStop_ = false;
   haveCurrent_ = false;
   state_ = MachineState::Alarm;
   reply("ALARM:" + std::to_string(code));
@@ -256,6 +256,21 @@ void SimMachine::raiseAlarm(int code, bool critical) {
     criticalAlarm_ = true;
     reply("[MSG:Reset to continue]");
   }
+}
+
+// limits.c limits_soft_check: a target beyond the travel while a cycle runs forces a feed hold
+// ("all buffered blocks are guaranteed to be within workspace volume so just come to a
+// controlled stop so position is not lost"), waits for Idle, then mc_reset and ALARM:2; with
+// the machine standing, the alarm comes at once. No further line is read meanwhile (mc_line has
+// not returned), and that line is answered "ok" only at the reset.
+void SimMachine::softLimitViolated() {
+  okOwed_ = true;
+  if (state_ == MachineState::Run && !planner_.empty()) {
+    softLimitStop_ = true;
+    state_ = MachineState::Hold;  // "Hold:1" while it decelerates
+    return;
+  }
+  raiseAlarm(2, true);
 }
 
 bool SimMachine::fireFault(FaultKind kind) const {
@@ -266,7 +281,7 @@ bool SimMachine::fireFault(FaultKind kind) const {
 void SimMachine::serviceLines() {
   // protocol.c: while a hold lasts (a feed hold, or M0) protocol_exec_rt_suspend() loops until
   // the cycle start: no line is read, parsed or acknowledged; the received bytes wait.
-  while (!criticalAlarm_ && !linkDropped_ && !holding_) {
+  while (!criticalAlarm_ && !linkDropped_ && !holding_ && !softLimitStop_) {
     if (!haveCurrent_) {
       const size_t end = rx_.find_first_of("\r\n");
       if (end == std::string::npos) return;
@@ -319,10 +334,16 @@ void SimMachine::advance(double machineDtS) {
     return;
   }
   const bool hadBlocks = !planner_.empty();
-  planner_.advance(machineDtS, holding_ || jogCancel_, config_.instant,
+  planner_.advance(machineDtS, holding_ || jogCancel_ || softLimitStop_, config_.instant,
                    [this](const Block& b) { blockDone(b); });
   if (!planner_.empty())  // the pen's true path along the block under way
     trace_.moveTo(physicalDeg(planner_.position()), planner_.blocks().front().penDown);
+  if (softLimitStop_ && !planner_.moving()) {  // stopped under control: the alarm, position kept
+    softLimitStop_ = false;
+    state_ = MachineState::Idle;
+    raiseAlarm(2, true);
+    return;
+  }
   if (jogCancel_ && !planner_.moving()) {
     planner_.clear();
     jogCancel_ = false;

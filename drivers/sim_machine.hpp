@@ -112,6 +112,7 @@ class SimMachine {
   void realtimeByte(char c);
   void softReset();
   void raiseAlarm(int code, bool critical);
+  void softLimitViolated();  // limits.c limits_soft_check, for a target beyond the travel
   void setPen(bool down);
   void blockDone(const Block& b);
   void reply(std::string_view text) { out_ += text; out_ += "\r\n"; }
@@ -139,6 +140,7 @@ class SimMachine {
   bool holding_ = false;
   bool jogCancel_ = false;
   bool criticalAlarm_ = false;  // waits for a soft reset
+  bool softLimitStop_ = false;  // a target beyond the travel came while moving: stopping, then ALARM:2
   bool okOwed_ = false;  // the line that raised a soft-limit alarm is answered ok at the reset
   bool linkDropped_ = false;
   double dwellLeftS_ = 0.0;

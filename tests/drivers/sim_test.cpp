@@ -97,6 +97,53 @@ TEST(SimMachine, SoftLimitAlarmLocksUntilResetAndUnlock) {
   EXPECT_EQ(link.sim.state(), MachineState::Idle);
 }
 
+// GRBL 1.1h limits.c limits_soft_check: a target beyond the travel that comes while a move runs
+// holds the feed (a controlled stop, "Hold:1", cycle start ignored), then ALARM:2 with the
+// position kept: the machine went on decelerating, stopped short of the move's end, and the reset
+// raises no ALARM:3. The line is answered only at the reset.
+TEST(SimMachine, ATargetBeyondTheTravelWhileMovingStopsUnderControlThenAlarms) {
+  sim::SimConfig factoryFresh;  // default settings: $110 500 deg/min, $120 10 deg/s^2, $130 200
+  factoryFresh.profile = testProfile();
+  SimLink link(factoryFresh);
+  LineLog log;
+  link.protocol.addListener(&log);
+  for (const char* s : {"$22=1", "$20=1", "$X"}) link.protocol.enqueue(s);
+  link.protocol.enqueue("G1X-150F500");
+  link.runUntil([] { return false; }, 2.0);  // at full speed (8.3 deg/s after 0.8 s)
+  ASSERT_EQ(link.sim.state(), MachineState::Run);
+  const auto answers = [&] {
+    return std::count_if(log.lines.begin(), log.lines.end(), [](const grbl::ParsedLine& l) {
+      return l.kind == grbl::LineKind::Ok || l.kind == grbl::LineKind::Error;
+    });
+  };
+  const auto answersBefore = answers();
+  const double atLine = link.sim.workPosition()[0];
+  link.protocol.enqueue("G1X-201F500");
+  bool sawHoldMoving = false, cycleStartSent = false;
+  for (double t = 0.0; t < 10.0 && !log.saw(grbl::LineKind::Alarm); t += 0.002) {
+    link.step(0.002);
+    if (link.sim.state() == MachineState::Hold && link.protocol.lastStatus().state == MachineState::Hold &&
+        link.protocol.lastStatus().subState == 1) {
+      sawHoldMoving = true;
+      if (!cycleStartSent) link.protocol.sendRealtime(grbl::realtime::kCycleStart);  // ignored
+      cycleStartSent = true;
+    }
+  }
+  ASSERT_TRUE(log.saw(grbl::LineKind::Alarm, 2));
+  EXPECT_TRUE(sawHoldMoving) << "no Hold:1 while it stopped";
+  const double stoppedAt = link.sim.workPosition()[0];
+  // v^2 / (2 a) = 8.33^2 / 20 = 3.5 deg of controlled stop, not an instant one.
+  EXPECT_LT(stoppedAt, atLine - 2.0);
+  EXPECT_GT(stoppedAt, -150.0 + 1.0);  // the first move was not finished
+  EXPECT_EQ(answers(), answersBefore);  // the line waits in mc_line
+  link.runUntil([] { return false; }, 0.5);
+  EXPECT_DOUBLE_EQ(link.sim.workPosition()[0], stoppedAt);  // nothing moves in the alarm
+  link.protocol.sendRealtime(grbl::realtime::kSoftReset);
+  link.runUntil([&] { return log.saw(grbl::LineKind::Banner); }, 1.0);
+  EXPECT_FALSE(log.saw(grbl::LineKind::Alarm, 3)) << "the position was kept";
+  EXPECT_EQ(answers(), answersBefore + 1);  // "ok" for the line, at the reset
+}
+
 TEST(SimMachine, ResetDuringMotionRaisesAlarm3ButNotAfterACompletedHold) {
   const MachineProfile p = testProfile();
   for (const bool holdFirst : {false, true}) {
