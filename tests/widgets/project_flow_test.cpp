@@ -21,6 +21,7 @@
 
 #include "app/studio/file_actions.hpp"
 #include "app/studio/main_window.hpp"
+#include "test_files.hpp"
 #include "app/studio/startup.hpp"
 #include "core/project/project.hpp"
 #include "widgets/document/import_controller.hpp"
@@ -213,15 +214,11 @@ TEST(ProjectFlow, HeadlessExportOfAnInfeasibleProjectExitsOneWithTheProblems) {
 // spacing, angle and crosshatch; it is saved in the project and comes back with it.
 TEST(ProjectFlow, LayerFillFromTheLayersPanelEqualsFivebarPlanFillAndIsSaved) {
   QTemporaryDir dir;
-  const QString svg = dir.filePath(QStringLiteral("filled.svg"));
-  {
-    QFile f(svg);
-    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-    f.write(R"(<svg xmlns="http://www.w3.org/2000/svg" width="80mm" height="60mm" viewBox="0 0 80 60">
+  const QString svg = test::writeTestFile(dir, QStringLiteral("filled.svg"), R"(<svg xmlns="http://www.w3.org/2000/svg" width="80mm" height="60mm" viewBox="0 0 80 60">
   <path d="M 10 10 H 70 V 50 H 10 Z M 30 20 H 50 V 40 H 30 Z" fill="#000" fill-rule="evenodd"/>
   <circle cx="60" cy="45" r="8" fill="#000" stroke="#000"/>
 </svg>)");
-  }
+  ASSERT_FALSE(svg.isEmpty());
   const QString cli = dir.filePath(QStringLiteral("cli.gcode"));
   const QString window = dir.filePath(QStringLiteral("window.gcode"));
   const QString reopened = dir.filePath(QStringLiteral("reopened.gcode"));
@@ -339,13 +336,9 @@ TEST(ProjectFlow, TheMachineProfileIsRememberedAcrossRestarts) {
 // the import's share and every stage of the plan, in the form of `fivebar plan --timings`.
 TEST(ProjectFlow, StudioTimingsPrintTheImportAndEveryStage) {
   QTemporaryDir dir;
-  const QString svg = dir.filePath(QStringLiteral("square.svg"));
-  {
-    QFile f(svg);
-    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-    f.write(R"(<svg xmlns="http://www.w3.org/2000/svg" width="40mm" height="40mm" viewBox="0 0 40 40">
+  const QString svg = test::writeTestFile(dir, QStringLiteral("square.svg"), R"(<svg xmlns="http://www.w3.org/2000/svg" width="40mm" height="40mm" viewBox="0 0 40 40">
   <rect x="2" y="2" width="36" height="36" fill="none" stroke="#000"/></svg>)");
-  }
+  ASSERT_FALSE(svg.isEmpty());
   QString err;
   ASSERT_EQ(runTool(QStringLiteral(FIVEBAR_STUDIO),
                     {svg, QStringLiteral("--machine"), QStringLiteral("maker-plotter"), QStringLiteral("--timings"),

@@ -19,6 +19,7 @@
 #include <set>
 
 #include "app/studio/main_window.hpp"
+#include "test_files.hpp"
 #include "widgets/canvas/canvas_view.hpp"
 #include "widgets/document/import_controller.hpp"
 #include "widgets/canvas/job_layer.hpp"
@@ -143,14 +144,10 @@ TEST(StudioFlow, ADrawingTooBigIsScaledDownAndTheStudioSaysSo) {
 // paints red pixels over it and none over the other square.
 TEST(StudioFlow, PreflightPaintsOnlyTheOffendingPathRed) {
   QTemporaryDir dir;
-  const QString path = dir.filePath(QStringLiteral("two-squares.svg"));
-  {
-    QFile f(path);
-    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-    f.write(R"(<svg xmlns="http://www.w3.org/2000/svg" width="60mm" height="10mm" viewBox="0 0 60 10">
+  const QString path = test::writeTestFile(dir, QStringLiteral("two-squares.svg"), R"(<svg xmlns="http://www.w3.org/2000/svg" width="60mm" height="10mm" viewBox="0 0 60 10">
   <rect x="1" y="1" width="8" height="8" fill="none" stroke="#000000"/>
   <rect x="51" y="1" width="8" height="8" fill="none" stroke="#000000"/></svg>)");
-  }
+  ASSERT_FALSE(path.isEmpty());
   Studio s;
   ASSERT_TRUE(importAndWait(s, path));
   // Move the drawing right, 1 mm at a time, until the planner finds the right square (path 1)
