@@ -42,11 +42,7 @@ constexpr const char* kHomeHelp =
 
 double timeoutFrom(const Options& o, double fallback) {
   const auto t = o.value("--timeout");
-  if (!t) return fallback;
-  double v = -1;
-  try { v = std::stod(*t); } catch (...) {}
-  if (!(v > 0)) throw UsageError("--timeout needs a positive number of seconds");
-  return v;
+  return t ? numberArg(*t, "--timeout", true) : fallback;  // seconds
 }
 
 std::string homeText(const MachineProfile& p) {

@@ -212,10 +212,7 @@ int runSend(const Args& args) {
   if (o.flag("--help")) { std::cout << kSendHelp; return 0; }
   if (o.positional().empty()) throw UsageError("send needs at least one LINE");
   double timeoutS = 10.0;
-  if (auto t = o.value("--timeout")) {
-    try { timeoutS = std::stod(*t); } catch (...) { timeoutS = -1; }
-    if (!(timeoutS > 0)) throw UsageError("--timeout needs a positive number of seconds");
-  }
+  if (auto t = o.value("--timeout")) timeoutS = numberArg(*t, "--timeout", true);  // seconds
   std::optional<MachineProfile> profile;
   if (const auto m = o.value("--machine")) {
     profile = loadMachine(*m, "send", std::cerr);

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "commands.hpp"
+#include "options.hpp"
 
 namespace {
 
@@ -63,6 +64,9 @@ int main(int argc, char** argv) {
     if (c.name != argv[1]) continue;
     try {
       return c.run(args);
+    } catch (const fivebar::cli::UsageError& e) {  // a command that does not catch its own
+      std::cerr << "fivebar " << c.name << ": " << e.what() << "\n";
+      return 2;
     } catch (const std::exception& e) {
       std::cerr << "fivebar " << c.name << ": " << e.what() << "\n";
       return 1;

@@ -226,6 +226,18 @@ TEST_F(Cli, BadOptionsAndMachinesAreNamed) {
   const CliRun noFile = run({"fk", "--machine", path("none.json").string()});
   EXPECT_EQ(noFile.exitCode, 1);
   EXPECT_NE(noFile.err.find("none.json"), std::string::npos) << noFile.err;
+  // A number option takes the whole text: "10s" is not 10 (refused before any port is opened).
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"send", "--timeout", "10s", "?"},
+        std::vector<std::string>{"reference", "--machine", "maker-plotter", "--timeout", "10s"}}) {
+    std::vector<std::string> withPort = args;
+    withPort.insert(withPort.begin() + 1, {"--port", path("no-port").string()});
+    const std::string command = args.front();
+    const CliRun timeout = run(withPort);
+    EXPECT_EQ(timeout.exitCode, 2) << command << ": " << timeout.err;
+    EXPECT_NE(timeout.err.find("--timeout needs a positive number, got '10s'"), std::string::npos)
+        << command << ": " << timeout.err;
+  }
 }
 
 TEST_F(Cli, ProfileCheckReportsEachIssueWithFileAndField) {
