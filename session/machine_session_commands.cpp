@@ -3,7 +3,6 @@
 // cycle start and the pen. Every move passes the motion check (drivers/motion_check) first.
 #include "session/machine_session.hpp"
 
-#include <algorithm>
 
 #include "core/kinematics/units.hpp"
 #include "drivers/gcode_job.hpp"
@@ -189,8 +188,12 @@ bool MachineSession::sendJog(const jog::JogPlan& plan) {
   }
   settle_.jogSent(ids, sent && !plan.targets.empty() ? std::optional(plan.targets.back()) : std::nullopt);
   if (!sent) return false;
-  // A go-to sets absolute distance mode first (jog.cpp): the console's checks read lines so.
-  if (std::find(plan.lines.begin(), plan.lines.end(), "G90") != plan.lines.end()) consoleAbsolute_ = true;
+  // The board's distance mode after these lines (a go-to sets G90 first), read as the console's
+  // checks read every line.
+  motion::BoardPose modal;
+  modal.absolute = consoleAbsolute_;
+  for (const std::string& line : plan.lines) motion::applyLine(line, motion::interpretLine(line, modal), modal);
+  consoleAbsolute_ = modal.absolute;
   if (!logEach)
     emit consoleLine(tr("%1 (jog in %2 checked moves)")
                          .arg(QString::fromStdString(plan.lines.back()))
@@ -268,19 +271,17 @@ void MachineSession::cycleStart() {
   emit consoleLine(tr("[cycle start]"), ConsoleKind::Sent);
 }
 
-bool MachineSession::penUp() {
-  if (!canJog()) return false;
-  for (const std::string& line : job::penUpCommands(inputs_.profile().tool))
-    if (!enqueueUserLine(line, true)) return false;
-  setPenState(PenState::Up);
-  return true;
-}
+bool MachineSession::penUp() { return sendPen(job::penUpCommands(inputs_.profile().tool), PenState::Up); }
 
 bool MachineSession::penDown() {
+  return sendPen(job::penDownCommands(inputs_.profile().tool), PenState::Down);
+}
+
+bool MachineSession::sendPen(const std::vector<std::string>& lines, PenState state) {
   if (!canJog()) return false;
-  for (const std::string& line : job::penDownCommands(inputs_.profile().tool))
+  for (const std::string& line : lines)
     if (!enqueueUserLine(line, true)) return false;
-  setPenState(PenState::Down);
+  setPenState(state);
   return true;
 }
 

@@ -106,12 +106,9 @@ struct ListView {
   const ScenePathList& list;
   const std::vector<std::size_t>& byOrder;  // indices into list.paths
   Classifier classOf;
+  std::size_t segments = 0;  // of those paths (PathScene counted them)
   std::size_t pathCount() const { return byOrder.size(); }
-  std::size_t segmentCount() const {
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < pathCount(); ++i) n += end(i) - begin(i) - 1;
-    return n;
-  }
+  std::size_t segmentCount() const { return segments; }
   std::size_t begin(std::size_t i) const { return list.paths[byOrder[i]].pointBegin; }
   std::size_t end(std::size_t i) const { return list.pointEnd(byOrder[i]); }
   const QPointF& point(std::size_t k) const { return list.pointsMm[k]; }
@@ -192,7 +189,8 @@ PathScene::PathScene(const ScenePathList& paths) {
   // the paths, without copying their points first.
   if (static_cast<double>(order.size()) > kUselessLevelShare * static_cast<double>(segmentCount_)) {
     Level level;
-    bucket(ListView{paths, order, Classifier{paths, maxSpeed_ > 0.0f ? 1.0 / maxSpeed_ : 0.0}}, 0.0, level);
+    bucket(ListView{paths, order, Classifier{paths, maxSpeed_ > 0.0f ? 1.0 / maxSpeed_ : 0.0}, segmentCount_}, 0.0,
+           level);
     levels_.push_back(std::move(level));
     return;
   }
@@ -223,7 +221,7 @@ PathScene::PathScene(const ScenePathList& paths) {
 
 PathScene::LevelPaths PathScene::baseLevel(const ScenePathList& paths,
                                            const std::vector<std::size_t>& order) const {
-  const ListView view{paths, order, Classifier{paths, maxSpeed_ > 0.0f ? 1.0 / maxSpeed_ : 0.0}};
+  const ListView view{paths, order, Classifier{paths, maxSpeed_ > 0.0f ? 1.0 / maxSpeed_ : 0.0}, segmentCount_};
   LevelPaths out;
   const std::size_t points = segmentCount_ + order.size();
   reserveWithHugePages(out.points, points);
