@@ -24,6 +24,7 @@ std::string toJson(const JobProgress& p) {
                       {"lastCompletedLine", p.lastCompletedLine},
                       {"lastPenDownLine", p.lastPenDownLine},
                       {"penDownAnglesDeg", p.penDownAnglesDeg},
+                      {"linesDone", p.linesDone},
                       {"reason", p.reason}};
   return j.dump(2) + "\n";
 }
@@ -47,6 +48,7 @@ std::optional<JobProgress> progressFromJson(const std::string& text, const std::
     p.lastCompletedLine = j.at("lastCompletedLine").get<int>();
     p.lastPenDownLine = j.at("lastPenDownLine").get<int>();
     p.penDownAnglesDeg = j.at("penDownAnglesDeg").get<std::array<double, 2>>();
+    p.linesDone = j.value("linesDone", 0);  // absent in files of earlier versions
     p.reason = j.value("reason", std::string());
     return p;
   } catch (const nlohmann::json::exception& e) {

@@ -19,6 +19,7 @@ struct JobProgress {
   int lastCompletedLine = 0;  // file line number of the last line known executed, 0 none
   int lastPenDownLine = 0;    // file line number of the last completed pen-down point, 0 none
   std::array<double, 2> penDownAnglesDeg{0.0, 0.0};  // theta1, theta2 at that point
+  int linesDone = 0;          // job lines executed (the count "line N of M" shows), 0 none
   std::string reason;         // why the run ended ("ALARM:2 (Soft limit) ...")
 };
 

@@ -8,6 +8,7 @@ MachineLink::MachineLink(Transport& transport, double pollIntervalS, int tickMs,
       protocol_([this](std::string_view bytes) {
         transport_.write(QByteArray(bytes.data(), qsizetype(bytes.size())));
       }) {
+  trust_ = std::make_unique<grbl::PoseTrust>(protocol_, transport_.boardKey().toStdString());
   clock_.start();
   protocol_.setPollInterval(pollIntervalS);
   connect(&transport_, &Transport::bytesReceived, this, [this](const QByteArray& bytes) {
@@ -23,6 +24,9 @@ MachineLink::MachineLink(Transport& transport, double pollIntervalS, int tickMs,
   });
 }
 
-MachineLink::~MachineLink() { timer_.stop(); }
+MachineLink::~MachineLink() {
+  timer_.stop();
+  trust_.reset();  // it listens to the protocol
+}
 
 }  // namespace fivebar

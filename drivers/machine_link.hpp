@@ -7,7 +7,10 @@
 #include <QObject>
 #include <QTimer>
 
+#include <memory>
+
 #include "grbl_protocol.hpp"
+#include "pose_trust.hpp"
 #include "transport.hpp"
 
 namespace fivebar {
@@ -21,6 +24,10 @@ class MachineLink : public QObject {
   ~MachineLink() override;
 
   grbl::GrblProtocol& protocol() { return protocol_; }
+  // Whether the host knows where the arms are (pose_trust.hpp), remembered under the
+  // transport's boardKey().
+  grbl::PoseTrust& poseTrust() { return *trust_; }
+  const grbl::PoseTrust& poseTrust() const { return *trust_; }
   Transport& transport() { return transport_; }
   double nowS() const { return double(clock_.nsecsElapsed()) * 1e-9; }
   void start() { timer_.start(); }
@@ -32,6 +39,7 @@ class MachineLink : public QObject {
  private:
   Transport& transport_;
   grbl::GrblProtocol protocol_;
+  std::unique_ptr<grbl::PoseTrust> trust_;
   QTimer timer_;
   QElapsedTimer clock_;
 };

@@ -26,8 +26,9 @@ PoseSync::State PoseSync::step(double nowS) {
   if (fresh && still && !protocol_.parametersPending()) {
     const bool storedKnown = !wantStored_ || (protocol_.parameter("G28") && protocol_.parameter("G30"));
     // Settings: known, or the "$$" asked for was answered (a board without $20 has none to check).
-    const bool settingsKnown = !wantSettings_ || protocol_.boardSettings().count(20) > 0 ||
-                               (askedSettings_ && protocol_.idleLink());
+    const bool settingsKnown = freshSettings_ ? askedSettings_ && protocol_.idleLink()
+                               : !wantSettings_ || protocol_.boardSettings().count(20) > 0 ||
+                                     (askedSettings_ && protocol_.idleLink());
     if (protocol_.workPositionDeg() && storedKnown && settingsKnown) return State::Ready;
     if (!settingsKnown && !askedSettings_ && protocol_.idleLink()) {
       askedSettings_ = true;
@@ -45,7 +46,7 @@ PoseSync::State PoseSync::step(double nowS) {
                               " (state " + std::string(toString(st)) + ")"
                         : "the board did not report its work offset (WCO: or $#)" +
                               std::string(wantStored_ ? " or its stored G28/G30 positions" : "") +
-                              std::string(wantSettings_ ? " or its settings ($$)" : "") +
+                              std::string(wantSettings_ || freshSettings_ ? " or its settings ($$)" : "") +
                               " within " + timeText();
     return State::Failed;
   }

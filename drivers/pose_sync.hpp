@@ -27,6 +27,9 @@ class PoseSync {
   // Also needs the board's settings ($20 soft limits, $130/$131 travel: the motion check's board
   // part): asks "$$" once when the protocol has not seen them yet.
   void wantSettings(bool on) { wantSettings_ = on; }
+  // Asks "$$" anew once after each (re)start even when the protocol has seen them: the settings
+  // compared before a job are the board's as they are now.
+  void wantFreshSettings(bool on) { freshSettings_ = on; }
   State step(double nowS);
   const std::string& problem() const { return problem_; }
 
@@ -38,6 +41,7 @@ class PoseSync {
   bool wantStored_ = false;
   bool wantSettings_ = false;
   bool askedSettings_ = false;
+  bool freshSettings_ = false;
   double deadlineS_ = 0.0;
   double lastPollS_ = -1e300;
   std::uint64_t reportsAtStart_ = 0;

@@ -6,6 +6,11 @@
 
 namespace fivebar {
 
+QString SerialTransport::boardKey() const {
+  return portPath_.contains(QLatin1Char('/')) ? QFileInfo(portPath_).absoluteFilePath() : portPath_;
+}
+
+
 SerialTransport::SerialTransport(QString portPath, int baudRate, QObject* parent)
     : Transport(parent), portPath_(std::move(portPath)), baudRate_(baudRate) {
   connect(&port_, &QSerialPort::readyRead, this, [this] {

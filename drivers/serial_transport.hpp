@@ -31,6 +31,8 @@ class SerialTransport : public Transport {
   bool isOpen() const override { return port_.isOpen(); }
   void write(const QByteArray& bytes) override;
   QString name() const override { return portPath_; }
+  // A path is remembered absolute (a pty link, /dev/serial/by-id/...), a bare name as it is.
+  QString boardKey() const override;
 
  private:
   void onError(QSerialPort::SerialPortError error);

@@ -23,6 +23,7 @@ class SimulatedTransport : public Transport {
   bool isOpen() const override { return open_; }
   void write(const QByteArray& bytes) override;
   QString name() const override { return QStringLiteral("simulated machine"); }
+  QString boardKey() const override { return {}; }
 
   // Advances machine time by dtS (s) and delivers the machine's output.
   void step(double dtS);

@@ -1,6 +1,7 @@
 #include "stream_session.hpp"
 
 #include <QFile>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -11,6 +12,56 @@
 #include "resume.hpp"
 
 namespace fivebar {
+namespace {
+
+const char* settingName(int id) {
+  switch (id) {
+    case 20: return "soft limits";
+    case 22: return "homing cycle";
+    case 100: return "motor 1 steps/deg";
+    case 101: return "motor 2 steps/deg";
+    case 110: return "motor 1 max rate, deg/min";
+    case 111: return "motor 2 max rate, deg/min";
+    case 120: return "motor 1 acceleration, deg/s^2";
+    case 121: return "motor 2 acceleration, deg/s^2";
+    case 130: return "motor 1 travel, deg";
+    case 131: return "motor 2 travel, deg";
+    default: return "setting";
+  }
+}
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+}  // namespace
+
+std::vector<setup::SettingDiff> movingSettingDiffs(const setup::Settings& board, const MachineProfile& profile) {
+  static constexpr int kMoving[] = {20, 22, 100, 101, 110, 111, 120, 121, 130, 131};
+  std::vector<setup::SettingDiff> out;
+  for (const setup::SettingDiff& d : setup::compare(board, setup::expectedSettings(profile)))
+    if (std::find(std::begin(kMoving), std::end(kMoving), d.id) != std::end(kMoving)) out.push_back(d);
+  return out;
+}
+
+std::string describeSettingDiffs(const std::vector<setup::SettingDiff>& diffs) {
+  std::string text;
+  for (const setup::SettingDiff& d : diffs) {
+    if (!text.empty()) text += "; ";
+    // Appended piece by piece (GCC 12 warns falsely on "literal" + std::string&&).
+    text += '$';
+    text += std::to_string(d.id);
+    text += " (";
+    text += settingName(d.id);
+    text += ") is ";
+    text += d.board ? number(*d.board) : std::string("not reported");
+    text += " on the board, the profile wants ";
+    text += number(d.wanted);
+  }
+  return text;
+}
 
 StreamSession::StreamSession(MachineLink& link, StreamOptions options, QObject* parent)
     : QObject(parent), link_(link), options_(std::move(options)) {
@@ -20,8 +71,12 @@ StreamSession::StreamSession(MachineLink& link, StreamOptions options, QObject* 
 StreamSession::~StreamSession() = default;
 
 bool StreamSession::begin(std::string* error) {
-  const auto text = job::readFile(options_.jobPath, error);
-  if (!text) return false;
+  std::optional<std::string> read;
+  if (!options_.jobText) {
+    read = job::readFile(options_.jobPath, error);
+    if (!read) return false;
+  }
+  const std::string* text = options_.jobText ? options_.jobText.get() : &*read;
   jobHash_ = job::sha256Hex(*text);
   const job::JobRules rules = options_.profile ? job::rulesFor(*options_.profile) : job::JobRules{};
   job_ = job::parseJob(*text, rules);
@@ -50,6 +105,10 @@ bool StreamSession::begin(std::string* error) {
   phase_ = Phase::Sync;
   poseSync_ = std::make_unique<grbl::PoseSync>(link_.protocol(), options_.syncTimeoutS);
   poseSync_->wantSettings(options_.checked);  // the board's soft limits
+  // Read anew before every job and resume: settings changed since (a console, another program)
+  // must not go unnoticed.
+  poseSync_->wantFreshSettings(options_.checked && options_.checkSettings);
+  stop_.totalLines = job_.lines.size();
   return true;
 }
 
@@ -96,13 +155,45 @@ void StreamSession::onTick(double nowS) {
       return;
     }
     if (st == grbl::PoseSync::State::Waiting) return;
+    const std::string port = link_.transport().name().toStdString();
+    const std::string machine = options_.machineName.empty() ? "PROFILE" : options_.machineName;
     if (link_.protocol().state() == grbl::MachineState::Alarm) {
-      finish(false, "the machine is in alarm: check it, then unlock with "
-                    "'fivebar send --port " + link_.transport().name().toStdString() +
-                    " $X' (or home with 'fivebar home') and stream again");
+      refuse(StreamStop::Kind::Alarm,
+             "the machine is in alarm: check it, then unlock with 'fivebar send --port " + port +
+                 " $X' (or home with 'fivebar home') and stream again");
+      return;
+    }
+    if (options_.checked && !link_.poseTrust().known()) {
+      stop_.doubt = link_.poseTrust().doubt();
+      refuse(StreamStop::Kind::PoseUnknown,
+             "refused before the first move: the machine's position is not known (" +
+                 std::string(grbl::toString(stop_.doubt)) + "; the board reports " +
+                 motion::anglesText(link_.protocol().workPositionDeg()->x(), link_.protocol().workPositionDeg()->y()) +
+                 ", which says nothing about where the arms stand after a power cut). Put the arms "
+                 "in the home pose and run 'fivebar reference --port " + port + " --machine " + machine +
+                 "', or home the machine ('fivebar home' with switches), then stream again");
+      return;
+    }
+    if (options_.checked && options_.checkSettings && options_.profile) {
+      stop_.settings = movingSettingDiffs(link_.protocol().boardSettings(), *options_.profile);
+      if (!stop_.settings.empty()) {
+        refuse(StreamStop::Kind::SettingsDiffer,
+               "refused before the first move: the board's settings differ from the profile " +
+                   options_.profile->name + ": " + describeSettingDiffs(stop_.settings) +
+                   ". Write the profile's settings with 'fivebar setup --port " + port + " --machine " +
+                   machine + " --write' (or stream with --ignore-settings if you know why they differ)");
+        return;
+      }
+    }
+    if (stopRequested_) {
+      refuse(StreamStop::Kind::Interrupted, "stopped before the first move: nothing was sent");
       return;
     }
     startStreaming(nowS);
+    return;
+  }
+  if (phase_ == Phase::LiftingPen) {
+    penRunner_->tick(nowS);
     return;
   }
   if (phase_ != Phase::Streaming) return;
@@ -131,6 +222,7 @@ void StreamSession::startStreaming(double nowS) {
     std::vector<std::string> approach;
     if (options_.checked && !planApproach(approach)) return;
     if (options_.checked && !withinBoardLimits(approach, 0)) return;
+    link_.poseTrust().aboutToMove();
     runner_->start(0, approach, nowS);
     return;
   }
@@ -162,6 +254,7 @@ void StreamSession::startStreaming(double nowS) {
     return;
   }
   if (options_.checked && !withinBoardLimits(plan.preamble, plan.continueFrom)) return;
+  link_.poseTrust().aboutToMove();
   runner_->start(plan.continueFrom, plan.preamble, nowS);
 }
 
@@ -181,6 +274,8 @@ bool StreamSession::withinBoardLimits(const std::vector<std::string>& preamble, 
   const auto hit = setup::firstSoftLimitHit(rest, link_.protocol().boardSettings(),
                                             {pose->wco[0], pose->wco[1]});
   if (!hit) return true;
+  stop_.limitHit = *hit;
+  stop_.kind = StreamStop::Kind::BoardLimits;
   finish(false, "refused, nothing was sent: " + setup::describe(*hit) +
                     ": the board would stop the job there with ALARM:2. Its travel is checked in "
                     "machine coordinates, which the reference shifted against the job's: home the "
@@ -235,13 +330,25 @@ void StreamSession::onRunnerChanged() {
       save(runner_->problem());
       runner_->stop(link_.nowS());
       return;
-    case job::RunState::Stopped:
-      save(runner_->problem());
-      finish(false, runner_->problem() + " Progress saved to " + progressPath() +
-                        "; continue with --resume.");
+    case job::RunState::Stopped: {
+      const std::string reason = stopRequested_ && runner_->problem().empty()
+                                     ? std::string("stopped on request")
+                                     : runner_->problem();
+      save(reason);
+      stop_.progressSaved = true;
+      stop_.kind = stopRequested_ && runner_->problem().empty() ? StreamStop::Kind::Interrupted
+                                                                : StreamStop::Kind::RunProblem;
+      stop_.problem = runner_->problem();
+      const std::string head = stop_.kind == StreamStop::Kind::Interrupted
+                                   ? "stopped on request " + whereStopped() + "."
+                                   : runner_->problem() + " (" + whereStopped() + ")";
+      liftPen(head + " Progress saved to " + progressPath() + "; continue with --resume.");
       return;
+    }
     case job::RunState::Finished:
       QFile::remove(QString::fromStdString(progressPath()));
+      stop_.kind = StreamStop::Kind::Done;
+      stop_.linesDone = job_.lines.size();
       finish(true, "done: " + std::to_string(job_.lines.size()) + " lines acknowledged, machine Idle");
       return;
     default: return;
@@ -259,13 +366,66 @@ void StreamSession::save(const std::string& reason) {
   p.lastCompletedLine = fileLine(s.lastCompleted);
   p.lastPenDownLine = fileLine(s.lastPenDownPoint);
   if (s.lastPenDownPoint) p.penDownAnglesDeg = job_.lines[*s.lastPenDownPoint].endDeg;
+  p.linesDone = s.lastCompleted ? int(*s.lastCompleted) + 1 : 0;
   p.reason = reason;
   const std::string err = job::saveProgress(p, progressPath());
   if (!err.empty()) emit progress(QString::fromStdString("warning: " + err));
 }
 
+// "after line N of M": the executed job lines, the one count every front end shows.
+std::string StreamSession::whereStopped() const {
+  const job::RunSnapshot s = runner_->snapshot();
+  const std::size_t done = s.lastCompleted ? *s.lastCompleted + 1 : 0;
+  return "after line " + std::to_string(done) + " of " + std::to_string(job_.lines.size());
+}
+
+void StreamSession::requestStop() {
+  if (phase_ == Phase::Done || phase_ == Phase::LiftingPen) return;
+  stopRequested_ = true;
+  if (phase_ == Phase::Idle) {
+    refuse(StreamStop::Kind::Interrupted, "stopped before the first move: nothing was sent");
+    return;
+  }
+  if (phase_ == Phase::Streaming) runner_->stop(link_.nowS());
+  // Sync: the next tick ends it before anything moves.
+}
+
+// After the stop sequence (the board at rest, reset with its position kept): the profile's
+// pen-up command, so that a stopped job never leaves the pen on the paper (a servo pen: M5 or
+// M3 S<up>; a Z pen: G0 Z<up>).
+void StreamSession::liftPen(const std::string& message) {
+  const job::RunSnapshot s = runner_->snapshot();
+  stop_.linesDone = s.lastCompleted ? *s.lastCompleted + 1 : 0;
+  if (runner_->disconnected() || !options_.profile) {
+    finish(false, message);
+    return;
+  }
+  stopMessage_ = message;
+  phase_ = Phase::LiftingPen;
+  penRunner_ = std::make_unique<job::JobRunner>(link_.protocol(), noLines_);
+  penRunner_->changed = [this] { onPenRunnerChanged(); };
+  penRunner_->start(0, job::penUpCommands(options_.profile->tool), link_.nowS());
+}
+
+void StreamSession::onPenRunnerChanged() {
+  if (phase_ != Phase::LiftingPen) return;
+  const job::RunState st = penRunner_->state();
+  if (st == job::RunState::Finished) {
+    stop_.penLifted = true;
+    finish(false, stopMessage_ + " The pen is up and the machine at rest.");
+  } else if (st == job::RunState::Paused || st == job::RunState::Stopped) {
+    finish(false, stopMessage_ + " The pen could not be lifted: " + penRunner_->problem());
+  }
+}
+
+void StreamSession::refuse(StreamStop::Kind kind, const std::string& message) {
+  stop_.kind = kind;
+  finish(false, message);
+}
+
 void StreamSession::finish(bool ok, const std::string& message) {
   if (phase_ == Phase::Done) return;
+  if (stop_.kind == StreamStop::Kind::None) stop_.kind = ok ? StreamStop::Kind::Done : StreamStop::Kind::Refused;
   phase_ = Phase::Done;
   emit finished(ok, QString::fromStdString(message));
 }

@@ -20,6 +20,9 @@ class Transport : public QObject {
   virtual bool isOpen() const = 0;
   virtual void write(const QByteArray& bytes) = 0;
   virtual QString name() const = 0;
+  // The name under which the host remembers where this board last stood (pose_trust.hpp); ""
+  // for a board that is new at every open (the in-process simulated machine).
+  virtual QString boardKey() const { return name(); }
 
  signals:
   void bytesReceived(const QByteArray& bytes);

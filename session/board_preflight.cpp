@@ -16,12 +16,16 @@ QString boardLimitProblem(const MachineSession& session, const MachineProfile& p
   std::erase_if(parsed.lines, [afterLine](const job::JobLine& l) { return l.fileLine <= afterLine; });
   const auto hit = setup::firstSoftLimitHit(parsed, *board, *wco);
   if (!hit) return {};
+  return softLimitAdvice(*hit);
+}
+
+QString softLimitAdvice(const setup::SoftLimitHit& hit) {
   return BoardPreflight::tr(
              "The board's soft limits would stop this job with an alarm (ALARM:2): %1. The board "
              "checks its travel ($130, $131) in machine coordinates, which the reference pose "
              "shifted against the drawing's. Home the machine, or make the board's settings match "
              "the profile (Machine settings...), then start again.")
-      .arg(translated(setup::describeHit(*hit)));
+      .arg(translated(setup::describeHit(hit)));
 }
 
 BoardPreflight::BoardPreflight(const StudioInputs& inputs, const MachineSession& session, QObject* parent)

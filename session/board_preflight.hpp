@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 
+#include "drivers/soft_limits.hpp"
 #include "session/machine_session.hpp"
 #include "session/studio_inputs.hpp"
 
@@ -22,6 +23,8 @@ namespace fivebar::session {
 // off or not known.
 QString boardLimitProblem(const MachineSession& session, const MachineProfile& profile,
                           const std::string& gcode, int afterLine = 0);
+// The same words for a hit the drivers found (StreamStop::limitHit).
+QString softLimitAdvice(const setup::SoftLimitHit& hit);
 
 class BoardPreflight : public QObject {
   Q_OBJECT

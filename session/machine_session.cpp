@@ -1,11 +1,13 @@
 #include "session/machine_session.hpp"
 
 #include <QTimer>
+#include <cctype>
 
 #include "core/kinematics/units.hpp"
 #include "drivers/gcode_job.hpp"
 #include "drivers/grbl_codes.hpp"
 #include "drivers/jog.hpp"
+#include "drivers/pen_state.hpp"
 #include "drivers/motion_check.hpp"
 #include "drivers/serial_transport.hpp"
 #include "drivers/simulated_transport.hpp"
@@ -88,6 +90,7 @@ bool MachineSession::openLink(std::unique_ptr<Transport> transport, QString* err
   }
   transport_ = std::move(transport);
   link_ = std::make_unique<MachineLink>(*transport_, kPollIntervalS, kTickMs);
+  link_->poseTrust().changed = [this] { emit poseKnownChanged(); };
   link_->protocol().addListener(this);
   link_->start();
   answered_ = false;
@@ -121,6 +124,7 @@ void MachineSession::teardown(const QString& reason) {
   connectTimer_->stop();
   settingsSync_.reset();
   boardSettings_.reset();
+  ignoreSettings_ = false;
   answered_ = false;
   pen_ = PenState::Unknown;
   link_->protocol().removeListener(this);
@@ -158,8 +162,42 @@ const grbl::StatusReport* MachineSession::lastStatus() const {
 }
 
 std::optional<JointAngles> MachineSession::motorAngles() const {
-  if (!link_) return std::nullopt;
+  if (!link_ || !poseKnown()) return std::nullopt;
   return link_->protocol().motorAngles();
+}
+
+bool MachineSession::poseKnown() const { return link_ && link_->poseTrust().known(); }
+
+grbl::PoseDoubt MachineSession::poseDoubt() const {
+  return link_ ? link_->poseTrust().doubt() : grbl::PoseDoubt::Disconnected;
+}
+
+QString MachineSession::poseDoubtText() const {
+  const QString todo = inputs_.profile().hasHomingSwitches
+                           ? tr("Home the machine (Home), or put the arms in the home pose and press Set reference pose.")
+                           : tr("Put the arms in the home pose by hand and press Set reference pose.");
+  switch (poseDoubt()) {
+    case grbl::PoseDoubt::None: return {};
+    case grbl::PoseDoubt::NotYetRead: return tr("Reading where the machine stands...");
+    case grbl::PoseDoubt::NotReferenced:
+      return tr("The machine's position is not known: this board has not been referenced from this "
+                "computer yet. %1").arg(todo);
+    case grbl::PoseDoubt::PositionChanged:
+      return tr("The machine's position is not known: the board was powered up or reset since it was "
+                "last seen, so the position it reports says nothing about where the arms stand. %1")
+          .arg(todo);
+    case grbl::PoseDoubt::ResetInMotion:
+      return tr("The machine's position is not known: it was reset or stopped hard while moving, and "
+                "the motors may have lost steps. %1").arg(todo);
+    case grbl::PoseDoubt::HomingFailed:
+      return tr("The machine's position is not known: the homing cycle moved the arms and did not "
+                "finish. %1").arg(todo);
+    case grbl::PoseDoubt::RunInterrupted:
+      return tr("The machine's position is not known: it moved while no program watched it (a job "
+                "cut off by a crash, a closed connection or another program). %1").arg(todo);
+    case grbl::PoseDoubt::Disconnected: return tr("Not connected.");
+  }
+  return {};
 }
 
 std::optional<Vec2> MachineSession::penMm() const {
@@ -180,7 +218,8 @@ std::optional<JointAngles> MachineSession::jogStart() const {
 bool MachineSession::canJog() const {
   if (!isConnected() || jobActive_ || settle_.blocked()) return false;
   const grbl::MachineState s = state();
-  return (s == grbl::MachineState::Idle || s == grbl::MachineState::Jog) && motorAngles().has_value();
+  return (s == grbl::MachineState::Idle || s == grbl::MachineState::Jog) && motorAngles().has_value() &&
+         !settingsStopMoves();
 }
 
 void MachineSession::dismissProblem() {
@@ -205,6 +244,10 @@ void MachineSession::onAck(const grbl::Ack& ack) {
   if (!user) return;
   if (ack.ok()) {
     if (problem_.kind == MachineProblem::Kind::Error) setProblem({});
+    // A setting written from the console: compare the board's settings with the profile anew.
+    if (ack.line.size() > 2 && ack.line[0] == '$' && std::isdigit(static_cast<unsigned char>(ack.line[1])) &&
+        ack.line.find('=') != std::string::npos)
+      QTimer::singleShot(0, this, [this] { readBoardSettings(); });
     return;
   }
   MachineProblem p;
@@ -225,6 +268,14 @@ void MachineSession::onStatus(const grbl::StatusReport& report) {
     readBoardSettings();
   }
   settle_.reported(report.state, report.wco.has_value());
+  // The pen as the board reports it (its running spindle state, or Z).
+  const auto work = link_ ? link_->protocol().workPositionDeg() : std::nullopt;
+  switch (grbl::penFromStatus(inputs_.profile().tool, report,
+                              work ? std::optional<double>(work->v[2]) : std::nullopt)) {
+    case grbl::BoardPen::Up: setPenState(PenState::Up); break;
+    case grbl::BoardPen::Down: setPenState(PenState::Down); break;
+    case grbl::BoardPen::Unknown: break;
+  }
   if (report.state == grbl::MachineState::Alarm && problem_.kind != MachineProblem::Kind::Alarm) {
     MachineProblem p;
     p.kind = MachineProblem::Kind::Alarm;

@@ -88,8 +88,16 @@ class MachineSession : public QObject,
   // --- state, as last reported by the board ---
   grbl::MachineState state() const;
   const grbl::StatusReport* lastStatus() const;  // nullptr before the first report
-  std::optional<JointAngles> motorAngles() const;  // continuous, rad
+  // Continuous, rad; nullopt while the position is not known (poseKnown): a board that powered
+  // up reports its last reference pose wherever the arms stand.
+  std::optional<JointAngles> motorAngles() const;
   std::optional<Vec2> penMm() const;             // FK of motorAngles, machine frame
+  // Whether the studio knows where the arms are (drivers/pose_trust.hpp): known after the
+  // reference pose is set, homing, or a board found where this computer last saw it stand.
+  bool poseKnown() const;
+  grbl::PoseDoubt poseDoubt() const;
+  // Why the position is not known and what to do, in the studio's words ("" when known).
+  QString poseDoubtText() const;
   int bytesInFlight() const;
   const MachineProblem& problem() const { return problem_; }
   const MachineProfile& profile() const { return inputs_.profile(); }
@@ -100,8 +108,9 @@ class MachineSession : public QObject,
   bool jogSettled() const { return settle_.settled(); }
   // True when jogging and console commands may be sent now (connected, no job, not in alarm).
   bool canJog() const override;
+  // The pen as the board reports it (drivers/pen_state.hpp: its spindle state or Z), not as the
+  // last line sent.
   PenState penState() const { return pen_; }
-  void setPenState(PenState pen);
 
   // --- the board's $ settings, read on connect (and again after a write) ---
   void readBoardSettings() override;
@@ -115,6 +124,15 @@ class MachineSession : public QObject,
   std::optional<std::array<double, 2>> workOffsetDeg() const;
   // The board's settings that differ from what the profile expects (empty while unknown).
   std::vector<setup::SettingDiff> settingDifferences() const;
+  // The board's settings (as last read) differ from the profile where it changes how the
+  // machine moves (drivers/stream_session.hpp movingSettingDiffs): no jog until written.
+  bool settingsStopMoves() const;
+  // The expert's override for jogs, go-to and console moves: the differences are warned about
+  // but do not refuse them (off again at disconnect). Start has its own ("Start anyway").
+  void setIgnoreSettingDifferences(bool on);
+  bool ignoreSettingDifferences() const { return ignoreSettings_; }
+  // Why a jog or move cannot be sent now, in the user's words ("" when it can).
+  QString moveRefusal() const;
 
   // --- the console's safety switch ---
   // Off (default): every console line goes through the motion check (drivers/motion_check)
@@ -167,6 +185,7 @@ class MachineSession : public QObject,
   void uncheckedConsoleChanged(bool on);
   void penStateChanged();
   void boardSettingsChanged();  // read (or failed); see settingDifferences()
+  void poseKnownChanged();      // see poseKnown()
 
  private:
   bool openLink(std::unique_ptr<Transport> transport, QString* error);
@@ -175,6 +194,7 @@ class MachineSession : public QObject,
   bool enqueueUserLine(const std::string& line, bool log);
   bool sendPen(const std::vector<std::string>& lines, PenState state);  // penUp / penDown
   void setProblem(MachineProblem problem);
+  void setPenState(PenState pen);
   void teardown(const QString& reason);
 
   void onAck(const grbl::Ack& ack) override;
@@ -198,6 +218,7 @@ class MachineSession : public QObject,
   QString connectTarget_;  // "PORT at BAUD baud" for the timeout message
   QTimer* connectTimer_ = nullptr;
   bool unchecked_ = false;
+  bool ignoreSettings_ = false;
   bool consoleAbsolute_ = true;  // G90/G91 as the console's lines left it
   PenState pen_ = PenState::Unknown;
   std::unique_ptr<setup::SettingsSync> settingsSync_;

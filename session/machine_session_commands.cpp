@@ -9,6 +9,7 @@
 #include "drivers/grbl_codes.hpp"
 #include "drivers/jog.hpp"
 #include "drivers/motion_check.hpp"
+#include "drivers/stream_session.hpp"
 #include "session/core_message.hpp"
 
 namespace fivebar::session {
@@ -71,6 +72,14 @@ bool MachineSession::checkConsoleLine(const std::string& line, QString* refusal)
     return false;
   }
   if (interpreted.verdict == motion::Verdict::Motion) {
+    if (!poseKnown() && reported) {
+      *refusal = poseDoubtText();
+      return false;
+    }
+    if (settingsStopMoves()) {
+      *refusal = moveRefusal();
+      return false;
+    }
     if (!reported) {
       *refusal = tr("The machine's position is not known yet (no status report with its work "
                     "position): wait a moment, or set the reference pose.");
@@ -90,7 +99,37 @@ bool MachineSession::checkConsoleLine(const std::string& line, QString* refusal)
   motion::BoardPose after = pose;
   motion::applyLine(line, interpreted, after);
   consoleAbsolute_ = after.absolute;
+  if (interpreted.verdict == motion::Verdict::Motion && link_) link_->poseTrust().aboutToMove();
   return true;
+}
+
+bool MachineSession::settingsStopMoves() const {
+  return !ignoreSettings_ && boardSettings_ && !movingSettingDiffs(*boardSettings_, inputs_.profile()).empty();
+}
+
+void MachineSession::setIgnoreSettingDifferences(bool on) {
+  if (ignoreSettings_ == on) return;
+  ignoreSettings_ = on;
+  if (on)
+    emit consoleLine(tr("Moves are sent although the board's settings differ from the profile (expert "
+                        "override)."),
+                     ConsoleKind::Problem);
+  emit boardSettingsChanged();
+}
+
+QString MachineSession::moveRefusal() const {
+  if (!isConnected()) return tr("The machine is not connected.");
+  if (jobActive_) return tr("A job is running.");
+  if (!poseKnown()) return poseDoubtText();
+  if (settingsStopMoves()) {
+    QStringList ids;
+    for (const setup::SettingDiff& d : movingSettingDiffs(*boardSettings_, inputs_.profile()))
+      ids << QStringLiteral("$%1").arg(d.id);
+    return tr("The board's settings %1 differ from the profile, so the machine would not move as "
+              "planned: write the profile's settings (Machine settings...) first.")
+        .arg(ids.join(QStringLiteral(", ")));
+  }
+  return tr("The machine is not idle.");
 }
 
 void MachineSession::setUncheckedConsole(bool on) {
@@ -167,8 +206,7 @@ jog::JogPlan MachineSession::boardChecked(jog::JogPlan plan, bool clip) const {
 
 bool MachineSession::sendJog(const jog::JogPlan& plan) {
   if (!canJog()) {
-    emit consoleLine(tr("Jog refused: the machine is not idle, not connected or a job is running."),
-                     ConsoleKind::Problem);
+    emit consoleLine(tr("Jog refused: %1").arg(moveRefusal()), ConsoleKind::Problem);
     return false;
   }
   if (!plan.ok()) return false;
@@ -180,6 +218,7 @@ bool MachineSession::sendJog(const jog::JogPlan& plan) {
     return false;
   }
   const bool logEach = plan.lines.size() <= 3;
+  link_->poseTrust().aboutToMove();
   std::vector<std::uint64_t> ids;
   bool sent = true;
   for (const std::string& line : plan.lines) {
@@ -225,7 +264,7 @@ void MachineSession::home() {
 bool MachineSession::goToHomePose(QString* why) {
   const auto from = jogStart();
   if (!canJog() || !from) {
-    if (why) *why = tr("The machine must be connected, idle and its position known.");
+    if (why) *why = moveRefusal();
     return false;
   }
   const MachineProfile& p = inputs_.profile();
@@ -243,14 +282,13 @@ bool MachineSession::goToHomePose(QString* why) {
     if (why) *why = tr("The move was not sent (see the console).");
     return false;
   }
-  pen_ = PenState::Up;
-  emit penStateChanged();
   return true;
 }
 
 void MachineSession::setReferencePose() {
-  if (enqueueUserLine(jog::referencePoseCommand(inputs_.profile()), true))
-    settle_.referenceSent(*userLines_.rbegin());
+  if (!enqueueUserLine(jog::referencePoseCommand(inputs_.profile()), true)) return;
+  settle_.referenceSent(*userLines_.rbegin());
+  link_->poseTrust().confirmed();  // the maker declared it: known from the next report at rest
 }
 
 void MachineSession::softReset() {
@@ -279,9 +317,10 @@ bool MachineSession::penDown() {
 
 bool MachineSession::sendPen(const std::vector<std::string>& lines, PenState state) {
   if (!canJog()) return false;
+  // The pen shown follows the board's own reports (onStatus), not this command.
+  (void)state;
   for (const std::string& line : lines)
     if (!enqueueUserLine(line, true)) return false;
-  setPenState(state);
   return true;
 }
 

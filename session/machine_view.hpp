@@ -27,6 +27,8 @@ class MachineView : public QObject {
   std::optional<JointAngles> motorAngles() const { return session_.motorAngles(); }
   std::optional<Vec2> penMm() const { return session_.penMm(); }
   PenState penState() const { return session_.penState(); }
+  bool poseKnown() const { return session_.poseKnown(); }
+  QString poseDoubtText() const { return session_.poseDoubtText(); }
   bool jobActive() const { return session_.jobActive(); }
   const MachineProblem& problem() const { return session_.problem(); }
   const MachineProfile& profile() const { return session_.profile(); }
@@ -42,6 +44,7 @@ class MachineView : public QObject {
   void jobActiveChanged(bool active);
   void penStateChanged();
   void boardSettingsChanged();
+  void poseKnownChanged();
 
  private:
   const MachineSession& session_;

@@ -8,6 +8,7 @@
 
 #include "core/output/gcode.hpp"
 #include "session/board_preflight.hpp"
+#include "session/settings_advice.hpp"
 
 namespace fivebar::session {
 namespace {
@@ -44,7 +45,10 @@ RunController::RunController(const StudioInputs& inputs, MachineSession& session
   connect(&session_, &MachineSession::statusUpdated, this, [this] {
     if (!running()) emit runChanged();
   });
-  connect(&inputs_, &StudioInputs::plannedJobChanged, this, &RunController::runChanged);
+  connect(&inputs_, &StudioInputs::plannedJobChanged, this, [this] {
+    hashedPlan_ = nullptr;  // a new plan may live where the old one did
+    emit runChanged();
+  });
   connect(&inputs_, &StudioInputs::drawingChanged, this, &RunController::runChanged);
   // A finished or stopped run belongs to the job it ran: when the job, its placement or the
   // profile change, its overlay and status go (its saved progress stays, for Resume).
@@ -68,19 +72,31 @@ QString RunController::resumeOffer() const {
   const auto saved = savedProgress();
   if (!saved) return {};
   // The saved line is a file line; count it in job lines, like the progress counter.
-  QString where;
-  QFile file(jobPath());
-  if (file.open(QIODevice::ReadOnly)) {
-    const QByteArray bytes = file.readAll();
-    const job::GcodeJob j =
-        job::parseJob(std::string_view(bytes.constData(), std::size_t(bytes.size())), job::rulesFor(inputs_.profile()));
-    std::size_t done = 0;
-    for (const job::JobLine& line : j.lines)
-      if (line.fileLine <= saved->lastCompletedLine) ++done;
-    where = tr("line %1 of %2").arg(done).arg(j.lines.size());
+  // One count everywhere: the executed job lines, as the progress bar and the stop say it.
+  const QString where = tr("line %1 of %2").arg(saved->linesDone).arg(saved->totalLines);
+  QString offer = tr("The run of \"%1\" was interrupted after %2: %3")
+                      .arg(drawingName(), where, guiMessage(QString::fromStdString(saved->reason)));
+  if (inputs_.plannedJob() != nullptr && !planMatchesSaved())
+    offer += QLatin1Char(' ') +
+             tr("The drawing, its placement, the machine profile or the tolerance changed since, so "
+                "Resume would draw the old job where the canvas no longer shows it: undo the change to "
+                "resume, or press Start to draw the new one from the beginning.");
+  return offer;
+}
+
+QString RunController::planHash() const {
+  const PlannedJob* job = inputs_.plannedJob();
+  if (job == nullptr) return {};
+  if (job != hashedPlan_) {
+    hashedPlan_ = job;
+    planHash_ = QString::fromStdString(job::sha256Hex(writeGcode(*job, inputs_.profile())));
   }
-  return tr("The run of \"%1\" was interrupted at %2: %3")
-      .arg(drawingName(), where, guiMessage(QString::fromStdString(saved->reason)));
+  return planHash_;
+}
+
+bool RunController::planMatchesSaved() const {
+  const auto saved = savedProgress();
+  return saved && !planHash().isEmpty() && planHash().toStdString() == saved->jobHash;
 }
 
 QString RunController::progressText() const {
@@ -91,10 +107,7 @@ QString RunController::progressText() const {
 // The drivers' messages are written for the command line: say it with the studio's buttons,
 // and leave the alarm's explanation to the banner (it is shown there once).
 QString RunController::guiMessage(const QString& message) const {
-  QString text = message;
-  text.replace(QStringLiteral("; continue with --resume."), QStringLiteral("."));
-  text.replace(QStringLiteral("stream it again with --resume"), tr("press Resume"));
-  text.replace(QStringLiteral("--resume"), tr("Resume"));
+  const QString text = message;
   const MachineProblem& p = session_.problem();
   if (p.kind == MachineProblem::Kind::Alarm || text.startsWith(QStringLiteral("ALARM")))
     return tr("The machine raised an alarm and the job stopped (the banner in the Machine panel "
@@ -103,12 +116,39 @@ QString RunController::guiMessage(const QString& message) const {
   return text;
 }
 
-RunController::~RunController() { dropStream(); }
-
-QString RunController::boardLimitProblem(const std::string& gcode, int afterLine) const {
-  const QString why = session::boardLimitProblem(session_, inputs_.profile(), gcode, afterLine);
-  return why.isEmpty() ? why : tr("Not started: %1").arg(why);
+// The end of a run in the studio's words, from the drivers' structured stop.
+QString RunController::stopMessage(bool ok, const QString& message) const {
+  if (ok) return tr("\"%1\" is drawn.").arg(drawingName());
+  if (!stream_) return guiMessage(message);
+  const StreamStop& stop = stream_->stop();
+  switch (stop.kind) {
+    case StreamStop::Kind::PoseUnknown: return tr("Not started: %1").arg(session_.poseDoubtText());
+    case StreamStop::Kind::BoardLimits:
+      if (stop.limitHit) return tr("Not started: %1").arg(softLimitAdvice(*stop.limitHit));
+      return guiMessage(message);
+    case StreamStop::Kind::SettingsDiffer: {
+      QStringList items;
+      for (const SettingAdvice& a : adviseOnSettings(stop.settings)) items << a.text;
+      return tr("Not started: the board's settings differ from the profile. %1 Write the profile's "
+                "settings (Machine settings...), or choose Start anyway when Start asks.")
+          .arg(items.join(QLatin1Char(' ')));
+    }
+    case StreamStop::Kind::Interrupted:
+      if (stop.linesDone == 0 && !stop.progressSaved) return tr("Stopped before the first move: nothing was sent.");
+      return (stop.penLifted ? tr("Stopped after line %1 of %2; the pen is up and the machine at rest.")
+                             : tr("Stopped after line %1 of %2; the pen could not be lifted.")).arg(stop.linesDone).arg(stop.totalLines) +
+             QLatin1Char(' ') + tr("The progress is saved: press Resume to continue.");
+    case StreamStop::Kind::RunProblem:
+      if (session_.problem().kind == MachineProblem::Kind::Alarm) return guiMessage(QStringLiteral("ALARM"));
+      return tr("Stopped after line %1 of %2: %3 The progress is saved: press Resume to continue.")
+          .arg(stop.linesDone)
+          .arg(stop.totalLines)
+          .arg(QString::fromStdString(stop.problem));
+    default: return guiMessage(message);
+  }
 }
+
+RunController::~RunController() { dropStream(); }
 
 void RunController::setJobDirectory(const QString& dir) {
   jobDir_ = dir;
@@ -134,7 +174,7 @@ const PlannedJob* RunController::plannedJob() const {
 
 bool RunController::canResume() const {
   return session_.isConnected() && !running() && session_.state() == grbl::MachineState::Idle &&
-         savedProgress().has_value();
+         planMatchesSaved();
 }
 
 std::optional<job::JobProgress> RunController::savedProgress() const {
@@ -154,15 +194,18 @@ bool RunController::start(QString* error) {
   QString why;
   if (!canStart()) {
     why = tr("Cannot start: connect the machine, wait until it is idle, and let the job plan first.");
+  } else if (!session_.poseKnown()) {
+    why = tr("Not started: %1").arg(session_.poseDoubtText());
   } else if (!QDir().mkpath(jobDir_)) {
     why = tr("Cannot create the job folder %1.").arg(jobDir_);
   } else {
-    const std::string gcode = writeGcode(*inputs_.plannedJob(), inputs_.profile());
-    why = boardLimitProblem(gcode);
-    if (why.isEmpty()) why = writeAtomically(jobPath(), gcode);
+    // The job is written once: the file is the resume record, the stream reads the same text
+    // from memory. The board's soft limits are checked by the stream itself, before a byte.
+    auto gcode = std::make_shared<const std::string>(writeGcode(*inputs_.plannedJob(), inputs_.profile()));
+    why = writeAtomically(jobPath(), *gcode);
     if (why.isEmpty()) {
       QFile::remove(QString::fromStdString(job::progressPathFor(jobPath().toStdString())));
-      if (launch(false, &why)) return true;
+      if (launch(false, gcode, &why)) return true;
     }
   }
   lastMessage_ = why;
@@ -173,15 +216,23 @@ bool RunController::start(QString* error) {
 
 bool RunController::resume(QString* error) {
   QString why;
-  if (!canResume()) {
+  if (!savedProgress()) {
     why = tr("Nothing to resume: there is no saved progress beside %1.").arg(jobPath());
+  } else if (inputs_.plannedJob() == nullptr) {
+    why = tr("Not resumed: the job is not planned yet; wait for the preview.");
+  } else if (!planMatchesSaved()) {
+    why = tr("Not resumed: the drawing, its placement, the machine profile or the tolerance changed "
+             "since the run was interrupted, so Resume would draw the old job where the canvas no "
+             "longer shows it. Undo the change to resume, or press Start to draw the new one from "
+             "the beginning.");
+  } else if (!canResume()) {
+    why = tr("Cannot resume: connect the machine and wait until it is idle.");
+  } else if (!session_.poseKnown()) {
+    why = tr("Not resumed: %1").arg(session_.poseDoubtText());
   } else {
-    // The rest of the job against the board's soft limits first (after an alarm the reference
-    // may have changed).
-    QFile file(jobPath());
-    const QByteArray bytes = file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-    why = boardLimitProblem(bytes.toStdString(), savedProgress()->lastCompletedLine);
-    if (why.isEmpty() && launch(true, &why)) return true;
+    // The planned job is the interrupted one (same G-code, planMatchesSaved): streamed from memory.
+    auto gcode = std::make_shared<const std::string>(writeGcode(*inputs_.plannedJob(), inputs_.profile()));
+    if (launch(true, gcode, &why)) return true;
   }
   lastMessage_ = why;
   if (error) *error = why;
@@ -189,13 +240,17 @@ bool RunController::resume(QString* error) {
   return false;
 }
 
-bool RunController::launch(bool resume, QString* error) {
+bool RunController::launch(bool resume, std::shared_ptr<const std::string> gcode, QString* error) {
   dropStream();
   StreamOptions options;
   options.jobPath = jobPath().toStdString();
+  options.jobText = std::move(gcode);
   options.resume = resume;
   options.profile = inputs_.profile();
   options.machineName = inputs_.profile().name;
+  options.checkSettings = !ignoreSettings_;
+  ignoreSettings_ = false;
+  options.portName = session_.linkName().toStdString();
   stream_ = std::make_unique<StreamSession>(*session_.link(), options);
   connect(stream_.get(), &StreamSession::finished, this, &RunController::onFinished);
   std::string why;
@@ -228,9 +283,10 @@ void RunController::continueRun() {
   refresh();
 }
 
+// The drivers' stop: feed hold, wait for the hold, soft reset (position kept), pen up, progress
+// saved (StreamSession::requestStop).
 void RunController::stop() {
-  if (running() && stream_->runner() && session_.link())
-    stream_->runner()->stop(session_.link()->nowS());
+  if (running()) stream_->requestStop();
   refresh();
 }
 
@@ -239,8 +295,6 @@ void RunController::refresh() {
   snapshot_ = stream_->runner()->snapshot();
   // The time left by the plan's time line of the last executed line (unchanged while held).
   snapshot_.etaS = timeline_.lineEndS.empty() ? -1.0 : timeline_.remainingS(snapshot_.lastCompleted);
-  if (job_ && snapshot_.lastCompleted && *snapshot_.lastCompleted < job_->lines.size())
-    session_.setPenState(job_->lines[*snapshot_.lastCompleted].penDownAfter ? PenState::Down : PenState::Up);
   const job::RunState s = stream_->runner()->state();
   const bool changed = s != lastState_;
   lastState_ = s;
@@ -253,7 +307,7 @@ void RunController::onFinished(bool ok, const QString& message) {
   refresh();
   finished_ = true;
   refresh_.stop();
-  lastMessage_ = ok ? tr("\"%1\" is drawn.").arg(drawingName()) : guiMessage(message);
+  lastMessage_ = stopMessage(ok, message);
   if (ok) {
     lastState_ = job::RunState::Finished;
     snapshot_.lastCompleted = job_ && !job_->lines.empty()

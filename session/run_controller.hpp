@@ -37,7 +37,15 @@ class RunController : public QObject {
 
   bool running() const;         // streaming (not yet finished)
   bool canStart() const;        // connected, idle machine, a planned job, nothing running
-  bool canResume() const;       // canStart and a saved progress beside the job file
+  // canStart, a saved progress beside the job file, and the planned job is the one that run
+  // was interrupted in (planMatchesSaved).
+  bool canResume() const;
+  // The saved run belongs to the job planned now (same drawing, placement, profile and
+  // tolerance: the same G-code, by its SHA-256). False while nothing is planned.
+  bool planMatchesSaved() const;
+  // Start / Resume without comparing the board's settings with the profile (the expert's
+  // "Start anyway"); for the next start only.
+  void ignoreSettingsOnce() { ignoreSettings_ = true; }
   // The planned job Start would stream (the preview's), nullptr when there is none.
   const PlannedJob* plannedJob() const;
   // The saved progress beside the job file, when there is one that can be read.
@@ -73,16 +81,14 @@ class RunController : public QObject {
   void finished(bool ok, const QString& message);
 
  private:
-  bool launch(bool resume, QString* error);
+  bool launch(bool resume, std::shared_ptr<const std::string> gcode, QString* error);
   void refresh();
   void onFinished(bool ok, const QString& message);
   void dropStream();
   void clearPreviousRun();
   QString guiMessage(const QString& message) const;
-  // Pre-flight against the board itself: "" when the board's soft limits ($20, $130/$131, checked
-  // in machine coordinates = work + WCO) let every line of gcode after file line afterLine
-  // through, else why not.
-  QString boardLimitProblem(const std::string& gcode, int afterLine = 0) const;
+  QString stopMessage(bool ok, const QString& message) const;
+  QString planHash() const;  // of the planned job's G-code, cached per plan
 
   const StudioInputs& inputs_;
   MachineSession& session_;
@@ -93,6 +99,9 @@ class RunController : public QObject {
   job::RunSnapshot snapshot_;
   job::RunState lastState_ = job::RunState::Ready;
   bool finished_ = true;
+  bool ignoreSettings_ = false;
+  mutable const PlannedJob* hashedPlan_ = nullptr;
+  mutable QString planHash_;
   QString lastMessage_;
   QTimer refresh_;
 };

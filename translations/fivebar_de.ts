@@ -1661,6 +1661,10 @@ Planen und Zeichnen können sehr lange dauern. Trotzdem ganz importieren?</trans
         <source>Declare that the machine now stands at the profile's home pose (G10 L20).</source>
         <translation>Festlegen, dass die Maschine jetzt in der Ausgangspose des Profils steht (G10 L20).</translation>
     </message>
+    <message>
+        <source>Position unknown: nothing moves until it is set</source>
+        <translation>Position unbekannt: Nichts bewegt sich, bis sie gesetzt ist</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachineDialogs</name>
@@ -1839,6 +1843,10 @@ Bestätigen Sie nur, wenn die Arme jetzt genau in dieser Stellung stehen. Stehen
         <source>not known yet</source>
         <translation>noch unbekannt</translation>
     </message>
+    <message>
+        <source>unknown (set the reference pose)</source>
+        <translation>unbekannt (Referenzpose setzen)</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::session::MachineSession</name>
@@ -1969,6 +1977,66 @@ Bestätigen Sie nur, wenn die Arme jetzt genau in dieser Stellung stehen. Stehen
     <message>
         <source>Move not sent: %1</source>
         <translation>Bewegung nicht gesendet: %1</translation>
+    </message>
+    <message>
+        <source>Home the machine (Home), or put the arms in the home pose and press Set reference pose.</source>
+        <translation>Referenzfahrt ausführen (Home) oder die Arme in die Grundstellung bringen und Referenzpose setzen drücken.</translation>
+    </message>
+    <message>
+        <source>Put the arms in the home pose by hand and press Set reference pose.</source>
+        <translation>Die Arme von Hand in die Grundstellung bringen und Referenzpose setzen drücken.</translation>
+    </message>
+    <message>
+        <source>Reading where the machine stands...</source>
+        <translation>Lese, wo die Maschine steht …</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s position is not known: this board has not been referenced from this computer yet. %1</source>
+        <translation>Die Position der Maschine ist nicht bekannt: Diese Platine wurde von diesem Computer aus noch nicht referenziert. %1</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s position is not known: the board was powered up or reset since it was last seen, so the position it reports says nothing about where the arms stand. %1</source>
+        <translation>Die Position der Maschine ist nicht bekannt: Die Platine wurde seit dem letzten Kontakt eingeschaltet oder zurückgesetzt, die gemeldete Position sagt also nichts darüber, wo die Arme stehen. %1</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s position is not known: it was reset or stopped hard while moving, and the motors may have lost steps. %1</source>
+        <translation>Die Position der Maschine ist nicht bekannt: Sie wurde während der Bewegung zurückgesetzt oder hart gestoppt, die Motoren haben eventuell Schritte verloren. %1</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s position is not known: the homing cycle moved the arms and did not finish. %1</source>
+        <translation>Die Position der Maschine ist nicht bekannt: Die Referenzfahrt hat die Arme bewegt und wurde nicht beendet. %1</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s position is not known: it moved while no program watched it (a job cut off by a crash, a closed connection or another program). %1</source>
+        <translation>Die Position der Maschine ist nicht bekannt: Sie hat sich bewegt, während kein Programm zusah (ein durch Absturz, geschlossene Verbindung oder ein anderes Programm abgebrochener Auftrag). %1</translation>
+    </message>
+    <message>
+        <source>Not connected.</source>
+        <translation>Nicht verbunden.</translation>
+    </message>
+    <message>
+        <source>Moves are sent although the board&apos;s settings differ from the profile (expert override).</source>
+        <translation>Bewegungen werden gesendet, obwohl die Einstellungen der Platine vom Profil abweichen (Expertenmodus).</translation>
+    </message>
+    <message>
+        <source>The machine is not connected.</source>
+        <translation>Die Maschine ist nicht verbunden.</translation>
+    </message>
+    <message>
+        <source>A job is running.</source>
+        <translation>Ein Auftrag läuft.</translation>
+    </message>
+    <message>
+        <source>The board&apos;s settings %1 differ from the profile, so the machine would not move as planned: write the profile&apos;s settings (Machine settings...) first.</source>
+        <translation>Die Einstellungen %1 der Platine weichen vom Profil ab, die Maschine würde sich also nicht wie geplant bewegen: zuerst die Einstellungen des Profils schreiben (Maschineneinstellungen …).</translation>
+    </message>
+    <message>
+        <source>The machine is not idle.</source>
+        <translation>Die Maschine ist nicht im Leerlauf.</translation>
+    </message>
+    <message>
+        <source>Jog refused: %1</source>
+        <translation>Verfahren abgelehnt: %1</translation>
     </message>
 </context>
 <context>
@@ -2696,6 +2764,54 @@ Anhalten, stoppen und beenden: Die Maschine hält sauber an und der Fortschritt 
     <message>
         <source>Not started: %1</source>
         <translation>Nicht gestartet: %1</translation>
+    </message>
+    <message>
+        <source>The run of &quot;%1&quot; was interrupted after %2: %3</source>
+        <translation>Der Lauf von „%1“ wurde nach %2 unterbrochen: %3</translation>
+    </message>
+    <message>
+        <source>The drawing, its placement, the machine profile or the tolerance changed since, so Resume would draw the old job where the canvas no longer shows it: undo the change to resume, or press Start to draw the new one from the beginning.</source>
+        <translation>Die Zeichnung, ihre Platzierung, das Maschinenprofil oder die Toleranz haben sich seitdem geändert, Fortsetzen würde also den alten Auftrag dort zeichnen, wo die Arbeitsfläche ihn nicht mehr zeigt: die Änderung rückgängig machen, um fortzusetzen, oder Start drücken, um den neuen von vorn zu zeichnen.</translation>
+    </message>
+    <message>
+        <source>Not started: the board&apos;s settings differ from the profile. %1 Write the profile&apos;s settings (Machine settings...), or choose Start anyway when Start asks.</source>
+        <translation>Nicht gestartet: Die Einstellungen der Platine weichen vom Profil ab. %1 Die Einstellungen des Profils schreiben (Maschineneinstellungen …) oder bei der Nachfrage von Start „Trotzdem starten“ wählen.</translation>
+    </message>
+    <message>
+        <source>Stopped before the first move: nothing was sent.</source>
+        <translation>Vor der ersten Bewegung gestoppt: Nichts wurde gesendet.</translation>
+    </message>
+    <message>
+        <source>Stopped after line %1 of %2; the pen is up and the machine at rest.</source>
+        <translation>Nach Zeile %1 von %2 gestoppt; der Stift ist oben und die Maschine steht.</translation>
+    </message>
+    <message>
+        <source>Stopped after line %1 of %2; the pen could not be lifted.</source>
+        <translation>Nach Zeile %1 von %2 gestoppt; der Stift konnte nicht angehoben werden.</translation>
+    </message>
+    <message>
+        <source>The progress is saved: press Resume to continue.</source>
+        <translation>Der Fortschritt ist gespeichert: Fortsetzen drücken, um weiterzumachen.</translation>
+    </message>
+    <message>
+        <source>Stopped after line %1 of %2: %3 The progress is saved: press Resume to continue.</source>
+        <translation>Nach Zeile %1 von %2 gestoppt: %3 Der Fortschritt ist gespeichert: Fortsetzen drücken, um weiterzumachen.</translation>
+    </message>
+    <message>
+        <source>Not resumed: the job is not planned yet; wait for the preview.</source>
+        <translation>Nicht fortgesetzt: Der Auftrag ist noch nicht geplant; auf die Vorschau warten.</translation>
+    </message>
+    <message>
+        <source>Not resumed: the drawing, its placement, the machine profile or the tolerance changed since the run was interrupted, so Resume would draw the old job where the canvas no longer shows it. Undo the change to resume, or press Start to draw the new one from the beginning.</source>
+        <translation>Nicht fortgesetzt: Die Zeichnung, ihre Platzierung, das Maschinenprofil oder die Toleranz haben sich seit der Unterbrechung geändert, Fortsetzen würde also den alten Auftrag dort zeichnen, wo die Arbeitsfläche ihn nicht mehr zeigt. Die Änderung rückgängig machen, um fortzusetzen, oder Start drücken, um den neuen von vorn zu zeichnen.</translation>
+    </message>
+    <message>
+        <source>Cannot resume: connect the machine and wait until it is idle.</source>
+        <translation>Fortsetzen nicht möglich: die Maschine verbinden und warten, bis sie im Leerlauf ist.</translation>
+    </message>
+    <message>
+        <source>Not resumed: %1</source>
+        <translation>Nicht fortgesetzt: %1</translation>
     </message>
 </context>
 <context>
@@ -4515,6 +4631,13 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
     <message>
         <source>The board's soft limits would stop this job with an alarm (ALARM:2): %1. The board checks its travel ($130, $131) in machine coordinates, which the reference pose shifted against the drawing's. Home the machine, or make the board's settings match the profile (Machine settings...), then start again.</source>
         <translation>Die Software-Endlagen der Steuerung würden diesen Auftrag mit einem Alarm anhalten (ALARM:2): %1. Die Steuerung prüft ihren Verfahrweg ($130, $131) in Maschinenkoordinaten, die die Referenzstellung gegenüber denen der Zeichnung verschoben hat. Referenzfahren Sie die Maschine oder gleichen Sie die Einstellungen der Steuerung an das Profil an (Maschineneinstellungen...) und starten Sie dann erneut.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachineLayer</name>
+    <message>
+        <source>Position unknown: set the reference pose</source>
+        <translation>Position unbekannt: Referenzpose setzen</translation>
     </message>
 </context>
 </TS>

@@ -1661,6 +1661,10 @@ Planificarlo y plotearlo puede tardar mucho. ¿Importarlo entero de todos modos?
         <source>Declare that the machine now stands at the profile's home pose (G10 L20).</source>
         <translation>Declarar que la máquina está ahora en la pose de origen del perfil (G10 L20).</translation>
     </message>
+    <message>
+        <source>Position unknown: nothing moves until it is set</source>
+        <translation>Posición desconocida: nada se mueve hasta fijarla</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachineDialogs</name>
@@ -1839,6 +1843,10 @@ Confirme solo si los brazos están ahora exactamente en esa pose. Si están en o
         <source>not known yet</source>
         <translation>aún desconocido</translation>
     </message>
+    <message>
+        <source>unknown (set the reference pose)</source>
+        <translation>desconocida (fije la pose de referencia)</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::session::MachineSession</name>
@@ -1969,6 +1977,66 @@ Confirme solo si los brazos están ahora exactamente en esa pose. Si están en o
     <message>
         <source>Move not sent: %1</source>
         <translation>Movimiento no enviado: %1</translation>
+    </message>
+    <message>
+        <source>Home the machine (Home), or put the arms in the home pose and press Set reference pose.</source>
+        <translation>Haga el homing (Home), o ponga los brazos en la pose de inicio y pulse Fijar pose de referencia.</translation>
+    </message>
+    <message>
+        <source>Put the arms in the home pose by hand and press Set reference pose.</source>
+        <translation>Ponga los brazos a mano en la pose de inicio y pulse Fijar pose de referencia.</translation>
+    </message>
+    <message>
+        <source>Reading where the machine stands...</source>
+        <translation>Leyendo dónde está la máquina…</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s position is not known: this board has not been referenced from this computer yet. %1</source>
+        <translation>La posición de la máquina no se conoce: esta placa aún no se ha referenciado desde este ordenador. %1</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s position is not known: the board was powered up or reset since it was last seen, so the position it reports says nothing about where the arms stand. %1</source>
+        <translation>La posición de la máquina no se conoce: la placa se encendió o se reinició desde la última vez, así que la posición que indica no dice nada de dónde están los brazos. %1</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s position is not known: it was reset or stopped hard while moving, and the motors may have lost steps. %1</source>
+        <translation>La posición de la máquina no se conoce: se reinició o se detuvo en seco mientras se movía y los motores pueden haber perdido pasos. %1</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s position is not known: the homing cycle moved the arms and did not finish. %1</source>
+        <translation>La posición de la máquina no se conoce: el ciclo de homing movió los brazos y no terminó. %1</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s position is not known: it moved while no program watched it (a job cut off by a crash, a closed connection or another program). %1</source>
+        <translation>La posición de la máquina no se conoce: se movió sin que ningún programa la vigilara (un trabajo cortado por un fallo, una conexión cerrada u otro programa). %1</translation>
+    </message>
+    <message>
+        <source>Not connected.</source>
+        <translation>No conectada.</translation>
+    </message>
+    <message>
+        <source>Moves are sent although the board&apos;s settings differ from the profile (expert override).</source>
+        <translation>Los movimientos se envían aunque los ajustes de la placa difieren del perfil (modo experto).</translation>
+    </message>
+    <message>
+        <source>The machine is not connected.</source>
+        <translation>La máquina no está conectada.</translation>
+    </message>
+    <message>
+        <source>A job is running.</source>
+        <translation>Hay un trabajo en marcha.</translation>
+    </message>
+    <message>
+        <source>The board&apos;s settings %1 differ from the profile, so the machine would not move as planned: write the profile&apos;s settings (Machine settings...) first.</source>
+        <translation>Los ajustes %1 de la placa difieren del perfil, así que la máquina no se movería como está previsto: escriba primero los ajustes del perfil (Ajustes de la máquina…).</translation>
+    </message>
+    <message>
+        <source>The machine is not idle.</source>
+        <translation>La máquina no está en reposo.</translation>
+    </message>
+    <message>
+        <source>Jog refused: %1</source>
+        <translation>Movimiento rechazado: %1</translation>
     </message>
 </context>
 <context>
@@ -2696,6 +2764,54 @@ Pausar, detener y salir: la máquina se detiene limpiamente y el progreso se gua
     <message>
         <source>Not started: %1</source>
         <translation>No iniciado: %1</translation>
+    </message>
+    <message>
+        <source>The run of &quot;%1&quot; was interrupted after %2: %3</source>
+        <translation>La ejecución de «%1» se interrumpió después de %2: %3</translation>
+    </message>
+    <message>
+        <source>The drawing, its placement, the machine profile or the tolerance changed since, so Resume would draw the old job where the canvas no longer shows it: undo the change to resume, or press Start to draw the new one from the beginning.</source>
+        <translation>El dibujo, su colocación, el perfil de la máquina o la tolerancia han cambiado desde entonces, así que Reanudar dibujaría el trabajo antiguo donde el lienzo ya no lo muestra: deshaga el cambio para reanudar, o pulse Iniciar para dibujar el nuevo desde el principio.</translation>
+    </message>
+    <message>
+        <source>Not started: the board&apos;s settings differ from the profile. %1 Write the profile&apos;s settings (Machine settings...), or choose Start anyway when Start asks.</source>
+        <translation>No iniciado: los ajustes de la placa difieren del perfil. %1 Escriba los ajustes del perfil (Ajustes de la máquina…), o elija Iniciar de todos modos cuando Iniciar lo pregunte.</translation>
+    </message>
+    <message>
+        <source>Stopped before the first move: nothing was sent.</source>
+        <translation>Detenido antes del primer movimiento: no se envió nada.</translation>
+    </message>
+    <message>
+        <source>Stopped after line %1 of %2; the pen is up and the machine at rest.</source>
+        <translation>Detenido después de la línea %1 de %2; el bolígrafo está arriba y la máquina en reposo.</translation>
+    </message>
+    <message>
+        <source>Stopped after line %1 of %2; the pen could not be lifted.</source>
+        <translation>Detenido después de la línea %1 de %2; no se pudo levantar el bolígrafo.</translation>
+    </message>
+    <message>
+        <source>The progress is saved: press Resume to continue.</source>
+        <translation>El progreso está guardado: pulse Reanudar para continuar.</translation>
+    </message>
+    <message>
+        <source>Stopped after line %1 of %2: %3 The progress is saved: press Resume to continue.</source>
+        <translation>Detenido después de la línea %1 de %2: %3 El progreso está guardado: pulse Reanudar para continuar.</translation>
+    </message>
+    <message>
+        <source>Not resumed: the job is not planned yet; wait for the preview.</source>
+        <translation>No reanudado: el trabajo aún no está planificado; espere a la vista previa.</translation>
+    </message>
+    <message>
+        <source>Not resumed: the drawing, its placement, the machine profile or the tolerance changed since the run was interrupted, so Resume would draw the old job where the canvas no longer shows it. Undo the change to resume, or press Start to draw the new one from the beginning.</source>
+        <translation>No reanudado: el dibujo, su colocación, el perfil de la máquina o la tolerancia han cambiado desde la interrupción, así que Reanudar dibujaría el trabajo antiguo donde el lienzo ya no lo muestra. Deshaga el cambio para reanudar, o pulse Iniciar para dibujar el nuevo desde el principio.</translation>
+    </message>
+    <message>
+        <source>Cannot resume: connect the machine and wait until it is idle.</source>
+        <translation>No se puede reanudar: conecte la máquina y espere a que esté en reposo.</translation>
+    </message>
+    <message>
+        <source>Not resumed: %1</source>
+        <translation>No reanudado: %1</translation>
     </message>
 </context>
 <context>
@@ -4515,6 +4631,13 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     <message>
         <source>The board's soft limits would stop this job with an alarm (ALARM:2): %1. The board checks its travel ($130, $131) in machine coordinates, which the reference pose shifted against the drawing's. Home the machine, or make the board's settings match the profile (Machine settings...), then start again.</source>
         <translation>Los límites por software de la placa detendrían este trabajo con una alarma (ALARM:2): %1. La placa comprueba su recorrido ($130, $131) en coordenadas de máquina, que la pose de referencia desplazó respecto a las del dibujo. Haga el referenciado de la máquina o ajuste la configuración de la placa al perfil (Configuración de la máquina...) y vuelva a empezar.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachineLayer</name>
+    <message>
+        <source>Position unknown: set the reference pose</source>
+        <translation>Posición desconocida: fije la pose de referencia</translation>
     </message>
 </context>
 </TS>

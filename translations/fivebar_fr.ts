@@ -1661,6 +1661,10 @@ La planification et le traçage peuvent être très longs. L'importer quand mêm
         <source>Declare that the machine now stands at the profile's home pose (G10 L20).</source>
         <translation>Déclarer que la machine est maintenant dans la pose d'origine du profil (G10 L20).</translation>
     </message>
+    <message>
+        <source>Position unknown: nothing moves until it is set</source>
+        <translation>Position inconnue : rien ne bouge tant qu&apos;elle n&apos;est pas définie</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachineDialogs</name>
@@ -1839,6 +1843,10 @@ Confirmez seulement si les bras sont exactement dans cette pose. S'ils sont aill
         <source>not known yet</source>
         <translation>pas encore connu</translation>
     </message>
+    <message>
+        <source>unknown (set the reference pose)</source>
+        <translation>inconnue (définissez la pose de référence)</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::session::MachineSession</name>
@@ -1969,6 +1977,66 @@ Confirmez seulement si les bras sont exactement dans cette pose. S'ils sont aill
     <message>
         <source>Move not sent: %1</source>
         <translation>Mouvement non envoyé : %1</translation>
+    </message>
+    <message>
+        <source>Home the machine (Home), or put the arms in the home pose and press Set reference pose.</source>
+        <translation>Lancez la prise d&apos;origine (Home), ou mettez les bras en pose d&apos;origine et appuyez sur Définir la pose de référence.</translation>
+    </message>
+    <message>
+        <source>Put the arms in the home pose by hand and press Set reference pose.</source>
+        <translation>Mettez les bras à la main en pose d&apos;origine et appuyez sur Définir la pose de référence.</translation>
+    </message>
+    <message>
+        <source>Reading where the machine stands...</source>
+        <translation>Lecture de la position de la machine…</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s position is not known: this board has not been referenced from this computer yet. %1</source>
+        <translation>La position de la machine n&apos;est pas connue : cette carte n&apos;a pas encore été référencée depuis cet ordinateur. %1</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s position is not known: the board was powered up or reset since it was last seen, so the position it reports says nothing about where the arms stand. %1</source>
+        <translation>La position de la machine n&apos;est pas connue : la carte a été mise sous tension ou réinitialisée depuis la dernière fois, la position qu&apos;elle indique ne dit donc rien de l&apos;endroit où sont les bras. %1</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s position is not known: it was reset or stopped hard while moving, and the motors may have lost steps. %1</source>
+        <translation>La position de la machine n&apos;est pas connue : elle a été réinitialisée ou arrêtée brutalement en mouvement, les moteurs ont pu perdre des pas. %1</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s position is not known: the homing cycle moved the arms and did not finish. %1</source>
+        <translation>La position de la machine n&apos;est pas connue : la prise d&apos;origine a déplacé les bras sans se terminer. %1</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s position is not known: it moved while no program watched it (a job cut off by a crash, a closed connection or another program). %1</source>
+        <translation>La position de la machine n&apos;est pas connue : elle a bougé sans qu&apos;aucun programme ne la surveille (un travail interrompu par un plantage, une connexion fermée ou un autre programme). %1</translation>
+    </message>
+    <message>
+        <source>Not connected.</source>
+        <translation>Non connectée.</translation>
+    </message>
+    <message>
+        <source>Moves are sent although the board&apos;s settings differ from the profile (expert override).</source>
+        <translation>Les mouvements sont envoyés bien que les réglages de la carte diffèrent du profil (dérogation expert).</translation>
+    </message>
+    <message>
+        <source>The machine is not connected.</source>
+        <translation>La machine n&apos;est pas connectée.</translation>
+    </message>
+    <message>
+        <source>A job is running.</source>
+        <translation>Un travail est en cours.</translation>
+    </message>
+    <message>
+        <source>The board&apos;s settings %1 differ from the profile, so the machine would not move as planned: write the profile&apos;s settings (Machine settings...) first.</source>
+        <translation>Les réglages %1 de la carte diffèrent du profil, la machine ne bougerait donc pas comme prévu : écrivez d&apos;abord les réglages du profil (Réglages de la machine…).</translation>
+    </message>
+    <message>
+        <source>The machine is not idle.</source>
+        <translation>La machine n&apos;est pas au repos.</translation>
+    </message>
+    <message>
+        <source>Jog refused: %1</source>
+        <translation>Déplacement refusé : %1</translation>
     </message>
 </context>
 <context>
@@ -2696,6 +2764,54 @@ Pause, arrêter et quitter : la machine s'arrête proprement et la progression e
     <message>
         <source>Not started: %1</source>
         <translation>Non démarré : %1</translation>
+    </message>
+    <message>
+        <source>The run of &quot;%1&quot; was interrupted after %2: %3</source>
+        <translation>L&apos;exécution de « %1 » a été interrompue après %2 : %3</translation>
+    </message>
+    <message>
+        <source>The drawing, its placement, the machine profile or the tolerance changed since, so Resume would draw the old job where the canvas no longer shows it: undo the change to resume, or press Start to draw the new one from the beginning.</source>
+        <translation>Le dessin, son placement, le profil de la machine ou la tolérance ont changé depuis, Reprendre dessinerait donc l&apos;ancien travail là où le canevas ne le montre plus : annulez la modification pour reprendre, ou appuyez sur Démarrer pour dessiner le nouveau depuis le début.</translation>
+    </message>
+    <message>
+        <source>Not started: the board&apos;s settings differ from the profile. %1 Write the profile&apos;s settings (Machine settings...), or choose Start anyway when Start asks.</source>
+        <translation>Non démarré : les réglages de la carte diffèrent du profil. %1 Écrivez les réglages du profil (Réglages de la machine…), ou choisissez Démarrer quand même lorsque Démarrer le demande.</translation>
+    </message>
+    <message>
+        <source>Stopped before the first move: nothing was sent.</source>
+        <translation>Arrêté avant le premier mouvement : rien n&apos;a été envoyé.</translation>
+    </message>
+    <message>
+        <source>Stopped after line %1 of %2; the pen is up and the machine at rest.</source>
+        <translation>Arrêté après la ligne %1 sur %2 ; le stylo est levé et la machine à l&apos;arrêt.</translation>
+    </message>
+    <message>
+        <source>Stopped after line %1 of %2; the pen could not be lifted.</source>
+        <translation>Arrêté après la ligne %1 sur %2 ; le stylo n&apos;a pas pu être levé.</translation>
+    </message>
+    <message>
+        <source>The progress is saved: press Resume to continue.</source>
+        <translation>La progression est enregistrée : appuyez sur Reprendre pour continuer.</translation>
+    </message>
+    <message>
+        <source>Stopped after line %1 of %2: %3 The progress is saved: press Resume to continue.</source>
+        <translation>Arrêté après la ligne %1 sur %2 : %3 La progression est enregistrée : appuyez sur Reprendre pour continuer.</translation>
+    </message>
+    <message>
+        <source>Not resumed: the job is not planned yet; wait for the preview.</source>
+        <translation>Non repris : le travail n&apos;est pas encore planifié ; attendez l&apos;aperçu.</translation>
+    </message>
+    <message>
+        <source>Not resumed: the drawing, its placement, the machine profile or the tolerance changed since the run was interrupted, so Resume would draw the old job where the canvas no longer shows it. Undo the change to resume, or press Start to draw the new one from the beginning.</source>
+        <translation>Non repris : le dessin, son placement, le profil de la machine ou la tolérance ont changé depuis l&apos;interruption, Reprendre dessinerait donc l&apos;ancien travail là où le canevas ne le montre plus. Annulez la modification pour reprendre, ou appuyez sur Démarrer pour dessiner le nouveau depuis le début.</translation>
+    </message>
+    <message>
+        <source>Cannot resume: connect the machine and wait until it is idle.</source>
+        <translation>Impossible de reprendre : connectez la machine et attendez qu&apos;elle soit au repos.</translation>
+    </message>
+    <message>
+        <source>Not resumed: %1</source>
+        <translation>Non repris : %1</translation>
     </message>
 </context>
 <context>
@@ -4515,6 +4631,13 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     <message>
         <source>The board's soft limits would stop this job with an alarm (ALARM:2): %1. The board checks its travel ($130, $131) in machine coordinates, which the reference pose shifted against the drawing's. Home the machine, or make the board's settings match the profile (Machine settings...), then start again.</source>
         <translation>Les fins de course logicielles de la carte arrêteraient ce travail avec une alarme (ALARM:2) : %1. La carte vérifie sa course ($130, $131) en coordonnées machine, que la pose de référence a décalées par rapport à celles du dessin. Faites la prise d'origine de la machine, ou alignez les réglages de la carte sur le profil (Réglages de la machine...), puis relancez.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::MachineLayer</name>
+    <message>
+        <source>Position unknown: set the reference pose</source>
+        <translation>Position inconnue : définissez la pose de référence</translation>
     </message>
 </context>
 </TS>

@@ -18,13 +18,14 @@
 #include "machine_arg.hpp"
 #include "machine_cli.hpp"
 #include "options.hpp"
+#include "stop_signals.hpp"
 
 namespace fivebar::cli {
 namespace {
 
 constexpr const char* kStreamHelp =
     "usage: fivebar stream JOB.gcode --port DEVICE --machine PRESET|FILE [--baud 115200]\n"
-    "                      [--resume] [--force-profile] [--unchecked]\n"
+    "                      [--resume] [--force-profile] [--ignore-settings] [--unchecked]\n"
     "Streams the job with GRBL character counting (128-byte buffer). Progress goes to stderr.\n"
     "What is checked, before the first byte: every line of the file is read as GRBL reads it\n"
     "and every joint move is checked along the path from the job's start (its header's start\n"
@@ -34,8 +35,16 @@ constexpr const char* kStreamHelp =
     "'; profile:' header) is refused unless --force-profile. Then the board's real pose is read\n"
     "($# for the work offset): when it differs from the job's start (or the resume point), a\n"
     "checked pen-up travel gets there first, or the stream is refused with the reason (e.g. a\n"
-    "board just powered up reads 0,0 until 'fivebar reference'). --unchecked skips the checks\n"
-    "(a warning is printed): for experts only.\n"
+    "board just powered up reads 0,0 until 'fivebar reference').\n"
+    "The machine's position must be KNOWN: this computer remembers where each board last stood\n"
+    "still; after a power cut, a reset in motion (ALARM:3), a lost connection or a board that\n"
+    "reports another position, the stream is refused until 'fivebar reference' (arms in the\n"
+    "home pose) or homing ($H). The board's $$ is read anew and compared with the profile\n"
+    "($100/$101, $110/$111, $120/$121, $130/$131, $20, $22): a difference refuses the stream,\n"
+    "naming each setting (fix: fivebar setup --write; --ignore-settings streams anyway).\n"
+    "--unchecked skips the checks (a warning is printed): for experts only.\n"
+    "Ctrl+C (or SIGTERM) stops cleanly: feed hold, soft reset with the position kept, pen up,\n"
+    "progress saved; a second Ctrl+C resets at once.\n"
     "Exit 0 once every line is acknowledged and the machine is Idle. On an error, alarm, stall or\n"
     "disconnect the machine is brought to a clean state, JOB.gcode.progress is saved and the\n"
     "exit code is 1; --resume continues from the last completed pen-down point with a safe\n"
@@ -69,7 +78,7 @@ std::optional<MachineProfile> streamMachine(const Options& o, const std::string&
 
 int runStream(const Args& args) {
   const Options o(args, {"--port", "--baud", "--machine"},
-                  {"--resume", "--help", "--unchecked", "--force-profile"});
+                  {"--resume", "--help", "--unchecked", "--force-profile", "--ignore-settings"});
   if (o.flag("--help")) { std::cout << kStreamHelp; return 0; }
   if (o.positional().size() != 1) throw UsageError("stream needs exactly one JOB.gcode");
   QtApp qt;
@@ -78,6 +87,8 @@ int runStream(const Args& args) {
   options.resume = o.flag("--resume");
   options.checked = !o.flag("--unchecked");
   options.forceProfile = o.flag("--force-profile");
+  options.checkSettings = !o.flag("--ignore-settings");
+  options.portName = o.required("--port");
   if (!options.checked) std::cerr << "fivebar stream: " << kUncheckedWarning;
   bool failed = false;
   options.profile = streamMachine(o, options.jobPath, options.machineName, failed);
@@ -104,6 +115,21 @@ int runStream(const Args& args) {
               << message.toStdString() << "\n";
     exitCode = ok ? 0 : 1;
     qt.app.quit();
+  });
+  // Ctrl+C / SIGTERM: the clean stop (hold, reset with the position kept, pen up, progress
+  // saved); a second one resets at once.
+  StopSignals stopOnSignal([&](int count) {
+    if (count == 1) {
+      std::cerr << "\nfivebar stream: stopping (feed hold, then reset and pen up; Ctrl+C again to "
+                   "reset at once)\n";
+      session.requestStop();
+      return;
+    }
+    link.protocol().sendRealtime(grbl::realtime::kSoftReset);
+    std::cerr << "\nfivebar stream: reset at once; the position may be lost (set the reference "
+                 "again before resuming)\n";
+    exitCode = 1;
+    QTimer::singleShot(200, &qt.app, [&] { qt.app.quit(); });  // let the reset byte leave
   });
   link.start();
   qt.app.exec();

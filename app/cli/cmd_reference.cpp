@@ -23,13 +23,17 @@ namespace fivebar::cli {
 namespace {
 
 constexpr const char* kReferenceHelp =
-    "usage: fivebar reference --port DEVICE --machine PRESET|FILE [--baud 115200] [--yes]\n"
+    "usage: fivebar reference --port DEVICE --machine PRESET|FILE [--baud 115200] [--yes] [--keep]\n"
     "Declares the machine's current pose to be the profile's home pose: the board's work\n"
     "coordinates are set (G10 L20 P0, kept in its EEPROM) so that X/Y read the home angles.\n"
     "Put the arms in the home pose first (by hand, or after $H on a machine with switches).\n"
     "What is checked: the board must be at rest and not in alarm; nothing moves. Asks for\n"
     "confirmation on the terminal unless --yes. Afterwards the reported pose is read back and\n"
-    "compared with the home pose. Exit 0 when the reference is set, 1 otherwise.\n";
+    "compared with the home pose, and this computer remembers the board's position as known\n"
+    "(fivebar stream, send and home refuse to move a board whose position is not known).\n"
+    "--keep confirms the pose the board reports instead, without changing it: for a reset that\n"
+    "lost no steps (the arms stand where the board says). Exit 0 when the reference is set, 1\n"
+    "otherwise.\n";
 
 constexpr const char* kHomeHelp =
     "usage: fivebar home --port DEVICE --machine PRESET|FILE [--baud 115200] [--timeout S]\n"
@@ -59,7 +63,8 @@ bool atHome(const MachineProfile& p, const motion::BoardPose& pose, double tolDe
 class Procedure : public grbl::ProtocolListener {
  public:
   // decide(pose): lines to send (empty: done) or nullopt after reporting a refusal.
-  using Decide = std::function<std::optional<std::vector<std::string>>(const motion::BoardPose&)>;
+  using Decide =
+      std::function<std::optional<std::vector<std::string>>(const motion::BoardPose&, MachineLink&)>;
   using Verify = std::function<int(const motion::BoardPose&)>;  // exit code
   Procedure(MachineLink& link, std::string command, double timeoutS, Decide decide, Verify verify)
       : link_(link), command_(std::move(command)), timeoutS_(timeoutS), sync_(link.protocol(), timeoutS),
@@ -91,7 +96,7 @@ class Procedure : public grbl::ProtocolListener {
     if (link_.protocol().state() == grbl::MachineState::Alarm && !allowAlarm)
       return fail("the machine is in alarm: check it, then unlock with 'fivebar send --port " +
                   link_.transport().name().toStdString() + " $X' and run this again");
-    const auto lines = decide_(*pose);
+    const auto lines = decide_(*pose, link_);
     if (!lines) return finish(1);
     lines_ = *lines;
     phase_ = Phase::Sending;
@@ -162,17 +167,41 @@ int runProcedure(const Options& o, const std::string& command, double timeoutS, 
 }  // namespace
 
 int runReference(const Args& args) {
-  const Options o(args, {"--port", "--baud", "--machine", "--timeout"}, {"--yes", "--help"});
+  const Options o(args, {"--port", "--baud", "--machine", "--timeout"}, {"--yes", "--keep", "--help"});
   if (o.flag("--help")) { std::cout << kReferenceHelp; return 0; }
+  const bool keep = o.flag("--keep");
   if (!o.positional().empty()) throw UsageError("reference takes no positional arguments");
   const auto profile = loadMachine(o.required("--machine"), "reference", std::cerr);
   if (!profile) return 1;
   const bool yes = o.flag("--yes");
   const double timeoutS = timeoutFrom(o, 10.0);
-  const auto decide = [&](const motion::BoardPose& pose) -> std::optional<std::vector<std::string>> {
+  const auto decide = [&](const motion::BoardPose& pose,
+                          MachineLink& link) -> std::optional<std::vector<std::string>> {
     std::printf("the machine stands at %s (work), %s (machine)\n",
                 motion::anglesText(pose.workDeg[0], pose.workDeg[1]).c_str(),
                 motion::anglesText(pose.workDeg[0] + pose.wco[0], pose.workDeg[1] + pose.wco[1]).c_str());
+    if (keep) {
+      const JointAngles q{radFromDeg(pose.workDeg[0]), radFromDeg(pose.workDeg[1])};
+      if (const MoveCheck here = checkPose(*profile, q); !here.ok()) {
+        std::cerr << "fivebar reference: the board reports " << motion::anglesText(pose.workDeg[0], pose.workDeg[1])
+                  << ", which is not a safe pose of " << profile->name << " (" << describe(here)
+                  << "): it cannot be where the arms stand. Put them in the home pose and run this "
+                     "without --keep\n";
+        return std::nullopt;
+      }
+      if (!yes) {
+        std::printf("Do the arms stand exactly where the board reports? [y/N] ");
+        std::fflush(stdout);
+        std::string answer;
+        std::getline(std::cin, answer);
+        if (answer != "y" && answer != "Y" && answer != "yes") {
+          std::cerr << "fivebar reference: not confirmed; nothing was changed\n";
+          return std::nullopt;
+        }
+      }
+      link.poseTrust().confirmed();
+      return std::vector<std::string>{};
+    }
     std::printf("this pose becomes the home pose of %s: %s\n", profile->name.c_str(), homeText(*profile).c_str());
     if (!yes) {
       std::printf("Are the arms in the home pose? [y/N] ");
@@ -184,9 +213,15 @@ int runReference(const Args& args) {
         return std::nullopt;
       }
     }
+    link.poseTrust().confirmed();  // known from the report after the new offset on
     return std::vector<std::string>{jog::referencePoseCommand(*profile)};
   };
   const auto verify = [&](const motion::BoardPose& pose) {
+    if (keep) {
+      std::printf("the reported pose %s is confirmed: the position is known\n",
+                  motion::anglesText(pose.workDeg[0], pose.workDeg[1]).c_str());
+      return 0;
+    }
     if (!atHome(*profile, pose, 0.01)) {
       std::cerr << "fivebar reference: the board now reports "
                 << motion::anglesText(pose.workDeg[0], pose.workDeg[1]) << ", not the home pose "
@@ -208,8 +243,16 @@ int runHome(const Args& args) {
   if (!profile) return 1;
   const double timeoutS = timeoutFrom(o, profile->hasHomingSwitches ? 120.0 : 60.0);
   const std::string port = o.required("--port");
-  const auto decide = [&](const motion::BoardPose& pose) -> std::optional<std::vector<std::string>> {
-    if (profile->hasHomingSwitches) return std::vector<std::string>{"$H"};
+  const auto decide = [&](const motion::BoardPose& pose,
+                          MachineLink& link) -> std::optional<std::vector<std::string>> {
+    if (profile->hasHomingSwitches) return std::vector<std::string>{"$H"};  // known after its ok
+    if (!link.poseTrust().known()) {
+      std::cerr << "fivebar home: the machine's position is not known ("
+                << grbl::toString(link.poseTrust().doubt()) << "), so no move to the home pose can be "
+                << "planned. Put the arms in the home pose " << homeText(*profile) << " by hand and run "
+                << "'fivebar reference --port " << port << " --machine " << o.required("--machine") << "'\n";
+      return std::nullopt;
+    }
     if (atHome(*profile, pose, 1e-3)) return std::vector<std::string>{};
     const JointAngles from{radFromDeg(pose.workDeg[0]), radFromDeg(pose.workDeg[1])};
     if (const MoveCheck here = checkPose(*profile, from); !here.ok()) {
@@ -242,6 +285,7 @@ int runHome(const Args& args) {
     }
     std::printf("moving pen up to the home pose %s in %zu checked move(s)\n", homeText(*profile).c_str(),
                 travel->size());
+    link.poseTrust().aboutToMove();
     return lines;
   };
   const auto verify = [&](const motion::BoardPose& pose) {

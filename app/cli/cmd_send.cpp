@@ -1,5 +1,6 @@
 // fivebar send: one-off lines to a GRBL board, every line that can move the machine checked
 // first (drivers/motion_check.hpp) from the board's real pose (drivers/pose_sync.hpp).
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -72,7 +73,22 @@ class Sender : public grbl::ProtocolListener {
       return fail("no answer within " + seconds(timeoutS_));
     }
     if (nowS < quietUntilS_) return false;
-    if (next_ == lines_.size()) return finish();
+    if (next_ == lines_.size()) {
+      if (!moved_) return finish();
+      // A move was sent: wait until the board reports it at rest, so that this computer
+      // remembers where it stands (drivers/pose_trust.hpp) and the next command may trust it.
+      if (restDeadlineS_ == 0.0) {
+        restDeadlineS_ = nowS + std::max(timeoutS_, 30.0);
+        reportsAtEnd_ = link_.protocol().statusReportsSeen();
+        link_.protocol().setPollInterval(0.2);
+      }
+      const grbl::MachineState st = link_.protocol().state();
+      if (link_.protocol().statusReportsSeen() > reportsAtEnd_ &&
+          (st == grbl::MachineState::Idle || st == grbl::MachineState::Alarm))
+        return finish();
+      if (nowS > restDeadlineS_) return fail("the machine did not come to rest within " + seconds(std::max(timeoutS_, 30.0)));
+      return false;
+    }
     const bool goesHome = goesToStoredPosition(lines_[next_]);
     if (needsPose(lines_[next_]) && (!pose_ || (goesHome && !(pose_->g28Machine && pose_->g30Machine)))) {
       if (pose_) poseSync_.restart();  // known, but without the stored positions: ask $#
@@ -145,6 +161,10 @@ class Sender : public grbl::ProtocolListener {
       return;
     }
     if (!unchecked_ && !checkLine(line)) return;
+    if (unchecked_ && motion::interpretLine(line, motion::BoardPose{}).verdict == motion::Verdict::Motion) {
+      link_.poseTrust().aboutToMove();  // unchecked, but the host still saw it move
+      moved_ = true;
+    }
     const auto r = link_.protocol().enqueue(line);
     if (!r.ok()) { fail("'" + line + "': " + grbl::describe(r.status)); return; }
     userLineId_ = r.id;
@@ -167,6 +187,17 @@ class Sender : public grbl::ProtocolListener {
     if (!c.ok()) {
       fail("refused '" + line + "' (not sent): " + c.reason.text());
       return false;
+    }
+    const bool moves = c.verdict == motion::Verdict::Motion;
+    if (moves && !link_.poseTrust().known()) {
+      fail("refused '" + line + "' (not sent): the machine's position is not known (" +
+           std::string(grbl::toString(link_.poseTrust().doubt())) +
+           "): put the arms in the home pose and run 'fivebar reference', or home the machine, first");
+      return false;
+    }
+    if (moves) {
+      link_.poseTrust().aboutToMove();
+      moved_ = true;
     }
     if (c.systemCommand) {
       pose_.reset();  // $H, $X, settings...: read the pose again before the next move
@@ -199,6 +230,9 @@ class Sender : public grbl::ProtocolListener {
   double quietUntilS_ = 0.0;
   double syncDeadlineS_ = 0.0;
   bool synced_ = false;
+  bool moved_ = false;            // a motion line was sent
+  double restDeadlineS_ = 0.0;    // waiting for the board at rest after the last line
+  std::uint64_t reportsAtEnd_ = 0;
   bool wantStatus_ = false;
   bool resetPending_ = false;
   bool done_ = false;

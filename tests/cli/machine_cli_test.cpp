@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -38,6 +39,8 @@ class MachineCli : public ::testing::Test {
     std::string tmpl = (fs::temp_directory_path() / "fivebar-mcli-XXXXXX").string();
     dir_ = ::mkdtemp(tmpl.data());
     profile_ = *preset("maker-plotter");
+    // Where this computer remembers each board's position (drivers/pose_trust.hpp): the test's own.
+    ::setenv("FIVEBAR_STATE_DIR", (dir_ / "state").c_str(), 1);
   }
   void TearDown() override {
     stopSim();
@@ -58,7 +61,11 @@ class MachineCli : public ::testing::Test {
       ::_exit(127);
     }
     for (int i = 0; i < 250 && !fs::exists(pty_); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    return fs::exists(pty_);
+    if (!fs::exists(pty_)) return false;
+    // A referenced board is one this computer knows: the maker confirmed its pose once.
+    if (std::find(extra.begin(), extra.end(), "--referenced") != extra.end())
+      return run({"reference", "--port", pty_, "--machine", "maker-plotter", "--yes"}).exitCode == 0;
+    return true;
   }
   void stopSim() {
     if (pid_ <= 0) return;
@@ -211,7 +218,14 @@ TEST_F(MachineCli, SendAndStreamRefuseTargetsOutsideTheBoardsSoftLimits) {
   EXPECT_EQ(jogRefused.exitCode, 1);
   EXPECT_NE(jogRefused.err.find("error:15"), std::string::npos) << jogRefused.err;
   const std::string job = writeJob("up.gcode", "G21 G90\nG0X" + homeX() + "Y" + homeY() + "\n" + up + "\n");
-  const CliResult stream = run({"stream", job, "--port", pty_, "--machine", "maker-plotter"});
+  // The settings differ from the profile ($20, $22, $130, $131): refused, naming them...
+  const CliResult differs = run({"stream", job, "--port", pty_, "--machine", "maker-plotter"});
+  EXPECT_EQ(differs.exitCode, 1);
+  EXPECT_NE(differs.err.find("$130 (motor 1 travel, deg) is 1 on the board"), std::string::npos) << differs.err;
+  EXPECT_NE(differs.err.find("fivebar setup"), std::string::npos) << differs.err;
+  // ...and with the expert's override, the board's soft limits are still checked.
+  const CliResult stream =
+      run({"stream", job, "--port", pty_, "--machine", "maker-plotter", "--ignore-settings"});
   EXPECT_EQ(stream.exitCode, 1);
   EXPECT_NE(stream.err.find("ALARM:2"), std::string::npos) << stream.err;
   EXPECT_NE(stream.err.find("nothing was sent"), std::string::npos) << stream.err;

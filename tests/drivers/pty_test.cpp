@@ -80,6 +80,7 @@ struct Outcome {
 Outcome runSession(const QString& port, StreamOptions options, double timeoutS) {
   SerialTransport transport(port, 115200);
   MachineLink link(transport);
+  link.poseTrust().confirmed();  // the maker referenced this board (it stands at the home pose)
   StreamSession session(link, std::move(options));
   Outcome out;
   QString error;
@@ -248,6 +249,7 @@ TEST(SimulatedTransport, StreamsAJobInProcess) {
   board.referenced = true;
   SimulatedTransport transport(board, 20.0);
   MachineLink link(transport);
+  link.poseTrust().confirmed();  // the maker referenced it
   StreamSession session(link, job.options(false));
   QString error;
   ASSERT_TRUE(transport.open(&error));
@@ -302,6 +304,7 @@ TEST(PtyEndToEnd, SoakTwoHundredThousandLines) {
   ASSERT_TRUE(sim.ready());
   SerialTransport transport(sim.pty(), 115200);
   MachineLink link(transport);
+  link.poseTrust().confirmed();  // the maker referenced it
   StreamOptions options;
   options.jobPath = jobPath;
   options.profile = p;

@@ -112,6 +112,11 @@ class CliRun {
   CliRun(const CliRun&) = delete;
   CliRun& operator=(const CliRun&) = delete;
 
+  // Sends a signal to the CLI itself (the shell exec'd it), as Ctrl+C or kill would.
+  void signal(int sig) const {
+    if (pid_ > 0 && !finished_) ::kill(pid_, sig);
+  }
+
   // The exit code, or -1 when it did not end within timeoutS (then it is killed).
   int wait(double timeoutS) {
     const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeoutS);

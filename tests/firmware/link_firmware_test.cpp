@@ -10,6 +10,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <csignal>
 #include <cmath>
 #include <optional>
 #include <regex>
@@ -155,6 +157,8 @@ class FirmwareLink : public ::testing::Test {
                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
+    // Where this computer remembers the board's position (drivers/pose_trust.hpp): the test's own.
+    ::setenv("FIVEBAR_STATE_DIR", (dir_ / "host").c_str(), 1);
     pty_ = dir_ / "grblpty";
     job_ = dir_ / "job.gcode";
     ASSERT_TRUE(saveProfile(profile_, (dir_ / "profile.json").string()).empty());
@@ -191,6 +195,26 @@ class FirmwareLink : public ::testing::Test {
     return firmware::runCli(args, dir_ / ("cli" + std::to_string(++runs_) + ".log"), timeoutS, out);
   }
   fs::path progressFile() const { return fs::path(job_.string() + ".progress"); }
+  // The job's last X/Y target (deg), from its G-code.
+  std::optional<std::array<double, 2>> lastTargetDeg() const {
+    std::optional<std::array<double, 2>> last;
+    std::ifstream in(job_);
+    const std::regex xy("^G[01].*X(-?[0-9.]+) ?Y(-?[0-9.]+)");
+    std::smatch m;
+    for (std::string l; std::getline(in, l);)
+      if (std::regex_search(l, m, xy)) last = std::array<double, 2>{std::stod(m[1]), std::stod(m[2])};
+    return last;
+  }
+  // Waits until the firmware's step trace shows the spindle on (the pen down, drawing).
+  bool waitForPenDown(int powerUp, double timeoutS) const {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeoutS);
+    while (std::chrono::steady_clock::now() < end) {
+      const auto t = firmware::readTrace(trace(powerUp));
+      if (t.size() > 50 && t.back().spindle != 0) return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return false;
+  }
   // Waits (while `run` streams) until the saved progress has a pen-down point at least `share`
   // of the way through the job; false when the job got there no other way.
   bool waitForProgress(double share, double timeoutS) {
@@ -250,15 +274,41 @@ TEST_F(FirmwareLink, PowerCutMidJobThenResumeAfterAStatusQuery) {
   const int resumeLine = progressField(progressFile(), "lastPenDownLine");
   EXPECT_GT(resumeLine, 0) << "no resume point after the cut: the resume would redraw from line 1";
 
-  // Power back: MPos 0,0 (the arms' counters restart), the G54 offset kept in the EEPROM.
+  // Power back: MPos 0,0 (the arms' counters restart), the G54 offset kept in the EEPROM, so
+  // the board reports exactly the home pose wherever the arms stand.
   powerOn();
   ASSERT_TRUE(board_->up());
   std::string status;
   ASSERT_EQ(cli("send" + port() + " '?'", 10, &status), 0) << status;
   EXPECT_NE(status.find("<Idle|MPos:0.000,0.000,0.000"), std::string::npos) << status;
+  // The resume refuses: the position is not known. Nothing moves.
+  std::string refused;
+  EXPECT_EQ(cli(stream(" --resume"), 60, &refused), 1) << refused;
+  EXPECT_NE(refused.find("position is not known"), std::string::npos) << refused;
+  EXPECT_NE(refused.find("fivebar reference"), std::string::npos) << refused;
+  const auto still = firmware::readTrace(trace(2));
+  EXPECT_TRUE(std::all_of(still.begin(), still.end(), [](const Sample& x) { return x.s1 == 0 && x.s2 == 0; }))
+      << "a motor moved although the resume was refused";
+  // The maker puts the arms in the home pose and says so; then the resume finishes the job.
+  std::string ref;
+  ASSERT_EQ(cli("reference" + port() + machine() + " --yes", 20, &ref), 0) << ref;
   std::string resumed;
   ASSERT_EQ(cli(stream(" --resume"), 120, &resumed), 0) << resumed;
   EXPECT_FALSE(fs::exists(progressFile()));
+  // It ends at the job's last target (the board's own report: the reference put MPos 0,0 at the
+  // home pose), after its last drawn point.
+  std::string at;
+  ASSERT_EQ(cli("send" + port() + " '?'", 10, &at), 0) << at;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(at, m, std::regex("MPos:(-?[0-9.]+),(-?[0-9.]+)"))) << at;
+  const auto last = lastTargetDeg();
+  ASSERT_TRUE(last.has_value());
+  const double homeX = degFromRad(profile_.homeAngles.theta1), homeY = degFromRad(profile_.homeAngles.theta2);
+  EXPECT_NEAR(homeX + std::stod(m[1]), (*last)[0], 1.5 / profile_.motors.stepsPerDeg1) << at;
+  EXPECT_NEAR(homeY + std::stod(m[2]), (*last)[1], 1.5 / profile_.motors.stepsPerDeg2) << at;
+  const auto end = firmware::readTrace(trace(2));
+  const auto lastInk = std::find_if(end.rbegin(), end.rend(), [](const Sample& x) { return x.spindle != 0; });
+  ASSERT_NE(lastInk, end.rend()) << "the resume drew nothing";
 
   const auto before = penDownSegments(profile_, firmware::readTrace(trace(1)));
   const auto after = penDownSegments(profile_, firmware::readTrace(trace(2)));
@@ -288,7 +338,14 @@ TEST_F(FirmwareLink, SoftResetMidJobThenResume) {
   const std::string stopped = firmware::readText(dir_ / "stream1.log");
   EXPECT_NE(stopped.find("reset"), std::string::npos) << stopped;
   EXPECT_TRUE(fs::exists(progressFile()));
-  // The stop sequence left the board unlocked and at rest: the resume needs nothing else.
+  // A reset in motion (ALARM:3): the motors may have lost steps, so the position is not known.
+  std::string refused;
+  EXPECT_EQ(cli(stream(" --resume"), 60, &refused), 1) << refused;
+  EXPECT_NE(refused.find("position is not known"), std::string::npos) << refused;
+  EXPECT_NE(refused.find("reset"), std::string::npos) << refused;
+  // These motors lost none (the simulator's counters are the arms): the maker confirms the pose.
+  std::string kept;
+  ASSERT_EQ(cli("reference" + port() + machine() + " --keep --yes", 20, &kept), 0) << kept;
   std::string resumed;
   ASSERT_EQ(cli(stream(" --resume"), 120, &resumed), 0) << resumed;
   expectDrawingComplete(allPenDown());
@@ -319,6 +376,56 @@ TEST_F(FirmwareLink, ErrorLineStopsTheJobAndTheFixedFileResumes) {
 
   lines[at] = "; M7 removed";  // the fix: same line numbers, another hash
   writeJob();
+  std::string resumed;
+  ASSERT_EQ(cli(stream(" --resume"), 120, &resumed), 0) << resumed;
+  expectDrawingComplete(allPenDown());
+}
+
+// Steps per degree 7x off, written behind the studio's back: the stream refuses before the
+// first move and names the setting.
+TEST_F(FirmwareLink, ChangedSettingsRefuseTheStreamBeforeTheFirstMove) {
+  ASSERT_EQ(cli("send" + port() + " '$100=250'", 10), 0);
+  std::string out;
+  EXPECT_EQ(cli(stream(), 60, &out), 1) << out;
+  EXPECT_NE(out.find("$100 (motor 1 steps/deg) is 250 on the board, the profile wants 35.5556"), std::string::npos) << out;
+  EXPECT_NE(out.find("fivebar setup"), std::string::npos) << out;
+  EXPECT_FALSE(fs::exists(progressFile())) << "nothing ran";
+  const auto t = firmware::readTrace(trace(1));
+  EXPECT_TRUE(std::all_of(t.begin(), t.end(), [](const Sample& x) { return x.s1 == 0 && x.s2 == 0 && x.spindle == 0; }))
+      << "the machine moved";
+}
+
+// Ctrl+C during a pen-down stroke: the CLI stops the machine (hold, reset with the position kept,
+// pen up), says so within 5 s, and the job resumes to the end.
+TEST_F(FirmwareLink, CtrlCDuringAStrokeStopsWithThePenUpAndResumes) {
+  std::string startOut;
+  {
+    CliRun run(stream(), dir_ / "stream1.log");
+    ASSERT_TRUE(waitForProgress(0.3, 60)) << firmware::readText(dir_ / "stream1.log");
+    ASSERT_TRUE(waitForPenDown(1, 20)) << "no pen-down stroke";
+    const auto asked = std::chrono::steady_clock::now();
+    run.signal(SIGINT);
+    EXPECT_EQ(run.wait(5.0), 1) << "did not stop within 5 s";
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - asked).count(), 5.0);
+  }
+  const std::string out = firmware::readText(dir_ / "stream1.log");
+  EXPECT_NE(out.find("stopped on request after line"), std::string::npos) << out;
+  EXPECT_NE(out.find("The pen is up"), std::string::npos) << out;
+  EXPECT_NE(out.find("--resume"), std::string::npos) << out;
+  ASSERT_TRUE(fs::exists(progressFile()));
+  // Not moving, the pen up in the board's own parser state.
+  const auto before = firmware::readTrace(trace(1));
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  const auto after = firmware::readTrace(trace(1));
+  ASSERT_FALSE(after.empty());
+  EXPECT_EQ(after.back().s1, before.back().s1);
+  EXPECT_EQ(after.back().s2, before.back().s2);
+  std::string status, parser;
+  ASSERT_EQ(cli("send" + port() + " '?'", 10, &status), 0) << status;
+  EXPECT_NE(status.find("<Idle"), std::string::npos) << status;
+  ASSERT_EQ(cli("send" + port() + " '$G'", 10, &parser), 0) << parser;
+  EXPECT_NE(parser.find(" M5 "), std::string::npos) << parser;
+  // The stop kept the position: the resume needs nothing else and completes the drawing.
   std::string resumed;
   ASSERT_EQ(cli(stream(" --resume"), 120, &resumed), 0) << resumed;
   expectDrawingComplete(allPenDown());

@@ -55,6 +55,13 @@ TEST(BoardLimits, ConsoleJogAndGoHomeAreRefusedBeforeTheBoardAlarms) {
   ASSERT_TRUE(rig.connect(8.0));
   ASSERT_TRUE(rig.waitIdle());
   ASSERT_TRUE(softLimitsOn(rig));
+  // The board's settings now differ from the profile ($20, $22, $130, $131): moves are refused
+  // for that, naming them...
+  EXPECT_TRUE(rig.session.settingsStopMoves());
+  EXPECT_FALSE(rig.session.canJog());
+  EXPECT_TRUE(rig.session.moveRefusal().contains(QStringLiteral("$130"))) << rig.session.moveRefusal().toStdString();
+  // ...until the expert's override; then the board's own soft limits are still checked.
+  rig.session.setIgnoreSettingDifferences(true);
   const MachineProfile& p = rig.doc.profile();
   const JointAngles before = *rig.session.motorAngles();
   // Console: up by 0.5 deg leaves the travel; the check says so and sends nothing.

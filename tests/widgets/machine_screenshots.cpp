@@ -1,6 +1,8 @@
 // fivebar_machine_screenshots OUTDIR: screenshots of the studio's machine panels for the docs,
 // taken from the real main window driving the built-in simulated machine (not a test; run it
 // under xvfb-run -a -s "-screen 0 1600x1000x24"):
+//   machine-pose-unknown.png  a board fresh from power-up: position unknown, no linkage drawn
+//   machine-start-refused.png ... and Start refuses, saying why and what to do
 //   machine-run.png      the demo job running, the executed part coloured on the canvas
 //   machine-goto.png     a go-to previewed on the canvas, waiting for confirmation
 //   machine-alarm.png    an alarm banner with its way out, and the profile editor's inline message
@@ -90,18 +92,28 @@ int main(int argc, char** argv) {
   if (!demo.open(QIODevice::ReadOnly)) return 1;
   window.importer().setInteractive(false);
   window.importer().openData(demo.readAll(), QStringLiteral("fivebar-demo.svg"));
-  machine->connectSimulated(6.0);
+  // A board fresh from power-up, as a real one: its position is not known.
   session::MachineSession& session = machine->session();
+  QString connectError;
+  session.connectSimulated(6.0, {}, &connectError);
   const bool ready = waitUntil([&] {
     return window.preview().result().status == widgets::PreviewStatus::Planned && !window.preview().busy() &&
-           session.state() == grbl::MachineState::Idle;
+           session.state() == grbl::MachineState::Idle && session.poseDoubt() != grbl::PoseDoubt::NotYetRead;
   }, 60000);
   if (!ready) {
     std::fprintf(stderr, "the demo job did not plan or the machine did not report\n");
     return 1;
   }
-  raiseDock(window, "dockRun");
   int status = 0;
+  // 0. The unknown position: no linkage drawn, the banner and the panel say what to do; Start
+  // refuses and says why.
+  raiseDock(window, "dockMachine");
+  if (!grab(window, outDir + QStringLiteral("/machine-pose-unknown.png"))) status = 1;
+  raiseDock(window, "dockRun");
+  panels.runPanel()->startButton()->click();
+  if (!grab(window, outDir + QStringLiteral("/machine-start-refused.png"))) status = 1;
+  session.setReferencePose();
+  waitUntil([&] { return session.poseKnown() && session.canJog(); }, 10000);
   // 1. A run in progress.
   if (!machine->run().start()) return 1;
   waitUntil([&] {

@@ -42,23 +42,27 @@ TEST(MachinePanel, ConnectsTheSimulatedMachineAndShowsItsStatus) {
   EXPECT_TRUE(panel.disconnectButton()->isEnabled());
   ASSERT_TRUE(rig.waitIdle());
   EXPECT_EQ(panel.stateLabel()->text(), widgets::stateName(grbl::MachineState::Idle));
-  // The simulator starts at MPos 0,0 like a board after power-up; once its reference is set the
-  // reported pose is the profile's home pose, within a step.
-  const JointAngles raw = *rig.session.motorAngles();
-  EXPECT_EQ(raw.theta1, 0.0);
+  // The simulator starts at MPos 0,0 like a board after power-up: its position is not known (no
+  // 0/0 pose through the base), the panel says so; once its reference is set the reported pose
+  // is the profile's home pose, within a step.
+  EXPECT_FALSE(rig.session.motorAngles().has_value());
+  EXPECT_FALSE(rig.session.poseKnown());
+  EXPECT_TRUE(panel.positionLabel()->text().contains(QStringLiteral("unknown"))) << panel.positionLabel()->text().toStdString();
   ASSERT_TRUE(rig.setReference());
   const JointAngles q = *rig.session.motorAngles();
   const MachineProfile& p = rig.doc.profile();
   EXPECT_NEAR(degFromRad(q.theta1), degFromRad(p.homeAngles.theta1), 1.0 / p.motors.stepsPerDeg1);
   EXPECT_NEAR(degFromRad(q.theta2), degFromRad(p.homeAngles.theta2), 1.0 / p.motors.stepsPerDeg2);
-  // The pen state is in Status: not known after connecting, then what the pen commands set.
+  // The pen state is the board's own (its reported spindle state): up after power-up, down
+  // once the board runs the pen-down command, not when the command is sent.
   ASSERT_TRUE(rig.waitIdle());
-  EXPECT_EQ(panel.penLabel()->text(), widgets::MachinePanel::tr("not known yet"));
+  EXPECT_EQ(panel.penLabel()->text(), widgets::MachinePanel::tr("up"));
   ASSERT_TRUE(rig.session.penDown());
-  EXPECT_EQ(panel.penLabel()->text(), widgets::MachinePanel::tr("down (drawing)"));
+  EXPECT_EQ(panel.penLabel()->text(), widgets::MachinePanel::tr("up")) << "shown before the board ran it";
+  ASSERT_TRUE(waitUntil([&] { return panel.penLabel()->text() == widgets::MachinePanel::tr("down (drawing)"); }, 5000));
   ASSERT_TRUE(waitUntil([&] { return rig.session.canJog(); }, 5000));
   ASSERT_TRUE(rig.session.penUp());
-  EXPECT_EQ(panel.penLabel()->text(), widgets::MachinePanel::tr("up"));
+  ASSERT_TRUE(waitUntil([&] { return panel.penLabel()->text() == widgets::MachinePanel::tr("up"); }, 5000));
   panel.disconnectButton()->click();
   EXPECT_FALSE(rig.session.isConnected());
   EXPECT_TRUE(panel.connectButton()->isEnabled());
@@ -66,11 +70,16 @@ TEST(MachinePanel, ConnectsTheSimulatedMachineAndShowsItsStatus) {
 
 TEST(MachineBanner, AlarmShowsTheExplanationAndResetThenUnlockClearsIt) {
   MachineRig rig;
-  // The alarm (ALARM:1) fires on the board's third line: the first two are the $I and $$ the
-  // studio sends on connect to compare the settings with the profile.
-  ASSERT_TRUE(rig.connect(4.0, sim::Fault{sim::FaultKind::AlarmAfter, 2}));
+  // The alarm (ALARM:1) fires on the board's fourth line: the first two are the $I and $$ the
+  // studio sends on connect to compare the settings with the profile, the third the reference.
+  ASSERT_TRUE(rig.connect(4.0, sim::Fault{sim::FaultKind::AlarmAfter, 3}));
   ASSERT_TRUE(waitUntil([&] { return rig.session.boardSettingsKnown(); }, 5000));
   widgets::MachineBanner banner(rig.view, rig.session);
+  // A fresh board: the banner asks for the reference pose first.
+  EXPECT_FALSE(banner.isHidden());
+  EXPECT_TRUE(banner.message()->text().contains(QStringLiteral("not known"))) << banner.message()->text().toStdString();
+  EXPECT_TRUE(banner.homeButton()->isVisible() || !banner.homeButton()->isHidden());
+  ASSERT_TRUE(rig.setReference());
   EXPECT_TRUE(banner.isHidden());
   ASSERT_TRUE(rig.session.sendLine(QStringLiteral("G4P0.01")));
   ASSERT_TRUE(waitUntil([&] { return rig.session.problem().kind == session::MachineProblem::Kind::Alarm; }, 5000));
@@ -88,8 +97,13 @@ TEST(MachineBanner, AlarmShowsTheExplanationAndResetThenUnlockClearsIt) {
   EXPECT_FALSE(banner.isHidden());  // still locked after the reset
   banner.unlockButton()->click();
   ASSERT_TRUE(waitUntil([&] { return rig.session.state() == grbl::MachineState::Idle; }, 5000));
-  EXPECT_TRUE(banner.isHidden());
   EXPECT_EQ(rig.session.problem().kind, session::MachineProblem::Kind::None);
+  // A hard-limit alarm loses the position (GRBL's own words): the banner now asks for the
+  // reference pose again, and nothing moves until it is set.
+  EXPECT_FALSE(rig.session.poseKnown());
+  EXPECT_FALSE(banner.isHidden());
+  EXPECT_TRUE(banner.message()->text().contains(QStringLiteral("stopped hard while moving")))
+      << banner.message()->text().toStdString();
 }
 
 TEST(MachineBanner, RejectedLineShowsTheErrorTextAndCanBeDismissed) {

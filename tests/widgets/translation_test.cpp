@@ -22,6 +22,7 @@
 #include <set>
 
 #include "app/studio/language_menu.hpp"
+#include "widgets/canvas/machine_layer.hpp"
 #include "widgets/calibration/distances_box.hpp"
 #include "widgets/calibration/sheet_layer.hpp"
 #include "widgets/calibration/sim_trace_layer.hpp"
@@ -73,7 +74,7 @@ std::set<QString> runtimeContexts() {
         &ConsolePanel::staticMetaObject, &JobLayer::staticMetaObject,
         &ImportController::staticMetaObject, &fivebar::session::JogController::staticMetaObject,
         &GoToTool::staticMetaObject, &JogPanel::staticMetaObject, &LayersPanel::staticMetaObject,
-        &MachineBanner::staticMetaObject, &MachinePanel::staticMetaObject,
+        &MachineBanner::staticMetaObject, &MachinePanel::staticMetaObject, &MachineLayer::staticMetaObject,
         &fivebar::session::MachineSession::staticMetaObject, &MachineSettingsDialog::staticMetaObject,
         &MachinePanels::staticMetaObject,
         &ModePanel::staticMetaObject, &PlacementPanel::staticMetaObject,

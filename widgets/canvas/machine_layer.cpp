@@ -25,7 +25,16 @@ MachineLayer::MachineLayer(const StudioDocument& doc, const SimulationController
 }
 
 void MachineLayer::setExternalAngles(std::optional<JointAngles> angles) {
+  if (external_ == angles && !unknown_) return;
   external_ = angles;
+  unknown_ = false;
+  refresh();
+}
+
+void MachineLayer::setExternalPoseUnknown() {
+  if (unknown_) return;
+  external_.reset();
+  unknown_ = true;
   refresh();
 }
 
@@ -36,7 +45,10 @@ void MachineLayer::refresh() {
       sim_.trajectory() != nullptr && (sim_.playing() || sim_.timeS() > 0.0);
   ghost_.reset();
   // The simulation's samples carry the pen (Trajectory::at): the linkage comes from the angles.
-  if (external_) {
+  if (unknown_) {
+    pose_.reset();
+    if (simulating) ghost_ = poseOf(profile, sim_.sample().q);
+  } else if (external_) {
     pose_ = poseOf(profile, kinematicFromCommanded(profile.calibration, *external_));  // MPos is commanded
     if (simulating) ghost_ = poseOf(profile, sim_.sample().q);
   } else if (sim_.trajectory() != nullptr) {
@@ -52,6 +64,10 @@ void MachineLayer::refresh() {
 void MachineLayer::paint(QPainter& painter, const ViewTransform& view) {
   if (ghost_)
     paintMachine(painter, view.widgetFromMachine(), doc_.profile().geometry, *ghost_, kGhostOpacity, ghostPen_);
+  if (unknown_) {
+    paintUnknownPose(painter, view.widgetFromMachine(), doc_.profile().geometry);
+    return;
+  }
   if (!pose_) return;
   // Slightly see-through so the drawing under the arms stays readable.
   paintMachine(painter, view.widgetFromMachine(), doc_.profile().geometry, *pose_, kOpacity, pen_);

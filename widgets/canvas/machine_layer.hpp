@@ -39,6 +39,11 @@ class MachineLayer : public QObject, public CanvasLayer {
   // Shows an externally reported pose (the connected machine's position), overriding the
   // simulation until cleared with nullopt.
   void setExternalAngles(std::optional<JointAngles> angles);
+  // The connected machine's position is not known (power-up, reset in motion, never
+  // referenced): no linkage is drawn for it (never the reported 0/0 through the base), and the
+  // canvas says so at the base. Cleared by setExternalAngles.
+  void setExternalPoseUnknown();
+  bool externalPoseUnknown() const { return unknown_; }
 
  signals:
   void changed();
@@ -49,6 +54,7 @@ class MachineLayer : public QObject, public CanvasLayer {
   const StudioDocument& doc_;
   const SimulationController& sim_;
   std::optional<JointAngles> external_;
+  bool unknown_ = false;
   std::optional<Pose> pose_;
   std::optional<Pose> ghost_;
   std::optional<Vec2> pen_, ghostPen_;

@@ -1,5 +1,8 @@
 #include "widgets/canvas/machine_painter.hpp"
 
+#include <QCoreApplication>
+#include <QFontMetricsF>
+
 #include <QLocale>
 #include <QPen>
 #include <array>
@@ -132,6 +135,36 @@ void paintMachine(QPainter& painter, const QTransform& widgetFromMachine, const 
   painter.setBrush(palette::pen());
   painter.setPen(QPen(Qt::white, 1.5));
   painter.drawEllipse(pen, jointRadius * 1.3, jointRadius * 1.3);
+  painter.restore();
+}
+
+void paintUnknownPose(QPainter& painter, const QTransform& widgetFromMachine, const Geometry& g) {
+  painter.save();
+  painter.setRenderHint(QPainter::Antialiasing, true);
+  const QPointF m1 = widgetFromMachine.map(toQ(g.motor1()));
+  const QPointF m2 = widgetFromMachine.map(toQ(g.motor2()));
+  const double pxPerMm = std::hypot(widgetFromMachine.m11(), widgetFromMachine.m12());
+  const double motorRadius = std::clamp(14.0 * pxPerMm, 7.0, 40.0);
+  QColor warn(0xb4, 0x53, 0x09);
+  for (const QPointF& m : {m1, m2}) {
+    painter.setBrush(Qt::NoBrush);
+    painter.setPen(QPen(warn, 2.0, Qt::DashLine));
+    painter.drawEllipse(m, motorRadius, motorRadius);
+  }
+  const QPointF centre = (m1 + m2) / 2.0;
+  QFont font = painter.font();
+  font.setBold(true);
+  painter.setFont(font);
+  const QString text = QCoreApplication::translate("fivebar::widgets::MachineLayer", "Position unknown: set the reference pose");
+  const QFontMetricsF metrics(font);
+  const QRectF box(centre.x() - metrics.horizontalAdvance(text) / 2.0 - 6.0,
+                   centre.y() - motorRadius * 2.2 - metrics.height(), metrics.horizontalAdvance(text) + 12.0,
+                   metrics.height() + 6.0);
+  painter.setPen(QPen(warn, 1.0));
+  painter.setBrush(QColor(0xfe, 0xf3, 0xc7));
+  painter.drawRoundedRect(box, 4.0, 4.0);
+  painter.setPen(warn);
+  painter.drawText(box, Qt::AlignCenter, text);
   painter.restore();
 }
 

@@ -23,4 +23,8 @@ void paintGrid(QPainter& painter, const ViewTransform& view);
 void paintMachine(QPainter& painter, const QTransform& widgetFromMachine, const Geometry& g,
                   const Pose& pose, double opacity = 1.0, const std::optional<Vec2>& penMm = std::nullopt);
 
+// The base and motors only, with "Position unknown" above them: the connected machine's pose
+// is not known, so no linkage is drawn (never the reported pose through the base).
+void paintUnknownPose(QPainter& painter, const QTransform& widgetFromMachine, const Geometry& g);
+
 }  // namespace fivebar::widgets

@@ -47,12 +47,19 @@ MachineBanner::MachineBanner(session::MachineView& view, session::RecoveryPort& 
   connect(dismiss_, &QPushButton::clicked, this, [this] { recovery_.dismissProblem(); });
   connect(&view_, &session::MachineView::problemChanged, this, &MachineBanner::refresh);
   connect(&view_, &session::MachineView::connectionChanged, this, &MachineBanner::refresh);
+  connect(&view_, &session::MachineView::poseKnownChanged, this, &MachineBanner::refresh);
   refresh();
 }
 
 void MachineBanner::refresh() {
   const session::MachineProblem& p = view_.problem();
   const bool alarm = p.kind == session::MachineProblem::Kind::Alarm;
+  // No alarm or error: the banner asks for the reference while the position is not known.
+  const QString doubt = view_.isConnected() && !view_.poseKnown() ? view_.poseDoubtText() : QString();
+  if (p.kind == session::MachineProblem::Kind::None && !doubt.isEmpty() && view_.lastStatus() != nullptr) {
+    showPoseUnknown(doubt);
+    return;
+  }
   setVisible(p.kind != session::MachineProblem::Kind::None);
   setStyleSheet(alarm ? QStringLiteral("#machineBanner { background: #fee2e2; border: 1px solid #dc2626; "
                                        "border-radius: 4px; }")
@@ -78,6 +85,24 @@ void MachineBanner::refresh() {
   home_->setVisible(alarm);
   home_->setEnabled(!p.needsReset);
   dismiss_->setVisible(!alarm);
+}
+
+void MachineBanner::showPoseUnknown(const QString& why) {
+  setVisible(true);
+  setStyleSheet(QStringLiteral("#machineBanner { background: #fef3c7; border: 1px solid #d97706; "
+                               "border-radius: 4px; }"));
+  title_->setText(tr("Position unknown: nothing moves until it is set"));
+  message_->setText(why);
+  const bool homing = view_.profile().hasHomingSwitches;
+  home_->setText(homing ? tr("Home ($H)") : tr("Set reference pose"));
+  home_->setToolTip(homing ? tr("Run the homing cycle; the machine moves to its switches.")
+                           : tr("Declare that the machine now stands at the profile's home pose "
+                                "(G10 L20)."));
+  reset_->setVisible(false);
+  unlock_->setVisible(false);
+  home_->setVisible(true);
+  home_->setEnabled(true);
+  dismiss_->setVisible(false);
 }
 
 }  // namespace fivebar::widgets

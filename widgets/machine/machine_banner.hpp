@@ -29,6 +29,7 @@ class MachineBanner : public QFrame {
   void refresh();
 
  private:
+  void showPoseUnknown(const QString& why);
   session::MachineView& view_;
   session::RecoveryPort& recovery_;
   QLabel* title_ = nullptr;

@@ -222,8 +222,10 @@ void MachinePanel::refreshStatus() {
     case session::PenState::Unknown: pen_->setText(view_.isConnected() ? tr("not known yet") : QStringLiteral("–")); break;
   }
   const auto pen = view_.penMm();
-  xy_->setText(pen ? tr("%1, %2 mm").arg(QLocale().toString(pen->x(), 'f', 2)).arg(QLocale().toString(pen->y(), 'f', 2))
-                   : QStringLiteral("–"));
+  const bool unknown = view_.isConnected() && report != nullptr && !view_.poseKnown();
+  xy_->setText(pen       ? tr("%1, %2 mm").arg(QLocale().toString(pen->x(), 'f', 2)).arg(QLocale().toString(pen->y(), 'f', 2))
+               : unknown ? tr("unknown (set the reference pose)")
+                         : QStringLiteral("–"));
   const auto q = view_.motorAngles();
   // Single poses are shown normalised to (-180, 180] (conventions.md).
   angles_->setText(q ? tr("%1°, %2°")

@@ -37,6 +37,7 @@ class MachinePanel : public QWidget {
   QLabel* stateLabel() const { return state_; }
   QLabel* linkLabel() const { return link_; }
   QLabel* penLabel() const { return pen_; }
+  QLabel* positionLabel() const { return xy_; }
   // The warning shown while the board's $ settings differ from the profile's.
   QFrame* settingsWarning() const { return settingsWarning_; }
   QLabel* settingsWarningText() const { return settingsText_; }

@@ -28,8 +28,13 @@ MachinePanels::MachinePanels(session::MachineSide& machine, StudioDocument& doc,
   canvas_.addLayer(runLayer_);
   connect(runLayer_, &RunLayer::changed, &canvas_, qOverload<>(&QWidget::update));
   // The machine drawn on the canvas follows the connected machine's reported pose.
-  connect(&view, &session::MachineView::statusUpdated, this,
-          [this] { machineLayer_.setExternalAngles(machine_.view().motorAngles()); });
+  const auto follow = [this] {
+    const session::MachineView& v = machine_.view();
+    if (v.isConnected() && !v.poseKnown() && v.lastStatus() != nullptr) machineLayer_.setExternalPoseUnknown();
+    else machineLayer_.setExternalAngles(v.motorAngles());
+  };
+  connect(&view, &session::MachineView::statusUpdated, this, follow);
+  connect(&view, &session::MachineView::poseKnownChanged, this, follow);
   connect(&view, &session::MachineView::connectionChanged, this, [this](bool connected) {
     if (!connected) machineLayer_.setExternalAngles(std::nullopt);
   });

@@ -159,6 +159,7 @@ bool RunPanel::confirmSettings() {
   box.setDefaultButton(qobject_cast<QPushButton*>(box.button(QMessageBox::Cancel)));
   box.exec();
   if (box.clickedButton() == write && openSettings_) openSettings_();
+  if (box.clickedButton() == anyway) run_.ignoreSettingsOnce();  // the drivers compare them again
   return box.clickedButton() == anyway;
 }
 
