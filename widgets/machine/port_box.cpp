@@ -1,6 +1,9 @@
 #include "widgets/machine/port_box.hpp"
 
+#include <QAbstractItemView>
 #include <QCompleter>
+#include <QScreen>
+#include <QScrollBar>
 #include <QFileInfo>
 #include <QLineEdit>
 #include <QSettings>
@@ -53,6 +56,10 @@ void PortBox::refresh() {
     return port.description.isEmpty() ? port.systemPath
                                       : QStringLiteral("%1 (%2)").arg(port.systemPath, port.description);
   };
+  const auto separate = [this] {
+    if (count() > 0 && !itemText(count() - 1).isEmpty()) insertSeparator(count());
+  };
+  separate();
   for (const QString& port : recentPorts()) {
     if (port == kSimulated) continue;
     QString label = port;
@@ -61,8 +68,10 @@ void PortBox::refresh() {
     addItem(label, port);
     setItemData(count() - 1, tr("Connected to recently"), Qt::ToolTipRole);
   }
+  separate();
   for (const SerialPortInfo& port : found)
     if (findData(port.systemPath) < 0) addItem(labelOf(port), port.systemPath);
+  if (itemText(count() - 1).isEmpty()) removeItem(count() - 1);  // no trailing separator
   if (!chosen.isEmpty()) choose(chosen);
 }
 
@@ -87,6 +96,14 @@ void PortBox::remember(const QString& port) {
   while (recent.size() > kRecentPorts) recent.removeLast();
   QSettings().setValue(kRecentKey, recent);
   refresh();
+}
+
+void PortBox::showPopup() {
+  const int widest = view()->sizeHintForColumn(0) + 2 * view()->frameWidth() +
+                     view()->verticalScrollBar()->sizeHint().width();
+  const int room = screen() ? screen()->availableGeometry().width() / 2 : widest;
+  view()->setMinimumWidth(qMin(qMax(width(), widest), qMax(width(), room)));
+  QComboBox::showPopup();
 }
 
 QStringList PortBox::recentPorts() { return QSettings().value(kRecentKey).toStringList(); }

@@ -2,7 +2,8 @@
 // /dev/serial/by-id link, a pseudo-terminal such as the firmware simulator's, or a network port
 // tcp:HOST:PORT). It offers the built-in simulated machine, the ports connected to lately
 // (QSettings, most recent first, kRecentPorts kept) and the serial ports found on the system.
-// It chooses nothing by itself beyond the most recent port at start; Connect asks chosenPort().
+// The three groups are apart (separators). It chooses nothing by itself beyond the most recent
+// port at start; Connect asks chosenPort().
 #pragma once
 
 #include <QComboBox>
@@ -33,6 +34,10 @@ class PortBox : public QComboBox {
   // The recent list, most recent first (kSimulated may be in it).
   static QStringList recentPorts();
   static void forgetRecentPorts();
+
+  // The list opens as wide as its longest name (a /dev/serial/by-id link is long), not only as
+  // wide as the box in a narrow dock.
+  void showPopup() override;
 };
 
 // Why `port` cannot be opened, found before trying (in the user's language, naming the port):
