@@ -45,6 +45,7 @@
 #include "widgets/panels/layers_panel.hpp"
 #include "widgets/machine/machine_banner.hpp"
 #include "widgets/machine/machine_panel.hpp"
+#include "widgets/machine/port_box.hpp"
 #include "session/machine_session.hpp"
 #include "widgets/machine/machine_settings_dialog.hpp"
 #include "widgets/machine/machine_panels.hpp"
@@ -73,7 +74,7 @@ std::set<QString> runtimeContexts() {
         &ConsolePanel::staticMetaObject, &JobLayer::staticMetaObject,
         &ImportController::staticMetaObject, &fivebar::session::JogController::staticMetaObject,
         &GoToTool::staticMetaObject, &JogPanel::staticMetaObject, &LayersPanel::staticMetaObject,
-        &MachineBanner::staticMetaObject, &MachinePanel::staticMetaObject,
+        &MachineBanner::staticMetaObject, &MachinePanel::staticMetaObject, &PortBox::staticMetaObject,
         &fivebar::session::MachineSession::staticMetaObject, &MachineSettingsDialog::staticMetaObject,
         &MachinePanels::staticMetaObject,
         &ModePanel::staticMetaObject, &PlacementPanel::staticMetaObject,
