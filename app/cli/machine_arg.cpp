@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#if FIVEBAR_HAVE_DRIVERS
+#ifdef FIVEBAR_HAVE_DRIVERS
 #include "drivers/open_transport.hpp"
 #include "machine_cli.hpp"
 #endif
@@ -45,7 +45,7 @@ std::optional<MachineProfile> loadMachine(const std::string& presetOrPath, std::
   return std::nullopt;
 }
 
-#if FIVEBAR_HAVE_DRIVERS
+#ifdef FIVEBAR_HAVE_DRIVERS
 std::unique_ptr<Transport> portTransport(const Options& o) {
   return makePortTransport(QString::fromStdString(o.required("--port")), baudFrom(o));
 }

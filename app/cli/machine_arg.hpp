@@ -11,14 +11,14 @@
 
 #include "core/machine/profile.hpp"
 
-#if FIVEBAR_HAVE_DRIVERS
+#ifdef FIVEBAR_HAVE_DRIVERS
 #include "drivers/transport.hpp"
 #include "options.hpp"
 #endif
 
 namespace fivebar::cli {
 
-#if FIVEBAR_HAVE_DRIVERS
+#ifdef FIVEBAR_HAVE_DRIVERS
 // The transport for --port (required) at --baud (default 115200), not yet opened: a serial
 // device or pseudo-terminal, or a network port "tcp:HOST:PORT" (drivers/open_transport.hpp).
 // Throws UsageError for a missing --port or a bad --baud.
