@@ -1,6 +1,8 @@
 // The transport seam under the protocol: something bytes can be written to and that reports
 // bytes received and, once, that it went away. Implementations: SerialTransport (a real or
-// pseudo serial port), SimulatedTransport (the in-process simulated machine), test fakes.
+// pseudo serial port), TcpTransport (a network port, tcp:HOST:PORT), SimulatedTransport (the
+// in-process simulated machine), test fakes. makePortTransport (open_transport.hpp) picks the
+// first two by the port's name.
 #pragma once
 
 #include <QByteArray>

@@ -800,6 +800,10 @@
         <source>Clear list</source>
         <translation>Liste leeren</translation>
     </message>
+    <message>
+        <source>The untitled project made from %1 has changes that are not saved. Save it as a project first?</source>
+        <translation>Das unbenannte Projekt aus %1 hat ungespeicherte Änderungen. Zuerst als Projekt speichern?</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::studio::LanguageMenu</name>
@@ -1001,6 +1005,10 @@
     <message>
         <source>Import warnings</source>
         <translation>Importwarnungen</translation>
+    </message>
+    <message>
+        <source>Untitled project (%1)[*] - FiveBar Studio</source>
+        <translation>Unbenanntes Projekt (%1)[*] - FiveBar Studio</translation>
     </message>
 </context>
 <context>
@@ -1846,6 +1854,10 @@ Bestätigen Sie nur, wenn die Arme jetzt genau in dieser Stellung stehen. Stehen
     <message>
         <source>unknown (set the reference pose)</source>
         <translation>unbekannt (Referenzpose setzen)</translation>
+    </message>
+    <message>
+        <source>Cannot open %1.</source>
+        <translation>%1 lässt sich nicht öffnen.</translation>
     </message>
 </context>
 <context>
@@ -4081,6 +4093,14 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
         <source>User interface language: de, en, es or fr (default: View &gt; Language, else the system's).</source>
         <translation>Sprache der Oberfläche: de, en, es oder fr (Vorgabe: Ansicht &gt; Sprache, sonst die des Systems).</translation>
     </message>
+    <message>
+        <source>Connect to the board on this port at start, as the Connect button does: a serial device, a pseudo-terminal or tcp:HOST:PORT.</source>
+        <translation>Beim Start mit der Steuerung an diesem Anschluss verbinden, wie es die Schaltfläche Verbinden tut: ein serielles Gerät, ein Pseudoterminal oder tcp:HOST:PORT.</translation>
+    </message>
+    <message>
+        <source>With --port: the baud rate (default: the machine profile's, usually 115200).</source>
+        <translation>Mit --port: die Baudrate (Standard: die des Maschinenprofils, meist 115200).</translation>
+    </message>
 </context>
 <context>
     <name>Profile</name>
@@ -4638,6 +4658,49 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
     <message>
         <source>Position unknown: set the reference pose</source>
         <translation>Position unbekannt: Referenzpose setzen</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::PortBox</name>
+    <message>
+        <source>/dev/ttyUSB0 or tcp:HOST:PORT</source>
+        <translation>/dev/ttyUSB0 oder tcp:HOST:PORT</translation>
+    </message>
+    <message>
+        <source>The board's port: pick one, or type any name: a serial device, a /dev/serial/by-id link, a pseudo-terminal (e.g. the firmware simulator's) or a network port tcp:HOST:PORT (ser2net, a FluidNC or grblHAL board)</source>
+        <translation>Der Anschluss der Steuerung: einen auswählen oder einen beliebigen Namen eingeben: ein serielles Gerät, einen Link unter /dev/serial/by-id, ein Pseudoterminal (z. B. das des Firmware-Simulators) oder einen Netzwerkanschluss tcp:HOST:PORT (ser2net, eine FluidNC- oder grblHAL-Steuerung)</translation>
+    </message>
+    <message>
+        <source>Simulated machine (built in)</source>
+        <translation>Simulierte Maschine (eingebaut)</translation>
+    </message>
+    <message>
+        <source>Connected to recently</source>
+        <translation>Kürzlich verbunden</translation>
+    </message>
+    <message>
+        <source>Choose a port or type its name, for example /dev/ttyUSB0, a pseudo-terminal such as /tmp/grblpty, or a network port tcp:HOST:PORT.</source>
+        <translation>Wählen Sie einen Anschluss oder geben Sie seinen Namen ein, zum Beispiel /dev/ttyUSB0, ein Pseudoterminal wie /tmp/grblpty oder einen Netzwerkanschluss tcp:HOST:PORT.</translation>
+    </message>
+    <message>
+        <source>%1 is not a network port: write it as tcp:HOST:PORT, for example tcp:192.168.1.20:23.</source>
+        <translation>%1 ist kein Netzwerkanschluss: Schreiben Sie ihn als tcp:HOST:PORT, zum Beispiel tcp:192.168.1.20:23.</translation>
+    </message>
+    <message>
+        <source>There is no port %1. Check the name, that the board is plugged in and powered, or that the simulator is running (Refresh lists the serial ports found).</source>
+        <translation>Es gibt keinen Anschluss %1. Prüfen Sie den Namen, ob die Steuerung eingesteckt und eingeschaltet ist oder ob der Simulator läuft (Aktualisieren listet die gefundenen seriellen Schnittstellen auf).</translation>
+    </message>
+    <message>
+        <source>%1 is a folder, not a port: choose the board's serial port (e.g. /dev/ttyUSB0) or type a network port tcp:HOST:PORT.</source>
+        <translation>%1 ist ein Ordner, kein Anschluss: Wählen Sie die serielle Schnittstelle der Steuerung (z. B. /dev/ttyUSB0) oder geben Sie einen Netzwerkanschluss tcp:HOST:PORT ein.</translation>
+    </message>
+    <message>
+        <source>%1 is a file, not a port: choose the board's serial port (e.g. /dev/ttyUSB0) or type a network port tcp:HOST:PORT.</source>
+        <translation>%1 ist eine Datei, kein Anschluss: Wählen Sie die serielle Schnittstelle der Steuerung (z. B. /dev/ttyUSB0) oder geben Sie einen Netzwerkanschluss tcp:HOST:PORT ein.</translation>
+    </message>
+    <message>
+        <source>No permission to use %1: add your user to the group that owns it (usually dialout: sudo adduser $USER dialout), then log out and in again.</source>
+        <translation>Keine Berechtigung für %1: Fügen Sie Ihren Benutzer der Gruppe hinzu, der der Anschluss gehört (meist dialout: sudo adduser $USER dialout), und melden Sie sich danach ab und wieder an.</translation>
     </message>
 </context>
 </TS>

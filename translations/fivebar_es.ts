@@ -800,6 +800,10 @@
         <source>Clear list</source>
         <translation>Vaciar lista</translation>
     </message>
+    <message>
+        <source>The untitled project made from %1 has changes that are not saved. Save it as a project first?</source>
+        <translation>El proyecto sin título creado a partir de %1 tiene cambios sin guardar. ¿Guardarlo primero como proyecto?</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::studio::LanguageMenu</name>
@@ -1001,6 +1005,10 @@
     <message>
         <source>Import warnings</source>
         <translation>Avisos de importación</translation>
+    </message>
+    <message>
+        <source>Untitled project (%1)[*] - FiveBar Studio</source>
+        <translation>Proyecto sin título (%1)[*] - FiveBar Studio</translation>
     </message>
 </context>
 <context>
@@ -1846,6 +1854,10 @@ Confirme solo si los brazos están ahora exactamente en esa pose. Si están en o
     <message>
         <source>unknown (set the reference pose)</source>
         <translation>desconocida (fije la pose de referencia)</translation>
+    </message>
+    <message>
+        <source>Cannot open %1.</source>
+        <translation>No se puede abrir %1.</translation>
     </message>
 </context>
 <context>
@@ -4081,6 +4093,14 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
         <source>User interface language: de, en, es or fr (default: View &gt; Language, else the system's).</source>
         <translation>Idioma de la interfaz: de, en, es o fr (predeterminado: Ver &gt; Idioma, si no, el del sistema).</translation>
     </message>
+    <message>
+        <source>Connect to the board on this port at start, as the Connect button does: a serial device, a pseudo-terminal or tcp:HOST:PORT.</source>
+        <translation>Conectar al inicio con la placa en este puerto, como hace el botón Conectar: un dispositivo serie, un pseudoterminal o tcp:HOST:PORT.</translation>
+    </message>
+    <message>
+        <source>With --port: the baud rate (default: the machine profile's, usually 115200).</source>
+        <translation>Con --port: la velocidad en baudios (predeterminada: la del perfil de máquina, normalmente 115200).</translation>
+    </message>
 </context>
 <context>
     <name>Profile</name>
@@ -4638,6 +4658,49 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     <message>
         <source>Position unknown: set the reference pose</source>
         <translation>Posición desconocida: fije la pose de referencia</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::PortBox</name>
+    <message>
+        <source>/dev/ttyUSB0 or tcp:HOST:PORT</source>
+        <translation>/dev/ttyUSB0 o tcp:HOST:PORT</translation>
+    </message>
+    <message>
+        <source>The board's port: pick one, or type any name: a serial device, a /dev/serial/by-id link, a pseudo-terminal (e.g. the firmware simulator's) or a network port tcp:HOST:PORT (ser2net, a FluidNC or grblHAL board)</source>
+        <translation>El puerto de la placa: elija uno o escriba cualquier nombre: un dispositivo serie, un enlace /dev/serial/by-id, un pseudoterminal (p. ej., el del simulador del firmware) o un puerto de red tcp:HOST:PORT (ser2net, una placa FluidNC o grblHAL)</translation>
+    </message>
+    <message>
+        <source>Simulated machine (built in)</source>
+        <translation>Máquina simulada (integrada)</translation>
+    </message>
+    <message>
+        <source>Connected to recently</source>
+        <translation>Conectado recientemente</translation>
+    </message>
+    <message>
+        <source>Choose a port or type its name, for example /dev/ttyUSB0, a pseudo-terminal such as /tmp/grblpty, or a network port tcp:HOST:PORT.</source>
+        <translation>Elija un puerto o escriba su nombre, por ejemplo /dev/ttyUSB0, un pseudoterminal como /tmp/grblpty o un puerto de red tcp:HOST:PORT.</translation>
+    </message>
+    <message>
+        <source>%1 is not a network port: write it as tcp:HOST:PORT, for example tcp:192.168.1.20:23.</source>
+        <translation>%1 no es un puerto de red: escríbalo como tcp:HOST:PORT, por ejemplo tcp:192.168.1.20:23.</translation>
+    </message>
+    <message>
+        <source>There is no port %1. Check the name, that the board is plugged in and powered, or that the simulator is running (Refresh lists the serial ports found).</source>
+        <translation>No existe el puerto %1. Compruebe el nombre, que la placa está conectada y encendida, o que el simulador está en marcha (Actualizar lista los puertos serie encontrados).</translation>
+    </message>
+    <message>
+        <source>%1 is a folder, not a port: choose the board's serial port (e.g. /dev/ttyUSB0) or type a network port tcp:HOST:PORT.</source>
+        <translation>%1 es una carpeta, no un puerto: elija el puerto serie de la placa (p. ej., /dev/ttyUSB0) o escriba un puerto de red tcp:HOST:PORT.</translation>
+    </message>
+    <message>
+        <source>%1 is a file, not a port: choose the board's serial port (e.g. /dev/ttyUSB0) or type a network port tcp:HOST:PORT.</source>
+        <translation>%1 es un archivo, no un puerto: elija el puerto serie de la placa (p. ej., /dev/ttyUSB0) o escriba un puerto de red tcp:HOST:PORT.</translation>
+    </message>
+    <message>
+        <source>No permission to use %1: add your user to the group that owns it (usually dialout: sudo adduser $USER dialout), then log out and in again.</source>
+        <translation>Sin permiso para usar %1: añada su usuario al grupo propietario (normalmente dialout: sudo adduser $USER dialout) y luego cierre la sesión y vuelva a entrar.</translation>
     </message>
 </context>
 </TS>

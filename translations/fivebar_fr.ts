@@ -800,6 +800,10 @@
         <source>Clear list</source>
         <translation>Vider la liste</translation>
     </message>
+    <message>
+        <source>The untitled project made from %1 has changes that are not saved. Save it as a project first?</source>
+        <translation>Le projet sans titre créé à partir de %1 contient des modifications non enregistrées. L'enregistrer d'abord comme projet ?</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::studio::LanguageMenu</name>
@@ -1001,6 +1005,10 @@
     <message>
         <source>Import warnings</source>
         <translation>Avertissements d'import</translation>
+    </message>
+    <message>
+        <source>Untitled project (%1)[*] - FiveBar Studio</source>
+        <translation>Projet sans titre (%1)[*] - FiveBar Studio</translation>
     </message>
 </context>
 <context>
@@ -1846,6 +1854,10 @@ Confirmez seulement si les bras sont exactement dans cette pose. S'ils sont aill
     <message>
         <source>unknown (set the reference pose)</source>
         <translation>inconnue (définissez la pose de référence)</translation>
+    </message>
+    <message>
+        <source>Cannot open %1.</source>
+        <translation>Impossible d'ouvrir %1.</translation>
     </message>
 </context>
 <context>
@@ -4081,6 +4093,14 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
         <source>User interface language: de, en, es or fr (default: View &gt; Language, else the system's).</source>
         <translation>Langue de l'interface : de, en, es ou fr (par défaut : Affichage &gt; Langue, sinon celle du système).</translation>
     </message>
+    <message>
+        <source>Connect to the board on this port at start, as the Connect button does: a serial device, a pseudo-terminal or tcp:HOST:PORT.</source>
+        <translation>Se connecter au démarrage à la carte sur ce port, comme le fait le bouton Connecter : un périphérique série, un pseudo-terminal ou tcp:HOST:PORT.</translation>
+    </message>
+    <message>
+        <source>With --port: the baud rate (default: the machine profile's, usually 115200).</source>
+        <translation>Avec --port : le débit en bauds (par défaut : celui du profil de machine, souvent 115200).</translation>
+    </message>
 </context>
 <context>
     <name>Profile</name>
@@ -4638,6 +4658,49 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     <message>
         <source>Position unknown: set the reference pose</source>
         <translation>Position inconnue : définissez la pose de référence</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::PortBox</name>
+    <message>
+        <source>/dev/ttyUSB0 or tcp:HOST:PORT</source>
+        <translation>/dev/ttyUSB0 ou tcp:HOST:PORT</translation>
+    </message>
+    <message>
+        <source>The board's port: pick one, or type any name: a serial device, a /dev/serial/by-id link, a pseudo-terminal (e.g. the firmware simulator's) or a network port tcp:HOST:PORT (ser2net, a FluidNC or grblHAL board)</source>
+        <translation>Le port de la carte : choisissez-en un ou tapez n'importe quel nom : un périphérique série, un lien /dev/serial/by-id, un pseudo-terminal (p. ex. celui du simulateur de firmware) ou un port réseau tcp:HOST:PORT (ser2net, une carte FluidNC ou grblHAL)</translation>
+    </message>
+    <message>
+        <source>Simulated machine (built in)</source>
+        <translation>Machine simulée (intégrée)</translation>
+    </message>
+    <message>
+        <source>Connected to recently</source>
+        <translation>Connecté récemment</translation>
+    </message>
+    <message>
+        <source>Choose a port or type its name, for example /dev/ttyUSB0, a pseudo-terminal such as /tmp/grblpty, or a network port tcp:HOST:PORT.</source>
+        <translation>Choisissez un port ou tapez son nom, par exemple /dev/ttyUSB0, un pseudo-terminal comme /tmp/grblpty ou un port réseau tcp:HOST:PORT.</translation>
+    </message>
+    <message>
+        <source>%1 is not a network port: write it as tcp:HOST:PORT, for example tcp:192.168.1.20:23.</source>
+        <translation>%1 n'est pas un port réseau : écrivez-le sous la forme tcp:HOST:PORT, par exemple tcp:192.168.1.20:23.</translation>
+    </message>
+    <message>
+        <source>There is no port %1. Check the name, that the board is plugged in and powered, or that the simulator is running (Refresh lists the serial ports found).</source>
+        <translation>Il n'y a pas de port %1. Vérifiez le nom, que la carte est branchée et alimentée, ou que le simulateur tourne (Actualiser liste les ports série trouvés).</translation>
+    </message>
+    <message>
+        <source>%1 is a folder, not a port: choose the board's serial port (e.g. /dev/ttyUSB0) or type a network port tcp:HOST:PORT.</source>
+        <translation>%1 est un dossier, pas un port : choisissez le port série de la carte (p. ex. /dev/ttyUSB0) ou tapez un port réseau tcp:HOST:PORT.</translation>
+    </message>
+    <message>
+        <source>%1 is a file, not a port: choose the board's serial port (e.g. /dev/ttyUSB0) or type a network port tcp:HOST:PORT.</source>
+        <translation>%1 est un fichier, pas un port : choisissez le port série de la carte (p. ex. /dev/ttyUSB0) ou tapez un port réseau tcp:HOST:PORT.</translation>
+    </message>
+    <message>
+        <source>No permission to use %1: add your user to the group that owns it (usually dialout: sudo adduser $USER dialout), then log out and in again.</source>
+        <translation>Pas d'autorisation pour utiliser %1 : ajoutez votre utilisateur au groupe qui le possède (en général dialout : sudo adduser $USER dialout), puis déconnectez-vous et reconnectez-vous.</translation>
     </message>
 </context>
 </TS>

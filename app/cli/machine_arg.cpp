@@ -4,6 +4,11 @@
 #include <cmath>
 #include <cstdio>
 
+#ifdef FIVEBAR_HAVE_DRIVERS
+#include "drivers/open_transport.hpp"
+#include "machine_cli.hpp"
+#endif
+
 namespace fivebar::cli {
 namespace {
 
@@ -39,6 +44,12 @@ std::optional<MachineProfile> loadMachine(const std::string& presetOrPath, std::
   }
   return std::nullopt;
 }
+
+#ifdef FIVEBAR_HAVE_DRIVERS
+std::unique_ptr<Transport> portTransport(const Options& o) {
+  return makePortTransport(QString::fromStdString(o.required("--port")), baudFrom(o));
+}
+#endif
 
 std::optional<NumberPair> parseNumberPair(std::string_view line) {
   const std::size_t comma = line.find(',');

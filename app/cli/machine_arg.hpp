@@ -1,7 +1,9 @@
 // Shared pieces of the kinematics, workspace and profile commands: "--machine PRESET|FILE"
-// resolution with readable errors, and strict parsing of "a,b" number pairs from text lines.
+// resolution with readable errors, strict parsing of "a,b" number pairs from text lines, and
+// (in a build with the drivers) the link a machine command's "--port NAME [--baud N]" names.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -9,7 +11,19 @@
 
 #include "core/machine/profile.hpp"
 
+#ifdef FIVEBAR_HAVE_DRIVERS
+#include "drivers/transport.hpp"
+#include "options.hpp"
+#endif
+
 namespace fivebar::cli {
+
+#ifdef FIVEBAR_HAVE_DRIVERS
+// The transport for --port (required) at --baud (default 115200), not yet opened: a serial
+// device or pseudo-terminal, or a network port "tcp:HOST:PORT" (drivers/open_transport.hpp).
+// Throws UsageError for a missing --port or a bad --baud.
+std::unique_ptr<Transport> portTransport(const Options& o);
+#endif
 
 // Resolves a --machine value. On failure writes "fivebar COMMAND: <source>: field: message" lines
 // to `err` and returns nullopt.

@@ -46,9 +46,13 @@ void FileActions::rememberProfile() {
 
 bool FileActions::maybeSave() {
   if (!doc_.isModified() || !doc_.hasDrawing()) return true;
-  const QString name = doc_.projectPath().isEmpty() ? QFileInfo(doc_.fileName()).fileName()
-                                                    : QFileInfo(doc_.projectPath()).fileName();
-  switch (ask_(tr("%1 has changes that are not saved. Save them first?").arg(name))) {
+  const QString text =
+      doc_.projectPath().isEmpty()
+          ? tr("The untitled project made from %1 has changes that are not saved. Save it as a "
+               "project first?")
+                .arg(QFileInfo(doc_.fileName()).fileName())
+          : tr("%1 has changes that are not saved. Save them first?").arg(QFileInfo(doc_.projectPath()).fileName());
+  switch (ask_(text)) {
     case QMessageBox::Save: return save();
     case QMessageBox::Discard: return true;
     default: return false;

@@ -1,4 +1,6 @@
-// The studio's File menu work: Save / Save As / Open project (.fivebar, atomic via QSaveFile),
+// The studio's File menu work: Save / Save As / Open project (.fivebar, atomic via QSaveFile;
+// Save writes the document's projectPath(), and is Save As while there is none: a drawing just
+// opened, even over an open project, is a new untitled project),
 // Export G-code (exactly the job Run streams: the preview's planned job, written by core's
 // writeGcode), the unsaved-changes question before close, open and quit, the recent-files menu,
 // and remembering the machine profile across restarts (QSettings).

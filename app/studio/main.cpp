@@ -1,7 +1,7 @@
 // fivebar-studio: the desktop application. Composition and start-up only:
 //   fivebar-studio --help | --version     (no display needed)
-//   fivebar-studio [--demo] [--machine PRESET|FILE] [--lang LANG] [--screenshot FILE.png]
-//                  [FILE.svg|PROJECT.fivebar]
+//   fivebar-studio [--demo] [--machine PRESET|FILE] [--port PORT [--baud N]] [--lang LANG]
+//                  [--screenshot FILE.png] [FILE.svg|PROJECT.fivebar]
 //   fivebar-studio FILE.svg|PROJECT.fivebar [--machine PRESET|FILE] --export-gcode OUT.gcode
 //     (headless: no display needed; app/studio/headless.hpp)
 #include <QApplication>
@@ -37,6 +37,17 @@ struct StudioOptions {
       QCoreApplication::translate("main", "Machine profile: a preset name or a profile JSON file "
                                           "(default: the last one used, else maker-plotter)."),
       QStringLiteral("PRESET|FILE")};
+  QCommandLineOption port{
+      QStringLiteral("port"),
+      QCoreApplication::translate("main", "Connect to the board on this port at start, as the "
+                                          "Connect button does: a serial device, a pseudo-terminal "
+                                          "or tcp:HOST:PORT."),
+      QStringLiteral("PORT")};
+  QCommandLineOption baud{
+      QStringLiteral("baud"),
+      QCoreApplication::translate("main", "With --port: the baud rate (default: the machine "
+                                          "profile's, usually 115200)."),
+      QStringLiteral("N")};
   QCommandLineOption lang{
       QStringLiteral("lang"),
       QCoreApplication::translate("main", "User interface language: de, en, es or fr (default: "
@@ -78,7 +89,7 @@ struct StudioOptions {
         QCoreApplication::translate("main", "Plan and simulate drawings for five-bar robots."));
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addOptions({demo, machine, lang, screenshot, overlay, atTime, exportGcode, fill, timings});
+    parser.addOptions({demo, machine, port, baud, lang, screenshot, overlay, atTime, exportGcode, fill, timings});
     parser.addPositionalArgument(
         QStringLiteral("drawing"),
         QCoreApplication::translate("main", "SVG drawing or project to open."),
@@ -151,6 +162,13 @@ int main(int argc, char** argv) {
     return 2;
   }
   MainWindow window(*profile);
+  // --port PORT [--baud N]: connected once the event loop runs, as the Connect button does.
+  if (const QString problem = fivebar::studio::connectAtStart(window, parser.value(options.port),
+                                                               parser.value(options.baud));
+      !problem.isEmpty()) {
+    std::fprintf(stderr, "fivebar-studio: %s\n", qPrintable(problem));
+    return 2;
+  }
   window.show();
 
   if (parser.isSet(fill) && !fivebar::widgets::applyFillOption(window.fillOptions(), parser.value(fill))) {
@@ -167,8 +185,8 @@ int main(int argc, char** argv) {
     if (demoFile.open(QIODevice::ReadOnly)) {
       window.importer().openData(demoFile.readAll(), QStringLiteral("fivebar-demo.svg"));
     }
-    // --demo also connects the built-in simulated machine.
-    window.machine().connectSimulated();
+    // --demo also connects the built-in simulated machine, unless --port names the board.
+    if (!parser.isSet(options.port)) window.machine().connectSimulated();
   }
   if (parser.isSet(screenshot)) {
     window.importer().setInteractive(false);

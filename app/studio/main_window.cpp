@@ -302,11 +302,17 @@ void MainWindow::createMenus() {
 
 void MainWindow::rebuildRecentMenu() { files_->fillRecentMenu(recentMenu_); }
 
+// The title names what Save writes: the project file, or, for a drawing not saved as a project
+// yet, an untitled project (Save asks for a name) made from that drawing.
 void MainWindow::updateTitle() {
-  const QString path = doc_->projectPath().isEmpty() ? doc_->fileName() : doc_->projectPath();
-  setWindowFilePath(path);
-  setWindowTitle(path.isEmpty() ? tr("FiveBar Studio")
-                                : tr("%1[*] - FiveBar Studio").arg(QFileInfo(path).fileName()));
+  const QString project = doc_->projectPath();
+  setWindowFilePath(project);
+  if (!project.isEmpty())
+    setWindowTitle(tr("%1[*] - FiveBar Studio").arg(QFileInfo(project).fileName()));
+  else if (doc_->hasDrawing())
+    setWindowTitle(tr("Untitled project (%1)[*] - FiveBar Studio").arg(QFileInfo(doc_->fileName()).fileName()));
+  else
+    setWindowTitle(tr("FiveBar Studio"));
   setWindowModified(doc_->isModified() && doc_->hasDrawing());
 }
 

@@ -10,6 +10,8 @@
 #include "app/studio/file_actions.hpp"
 #include "app/studio/main_window.hpp"
 #include "widgets/document/import_controller.hpp"
+#include "widgets/machine/machine_panel.hpp"
+#include "widgets/machine/machine_panels.hpp"
 #include "widgets/document/preview_controller.hpp"
 #include "widgets/document/studio_document.hpp"
 #include "widgets/document/simulation_controller.hpp"
@@ -43,6 +45,21 @@ std::optional<MachineProfile> startupProfile(const std::optional<QString>& machi
     if (auto p = profileFromJson(remembered.toStdString(), "remembered profile").profile) return p;
   }
   return resolveProfile("maker-plotter", error);
+}
+
+QString connectAtStart(MainWindow& window, const QString& port, const QString& baud) {
+  std::optional<int> rate;
+  if (!baud.isEmpty()) {
+    bool ok = false;
+    const int value = baud.toInt(&ok);
+    if (!ok || value <= 0)
+      return QStringLiteral("--baud: expected a positive whole number of bits per second, got '%1'").arg(baud);
+    rate = value;
+  }
+  if (port.isEmpty()) return rate ? QStringLiteral("--baud needs --port") : QString();
+  widgets::MachinePanel* panel = window.machinePanels().machinePanel();
+  QTimer::singleShot(0, panel, [panel, port, rate] { panel->connectTo(port, rate); });
+  return {};
 }
 
 void screenshotWhenReady(MainWindow& window, const QString& path, bool expectDrawing,

@@ -1,5 +1,6 @@
-// Start-up helpers of fivebar-studio: resolving the machine profile argument and the
-// --screenshot mode (wait until the window shows a planned job, grab it, quit).
+// Start-up helpers of fivebar-studio: resolving the machine profile argument, connecting a port
+// named on the command line, and the --screenshot mode (wait until the window shows a planned
+// job, grab it, quit).
 #pragma once
 
 #include <QString>
@@ -21,6 +22,12 @@ std::optional<MachineProfile> resolveProfile(const std::string& presetOrPath, st
 // session (edits included, QSettings), else the maker-plotter preset.
 std::optional<MachineProfile> startupProfile(const std::optional<QString>& machineArg,
                                              std::string& error);
+
+// --port PORT [--baud N]: once the event loop runs, the machine panel connects PORT (at N baud,
+// else the baud box's rate: the profile's) exactly as its Connect button does, messages
+// included. `port` empty: no --port. Returns the error for a --baud that is not a positive whole
+// number or comes without --port (nothing is connected then), empty when fine.
+QString connectAtStart(MainWindow& window, const QString& port, const QString& baud);
 
 // Once the workspace is computed, the import (if `expectDrawing`) has finished and the first
 // plan is done, calls `beforeGrab` (to set up what the picture shows), grabs the window into

@@ -56,18 +56,24 @@ inline std::vector<Sample> readTrace(const fs::path& file) {
 }
 
 // A powered board: the firmware on a pty at `pty`, its EEPROM in `stateDir` (kept across
-// restarts, as a board's), its step trace written to `trace`. The destructor pulls the cable.
+// restarts, as a board's), its step trace written to `trace`; `extra` options of grbl_sim.exe
+// after those (e.g. {"-L", FILE}: every byte received and sent). The destructor pulls the cable.
 class Board {
  public:
-  Board(const fs::path& pty, const fs::path& stateDir, const fs::path& trace) : pty_(pty) {
+  Board(const fs::path& pty, const fs::path& stateDir, const fs::path& trace,
+        const std::vector<std::string>& extra = {})
+      : pty_(pty) {
     fs::remove(pty);
+    std::vector<std::string> args = {"sh",          startScript().string(), pty.string(), "1",
+                                     stateDir.string(), "-s", trace.string(), "-r", "0.001"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
     pid_ = fork();
     if (pid_ == 0) {
-      const std::string script = startScript().string(), link = pty.string(),
-                        state = stateDir.string(), steps = trace.string();
       std::freopen("/dev/null", "w", stdout);
-      execl("/bin/sh", "sh", script.c_str(), link.c_str(), "1", state.c_str(), "-s", steps.c_str(),
-            "-r", "0.001", static_cast<char*>(nullptr));
+      execv("/bin/sh", argv.data());
       _exit(127);
     }
     for (int i = 0; i < 200 && !fs::exists(pty); ++i)

@@ -16,6 +16,7 @@
 #include "widgets/machine/console_panel.hpp"
 #include "widgets/machine/machine_banner.hpp"
 #include "widgets/machine/machine_panel.hpp"
+#include "widgets/machine/port_box.hpp"
 
 namespace fivebar {
 namespace {

@@ -1,7 +1,9 @@
 // The machine side inside the whole main window, offscreen: the quit prompt while a job runs,
 // the canvas linkage following the connected machine with the simulation as a ghost, and an
-// import error never covered by the import's progress dialog.
+// import error never covered by the import's progress dialog; --port at start.
 #include <gtest/gtest.h>
+#include <pty.h>
+#include <unistd.h>
 
 #include <QApplication>
 #include <QFile>
@@ -14,6 +16,7 @@
 
 #include "app/studio/file_actions.hpp"
 #include "app/studio/main_window.hpp"
+#include "app/studio/startup.hpp"
 #include "drivers/jog.hpp"
 #include "machine_test_support.hpp"
 #include "session/machine_side.hpp"
@@ -22,6 +25,9 @@
 #include "widgets/document/preview_controller.hpp"
 #include "widgets/document/simulation_controller.hpp"
 #include "widgets/document/studio_document.hpp"
+#include "widgets/machine/machine_panel.hpp"
+#include "widgets/machine/machine_panels.hpp"
+#include "widgets/machine/port_box.hpp"
 
 namespace fivebar {
 namespace {
@@ -172,6 +178,36 @@ TEST(StudioMachine, ImportErrorIsNotCoveredByTheProgressDialog) {
   // And none appears afterwards either.
   waitUntil([] { return false; }, 500);
   for (QProgressDialog* d : parent.findChildren<QProgressDialog*>()) EXPECT_FALSE(d->isVisible());
+}
+
+// fivebar-studio --port PORT [--baud N]: the window's machine panel connects PORT once the event
+// loop runs, as its Connect button does (a pty that never answers stays "connecting" to it); a
+// bad --baud or one without --port is refused, naming it, and nothing is connected.
+TEST(StudioStart, PortConnectsThroughTheMachinePanel) {
+  widgets::PortBox::forgetRecentPorts();
+  studio::MainWindow window(*preset("maker-plotter"));
+  EXPECT_EQ(studio::connectAtStart(window, QString(), QStringLiteral("fast")),
+            QStringLiteral("--baud: expected a positive whole number of bits per second, got 'fast'"));
+  EXPECT_EQ(studio::connectAtStart(window, QStringLiteral("/dev/ttyUSB0"), QStringLiteral("-9600")),
+            QStringLiteral("--baud: expected a positive whole number of bits per second, got '-9600'"));
+  EXPECT_EQ(studio::connectAtStart(window, QString(), QStringLiteral("9600")), QStringLiteral("--baud needs --port"));
+  EXPECT_TRUE(studio::connectAtStart(window, QString(), QString()).isEmpty());
+  waitUntil([] { return false; }, 50);
+  EXPECT_FALSE(window.machine().session().isConnecting());  // none of those connected anything
+  int master = -1, slave = -1;
+  char name[256] = {};
+  ASSERT_EQ(openpty(&master, &slave, name, nullptr, nullptr), 0);
+  const QString pty = QString::fromLatin1(name);
+  EXPECT_TRUE(studio::connectAtStart(window, pty, QStringLiteral("57600")).isEmpty());
+  EXPECT_FALSE(window.machine().session().isConnecting());  // not before the event loop runs
+  ASSERT_TRUE(waitUntil([&] { return window.machine().session().isConnecting(); }, 2000));
+  EXPECT_EQ(window.machine().session().linkName(), pty);
+  widgets::MachinePanel* panel = window.machinePanels().machinePanel();
+  EXPECT_EQ(panel->portBox()->chosenPort(), pty);
+  EXPECT_EQ(panel->baudBox()->currentData().toInt(), 57600);
+  window.machine().session().disconnectMachine();
+  ::close(slave);
+  ::close(master);
 }
 
 }  // namespace

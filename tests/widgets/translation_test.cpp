@@ -46,6 +46,7 @@
 #include "widgets/panels/layers_panel.hpp"
 #include "widgets/machine/machine_banner.hpp"
 #include "widgets/machine/machine_panel.hpp"
+#include "widgets/machine/port_box.hpp"
 #include "session/machine_session.hpp"
 #include "widgets/machine/machine_settings_dialog.hpp"
 #include "widgets/machine/machine_panels.hpp"
@@ -74,7 +75,8 @@ std::set<QString> runtimeContexts() {
         &ConsolePanel::staticMetaObject, &JobLayer::staticMetaObject,
         &ImportController::staticMetaObject, &fivebar::session::JogController::staticMetaObject,
         &GoToTool::staticMetaObject, &JogPanel::staticMetaObject, &LayersPanel::staticMetaObject,
-        &MachineBanner::staticMetaObject, &MachinePanel::staticMetaObject, &MachineLayer::staticMetaObject,
+        &MachineBanner::staticMetaObject, &MachinePanel::staticMetaObject, &PortBox::staticMetaObject,
+        &MachineLayer::staticMetaObject,
         &fivebar::session::MachineSession::staticMetaObject, &MachineSettingsDialog::staticMetaObject,
         &MachinePanels::staticMetaObject,
         &ModePanel::staticMetaObject, &PlacementPanel::staticMetaObject,

@@ -20,16 +20,20 @@ ReplaceDrawingCommand::ReplaceDrawingCommand(StudioDocument& doc, Drawing drawin
       sourceBefore_(doc.source()),
       sourceAfter_(std::move(source)),
       placementBefore_(doc.placement()),
-      placementAfter_(placement) {}
+      placementAfter_(placement),
+      projectBefore_(doc.projectPath()) {}
 
 void ReplaceDrawingCommand::undo() {
+  projectAfter_ = doc_.projectPath();
   doc_.applyDrawing(before_, fileBefore_, sourceBefore_);
   doc_.applyPlacement(placementBefore_);
+  doc_.applyProjectPath(projectBefore_);
 }
 
 void ReplaceDrawingCommand::redo() {
   doc_.applyDrawing(after_, fileAfter_, sourceAfter_);
   doc_.applyPlacement(placementAfter_);
+  doc_.applyProjectPath(projectAfter_);
 }
 
 SetPlacementCommand::SetPlacementCommand(StudioDocument& doc, Placement after, int gestureId)

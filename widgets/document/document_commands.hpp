@@ -9,6 +9,9 @@
 
 namespace fivebar::widgets {
 
+// An import: the new drawing, placed. It makes the document a new untitled project (an SVG is
+// not the project that was open: Save must ask for a name, never write the project over);
+// undone, the document is the project it was again.
 class ReplaceDrawingCommand : public QUndoCommand {
  public:
   ReplaceDrawingCommand(StudioDocument& doc, Drawing drawing, QString fileName, Placement placement,
@@ -22,6 +25,9 @@ class ReplaceDrawingCommand : public QUndoCommand {
   QString fileBefore_, fileAfter_;
   DrawingSource sourceBefore_, sourceAfter_;
   Placement placementBefore_, placementAfter_;
+  // The project file before the import, and after it: none, or the file the imported state
+  // was saved to later (taken when the import is undone, given back when it is redone).
+  QString projectBefore_, projectAfter_;
 };
 
 class SetPlacementCommand : public QUndoCommand {

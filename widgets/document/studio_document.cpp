@@ -39,10 +39,13 @@ std::shared_ptr<const Drawing> StudioDocument::drawingSnapshot() const { return 
 
 void StudioDocument::markSaved(const QString& path) {
   undo_.setClean();
-  if (path != projectPath_) {
-    projectPath_ = path;
-    emit projectPathChanged();
-  }
+  applyProjectPath(path);
+}
+
+void StudioDocument::applyProjectPath(const QString& path) {
+  if (path == projectPath_) return;
+  projectPath_ = path;
+  emit projectPathChanged();
 }
 
 WorkingMode StudioDocument::effectiveMode() const {

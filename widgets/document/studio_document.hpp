@@ -54,8 +54,9 @@ class StudioDocument : public QObject {
   QUndoStack* undoStack() { return &undo_; }
 
   // --- edits, each one undoable ---
-  // Replaces the drawing (an import) and places it. By value: an import moves its drawing in
-  // (hundreds of thousands of paths are not copied on the UI thread).
+  // Replaces the drawing (an import) and places it; the document becomes a new untitled project
+  // (projectPath() empty: Save asks for a name), undone it is the project it was. By value: an
+  // import moves its drawing in (hundreds of thousands of paths are not copied on the UI thread).
   void replaceDrawing(Drawing drawing, const QString& fileName, const Placement& placement,
                       const DrawingSource& source = {});
   // Sets the placement. Calls with the same non-zero `gestureId` merge into one undo step (a
@@ -85,7 +86,8 @@ class StudioDocument : public QObject {
   // Not an edit: the same drawing flattened more finely (the planner asked for it); keeps the
   // layers' settings, the placement and the undo history.
   void applyRefinedDrawing(const Drawing& drawing);
-  // The project file the document was last saved to or opened from ("" if none).
+  // The project file the document was last saved to or opened from ("" if none): the file Save
+  // writes (Save asks for one when there is none).
   QString projectPath() const { return projectPath_; }
   // Marks the current state as saved to `path`.
   void markSaved(const QString& path);
@@ -95,6 +97,7 @@ class StudioDocument : public QObject {
   // --- raw setters used only by the undo commands ---
   void applyDrawing(std::shared_ptr<const Drawing> drawing, const QString& fileName, const DrawingSource& source);
   void applyPlacement(const Placement& placement);
+  void applyProjectPath(const QString& path);
   void applyModeSelection(ModeSelection choice);
   // Reorders the layers (`order[i]` = current index of the layer moving to i), then sets the
   // settings by new position.

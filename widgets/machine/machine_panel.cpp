@@ -6,20 +6,21 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLineEdit>
 #include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QVBoxLayout>
 
 #include "core/kinematics/units.hpp"
-#include "drivers/serial_transport.hpp"
+#include "drivers/open_transport.hpp"
 #include "widgets/machine/machine_banner.hpp"
+#include "widgets/machine/port_box.hpp"
 #include "session/settings_advice.hpp"
 
 namespace fivebar::widgets {
 namespace {
 
-const QString kSimulatedId = QStringLiteral("sim:");
 constexpr int kBaudRates[] = {9600, 19200, 38400, 57600, 115200, 230400, 250000};
 
 QString colourOfState(grbl::MachineState s) {
@@ -59,8 +60,7 @@ MachinePanel::MachinePanel(session::MachineView& view, session::ConnectionPort& 
                            session::RecoveryPort& recovery, QWidget* parent)
     : QWidget(parent), view_(view), connection_(link) {
   setObjectName(QStringLiteral("machinePanel"));
-  ports_ = new QComboBox(this);
-  ports_->setObjectName(QStringLiteral("machinePorts"));
+  ports_ = new PortBox(this);
   refresh_ = new QPushButton(tr("Refresh"), this);
   refresh_->setToolTip(tr("List the serial ports again"));
   baud_ = new QComboBox(this);
@@ -71,8 +71,6 @@ MachinePanel::MachinePanel(session::MachineView& view, session::ConnectionPort& 
   link_ = new QLabel(this);
   link_->setWordWrap(true);
 
-  ports_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-  ports_->setMinimumContentsLength(12);
   auto* portRow = new QHBoxLayout;
   portRow->addWidget(ports_, 1);
   portRow->addWidget(refresh_);
@@ -142,15 +140,36 @@ MachinePanel::MachinePanel(session::MachineView& view, session::ConnectionPort& 
   connect(connect_, &QPushButton::clicked, this, &MachinePanel::connectSelected);
   connect(disconnect_, &QPushButton::clicked, this, [this] { connection_.disconnectMachine(); });
   connect(ports_, &QComboBox::currentIndexChanged, this, &MachinePanel::refreshConnection);
-  connect(&view_, &session::MachineView::connectionChanged, this, &MachinePanel::refreshConnection);
+  connect(ports_, &QComboBox::editTextChanged, this, &MachinePanel::refreshConnection);
+  connect(ports_->lineEdit(), &QLineEdit::returnPressed, this, [this] {
+    if (connect_->isEnabled()) connectSelected();
+  });
+  connect(&view_, &session::MachineView::connectionChanged, this, &MachinePanel::onConnectionChanged);
   connect(&view_, &session::MachineView::connectionChanged, this, &MachinePanel::refreshStatus);
   connect(&view_, &session::MachineView::statusUpdated, this, &MachinePanel::refreshStatus);
   connect(&view_, &session::MachineView::penStateChanged, this, &MachinePanel::refreshStatus);
   connect(&view_, &session::MachineView::boardSettingsChanged, this, &MachinePanel::refreshSettings);
   connect(&view_, &session::MachineView::connectFailed, this, &MachinePanel::onConnectFailed);
-  refreshPorts();
+  refreshConnection();
   refreshStatus();
   refreshSettings();
+}
+
+void MachinePanel::onConnectionChanged() {
+  if (view_.isConnected() && !pending_.isEmpty()) {
+    ports_->remember(pending_);  // it answered: worth offering first next time
+    pending_.clear();
+  }
+  refreshConnection();
+}
+
+void MachinePanel::showConnectProblem(const QString& message) {
+  failure_ = message;
+  refreshConnection();
+  auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot connect"), message, QMessageBox::Ok, this);
+  box->setObjectName(QStringLiteral("connectProblemMessage"));
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  box->open();
 }
 
 void MachinePanel::onConnectFailed(const QString& message) {
@@ -171,35 +190,44 @@ void MachinePanel::refreshSettings() {
 }
 
 void MachinePanel::refreshPorts() {
-  const QString current = ports_->currentData().toString();
-  ports_->clear();
-  ports_->addItem(tr("Simulated machine (built in)"), kSimulatedId);
-  for (const SerialPortInfo& port : SerialTransport::availablePorts()) {
-    const QString label = port.description.isEmpty()
-                              ? port.systemPath
-                              : QStringLiteral("%1 (%2)").arg(port.systemPath, port.description);
-    ports_->addItem(label, port.systemPath);
-  }
-  const int index = ports_->findData(current);
-  ports_->setCurrentIndex(index >= 0 ? index : 0);
+  ports_->refresh();
   refreshConnection();
 }
 
 void MachinePanel::connectSelected() {
-  const QString id = ports_->currentData().toString();
-  QString error;
+  const QString port = ports_->chosenPort();
   failure_.clear();
-  const bool ok = id == kSimulatedId
+  pending_.clear();
+  if (const QString problem = portProblem(port); !problem.isEmpty()) {
+    showConnectProblem(problem);
+    return;
+  }
+  pending_ = port;
+  QString error;
+  const bool ok = port == PortBox::kSimulated
                       ? connection_.connectSimulated(simSpeedup_, sim::Fault{}, &error)
-                      : connection_.connectSerial(id, baud_->currentData().toInt(), &error);
-  if (!ok) QMessageBox::warning(this, tr("Cannot connect"), error);
+                      : connection_.connectSerial(port, baud_->currentData().toInt(), &error);
+  if (!ok) {
+    pending_.clear();
+    showConnectProblem(error.isEmpty() ? tr("Cannot open %1.").arg(port) : error);
+  }
+}
+
+void MachinePanel::connectTo(const QString& port, std::optional<int> baudRate) {
+  ports_->choose(port);
+  if (baudRate) {
+    if (baud_->findData(*baudRate) < 0) baud_->addItem(QString::number(*baudRate), *baudRate);
+    baud_->setCurrentIndex(baud_->findData(*baudRate));
+  }
+  connectSelected();
 }
 
 void MachinePanel::refreshConnection() {
   const bool connected = view_.isConnected();
-  const bool simulated = ports_->currentData().toString() == kSimulatedId;
+  const QString port = ports_->chosenPort();
+  const bool hasBaud = port != PortBox::kSimulated && portHasBaudRate(port);
   refresh_->setEnabled(!connected);
-  baud_->setEnabled(!connected && !simulated);
+  baud_->setEnabled(!connected && hasBaud);
   const bool connecting = view_.isConnecting();
   connect_->setEnabled(!connected && !connecting);
   disconnect_->setEnabled(connected || connecting);

@@ -1,6 +1,8 @@
-// The machine panel: connection (the built-in simulated machine, or a serial port listed with
-// QSerialPortInfo, and its baud rate), the alarm / error banner, and the status the board
-// reports: state, pen XY (mm), motor angles (deg), planner blocks and RX buffer bytes free.
+// The machine panel: connection (the built-in simulated machine, or any port by name in the
+// editable PortBox: a serial port found on the system, one typed, a pseudo-terminal, a network
+// port tcp:HOST:PORT; recent ones remembered), the baud rate, the alarm / error banner, and the
+// status the board reports: state, pen XY (mm), motor angles (deg), planner blocks and RX buffer
+// bytes free.
 // It shows the session's state (MachineView) and never stores it; it may only connect and
 // disconnect (ConnectionPort) and, in the banner, recover (RecoveryPort).
 #pragma once
@@ -11,6 +13,7 @@
 #include "session/machine_view.hpp"
 
 #include <functional>
+#include <optional>
 
 class QComboBox;
 class QFrame;
@@ -20,6 +23,7 @@ class QPushButton;
 namespace fivebar::widgets {
 
 class MachineBanner;
+class PortBox;
 
 class MachinePanel : public QWidget {
   Q_OBJECT
@@ -30,7 +34,8 @@ class MachinePanel : public QWidget {
   // Speed-up of the simulated machine connected from this panel (1 = real time).
   void setSimulationSpeedup(double speedup) { simSpeedup_ = speedup; }
 
-  QComboBox* portBox() const { return ports_; }
+  PortBox* portBox() const { return ports_; }
+  QComboBox* baudBox() const { return baud_; }
   QPushButton* connectButton() const { return connect_; }
   QPushButton* disconnectButton() const { return disconnect_; }
   MachineBanner* banner() const { return banner_; }
@@ -46,18 +51,26 @@ class MachinePanel : public QWidget {
 
  public slots:
   void refreshPorts();
+  // Connect: opens what the port box names (chosenPort) at the baud box's rate; a port that
+  // cannot be opened is said in the link line and a message box, naming it. A port that
+  // answered goes first in the recent list.
   void connectSelected();
+  // Puts `port` in the port box (and `baudRate` in the baud box, when given), then connects
+  // as the Connect button does (fivebar-studio --port PATH [--baud N]).
+  void connectTo(const QString& port, std::optional<int> baudRate = std::nullopt);
   void refreshStatus();
 
  private:
   void refreshConnection();
   void refreshSettings();
   void onConnectFailed(const QString& message);
+  void showConnectProblem(const QString& message);
+  void onConnectionChanged();
 
   session::MachineView& view_;
   session::ConnectionPort& connection_;
   double simSpeedup_ = 1.0;
-  QComboBox* ports_ = nullptr;
+  PortBox* ports_ = nullptr;
   QComboBox* baud_ = nullptr;
   QPushButton* refresh_ = nullptr;
   QPushButton* connect_ = nullptr;
@@ -74,6 +87,7 @@ class MachinePanel : public QWidget {
   QPushButton* settingsButton_ = nullptr;
   std::function<void()> openSettings_;
   QString failure_;  // why the last connection attempt failed (shown until the next one)
+  QString pending_;  // the port being connected, remembered once the board answers
 };
 
 // A readable (translated) name of a GRBL state.

@@ -12,6 +12,7 @@
 
 #include "core/kinematics/units.hpp"
 #include "widgets/document/import_controller.hpp"
+#include "widgets/document/job_source.hpp"
 #include "widgets/document/studio_document.hpp"
 
 namespace fivebar::widgets {
@@ -55,7 +56,7 @@ FillOptionsBox::FillOptionsBox(ImportController& importer, StudioDocument& doc, 
   connect(outline_, &QCheckBox::toggled, this, &FillOptionsBox::push);
   connect(&doc_, &StudioDocument::drawingChanged, this, &FillOptionsBox::updateEnabled);
   connect(apply_, &QPushButton::clicked, this, [this] {
-    if (QFileInfo(doc_.fileName()).isFile()) importer_.openFile(doc_.fileName());
+    if (canImportAgain()) importer_.openFile(doc_.fileName());
   });
 }
 
@@ -81,13 +82,19 @@ void FillOptionsBox::push() {
   updateEnabled();
 }
 
+// Only a drawing is imported again (an undoable edit). A project opened again would drop its
+// unsaved edits without a question, and its layers keep their own fills (the Layers panel).
+bool FillOptionsBox::canImportAgain() const {
+  return QFileInfo(doc_.fileName()).isFile() && !isProjectPath(doc_.fileName());
+}
+
 void FillOptionsBox::updateEnabled() {
   const bool hatch = mode_->currentData().toInt() == static_cast<int>(FillMode::Hatch);
   spacing_->setEnabled(hatch);
   angle_->setEnabled(hatch);
   cross_->setEnabled(hatch);
   outline_->setEnabled(hatch);
-  apply_->setEnabled(QFileInfo(doc_.fileName()).isFile() && !importer_.busy());
+  apply_->setEnabled(canImportAgain() && !importer_.busy());
 }
 
 bool applyFillOption(FillOptionsBox& box, const QString& text) {

@@ -24,10 +24,13 @@ class FillOptionsBox : public QGroupBox {
 
   // Shows and applies a choice (e.g. from the command line).
   void setChoice(FillMode mode, const HatchSettings& hatch);
+  // "Import again with these settings": enabled while the document is a drawing (not a project).
+  QPushButton* importAgainButton() const { return apply_; }
 
  private:
   void push();         // widgets -> importer and QSettings
   void updateEnabled();
+  bool canImportAgain() const;
 
   ImportController& importer_;
   StudioDocument& doc_;
