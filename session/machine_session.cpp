@@ -9,6 +9,7 @@
 #include "drivers/jog.hpp"
 #include "drivers/pen_state.hpp"
 #include "drivers/motion_check.hpp"
+#include "drivers/open_transport.hpp"
 #include "drivers/serial_transport.hpp"
 #include "drivers/simulated_transport.hpp"
 #include "session/core_message.hpp"
@@ -74,8 +75,9 @@ std::vector<std::vector<Vec2>> MachineSession::simulatedDrawnTrace() const {
 }
 
 bool MachineSession::connectSerial(const QString& portPath, int baudRate, QString* error) {
-  const QString target = tr("%1 at %2 baud").arg(portPath).arg(baudRate);
-  if (!openLink(std::make_unique<SerialTransport>(portPath, baudRate), error)) return false;
+  const QString target = portPath.startsWith(QLatin1String("tcp:")) ? portPath
+                                                                     : tr("%1 at %2 baud").arg(portPath).arg(baudRate);
+  if (!openLink(makePortTransport(portPath, baudRate), error)) return false;
   connectTarget_ = target;
   return true;
 }

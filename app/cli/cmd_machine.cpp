@@ -24,7 +24,7 @@ namespace fivebar::cli {
 namespace {
 
 constexpr const char* kStreamHelp =
-    "usage: fivebar stream JOB.gcode --port DEVICE --machine PRESET|FILE [--baud 115200]\n"
+    "usage: fivebar stream JOB.gcode --port DEVICE|tcp:HOST:PORT --machine PRESET|FILE [--baud 115200]\n"
     "                      [--resume] [--force-profile] [--ignore-settings] [--unchecked]\n"
     "Streams the job with GRBL character counting (128-byte buffer). Progress goes to stderr.\n"
     "What is checked, before the first byte: every line of the file is read as GRBL reads it\n"
@@ -51,7 +51,7 @@ constexpr const char* kStreamHelp =
     "pen-up approach (needs --machine, or the machine recorded in the progress file).\n";
 
 constexpr const char* kSetupHelp =
-    "usage: fivebar setup --port DEVICE --machine PRESET|FILE [--baud 115200] [--write]\n"
+    "usage: fivebar setup --port DEVICE|tcp:HOST:PORT --machine PRESET|FILE [--baud 115200] [--write]\n"
     "                     [--backup FILE]\n"
     "Reads the board's settings ($$) and compares them with the ones the machine profile\n"
     "expects (see fivebar grbl-settings). With --write, first saves the board's settings to\n"
@@ -93,7 +93,8 @@ int runStream(const Args& args) {
   bool failed = false;
   options.profile = streamMachine(o, options.jobPath, options.machineName, failed);
   if (failed) return 1;
-  SerialTransport port(QString::fromStdString(o.required("--port")), baudFrom(o));
+  const std::unique_ptr<Transport> transport = portTransport(o);
+  Transport& port = *transport;
   MachineLink link(port);
   StreamSession session(link, options);
   QString error;
@@ -174,7 +175,8 @@ int runSetup(const Args& args) {
       QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")).toStdString() +
       ".txt");
   QtApp qt;
-  SerialTransport port(QString::fromStdString(o.required("--port")), baudFrom(o));
+  const std::unique_ptr<Transport> transport = portTransport(o);
+  Transport& port = *transport;
   MachineLink link(port, 0.5);
   QString error;
   if (!port.open(&error)) {

@@ -23,7 +23,7 @@ namespace fivebar::cli {
 namespace {
 
 constexpr const char* kReferenceHelp =
-    "usage: fivebar reference --port DEVICE --machine PRESET|FILE [--baud 115200] [--yes] [--keep]\n"
+    "usage: fivebar reference --port DEVICE|tcp:HOST:PORT --machine PRESET|FILE [--baud 115200] [--yes] [--keep]\n"
     "Declares the machine's current pose to be the profile's home pose: the board's work\n"
     "coordinates are set (G10 L20 P0, kept in its EEPROM) so that X/Y read the home angles.\n"
     "Put the arms in the home pose first (by hand, or after $H on a machine with switches).\n"
@@ -36,7 +36,7 @@ constexpr const char* kReferenceHelp =
     "otherwise.\n";
 
 constexpr const char* kHomeHelp =
-    "usage: fivebar home --port DEVICE --machine PRESET|FILE [--baud 115200] [--timeout S]\n"
+    "usage: fivebar home --port DEVICE|tcp:HOST:PORT --machine PRESET|FILE [--baud 115200] [--timeout S]\n"
     "Brings the machine to the profile's home pose. With homing switches (profile\n"
     "connection.hasHomingSwitches) it runs GRBL's homing cycle ($H) and then compares the pose\n"
     "with the home pose (run fivebar reference once after homing if they differ). Without\n"
@@ -51,6 +51,17 @@ double timeoutFrom(const Options& o, double fallback) {
 
 std::string homeText(const MachineProfile& p) {
   return motion::anglesText(degFromRad(p.homeAngles.theta1), degFromRad(p.homeAngles.theta2));
+}
+
+// Asks on the terminal; false (and says so) unless the answer is yes.
+bool confirmed(const char* question) {
+  std::printf("%s [y/N] ", question);
+  std::fflush(stdout);
+  std::string answer;
+  std::getline(std::cin, answer);
+  if (answer == "y" || answer == "Y" || answer == "yes") return true;
+  std::cerr << "fivebar reference: not confirmed; nothing was changed\n";
+  return false;
 }
 
 bool atHome(const MachineProfile& p, const motion::BoardPose& pose, double tolDeg) {
@@ -146,7 +157,8 @@ class Procedure : public grbl::ProtocolListener {
 int runProcedure(const Options& o, const std::string& command, double timeoutS, Procedure::Decide decide,
                  Procedure::Verify verify, bool allowAlarm = false) {
   QtApp qt;
-  SerialTransport port(QString::fromStdString(o.required("--port")), baudFrom(o));
+  const std::unique_ptr<Transport> transport = portTransport(o);
+  Transport& port = *transport;
   MachineLink link(port, 0.0);
   QString error;
   if (!port.open(&error)) {
@@ -189,30 +201,12 @@ int runReference(const Args& args) {
                      "without --keep\n";
         return std::nullopt;
       }
-      if (!yes) {
-        std::printf("Do the arms stand exactly where the board reports? [y/N] ");
-        std::fflush(stdout);
-        std::string answer;
-        std::getline(std::cin, answer);
-        if (answer != "y" && answer != "Y" && answer != "yes") {
-          std::cerr << "fivebar reference: not confirmed; nothing was changed\n";
-          return std::nullopt;
-        }
-      }
+      if (!yes && !confirmed("Do the arms stand exactly where the board reports?")) return std::nullopt;
       link.poseTrust().confirmed();
       return std::vector<std::string>{};
     }
     std::printf("this pose becomes the home pose of %s: %s\n", profile->name.c_str(), homeText(*profile).c_str());
-    if (!yes) {
-      std::printf("Are the arms in the home pose? [y/N] ");
-      std::fflush(stdout);
-      std::string answer;
-      std::getline(std::cin, answer);
-      if (answer != "y" && answer != "Y" && answer != "yes") {
-        std::cerr << "fivebar reference: not confirmed; nothing was changed\n";
-        return std::nullopt;
-      }
-    }
+    if (!yes && !confirmed("Are the arms in the home pose?")) return std::nullopt;
     link.poseTrust().confirmed();  // known from the report after the new offset on
     return std::vector<std::string>{jog::referencePoseCommand(*profile)};
   };

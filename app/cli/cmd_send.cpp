@@ -19,7 +19,7 @@ namespace fivebar::cli {
 namespace {
 
 constexpr const char* kSendHelp =
-    "usage: fivebar send --port DEVICE --machine PRESET|FILE [--baud 115200] [--timeout S]\n"
+    "usage: fivebar send --port DEVICE|tcp:HOST:PORT --machine PRESET|FILE [--baud 115200] [--timeout S]\n"
     "                    [--unchecked] LINE...\n"
     "Sends each LINE and prints what the board answers. Settings ($N=V) and other $ commands\n"
     "go one at a time. Real-time commands: ? ! ~ reset (0x18) jog-cancel (0x85).\n"
@@ -255,7 +255,8 @@ int runSend(const Args& args) {
   const bool unchecked = o.flag("--unchecked");
   if (unchecked) std::cerr << "fivebar send: " << kUncheckedWarning;
   QtApp qt;
-  SerialTransport port(QString::fromStdString(o.required("--port")), baudFrom(o));
+  const std::unique_ptr<Transport> transport = portTransport(o);
+  Transport& port = *transport;
   MachineLink link(port, 0.5);  // polls only until the first report; then only on "?"
   QString error;
   if (!port.open(&error)) {

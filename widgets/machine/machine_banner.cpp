@@ -74,11 +74,7 @@ void MachineBanner::refresh() {
   QString text = p.text;
   if (alarm && p.needsReset) text += QLatin1Char('\n') + tr("The board waits for a reset first: press Reset, then Unlock.");
   message_->setText(text);
-  const bool homing = view_.profile().hasHomingSwitches;
-  home_->setText(homing ? tr("Home ($H)") : tr("Set reference pose"));
-  home_->setToolTip(homing ? tr("Run the homing cycle; the machine moves to its switches.")
-                           : tr("Declare that the machine now stands at the profile's home pose "
-                                "(G10 L20)."));
+  labelHomeButton();
   reset_->setVisible(alarm);
   unlock_->setVisible(alarm);
   unlock_->setEnabled(!p.needsReset);
@@ -87,17 +83,22 @@ void MachineBanner::refresh() {
   dismiss_->setVisible(!alarm);
 }
 
+// Home with switches, else Set reference pose, with what each does.
+void MachineBanner::labelHomeButton() {
+  const bool homing = view_.profile().hasHomingSwitches;
+  home_->setText(homing ? tr("Home ($H)") : tr("Set reference pose"));
+  home_->setToolTip(homing ? tr("Run the homing cycle; the machine moves to its switches.")
+                           : tr("Declare that the machine now stands at the profile's home pose "
+                                "(G10 L20)."));
+}
+
 void MachineBanner::showPoseUnknown(const QString& why) {
   setVisible(true);
   setStyleSheet(QStringLiteral("#machineBanner { background: #fef3c7; border: 1px solid #d97706; "
                                "border-radius: 4px; }"));
   title_->setText(tr("Position unknown: nothing moves until it is set"));
   message_->setText(why);
-  const bool homing = view_.profile().hasHomingSwitches;
-  home_->setText(homing ? tr("Home ($H)") : tr("Set reference pose"));
-  home_->setToolTip(homing ? tr("Run the homing cycle; the machine moves to its switches.")
-                           : tr("Declare that the machine now stands at the profile's home pose "
-                                "(G10 L20)."));
+  labelHomeButton();
   reset_->setVisible(false);
   unlock_->setVisible(false);
   home_->setVisible(true);

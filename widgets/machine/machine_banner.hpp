@@ -30,6 +30,7 @@ class MachineBanner : public QFrame {
 
  private:
   void showPoseUnknown(const QString& why);
+  void labelHomeButton();
   session::MachineView& view_;
   session::RecoveryPort& recovery_;
   QLabel* title_ = nullptr;
