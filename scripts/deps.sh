@@ -3,7 +3,7 @@
 # Quiet when nothing is missing. Needs root (or sudo) when something is.
 set -euo pipefail
 packages=(
-  cmake ninja-build g++ make pkg-config
+  cmake ninja-build g++ make pkg-config ccache
   libeigen3-dev nlohmann-json3-dev zlib1g-dev libnlopt-cxx-dev
   qt6-base-dev qt6-svg-dev qt6-serialport-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
   qt6-translations-l10n

@@ -317,6 +317,9 @@ void RunController::onFinished(bool ok, const QString& message) {
     snapshot_.etaS = 0.0;
   }
   session_.setJobActive(false);
+  // The next jog session compares the board's settings as they are now (the run may have met a
+  // board that was reset or rewritten).
+  session_.readBoardSettings();
   emit progressChanged();
   emit runChanged();
   emit finished(ok, lastMessage_);
