@@ -45,6 +45,15 @@ void finishPolyline(Polyline& line, bool closed, std::vector<Polyline>& out) {
   out.push_back(std::move(line));
 }
 
+void dropInvisibleStrokes(std::vector<Polyline>& lines, double extentMm) {
+  const double limit2 = extentMm * extentMm;
+  std::erase_if(lines, [&](const Polyline& line) {
+    return std::all_of(line.points.begin(), line.points.end(), [&](const Vec2& p) {
+      return (p - line.points.front()).squaredNorm() <= limit2;
+    });
+  });
+}
+
 void closeFillOutlines(std::vector<Polyline>& lines) {
   for (Polyline& line : lines) line.closed = line.closed || line.points.size() > 2;
 }
@@ -185,6 +194,8 @@ void CaptureEngine::drawPath(const QPainterPath& path) {
   const QTransform t = painter()->combinedTransform();
   std::vector<Polyline> lines;
   appendFlattenedPath(path, t, settings_.toleranceMm, lines);
+  if (paint.stroke && !paint.fill && painter()->pen().capStyle() == Qt::FlatCap)
+    dropInvisibleStrokes(lines, settings_.toleranceMm);
   Signature s;
   s.kind = kPath;
   s.path = path;
@@ -204,6 +215,8 @@ void CaptureEngine::drawPolygon(const QPointF* points, int count, PolygonDrawMod
   for (int i = 0; i < count; ++i) line.points.push_back(mapped(t, points[i].x(), points[i].y()));
   std::vector<Polyline> lines;
   finishPolyline(line, mode != PolylineMode, lines);
+  if (paint.stroke && !paint.fill && painter()->pen().capStyle() == Qt::FlatCap)
+    dropInvisibleStrokes(lines, settings_.toleranceMm);
   Signature s;
   s.kind = mode == PolylineMode ? kPolyline : kPolygon;
   s.data = points;
@@ -232,6 +245,7 @@ void CaptureEngine::drawLines(const QLineF* lines, int count) {
     line.points = {mapped(t, lines[i].x1(), lines[i].y1()), mapped(t, lines[i].x2(), lines[i].y2())};
     finishPolyline(line, false, out);
   }
+  if (pen.capStyle() == Qt::FlatCap) dropInvisibleStrokes(out, settings_.toleranceMm);
   Signature s;
   s.kind = kPolyline;
   s.data = lines;

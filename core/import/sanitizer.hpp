@@ -2,6 +2,7 @@
 // the rewrites that make Qt SVG draw what a browser draws). Private to core/import.
 #pragma once
 
+#include <QSet>
 #include <QXmlStreamReader>
 #include <QXmlStreamWriter>
 
@@ -37,7 +38,11 @@ class Sanitizer {
   void endElement();
   void characters();
   QXmlStreamAttributes cleanAttributes(QStringView tag);
-  bool checkNumbers(QStringView tag, const QXmlStreamAttributes& attributes);
+  // The first non-finite number of a geometry attribute, worded with line and element; empty if none.
+  Message numberProblem(QStringView tag, const QXmlStreamAttributes& attributes) const;
+  bool isSvgNamespace(QStringView uri) const {
+    return uri == svgNamespace_ || uri == u"http://www.w3.org/2000/svg";
+  }
   bool writeSplitPath(const QXmlStreamAttributes& attributes);
   bool writeRoundedRect(const QXmlStreamAttributes& attributes);
   void writeSentinel(int index);
@@ -75,8 +80,10 @@ class Sanitizer {
   };
   std::map<std::string, Repeated> warnings_;  // English text -> the warning, count, first line
   std::vector<Message> located_;  // warnings naming their own line, in document order
+  Message firstNumberDrop_;       // the first element dropped for a non-finite number
   std::map<QString, SymbolInfo> symbols_;  // from scanSymbols, for <use> of a <symbol>
-  UserViewport viewport_;
+  UserViewport viewport_;  // the nearest viewport (root, nested <svg>): % lengths, vw/vh
+  std::vector<std::pair<int, UserViewport>> outerViewports_;  // depth of a nested <svg>, its parent's
   std::vector<double> fontSizes_;  // user units, one per open written element
   std::vector<int> extraEnds_;     // end tags to add when the element closes (symbol, use)
   std::map<QString, MarkerInfo> markers_;  // from scanMarkers
@@ -86,6 +93,9 @@ class Sanitizer {
   void setMarkerSheet(MarkerSheet sheet) { markerSheet_ = std::move(sheet); }
   // A style sheet selects <rect> by type: rounded rectangles stay <rect> (Qt's own arcs).
   void setRectStyled(bool styled) { rectStyled_ = styled; }
+  // The document's <pattern> ids: a fill referring to one is drawn as its fallback colour (else
+  // black), so that the outline the warning promises is drawn (the pattern itself is dropped).
+  void setPatternIds(QSet<QString> ids) { patternIds_ = std::move(ids); }
 
  private:
   struct MarkerState {
@@ -95,9 +105,12 @@ class Sanitizer {
     std::vector<std::pair<QString, QString>> instances;  // marker id, instance transform
   };
   std::vector<MarkerState> markerStates_;  // one per open written element
-  int markerContentDepth_ = 0;             // > 0 inside a <marker>: its depth (no markers drawn)
+  int markerContentDepth_ = 0;
+  int gradientDepth_ = 0;  // > 0 inside a gradient: its depth (children other than stops dropped)             // > 0 inside a <marker>: its depth (no markers drawn)
   std::size_t markerInstances_ = 0;        // written so far (bounded)
   bool rectStyled_ = false;
+  QSet<QString> patternIds_;
+  QString withoutPatternPaint(const QString& paint) const;  // fill value; unchanged if no pattern
 };
 
 }  // namespace fivebar::svg::detail

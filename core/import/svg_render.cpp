@@ -92,6 +92,42 @@ Extent inspect(const std::vector<Layer>& layers, double limitMm) {
   return e;
 }
 
+// Drops every page-frame polyline with a non-finite point or a point beyond limitMm (an absurd
+// transform or coordinate), with one warning per top-level element naming it and the first such
+// point; returns the first problem (empty when none), which refuses the file when nothing is left.
+Message dropAbsurdLines(std::vector<CapturedRun>& runs, const std::vector<TopLevelElement>& topLevel,
+                        double limitMm, std::vector<Message>& warnings) {
+  Message first;
+  int warnedTop = -2;
+  for (CapturedRun& run : runs) {
+    std::erase_if(run.paths, [&](const Polyline& line) {
+      const auto bad = std::find_if(line.points.begin(), line.points.end(), [&](const Vec2& p) {
+        return !std::isfinite(p.x()) || !std::isfinite(p.y()) || std::abs(p.x()) > limitMm ||
+               std::abs(p.y()) > limitMm;
+      });
+      if (bad == line.points.end()) return false;
+      std::string element = "the drawing";
+      if (run.topIndex >= 0 && static_cast<std::size_t>(run.topIndex) < topLevel.size()) {
+        const TopLevelElement& top = topLevel[static_cast<std::size_t>(run.topIndex)];
+        element = "<" + top.tag.toStdString() + (top.id.isEmpty() ? "" : " id=\"" + top.id.toStdString() + "\"") + ">";
+      }
+      Message problem =
+          std::isfinite(bad->x()) && std::isfinite(bad->y())
+              ? FB_TR("ImportError", "%1 has a point at (%2, %3) mm, beyond the %4 mm limit")
+                    .arg(element).arg(bad->x(), 6).arg(bad->y(), 6).arg(limitMm, 6)
+              : FB_TR("ImportError", "%1 has a non-finite coordinate").arg(element);
+      if (run.topIndex != warnedTop) {
+        warnings.push_back(FB_TR("ImportWarning", "%1: its lines there are not drawn").arg(problem));
+        warnedTop = run.topIndex;
+      }
+      if (first.empty()) first = std::move(problem);
+      return true;
+    });
+  }
+  if (!first.empty()) std::erase_if(runs, [](const CapturedRun& run) { return run.paths.empty(); });
+  return first;
+}
+
 // Scales for forced page sizes (uniform, fitted and centred when both are forced), then flips
 // page (y down) into work (y up): workFromPage = (x, H - y).
 void toWorkFrame(Drawing& drawing, const ImportOptions& o) {
@@ -240,9 +276,13 @@ ImportResult finishImport(Capture&& capture, const QString& source, const Import
     return result;
   }
   result.warnings = std::move(capture.warnings);
+  Message absurd = dropAbsurdLines(capture.runs, capture.topLevel, o.maxCoordinateMm, result.warnings);
   Drawing& drawing = result.drawing;
   drawing.source = source.toStdString();
   drawing.layers = buildLayers(std::move(capture.runs), capture.topLevel, o.layerMode);
+  if (!absurd.empty() && std::none_of(drawing.layers.begin(), drawing.layers.end(),
+                                      [](const Layer& l) { return !l.paths.empty(); }))
+    return failure(ImportStatus::AbsurdCoordinates, source, std::move(absurd));  // nothing left
   Extent extent = inspect(drawing.layers, o.maxCoordinateMm);
   if (!extent.problem.empty()) return failure(ImportStatus::AbsurdCoordinates, source, std::move(extent.problem));
   const PageSetup& page = capture.page;

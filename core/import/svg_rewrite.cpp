@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "svg_lengths.hpp"
 #include "svg_units.hpp"
 
 namespace fivebar::svg {
@@ -12,20 +13,11 @@ namespace {
 
 QString num(double v) { return QString::number(v, 'g', 17); }
 
-// A length in user units: unitless/px as is, absolute units at dpi, % of reference,
-// em/ex of the font size. nullopt when not a length or a percentage without a reference.
+// A length in user units (svg_lengths.hpp) with one reference for %.
 std::optional<double> userUnits(QStringView text, double percentReference, double fontSize,
                                 double dpi) {
-  const std::optional<Length> length = parseLength(text);
-  if (!length) return std::nullopt;
-  switch (length->unit) {
-    case LengthUnit::Percent:
-      if (percentReference <= 0.0) return std::nullopt;
-      return length->value / 100.0 * percentReference;
-    case LengthUnit::Em: return length->value * fontSize;
-    case LengthUnit::Ex: return length->value * fontSize * 0.5;
-    default: return lengthToMm(*length, dpi).value() * dpi / 25.4;
-  }
+  return resolveLength(text, LengthAxis::Width,
+                       LengthContext{{percentReference, percentReference}, fontSize, dpi});
 }
 
 std::optional<double> attributeLength(const QXmlStreamAttributes& a, const char16_t* name) {

@@ -27,6 +27,26 @@ bool isRendering(QStringView tag) {
   return rendering.contains(tag);
 }
 
+// Never drawn by themselves, wherever they stand (SVG "never-rendered elements" and metadata);
+// Qt SVG 6.4 draws the content of those it does not know. Markers and symbols are rewritten
+// (svg_sanitize_rewrite.cpp); gradients are kept for Qt's brushes (their <stop>s draw nothing).
+bool isNeverRendered(QStringView tag) {
+  static const QSet<QStringView> never{u"clipPath", u"mask", u"pattern", u"filter", u"metadata",
+                                       u"title", u"desc", u"cursor", u"view"};
+  return never.contains(tag);
+}
+
+// The first command of path data when it is not a moveto (SVG: the data is in error from it
+// and nothing is drawn); empty for a good start or empty data.
+QString badFirstCommand(QStringView d) {
+  const QStringView t = d.trimmed();
+  if (t.isEmpty() || t.front() == u'M' || t.front() == u'm') return {};
+  if (t.front().isLetter()) return t.left(1).toString();  // the command
+  qsizetype n = 1;  // data without a command: its first token
+  while (n < t.size() && n < 24 && !t[n].isSpace() && t[n] != u',') ++n;
+  return t.left(n).toString();
+}
+
 bool isShape(QStringView tag) {
   static const QSet<QStringView> shapes{u"path", u"rect", u"circle", u"ellipse", u"line", u"polyline",
                                     u"polygon", u"text", u"use", u"textArea"};
@@ -55,6 +75,18 @@ bool styleSheetSelectsRect(const QByteArray& document) {
   }
   static const QRegularExpression selector(QStringLiteral("(^|[^-\\w#.])rect($|[^-\\w])"));
   return css.contains(selector);
+}
+
+// The ids of the document's <pattern> elements (one quick pass, only when the text holds one).
+QSet<QString> scanPatternIds(const QByteArray& document) {
+  QSet<QString> ids;
+  if (!document.contains("pattern")) return ids;
+  QXmlStreamReader reader(document);
+  while (!reader.atEnd())
+    if (reader.readNext() == QXmlStreamReader::StartElement && reader.name() == u"pattern")
+      if (const QStringView id = reader.attributes().value(QStringLiteral("id")); !id.isEmpty())
+        ids.insert(id.toString());
+  return ids;
 }
 
 }  // namespace
@@ -126,6 +158,8 @@ SanitizeResult Sanitizer::run() {
   }
   if (result_.status == ImportStatus::Ok && !sawRoot_)
     fail(ImportStatus::InvalidDocument, FB_TR("ImportError", "no <svg> element found"));
+  if (result_.status == ImportStatus::Ok && !firstNumberDrop_.empty() && result_.shapeCount == 0)
+    fail(ImportStatus::InvalidNumber, std::move(firstNumberDrop_));  // nothing drawable left
   writer_.writeEndDocument();
   result_.warnings = std::move(located_);
   for (auto& [text, repeated] : warnings_) {
@@ -149,23 +183,21 @@ void Sanitizer::recordRoot(const QXmlStreamAttributes& attributes) {
   root.preserveAspectRatio = attributes.value(QStringLiteral("preserveAspectRatio")).toString();
 }
 
-bool Sanitizer::checkNumbers(QStringView tag, const QXmlStreamAttributes& attributes) {
+Message Sanitizer::numberProblem(QStringView tag, const QXmlStreamAttributes& attributes) const {
   for (const QXmlStreamAttribute& a : attributes) {
     if (!a.namespaceUri().isEmpty() || !isGeometryAttribute(a.name())) continue;
     if (const std::optional<NonFiniteNumber> bad = firstNonFiniteNumber(a.value())) {
       const QString id = attributes.value(QStringLiteral("id")).toString();
-      fail(ImportStatus::InvalidNumber,
-           Message(bad->notANumber
-                       ? FB_TR("ImportError", "line %1: <%2> attribute %3 contains a value that is not a number (%4)")
-                       : FB_TR("ImportError", "line %1: <%2> attribute %3 contains a number beyond 1e300 (%4)"))
-               .arg(static_cast<long long>(reader_.lineNumber()))
-               .arg(tag.toString().toStdString() + (id.isEmpty() ? "" : " id=\"" + id.toStdString() + "\""))
-               .arg(a.name().toString().toStdString())
-               .arg(bad->token));
-      return false;
+      return Message(bad->notANumber
+                         ? FB_TR("ImportError", "line %1: <%2> attribute %3 contains a value that is not a number (%4)")
+                         : FB_TR("ImportError", "line %1: <%2> attribute %3 contains a number beyond 1e300 (%4)"))
+          .arg(static_cast<long long>(reader_.lineNumber()))
+          .arg(tag.toString().toStdString() + (id.isEmpty() ? "" : " id=\"" + id.toStdString() + "\""))
+          .arg(a.name().toString().toStdString())
+          .arg(bad->token);
     }
   }
-  return true;
+  return {};
 }
 
 QXmlStreamAttributes Sanitizer::cleanAttributes(QStringView tag) {
@@ -344,7 +376,11 @@ void Sanitizer::writeNestedSvgAsGroup(const QXmlStreamAttributes& attributes) {
   }
   writer_.writeStartElement(reader_.namespaceUri().toString(), QStringLiteral("g"));
   writer_.writeAttributes(kept);
-  writer_.writeAttribute(QStringLiteral("transform"), nestedViewportTransform(nested, result_.root, dpi_));
+  QSizeF inner;
+  writer_.writeAttribute(QStringLiteral("transform"),
+                         nestedViewportTransform(nested, viewport_.width, viewport_.height, dpi_, &inner));
+  outerViewports_.emplace_back(depth_, viewport_);
+  viewport_ = {inner.width(), inner.height()};
 }
 
 void Sanitizer::startElement() {
@@ -371,12 +407,34 @@ void Sanitizer::startElement() {
     recordRoot(reader_.attributes());
     setViewport();
   }
+  // Inside a gradient only <stop> (and animation) belongs: Qt SVG would draw anything else.
+  const bool inGradient = gradientDepth_ > 0 && depth_ == gradientDepth_ + 1 && tag != u"stop" &&
+                          tag != u"animate" && tag != u"set";
+  if (depth_ > 1 && (isNeverRendered(tag) || inGradient || !isSvgNamespace(reader_.namespaceUri()))) {
+    if (tag == u"pattern") warn(FB_TR("ImportWarning", "pattern fills are drawn as outlines, without the pattern"));
+    skipDepth_ = depth_;
+    return;
+  }
   const QXmlStreamAttributes cleaned = cleanAttributes(tag);
-  if (!checkNumbers(tag, cleaned)) return;
-  // Not drawn, as SVG says: a marker without an id, zero-size shapes.
+  // A non-finite number: the root refuses the file; any other element is dropped (the file is
+  // refused at the end only when nothing drawable is left).
+  if (Message bad = numberProblem(tag, cleaned); !bad.empty()) {
+    if (depth_ == 1) return fail(ImportStatus::InvalidNumber, std::move(bad));
+    if (firstNumberDrop_.empty()) firstNumberDrop_ = bad;
+    located_.push_back(FB_TR("ImportWarning", "%1: the element is not drawn").arg(std::move(bad)));
+    skipDepth_ = depth_;
+    return;
+  }
+  // Not drawn, as SVG says: a marker without an id, zero-size shapes, path data whose first
+  // command is not a moveto.
   const QXmlStreamAttributes attributes = rewriteAttributes(tag, cleaned);
+  const QString badStart = tag == u"path" ? badFirstCommand(attributes.value(QStringLiteral("d"))) : QString();
+  if (!badStart.isEmpty())
+    warnAt(attributes, FB_TR("ImportWarning", "attribute d: path data begins with \"%1\", not a moveto (M or m): "
+                                              "in error from its first command, nothing drawn")
+                           .arg(badStart.toStdString()));
   if ((tag == u"marker" && !markers_.count(attributes.value(QStringLiteral("id")).toString())) ||
-      isZeroSizeShape(tag, attributes)) {
+      isZeroSizeShape(tag, attributes) || !badStart.isEmpty()) {
     fontSizes_.pop_back();
     skipDepth_ = depth_;
     return;
@@ -398,6 +456,7 @@ void Sanitizer::startElement() {
     writeSentinel(index);
   }
   if (isShape(tag)) ++result_.shapeCount;
+  if (tag == u"linearGradient" || tag == u"radialGradient") gradientDepth_ = depth_;
   inStyle_ = tag == u"style";
   writeNamespaces();
   if (depth_ > 1 && tag == u"svg") return writeNestedSvgAsGroup(attributes);
@@ -418,6 +477,11 @@ void Sanitizer::endElement() {
     return;
   }
   if (depth_ == markerContentDepth_) markerContentDepth_ = 0;
+  if (depth_ == gradientDepth_) gradientDepth_ = 0;
+  if (!outerViewports_.empty() && outerViewports_.back().first == depth_) {
+    viewport_ = outerViewports_.back().second;
+    outerViewports_.pop_back();
+  }
   --depth_;
   inStyle_ = false;
   if (result_.status != ImportStatus::Ok) return;
@@ -464,6 +528,8 @@ SanitizeResult sanitizeSvg(QIODevice& input, double dpi,
   detail::Sanitizer sanitizer(input, dpi, progress, std::move(symbols), std::move(markers));
   sanitizer.setMarkerSheet(std::move(sheet));
   sanitizer.setRectStyled(rectStyled);
+  if (const auto* buffer = qobject_cast<const QBuffer*>(&input))
+    sanitizer.setPatternIds(detail::scanPatternIds(buffer->data()));
   return sanitizer.run();
 }
 

@@ -1,8 +1,10 @@
 // The Sanitizer's rewrites for browser fidelity (symbols, lengths, transform-origin, path data
 // errors, unsupported features) and the number checks; see svg_rewrite.hpp.
 #include <QRectF>
+#include <QRegularExpression>
 
 #include "path_data.hpp"
+#include "svg_lengths.hpp"
 #include "sanitizer.hpp"
 
 namespace fivebar::svg {
@@ -22,15 +24,19 @@ void Sanitizer::setViewport() {
   viewport_ = {side(root.width), side(root.height)};
 }
 
-// Lengths Qt 6.4 misreads, made user units; transform-origin folded into transform.
+// Lengths Qt 6.4 misreads (units, em/ex, % on the wrong axis: svg_lengths.hpp), made user units;
+// transform-origin folded into transform.
 QXmlStreamAttributes Sanitizer::rewriteAttributes(QStringView tag,
                                                   const QXmlStreamAttributes& attributes) {
   const double parentFont = fontSizes_.empty() ? 16.0 : fontSizes_.back();
   double font = parentFont;
-  if (const QStringView f = attributes.value(QStringLiteral("font-size")); !f.isEmpty())
-    font = fontSizeUser(f, parentFont, dpi_).value_or(parentFont);
+  QStringView fontText = attributes.value(QStringLiteral("font-size"));
+  const QString styleFont = styleValue(attributes.value(QStringLiteral("style")), u"font-size");
+  if (!styleFont.isEmpty()) fontText = styleFont;
+  if (!fontText.isEmpty()) font = fontSizeUser(fontText, parentFont, dpi_).value_or(parentFont);
   fontSizes_.push_back(font);
   const bool text = tag == u"text" || tag == u"tspan";
+  const bool root = depth_ == 1;  // its size is the page's (svg_units.hpp computePage)
   // Most elements need nothing: find out without copying a value.
   bool needed = tag == u"ellipse";
   for (const QXmlStreamAttribute& a : attributes) {
@@ -39,10 +45,12 @@ QXmlStreamAttributes Sanitizer::rewriteAttributes(QStringView tag,
     const QStringView n = a.name(), v = a.value();
     needed = n == u"transform-origin" || v.contains(u"vw") || v.contains(u"vh") ||
              v.contains(u"vmin") || v.contains(u"vmax") ||
-             (text && (n == u"x" || n == u"dx" || n == u"y" || n == u"dy") && !v.isEmpty() &&
-              !v.back().isDigit() && v.back() != u'.');
+             (!root && hasLengthUnit(v) && (n == u"font-size" || lengthAttributeAxis(tag, n))) ||
+             (text && (n == u"x" || n == u"dx" || n == u"y" || n == u"dy") && hasLengthUnit(v)) ||
+             (!patternIds_.isEmpty() && (n == u"fill" || n == u"style") && v.contains(u"url("));
   }
   if (!needed) return attributes;
+  const LengthContext lengths{viewport_, font, dpi_};
   QXmlStreamAttributes out;
   out.reserve(attributes.size());
   QString origin;
@@ -58,6 +66,20 @@ QXmlStreamAttributes Sanitizer::rewriteAttributes(QStringView tag,
       continue;
     }
     if (const std::optional<QString> v = resolveViewportUnits(value, viewport_)) value = *v;
+    if (!patternIds_.isEmpty() && n == u"fill") value = withoutPatternPaint(value);
+    if (!patternIds_.isEmpty() && n == u"style" && value.contains(u"url(")) {
+      QStringList declarations = value.split(u';');
+      for (QString& d : declarations)
+        if (const qsizetype colon = d.indexOf(u':'); colon > 0 && d.left(colon).trimmed() == u"fill")
+          d = QStringLiteral("fill:") + withoutPatternPaint(d.mid(colon + 1));
+      value = declarations.join(u';');
+    }
+    if (!root && hasLengthUnit(value)) {
+      if (n == u"font-size") value = QString::number(font, 'g', 17);
+      else if (const std::optional<LengthAxis> axis = lengthAttributeAxis(tag, n))
+        if (const std::optional<double> v = resolveLength(value, *axis, lengths))
+          value = QString::number(*v, 'g', 17);
+    }
     if (text && (n == u"x" || n == u"dx" || n == u"y" || n == u"dy")) {
       const double reference = (n == u"x" || n == u"dx") ? viewport_.width : viewport_.height;
       if (const std::optional<QString> v = resolveTextLengths(value, reference, font, dpi_)) value = *v;
@@ -84,6 +106,15 @@ QXmlStreamAttributes Sanitizer::rewriteAttributes(QStringView tag,
     }
   }
   return out;
+}
+
+QString Sanitizer::withoutPatternPaint(const QString& paint) const {
+  static const QRegularExpression url(
+      QStringLiteral("^\\s*url\\(\\s*['\"]?#([^'\")\\s]+)['\"]?\\s*\\)\\s*(.*)$"));
+  const QRegularExpressionMatch m = url.match(paint);
+  if (!m.hasMatch() || !patternIds_.contains(m.captured(1))) return paint;
+  const QString fallback = m.captured(2).trimmed();
+  return fallback.isEmpty() || fallback == u"none" ? QStringLiteral("black") : fallback;
 }
 
 // Features not drawn: each is named once per file with its first line.
@@ -186,7 +217,8 @@ void Sanitizer::pushMarkerState(QStringView tag, const QXmlStreamAttributes& att
         if (marker->second.clips)
           warn(FB_TR("ImportWarning", "marker overflow clipping not applied: marker content is drawn whole"));
         if (const std::optional<QString> t =
-                markerInstanceTransform(marker->second, vertices[i], slot, state.strokeWidth)) {
+                markerInstanceTransform(marker->second, vertices[i], slot, state.strokeWidth,
+                                        LengthContext{viewport_, fontSizes_.back(), dpi_})) {
           state.instances.emplace_back(id, *t);
           ++markerInstances_;
         }
