@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dashes.hpp"
 #include "flatten.hpp"
 
 namespace fivebar::svg {
@@ -172,6 +173,11 @@ bool CaptureEngine::admit(const Signature& signature, const Paint& paint,
       pendingLines_.clear();
       filled = true;
       rule = pendingRule_;
+    }
+    if (const std::optional<DashPattern> dash =
+            settings_.dashes ? dashPatternOf(painter()->pen()) : std::nullopt) {
+      lines = applyDashes(lines, *dash, signature.transform);
+      filled = false;  // dashes are no rings: a dashed filled shape is not hatched
     }
     if (filled) markFill(lines, rule, false);
     flushPending();

@@ -39,6 +39,7 @@ struct CapturedRun {
 struct CaptureSettings {
   double toleranceMm = 0.05;
   bool outlineFills = true;
+  bool dashes = true;  // dashed strokes drawn as their dashes (dashes.hpp); false: solid
   std::function<void(long long shapesPainted)> onShape;  // progress hook, may be empty
   const std::atomic<bool>* cancel = nullptr;             // when raised, further shapes are ignored
   // Points recorded at most (0 = no limit): past it further shapes are ignored and

@@ -171,6 +171,7 @@ std::string render(SanitizeResult& clean, const PageSetup& page, const ImportOpt
   CaptureSettings settings;
   settings.toleranceMm = o.toleranceMm;
   settings.outlineFills = o.outlineFills;
+  settings.dashes = o.dashes == DashMode::Dashed;
   settings.cancel = o.cancel;
   settings.maxPoints = o.maxPoints;
   const double shapes = static_cast<double>(std::max<long long>(1, clean.shapeCount));

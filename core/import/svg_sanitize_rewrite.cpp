@@ -47,7 +47,8 @@ QXmlStreamAttributes Sanitizer::rewriteAttributes(QStringView tag,
              v.contains(u"vmin") || v.contains(u"vmax") ||
              (!root && hasLengthUnit(v) && (n == u"font-size" || lengthAttributeAxis(tag, n))) ||
              (text && (n == u"x" || n == u"dx" || n == u"y" || n == u"dy") && hasLengthUnit(v)) ||
-             (!patternIds_.isEmpty() && (n == u"fill" || n == u"style") && v.contains(u"url("));
+             (!patternIds_.isEmpty() && (n == u"fill" || n == u"style") && v.contains(u"url(")) ||
+             ((n == u"stroke-dasharray" || n == u"stroke-dashoffset") && hasLengthUnit(v));
   }
   if (!needed) return attributes;
   const LengthContext lengths{viewport_, font, dpi_};
@@ -73,6 +74,18 @@ QXmlStreamAttributes Sanitizer::rewriteAttributes(QStringView tag,
         if (const qsizetype colon = d.indexOf(u':'); colon > 0 && d.left(colon).trimmed() == u"fill")
           d = QStringLiteral("fill:") + withoutPatternPaint(d.mid(colon + 1));
       value = declarations.join(u';');
+    }
+    if ((n == u"stroke-dasharray" || n == u"stroke-dashoffset") && hasLengthUnit(value)) {
+      // Qt SVG reads plain numbers only; % of the normalised diagonal (SVG 2).
+      static const QRegularExpression separators(QStringLiteral("[\\s,]+"));
+      QStringList parts = value.trimmed().split(separators, Qt::SkipEmptyParts);
+      bool all = !parts.isEmpty();
+      for (QString& part : parts) {
+        const std::optional<double> v = resolveLength(part, LengthAxis::Diagonal, lengths);
+        all = all && v.has_value();
+        if (v) part = QString::number(*v, 'g', 17);
+      }
+      if (all) value = parts.join(u' ');
     }
     if (!root && hasLengthUnit(value)) {
       if (n == u"font-size") value = QString::number(font, 'g', 17);
