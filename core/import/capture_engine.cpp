@@ -139,14 +139,77 @@ CaptureEngine::Paint CaptureEngine::currentPaint() const {
 
 void CaptureEngine::record(std::vector<Polyline>&& lines, std::uint32_t rgb) {
   if (lines.empty()) return;
-  if (runs_.empty() || runs_.back().topIndex != topIndex_ || runs_.back().rgb != rgb)
-    runs_.push_back(CapturedRun{topIndex_, rgb, {}});
-  auto& paths = runs_.back().paths;
-  for (Polyline& line : lines) {
-    points_ += line.points.size();
-    paths.push_back(std::move(line));
-  }
+  for (const Polyline& line : lines) points_ += line.points.size();
+  store(CapturedRun{topIndex_, rgb, std::move(lines)});
   if (settings_.maxPoints > 0 && points_ > settings_.maxPoints) overBudget_ = true;
+}
+
+void CaptureEngine::store(CapturedRun&& run) {
+  if (run.paths.empty()) return;
+  std::vector<CapturedRun>& runs = clipBuffers_.empty() ? runs_ : clipBuffers_.back();
+  if (runs.empty() || runs.back().topIndex != run.topIndex || runs.back().rgb != run.rgb) {
+    runs.push_back(std::move(run));
+    return;
+  }
+  auto& paths = runs.back().paths;
+  paths.insert(paths.end(), std::make_move_iterator(run.paths.begin()),
+               std::make_move_iterator(run.paths.end()));
+}
+
+bool CaptureEngine::collectClip(std::vector<Polyline>&& rings, FillRule rule) {
+  if (!collecting_) return false;
+  ClipShape shape;
+  shape.rule = rule == FillRule::EvenOdd ? FillRule::EvenOdd : FillRule::NonZero;
+  for (Polyline& ring : rings)
+    if (ring.points.size() > 2) shape.rings.push_back(std::move(ring.points));
+  if (!shape.rings.empty()) clipShapes_.push_back(std::move(shape));
+  return true;
+}
+
+void CaptureEngine::clipCommand(std::uint32_t command) {
+  flushPending();
+  if (command == kClipBegin) {
+    clipBuffers_.emplace_back();
+    return;
+  }
+  if (command == kClipShapesUser || command == kClipShapesBox) {
+    collecting_ = true;
+    collectBox_ = command == kClipShapesBox;
+    clipSpace_ = painter()->combinedTransform();
+    clipShapes_.clear();
+    return;
+  }
+  if (command != kClipApply || clipBuffers_.empty()) return;
+  collecting_ = false;
+  std::vector<CapturedRun> runs = std::move(clipBuffers_.back());
+  clipBuffers_.pop_back();
+  std::vector<ClipShape> shapes = std::move(clipShapes_);
+  clipShapes_.clear();
+  if (collectBox_) {  // unit square -> the buffered lines' bounding box in the clip's user space
+    bool invertible = false;
+    const QTransform userFromPage = clipSpace_.inverted(&invertible);
+    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+    for (const CapturedRun& run : runs)
+      for (const Polyline& line : run.paths)
+        for (const Vec2& p : line.points) {
+          const QPointF u = userFromPage.map(QPointF(p.x(), p.y()));
+          x0 = std::min(x0, u.x()), y0 = std::min(y0, u.y());
+          x1 = std::max(x1, u.x()), y1 = std::max(y1, u.y());
+        }
+    if (!invertible || !(x1 > x0) || !(y1 > y0)) shapes.clear();  // no box: nothing shows
+    const QTransform pageFromBox = QTransform(x1 - x0, 0, 0, y1 - y0, x0, y0) * clipSpace_;
+    for (ClipShape& shape : shapes)
+      for (auto& ring : shape.rings)
+        for (Vec2& p : ring) {
+          const QPointF u = userFromPage.map(QPointF(p.x(), p.y()));
+          const QPointF q = pageFromBox.map(u);
+          p = Vec2(q.x(), q.y());
+        }
+  }
+  for (CapturedRun& run : runs) {
+    run.paths = clipLines(std::move(run.paths), shapes);
+    store(std::move(run));
+  }
 }
 
 void CaptureEngine::flushPending() {
@@ -195,6 +258,12 @@ bool CaptureEngine::admit(const Signature& signature, const Paint& paint,
 }
 
 void CaptureEngine::drawPath(const QPainterPath& path) {
+  if (collecting_) {
+    std::vector<Polyline> rings;
+    appendFlattenedPath(path, painter()->combinedTransform(), clipTolerance(), rings);
+    collectClip(std::move(rings), path.fillRule() == Qt::WindingFill ? FillRule::NonZero : FillRule::EvenOdd);
+    return;
+  }
   const Paint paint = currentPaint();
   if (cancelled() || (!paint.stroke && !paint.fill)) return flushPending();
   const QTransform t = painter()->combinedTransform();
@@ -211,6 +280,14 @@ void CaptureEngine::drawPath(const QPainterPath& path) {
 }
 
 void CaptureEngine::drawPolygon(const QPointF* points, int count, PolygonDrawMode mode) {
+  if (collecting_) {
+    const QTransform t = painter()->combinedTransform();
+    Polyline ring;
+    for (int i = 0; i < count; ++i) ring.points.push_back(mapped(t, points[i].x(), points[i].y()));
+    std::vector<Polyline> rings{std::move(ring)};
+    collectClip(std::move(rings), mode == OddEvenMode ? FillRule::EvenOdd : FillRule::NonZero);
+    return;
+  }
   Paint paint = currentPaint();
   // QPainter::drawPolyline strokes only: its brush paints nothing.
   if (mode == PolylineMode) paint.fill = false;
@@ -237,6 +314,8 @@ void CaptureEngine::drawPolygon(const QPointF* points, int count, PolygonDrawMod
 void CaptureEngine::drawLines(const QLineF* lines, int count) {
   const QPainter* p = painter();
   const QPen& pen = p->pen();
+  if (count == 1 && pen.widthF() == kClipSentinelPenWidth) return clipCommand(rgbOf(pen.brush()));
+  if (collecting_) return;  // lines enclose no area
   if (count == 1 && pen.widthF() == kSentinelPenWidth) {
     flushPending();
     topIndex_ = static_cast<int>(rgbOf(pen.brush())) - 1;  // sentinel colour = index + 1
@@ -261,6 +340,18 @@ void CaptureEngine::drawLines(const QLineF* lines, int count) {
 }
 
 void CaptureEngine::drawRects(const QRectF* rects, int count) {
+  if (collecting_) {
+    const QTransform t = painter()->combinedTransform();
+    for (int i = 0; i < count; ++i) {
+      const QRectF& r = rects[i];
+      Polyline ring;
+      ring.points = {mapped(t, r.left(), r.top()), mapped(t, r.right(), r.top()),
+                     mapped(t, r.right(), r.bottom()), mapped(t, r.left(), r.bottom())};
+      std::vector<Polyline> rings{std::move(ring)};
+      collectClip(std::move(rings), FillRule::NonZero);
+    }
+    return;
+  }
   const Paint paint = currentPaint();
   if (cancelled() || (!paint.stroke && !paint.fill)) return flushPending();
   const QTransform t = painter()->combinedTransform();
@@ -283,6 +374,17 @@ void CaptureEngine::drawRects(const QRectF* rects, int count) {
 }
 
 void CaptureEngine::drawEllipse(const QRectF& rect) {
+  if (collecting_) {
+    const QTransform t = painter()->combinedTransform();
+    const QPointF c = rect.center();
+    const Vec2 centre = mapped(t, c.x(), c.y());
+    Polyline ring;
+    flattenEllipse(centre, mapped(t, c.x() + 0.5 * rect.width(), c.y()) - centre,
+                   mapped(t, c.x(), c.y() + 0.5 * rect.height()) - centre, clipTolerance(), ring.points);
+    std::vector<Polyline> rings{std::move(ring)};
+    collectClip(std::move(rings), FillRule::NonZero);
+    return;
+  }
   const Paint paint = currentPaint();
   if (cancelled() || (!paint.stroke && !paint.fill)) return flushPending();
   const QTransform t = painter()->combinedTransform();
@@ -309,6 +411,12 @@ void CaptureEngine::drawTextItem(const QPointF& p, const QTextItem& textItem) {
 
 std::vector<CapturedRun> CaptureEngine::takeRuns() {
   flushPending();
+  collecting_ = false;
+  while (!clipBuffers_.empty()) {  // a Begin without Apply (cannot happen): unclipped
+    std::vector<CapturedRun> runs = std::move(clipBuffers_.back());
+    clipBuffers_.pop_back();
+    for (CapturedRun& run : runs) store(std::move(run));
+  }
   return std::move(runs_);
 }
 

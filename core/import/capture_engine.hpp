@@ -23,11 +23,20 @@
 #include <memory>
 #include <vector>
 
+#include "clip.hpp"
 #include "core/planning/drawing.hpp"
 
 namespace fivebar::svg {
 
 inline constexpr double kSentinelPenWidth = 0.0009765625;  // 2^-10: exact in text and binary
+
+// Clip paths (svg_sanitize_clip.cpp writes them, clip.hpp cuts): sentinel <line>s of stroke width
+// 2^-11 whose stroke colour is the command. Begin: what follows is recorded into a buffer of its
+// own; ShapesUser/ShapesBox: the shapes drawn until Apply are the clip region (their geometry
+// only, whatever their paint), in the current user space or in its objectBoundingBox units of
+// the buffered lines; Apply: the buffer is cut by the region and handed to the enclosing level.
+inline constexpr double kClipSentinelPenWidth = 0.00048828125;  // 2^-11
+enum ClipCommand : std::uint32_t { kClipBegin = 1, kClipShapesUser = 2, kClipShapesBox = 3, kClipApply = 4 };
 
 // Consecutive polylines painted by one top-level element in one colour.
 struct CapturedRun {
@@ -95,7 +104,12 @@ class CaptureEngine final : public QPaintEngine {
   bool admit(const Signature& signature, const Paint& paint, std::vector<Polyline>&& lines,
              FillRule rule);
   void record(std::vector<Polyline>&& lines, std::uint32_t rgb);
+  void store(CapturedRun&& run);  // into the innermost clip buffer, else the result
   void flushPending();
+  void clipCommand(std::uint32_t command);
+  // While collecting a clip region: takes the shape's rings (closed) and returns true.
+  bool collectClip(std::vector<Polyline>&& rings, FillRule rule);
+  double clipTolerance() const { return collectBox_ ? 1e-3 * settings_.toleranceMm : settings_.toleranceMm; }
   bool cancelled() const { return overBudget_ || (settings_.cancel && settings_.cancel->load()); }
 
   CaptureSettings settings_;
@@ -109,6 +123,11 @@ class CaptureEngine final : public QPaintEngine {
   std::vector<Polyline> pendingLines_;
   std::uint32_t pendingRgb_ = 0;
   FillRule pendingRule_ = FillRule::NonZero;
+  std::vector<std::vector<CapturedRun>> clipBuffers_;  // one per open Begin
+  bool collecting_ = false;  // between Shapes and Apply
+  bool collectBox_ = false;  // objectBoundingBox units
+  QTransform clipSpace_;     // page from the user space the clip was referenced in
+  std::vector<ClipShape> clipShapes_;
 };
 
 // The paint device handed to QPainter; size in device units (= mm after the render mapping).

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "capture_engine.hpp"
 #include "svg_markers.hpp"
 #include "svg_rewrite.hpp"
 #include "svg_sanitize.hpp"
@@ -96,6 +97,7 @@ class Sanitizer {
   // The document's <pattern> ids: a fill referring to one is drawn as its fallback colour (else
   // black), so that the outline the warning promises is drawn (the pattern itself is dropped).
   void setPatternIds(QSet<QString> ids) { patternIds_ = std::move(ids); }
+  void setClipPaths(std::map<QString, ClipPathInfo> clips) { clipPaths_ = std::move(clips); }
 
  private:
   struct MarkerState {
@@ -110,6 +112,20 @@ class Sanitizer {
   std::size_t markerInstances_ = 0;        // written so far (bounded)
   bool rectStyled_ = false;
   QSet<QString> patternIds_;
+  // Clip paths (svg_sanitize_clip.cpp).
+  struct ClipTail {
+    std::vector<QString> ids;  // the element's clip path, then the one clipping that, ...
+    QString transform;         // the element's transform (the clip's user space)
+  };
+  void writeClipSentinel(std::uint32_t command);
+  bool writeClipPathDefinition(QStringView tag, const QXmlStreamAttributes& attributes);
+  QXmlStreamAttributes clipContentAttributes(const QXmlStreamAttributes& attributes) const;
+  void beginClip(const QXmlStreamAttributes& attributes);
+  void endClip();
+  std::map<QString, ClipPathInfo> clipPaths_;
+  std::vector<ClipTail> clipTails_;  // one per open written element
+  int clipContentDepth_ = 0;         // > 0 inside a <clipPath>: its depth
+  QString clipContentRule_;          // the clipPath's clip-rule
   QString withoutPatternPaint(const QString& paint) const;  // fill value; unchanged if no pattern
 };
 

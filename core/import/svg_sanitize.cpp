@@ -410,7 +410,10 @@ void Sanitizer::startElement() {
   // Inside a gradient only <stop> (and animation) belongs: Qt SVG would draw anything else.
   const bool inGradient = gradientDepth_ > 0 && depth_ == gradientDepth_ + 1 && tag != u"stop" &&
                           tag != u"animate" && tag != u"set";
-  if (depth_ > 1 && (isNeverRendered(tag) || inGradient || !isSvgNamespace(reader_.namespaceUri()))) {
+  const bool clipDefinition =
+      tag == u"clipPath" && clipPaths_.count(reader_.attributes().value(QStringLiteral("id")).toString());
+  if (depth_ > 1 && ((isNeverRendered(tag) && !clipDefinition) || inGradient ||
+                     !isSvgNamespace(reader_.namespaceUri()))) {
     if (tag == u"pattern") warn(FB_TR("ImportWarning", "pattern fills are drawn as outlines, without the pattern"));
     skipDepth_ = depth_;
     return;
@@ -427,7 +430,8 @@ void Sanitizer::startElement() {
   }
   // Not drawn, as SVG says: a marker without an id, zero-size shapes, path data whose first
   // command is not a moveto.
-  const QXmlStreamAttributes attributes = rewriteAttributes(tag, cleaned);
+  QXmlStreamAttributes attributes = rewriteAttributes(tag, cleaned);
+  if (clipContentDepth_ > 0) attributes = clipContentAttributes(attributes);
   const QString badStart = tag == u"path" ? badFirstCommand(attributes.value(QStringLiteral("d"))) : QString();
   if (!badStart.isEmpty())
     warnAt(attributes, FB_TR("ImportWarning", "attribute d: path data begins with \"%1\", not a moveto (M or m): "
@@ -458,9 +462,12 @@ void Sanitizer::startElement() {
   if (isShape(tag)) ++result_.shapeCount;
   if (tag == u"linearGradient" || tag == u"radialGradient") gradientDepth_ = depth_;
   inStyle_ = tag == u"style";
+  beginClip(attributes);
   writeNamespaces();
   if (depth_ > 1 && tag == u"svg") return writeNestedSvgAsGroup(attributes);
-  if (writeSymbolOrUse(tag, attributes) || writeMarkerDefinition(tag, attributes)) return;
+  if (writeSymbolOrUse(tag, attributes) || writeMarkerDefinition(tag, attributes) ||
+      writeClipPathDefinition(tag, attributes))
+    return;
   if (tag == u"rect" && writeRoundedRect(attributes)) return;
   writer_.writeStartElement(reader_.namespaceUri().toString(), tag);
   if (tag == u"path") {
@@ -478,6 +485,7 @@ void Sanitizer::endElement() {
   }
   if (depth_ == markerContentDepth_) markerContentDepth_ = 0;
   if (depth_ == gradientDepth_) gradientDepth_ = 0;
+  if (depth_ == clipContentDepth_) clipContentDepth_ = 0;
   if (!outerViewports_.empty() && outerViewports_.back().first == depth_) {
     viewport_ = outerViewports_.back().second;
     outerViewports_.pop_back();
@@ -490,6 +498,7 @@ void Sanitizer::endElement() {
   for (int i = 0; i < extraEnds_.back(); ++i) writer_.writeEndElement();
   extraEnds_.pop_back();
   writeMarkerInstances();
+  endClip();
   markerStates_.pop_back();
   fontSizes_.pop_back();
 }
@@ -530,6 +539,8 @@ SanitizeResult sanitizeSvg(QIODevice& input, double dpi,
   sanitizer.setRectStyled(rectStyled);
   if (const auto* buffer = qobject_cast<const QBuffer*>(&input))
     sanitizer.setPatternIds(detail::scanPatternIds(buffer->data()));
+  if (const auto* buffer = qobject_cast<const QBuffer*>(&input))
+    sanitizer.setClipPaths(scanClipPaths(buffer->data()));
   return sanitizer.run();
 }
 

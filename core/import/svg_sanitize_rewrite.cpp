@@ -132,21 +132,18 @@ QString Sanitizer::withoutPatternPaint(const QString& paint) const {
 
 // Features not drawn: each is named once per file with its first line.
 void Sanitizer::warnUnsupported(QStringView tag, const QXmlStreamAttributes& attributes) {
-  bool clip = false, mask = false, rotate = false;
+  bool mask = false, rotate = false;
   for (const QXmlStreamAttribute& a : attributes) {
     if (!a.namespaceUri().isEmpty()) continue;
     const QStringView n = a.name();
     if (n == u"style") {
       const QStringView style = a.value();
-      clip = clip || style.contains(u"clip-path");
       mask = mask || style.contains(u"mask");
       if (style.contains(u"transform-origin")) warn(FB_TR("ImportWarning", "transform-origin in a style is not applied"));
     }
-    clip = clip || n == u"clip-path";
     mask = mask || n == u"mask";
     rotate = rotate || n == u"rotate";
   }
-  if (clip) warn(FB_TR("ImportWarning", "clip-path not applied: clipped shapes are drawn whole"));
   if (mask) warn(FB_TR("ImportWarning", "mask not applied: masked shapes are drawn whole"));
   if (rotate && (tag == u"text" || tag == u"tspan"))
     warn(FB_TR("ImportWarning", "per-glyph rotate on <text> is not applied: glyphs are drawn upright"));
