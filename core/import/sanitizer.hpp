@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -116,11 +117,16 @@ class Sanitizer {
   struct ClipTail {
     std::vector<QString> ids;  // the element's clip path, then the one clipping that, ...
     QString transform;         // the element's transform (the clip's user space)
+    std::optional<QRectF> viewport;  // a nested <svg>'s or a used <symbol>'s viewport (overflow hidden)
+    bool wrapped = false;            // inside a <g id> that took the element's id (for <use>)
   };
+  std::optional<QRectF> clippedViewport(const QXmlStreamAttributes& attributes) const;
   void writeClipSentinel(std::uint32_t command);
   bool writeClipPathDefinition(QStringView tag, const QXmlStreamAttributes& attributes);
   QXmlStreamAttributes clipContentAttributes(const QXmlStreamAttributes& attributes) const;
-  void beginClip(const QXmlStreamAttributes& attributes);
+  // Writes what comes before a clipped element; moves its id onto a wrapping <g> (so that a <use>
+  // of it replays the clip too).
+  void beginClip(QXmlStreamAttributes& attributes);
   void endClip();
   std::map<QString, ClipPathInfo> clipPaths_;
   std::vector<ClipTail> clipTails_;  // one per open written element

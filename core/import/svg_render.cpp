@@ -13,6 +13,7 @@
 #include <limits>
 
 #include "capture_engine.hpp"
+#include "clip.hpp"
 #include "fast_import.hpp"
 #include "import_pipeline.hpp"
 #include "layers.hpp"
@@ -126,6 +127,30 @@ Message dropAbsurdLines(std::vector<CapturedRun>& runs, const std::vector<TopLev
   }
   if (!first.empty()) std::erase_if(runs, [](const CapturedRun& run) { return run.paths.empty(); });
   return first;
+}
+
+// The page is the root viewport: a browser shows nothing outside it (a viewBox not at the
+// origin, "slice", content beyond the size). Lines reaching outside are cut at its edge (clip.hpp),
+// with one warning; a page of unknown size (the drawing's extent) cuts nothing.
+void clipToPage(std::vector<CapturedRun>& runs, const PageSetup& page, std::vector<Message>& warnings) {
+  if (!page.sizeKnown || !(page.widthMm > 0.0) || !(page.heightMm > 0.0)) return;
+  constexpr double kEdgeMm = 1e-9;
+  const double w = page.widthMm, h = page.heightMm;
+  auto outside = [&](const Polyline& line) {
+    return std::any_of(line.points.begin(), line.points.end(), [&](const Vec2& p) {
+      return p.x() < -kEdgeMm || p.y() < -kEdgeMm || p.x() > w + kEdgeMm || p.y() > h + kEdgeMm;
+    });
+  };
+  const std::vector<ClipShape> pageRect{{{{Vec2(0, 0), Vec2(w, 0), Vec2(w, h), Vec2(0, h)}}, FillRule::NonZero}};
+  bool cut = false;
+  for (CapturedRun& run : runs) {
+    if (std::none_of(run.paths.begin(), run.paths.end(), outside)) continue;
+    cut = true;
+    run.paths = clipLines(std::move(run.paths), pageRect);
+  }
+  if (!cut) return;
+  std::erase_if(runs, [](const CapturedRun& run) { return run.paths.empty(); });
+  warnings.push_back(FB_TR("ImportWarning", "lines outside the page (the SVG viewport) are not drawn: cut at its edge"));
 }
 
 // Scales for forced page sizes (uniform, fitted and centred when both are forced), then flips
@@ -278,6 +303,7 @@ ImportResult finishImport(Capture&& capture, const QString& source, const Import
   }
   result.warnings = std::move(capture.warnings);
   Message absurd = dropAbsurdLines(capture.runs, capture.topLevel, o.maxCoordinateMm, result.warnings);
+  if (absurd.empty()) clipToPage(capture.runs, capture.page, result.warnings);
   Drawing& drawing = result.drawing;
   drawing.source = source.toStdString();
   drawing.layers = buildLayers(std::move(capture.runs), capture.topLevel, o.layerMode);

@@ -96,7 +96,7 @@ QXmlStreamAttributes Sanitizer::clipContentAttributes(const QXmlStreamAttributes
   return out;
 }
 
-void Sanitizer::beginClip(const QXmlStreamAttributes& attributes) {
+void Sanitizer::beginClip(QXmlStreamAttributes& attributes) {
   ClipTail tail;
   if (clipContentDepth_ == 0 && reader_.name() != u"clipPath") {
     QString id = clipPathReference(attributes);
@@ -111,18 +111,56 @@ void Sanitizer::beginClip(const QXmlStreamAttributes& attributes) {
       id = clip->second.clipRef;
     }
   }
-  if (!tail.ids.empty()) {
+  if (clipContentDepth_ == 0) tail.viewport = clippedViewport(attributes);
+  if (!tail.ids.empty() || tail.viewport) {
     tail.transform = attributes.value(QStringLiteral("transform")).toString();
-    for (std::size_t i = 0; i < tail.ids.size(); ++i) writeClipSentinel(kClipBegin);
+    if (const QString id = attributes.value(QStringLiteral("id")).toString(); !id.isEmpty()) {
+      writer_.writeStartElement(svgNamespace_, QStringLiteral("g"));
+      writer_.writeAttribute(QStringLiteral("id"), id);
+      QXmlStreamAttributes rest;
+      for (const QXmlStreamAttribute& a : attributes)
+        if (!(a.name() == u"id" && a.namespaceUri().isEmpty())) rest.append(a);
+      attributes = rest;
+      tail.wrapped = true;
+    }
+    for (std::size_t i = 0; i < tail.ids.size() + (tail.viewport ? 1 : 0); ++i) writeClipSentinel(kClipBegin);
   }
   clipTails_.push_back(std::move(tail));
+}
+
+// SVG clips a nested <svg> and the content of a used <symbol> to their viewport (overflow hidden,
+// their initial value): the rectangle in the element's user space. Lengths are plain numbers by
+// now (rewriteAttributes); a missing size is 100 % of the viewport.
+std::optional<QRectF> Sanitizer::clippedViewport(const QXmlStreamAttributes& attributes) const {
+  const QStringView tag = reader_.name();
+  if (!((tag == u"svg" && depth_ > 1) || tag == u"use")) return std::nullopt;
+  if (tag == u"use") {
+    const QStringView href = attributes.value(kXlinkNs, QStringLiteral("href"));
+    if (!href.startsWith(u'#') || !symbols_.count(href.mid(1).toString())) return std::nullopt;
+  }
+  auto number = [&](const char* name, double fallback) {
+    bool ok = false;
+    const double v = attributes.value(QLatin1String(name)).trimmed().toDouble(&ok);
+    return ok ? v : fallback;
+  };
+  double w = number("width", -1.0), h = number("height", -1.0);
+  if (tag == u"use") {  // the use's size, else the symbol's
+    const SymbolInfo& symbol = symbols_.at(attributes.value(kXlinkNs, QStringLiteral("href")).mid(1).toString());
+    const LengthContext lengths{viewport_, fontSizes_.empty() ? 16.0 : fontSizes_.back(), dpi_};
+    if (w < 0.0) w = resolveLength(symbol.width, LengthAxis::Width, lengths).value_or(-1.0);
+    if (h < 0.0) h = resolveLength(symbol.height, LengthAxis::Height, lengths).value_or(-1.0);
+  }
+  if (w < 0.0) w = viewport_.width;
+  if (h < 0.0) h = viewport_.height;
+  if (!(w > 0.0) || !(h > 0.0)) return std::nullopt;
+  return QRectF(number("x", 0.0), number("y", 0.0), w, h);
 }
 
 void Sanitizer::endClip() {
   if (clipTails_.empty()) return;
   const ClipTail tail = std::move(clipTails_.back());
   clipTails_.pop_back();
-  if (tail.ids.empty()) return;
+  if (tail.ids.empty() && !tail.viewport) return;
   writer_.writeStartElement(svgNamespace_, QStringLiteral("g"));
   if (!tail.transform.isEmpty()) writer_.writeAttribute(QStringLiteral("transform"), tail.transform);
   for (const QString& id : tail.ids) {
@@ -132,7 +170,20 @@ void Sanitizer::endClip() {
     writer_.writeEndElement();
     writeClipSentinel(kClipApply);
   }
+  if (const std::optional<QRectF> v = tail.viewport) {
+    writeClipSentinel(kClipShapesUser);
+    writer_.writeStartElement(svgNamespace_, QStringLiteral("rect"));
+    auto num = [](double d) { return QString::number(d, 'g', 17); };
+    writer_.writeAttribute(QStringLiteral("x"), num(v->x()));
+    writer_.writeAttribute(QStringLiteral("y"), num(v->y()));
+    writer_.writeAttribute(QStringLiteral("width"), num(v->width()));
+    writer_.writeAttribute(QStringLiteral("height"), num(v->height()));
+    writer_.writeAttribute(QStringLiteral("style"), QStringLiteral("fill:black;stroke:none;opacity:1;display:inline;visibility:visible"));
+    writer_.writeEndElement();
+    writeClipSentinel(kClipApply);
+  }
   writer_.writeEndElement();
+  if (tail.wrapped) writer_.writeEndElement();
 }
 
 }  // namespace detail

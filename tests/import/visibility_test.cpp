@@ -157,6 +157,25 @@ TEST(Numbers, AnAbsurdCoordinateDropsItsLinesWithAWarningNamingTheElement) {
   EXPECT_EQ(alone.status, ImportStatus::AbsurdCoordinates) << alone.message;
 }
 
+TEST(Visibility, NothingOutsideThePageIsDrawnAndTheCutIsWarned) {
+  // The page is 100 x 50: a line from x = -20 to 120 at y = 10 is drawn from 0 to 100.
+  const ImportResult r = importText(page("<path d=\"M-20 10 L120 10\" stroke=\"black\"/>"));
+  ASSERT_TRUE(r.ok()) << r.message;
+  ASSERT_EQ(allPaths(r.drawing).size(), 1u);
+  const Polyline line = allPaths(r.drawing)[0];
+  EXPECT_NEAR(std::min(line.points.front().x(), line.points.back().x()), 0.0, 1e-9);
+  EXPECT_NEAR(std::max(line.points.front().x(), line.points.back().x()), 100.0, 1e-9);
+  EXPECT_TRUE(warned(r, "lines outside the page (the SVG viewport) are not drawn")) << joined(r);
+  EXPECT_FALSE(warned(importText(page(kFrame)), "outside the page"));
+  // A nested <svg> clips its content to its viewport (x 10..30 here).
+  const ImportResult nested = importText(page("<svg x=\"10\" y=\"0\" width=\"20\" height=\"50\">"
+                                              "<path d=\"M-50 10 L150 10\" stroke=\"black\"/></svg>"));
+  ASSERT_TRUE(nested.ok()) << nested.message;
+  ASSERT_EQ(allPaths(nested.drawing).size(), 1u);
+  const Polyline cut = allPaths(nested.drawing)[0];
+  EXPECT_NEAR(std::abs(cut.points.back().x() - cut.points.front().x()), 20.0, 1e-9);
+}
+
 TEST(Numbers, ViewBoxNumbersFollowTheSvgNumberGrammar) {
   const NumberList list = scanNumberList(u"0 0 9E80.7");
   EXPECT_EQ(list.badAt, -1);
