@@ -49,8 +49,18 @@ void finishPolyline(Polyline& line, bool closed, std::vector<Polyline>& out) {
 void dropInvisibleStrokes(std::vector<Polyline>& lines, double extentMm) {
   const double limit2 = extentMm * extentMm;
   std::erase_if(lines, [&](const Polyline& line) {
+    const Vec2& first = line.points.front();
+    const Vec2* far = &first;
+    for (const Vec2& p : line.points) {
+      if ((p - first).squaredNorm() > limit2) return false;
+      if ((p - first).squaredNorm() > (*far - first).squaredNorm()) far = &p;
+    }
+    const Vec2 axis = *far - first;
+    const double length = axis.norm();
+    if (length == 0.0) return true;
     return std::all_of(line.points.begin(), line.points.end(), [&](const Vec2& p) {
-      return (p - line.points.front()).squaredNorm() <= limit2;
+      const Vec2 d = p - first;
+      return std::abs(axis.x() * d.y() - axis.y() * d.x()) / length <= 0.01 * extentMm;
     });
   });
 }

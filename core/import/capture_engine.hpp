@@ -151,10 +151,12 @@ class CaptureDevice final : public QPaintDevice {
 // appends it to `out` when at least two points remain (shared with the direct reader).
 void finishPolyline(Polyline& line, bool closed, std::vector<Polyline>& out);
 
-// Drops the subpaths a renderer does not show when stroked with butt caps and not filled: those
-// whose every point lies within extentMm of their first point (a zero-length subpath such as
-// "M x y a 0 0 0 1 0 0.001 0 Z" paints nothing, or a sliver no wider than the pen and no longer
-// than the tolerance). Round and square caps paint a dot: keep those (the caller decides).
+// Drops the subpaths a renderer does not show when stroked with butt caps and not filled: the
+// zero-length ones, i.e. those that enclose nothing (every point on one straight line, within
+// 1 % of extentMm) and whose every point lies within extentMm of their first point, such as
+// "M x y a 0 0 0 1 0 0.001 0 Z" (a zero-radius arc is a 0.001 line, there and back). A tiny
+// closed curve is kept: its stroke shows as a dot. Round and square caps paint a dot too: the
+// caller keeps those.
 void dropInvisibleStrokes(std::vector<Polyline>& lines, double extentMm);
 
 // A filled area is closed whatever its path data says: marks every outline of more than two

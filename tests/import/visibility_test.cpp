@@ -85,15 +85,17 @@ TEST(Visibility, InvisiblePaintDrawsNothing) {
 
 TEST(Visibility, ZeroLengthButtCappedSubpathsAreNotDrawnRoundCappedDotsAre) {
   // vpype-plotter/issue_59/halftone_*.svg: "a 0 0 ..." to a point 0.001 away and back.
-  const std::string dots = "M20 20 a 0 0 0 1 0 0.001 0 Z M30 20 l 0 0 M40 20 L60 20";
+  // A tiny closed circle (r = 0.01) encloses something: its stroke shows as a dot and is kept.
+  const std::string dots = "M20 20 a 0 0 0 1 0 0.001 0 Z M30 20 l 0 0 M40 20 L60 20 M70 20 a 0.01 0.01 0 1 0 0.001 0 Z";
   const ImportResult butt = importText(page(kFrame + "<path d=\"" + dots + "\" fill=\"none\" stroke=\"red\"/>"));
   ASSERT_TRUE(butt.ok()) << butt.message;
-  ASSERT_EQ(besidesFrame(butt).size(), 1u);  // only the real segment
+  ASSERT_EQ(besidesFrame(butt).size(), 2u);  // the real segment and the tiny circle
   EXPECT_NEAR((besidesFrame(butt)[0].points.back() - besidesFrame(butt)[0].points.front()).norm(), 20.0, 1e-9);
+  EXPECT_TRUE(besidesFrame(butt)[1].closed);
   const ImportResult round = importText(
       page(kFrame + "<path d=\"" + dots + "\" fill=\"none\" stroke=\"red\" stroke-linecap=\"round\"/>"));
   ASSERT_TRUE(round.ok()) << round.message;
-  EXPECT_EQ(besidesFrame(round).size(), 2u);  // the arc's dot is shown by a renderer
+  EXPECT_EQ(besidesFrame(round).size(), 3u);  // the zero-radius arc's dot is shown by a renderer
 }
 
 TEST(Visibility, APatternFilledShapeIsDrawnAsItsOutline) {
