@@ -45,7 +45,8 @@ QXmlStreamAttributes Sanitizer::rewriteAttributes(QStringView tag,
     const QStringView n = a.name(), v = a.value();
     needed = n == u"transform-origin" || v.contains(u"vw") || v.contains(u"vh") ||
              v.contains(u"vmin") || v.contains(u"vmax") ||
-             (!root && hasLengthUnit(v) && (n == u"font-size" || lengthAttributeAxis(tag, n))) ||
+             (!root && hasLengthUnit(v) &&
+              (n == u"font-size" || n == u"stroke-width" || lengthAttributeAxis(tag, n))) ||
              (text && (n == u"x" || n == u"dx" || n == u"y" || n == u"dy") && hasLengthUnit(v)) ||
              (!patternIds_.isEmpty() && (n == u"fill" || n == u"style") && v.contains(u"url(")) ||
              ((n == u"stroke-dasharray" || n == u"stroke-dashoffset") && hasLengthUnit(v));
@@ -89,6 +90,10 @@ QXmlStreamAttributes Sanitizer::rewriteAttributes(QStringView tag,
     }
     if (!root && hasLengthUnit(value)) {
       if (n == u"font-size") value = QString::number(font, 'g', 17);
+      else if (n == u"stroke-width") {
+        if (const std::optional<double> v = resolveLength(value, LengthAxis::Diagonal, lengths))
+          value = QString::number(*v, 'g', 17);
+      }
       else if (const std::optional<LengthAxis> axis = lengthAttributeAxis(tag, n))
         if (const std::optional<double> v = resolveLength(value, *axis, lengths))
           value = QString::number(*v, 'g', 17);

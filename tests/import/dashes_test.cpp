@@ -57,6 +57,8 @@ TEST(Dashes, DasharrayAndOffsetInUserUnitsAlongThePath) {
   expectSpans(importText(line("style=\"stroke-dasharray:10 5\"")), tenFive, "style");
   // The pen width is no factor (Qt keeps the pattern in units of it).
   expectSpans(importText(line("stroke-width=\"2\" stroke-dasharray=\"10 5\"")), tenFive, "width 2");
+  expectSpans(importText(line("stroke-width=\"1mm\" stroke-dasharray=\"10 5\"")), tenFive, "width 1mm");
+  expectSpans(importText(line("stroke-width=\"2%\" stroke-dasharray=\"10 5\"")), tenFive, "width 2%");
   expectSpans(importText(page("<g stroke-width=\"4\"><path d=\"M10 10 L60 10\" fill=\"none\" stroke=\"black\" "
                               "stroke-dasharray=\"10 5\"/></g>")),
               tenFive, "inherited width");

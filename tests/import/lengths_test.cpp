@@ -202,6 +202,16 @@ TEST(Lengths, UseAndMarkerLengthsInUnits) {
   const Box m = pageBox(markerOnly);
   EXPECT_NEAR(m.width(), 96.0 / 2.54, 1e-6);
   EXPECT_NEAR(m.minX, 150.0, 1e-6);
+  // markerUnits="strokeWidth": a stroke-width of 1mm (96 / 25.4 user units) scales a 1 x 1 marker.
+  const ImportResult stroke = importText(mmPage(
+      "<marker id=\"m\" viewBox=\"0 0 1 1\" markerWidth=\"1\" markerHeight=\"1\">"
+      "<rect width=\"1\" height=\"1\" fill=\"none\" stroke=\"red\"/></marker>"
+      "<path d=\"M20 20 L150 20\" stroke=\"black\" stroke-width=\"1mm\" marker-end=\"url(#m)\"/>"));
+  ASSERT_TRUE(stroke.ok()) << stroke.message;
+  Drawing strokeMarker = stroke.drawing;
+  std::erase_if(strokeMarker.layers, [](const Layer& l) { return l.rgb != 0xFF0000u; });
+  ASSERT_EQ(strokeMarker.layers.size(), 1u) << joined(stroke);
+  EXPECT_NEAR(pageBox(strokeMarker).width(), 96.0 / 25.4, 1e-6);
 }
 
 }  // namespace
