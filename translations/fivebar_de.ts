@@ -243,6 +243,10 @@
 <context>
     <name>ImportWarning</name>
     <message>
+        <source>clip-path set in a style sheet is not applied: those shapes are drawn unclipped</source>
+        <translation>clip-path in einem Stylesheet wird nicht angewandt: diese Formen werden unbeschnitten gezeichnet</translation>
+    </message>
+    <message>
         <source>%1: its lines there are not drawn</source>
         <translation>%1: seine Linien dort werden nicht gezeichnet</translation>
     </message>

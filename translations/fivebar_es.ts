@@ -243,6 +243,10 @@
 <context>
     <name>ImportWarning</name>
     <message>
+        <source>clip-path set in a style sheet is not applied: those shapes are drawn unclipped</source>
+        <translation>clip-path definido en una hoja de estilo no se aplica: esas formas se dibujan sin recortar</translation>
+    </message>
+    <message>
         <source>%1: its lines there are not drawn</source>
         <translation>%1: sus líneas allí no se dibujan</translation>
     </message>

@@ -243,6 +243,10 @@
 <context>
     <name>ImportWarning</name>
     <message>
+        <source>clip-path set in a style sheet is not applied: those shapes are drawn unclipped</source>
+        <translation>clip-path défini dans une feuille de style n’est pas appliqué : ces formes sont dessinées sans découpe</translation>
+    </message>
+    <message>
         <source>%1: its lines there are not drawn</source>
         <translation>%1 : ses lignes à cet endroit ne sont pas dessinées</translation>
     </message>

@@ -355,6 +355,8 @@ void Sanitizer::characters() {
       warn(FB_TR("ImportWarning", "markers set in a style sheet for the selector '%1' are not drawn "
                                   "(only type, #id and .class selectors are applied)")
                .arg(selector.toStdString()));
+  if (inStyle_ && text.contains(QStringLiteral("clip-path")))
+    warn(FB_TR("ImportWarning", "clip-path set in a style sheet is not applied: those shapes are drawn unclipped"));
   if (inStyle_ && text.contains(QStringLiteral("@import"))) {
     static const QRegularExpression import(QStringLiteral("@import[^;]*;?"));
     text.remove(import);

@@ -163,6 +163,11 @@ TEST(Clip, AFillOnlyShapeIsClippedAsAnAreaAndKeepsAClosedOutline) {
       "<path d=\"M0 40 L100 40\" stroke=\"red\"/>"));
   ASSERT_TRUE(empty.ok()) << empty.message;
   EXPECT_EQ(allPaths(empty.drawing).size(), 1u);
+  // A clip-path in a style sheet is not applied, and says so.
+  const ImportResult sheet = importText(page(std::string(kClip) + "<style>.c { clip-path: url(#c) }</style>"
+                                             "<path class=\"c\" d=\"M0 20 L100 20\" stroke=\"black\"/>"));
+  ASSERT_TRUE(sheet.ok()) << sheet.message;
+  EXPECT_TRUE(test::warned(sheet, "clip-path set in a style sheet is not applied")) << joined(sheet);
 }
 
 }  // namespace
