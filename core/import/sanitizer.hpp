@@ -99,6 +99,7 @@ class Sanitizer {
   // black), so that the outline the warning promises is drawn (the pattern itself is dropped).
   void setPatternIds(QSet<QString> ids) { patternIds_ = std::move(ids); }
   void setClipPaths(std::map<QString, ClipPathInfo> clips) { clipPaths_ = std::move(clips); }
+  void setNestedSvgs(std::map<QString, NestedSvgInfo> svgs) { nestedSvgs_ = std::move(svgs); }
 
  private:
   struct MarkerState {
@@ -129,6 +130,13 @@ class Sanitizer {
   void beginClip(QXmlStreamAttributes& attributes);
   void endClip();
   std::map<QString, ClipPathInfo> clipPaths_;
+  // A <use width height> of a nested <svg> (svg_sanitize_write.cpp): the svg's content at the
+  // use's size. The nested svg's own viewport is taken against the root's.
+  std::map<QString, NestedSvgInfo> nestedSvgs_;
+  UserViewport rootViewport_;
+  const NestedSvgInfo* sizedSvgOfUse(const QXmlStreamAttributes& attributes) const;
+  NestedViewport viewportAtUse(const NestedSvgInfo& svg, const QXmlStreamAttributes& use) const;
+  bool writeUseOfSvg(const QXmlStreamAttributes& attributes);
   std::vector<ClipTail> clipTails_;  // one per open written element
   int clipContentDepth_ = 0;         // > 0 inside a <clipPath>: its depth
   QString clipContentRule_;          // the clipPath's clip-rule

@@ -47,6 +47,28 @@ std::map<QString, SymbolInfo> scanSymbols(const QByteArray& document) {
   return symbols;  // a reader error is reported by the sanitiser's own pass
 }
 
+std::map<QString, NestedSvgInfo> scanNestedSvgs(const QByteArray& document) {
+  std::map<QString, NestedSvgInfo> svgs;
+  if (document.indexOf("svg", document.indexOf("<svg") + 4) < 0) return svgs;
+  QXmlStreamReader reader(document);
+  int depth = 0;
+  while (!reader.atEnd()) {
+    const QXmlStreamReader::TokenType t = reader.readNext();
+    if (t == QXmlStreamReader::EndElement) --depth;
+    if (t != QXmlStreamReader::StartElement) continue;
+    ++depth;
+    if (depth < 2 || reader.name() != u"svg") continue;
+    const QXmlStreamAttributes a = reader.attributes();
+    const QString id = a.value(QStringLiteral("id")).toString();
+    if (id.isEmpty()) continue;
+    svgs[id] = NestedSvgInfo{a.value(QStringLiteral("x")).toString(), a.value(QStringLiteral("y")).toString(),
+                             a.value(QStringLiteral("width")).toString(), a.value(QStringLiteral("height")).toString(),
+                             a.value(QStringLiteral("viewBox")).toString(),
+                             a.value(QStringLiteral("preserveAspectRatio")).toString()};
+  }
+  return svgs;
+}
+
 bool isZeroSizeShape(QStringView tag, const QXmlStreamAttributes& attributes) {
   if (tag == u"rect") {
     const auto w = attributeLength(attributes, u"width");

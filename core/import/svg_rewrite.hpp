@@ -23,6 +23,13 @@ struct SymbolInfo {
   QString viewBox, preserveAspectRatio, width, height;
 };
 
+// id -> the viewport attributes of a nested <svg> (not the root) with an id, for a <use> of it;
+// one quick pass, only when the text holds a second "<svg".
+struct NestedSvgInfo {
+  QString x, y, width, height, viewBox, preserveAspectRatio;
+};
+std::map<QString, NestedSvgInfo> scanNestedSvgs(const QByteArray& document);
+
 // id -> the symbol's viewport attributes; one quick pass, only when the text holds "<symbol".
 std::map<QString, SymbolInfo> scanSymbols(const QByteArray& document);
 

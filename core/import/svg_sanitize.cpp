@@ -309,7 +309,7 @@ void Sanitizer::startElement() {
   beginClip(attributes);
   writeNamespaces();
   if (depth_ > 1 && tag == u"svg") return writeNestedSvgAsGroup(attributes);
-  if (writeSymbolOrUse(tag, attributes) || writeMarkerDefinition(tag, attributes) ||
+  if (writeUseOfSvg(attributes) || writeSymbolOrUse(tag, attributes) || writeMarkerDefinition(tag, attributes) ||
       writeClipPathDefinition(tag, attributes))
     return;
   if (tag == u"rect" && writeRoundedRect(attributes)) return;
@@ -385,8 +385,10 @@ SanitizeResult sanitizeSvg(QIODevice& input, double dpi,
   sanitizer.setRectStyled(rectStyled);
   if (const auto* buffer = qobject_cast<const QBuffer*>(&input))
     sanitizer.setPatternIds(detail::scanPatternIds(buffer->data()));
-  if (const auto* buffer = qobject_cast<const QBuffer*>(&input))
+  if (const auto* buffer = qobject_cast<const QBuffer*>(&input)) {
     sanitizer.setClipPaths(scanClipPaths(buffer->data()));
+    sanitizer.setNestedSvgs(scanNestedSvgs(buffer->data()));
+  }
   return sanitizer.run();
 }
 

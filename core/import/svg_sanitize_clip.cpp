@@ -134,6 +134,22 @@ void Sanitizer::beginClip(QXmlStreamAttributes& attributes) {
 std::optional<QRectF> Sanitizer::clippedViewport(const QXmlStreamAttributes& attributes) const {
   const QStringView tag = reader_.name();
   if (!((tag == u"svg" && depth_ > 1) || tag == u"use")) return std::nullopt;
+  if (const NestedSvgInfo* svg = sizedSvgOfUse(attributes)) {  // the svg's viewport at the use's size
+    const NestedViewport v = viewportAtUse(*svg, attributes);
+    auto side = [&](const QString& text, double parent) {
+      const QString t = text.isEmpty() ? QStringLiteral("100%") : text;
+      return resolveLength(t, LengthAxis::Width, LengthContext{{parent, parent}, 16.0, dpi_}).value_or(parent);
+    };
+    auto at = [&](const QString& text, double parent) {
+      return resolveLength(text, LengthAxis::Width, LengthContext{{parent, parent}, 16.0, dpi_}).value_or(0.0);
+    };
+    bool ok = false;
+    const double ux = attributes.value(QStringLiteral("x")).toDouble(&ok), x = ok ? ux : 0.0;
+    const double uy = attributes.value(QStringLiteral("y")).toDouble(&ok), y = ok ? uy : 0.0;
+    const double w = side(v.width, rootViewport_.width), h = side(v.height, rootViewport_.height);
+    if (!(w > 0.0) || !(h > 0.0)) return std::nullopt;
+    return QRectF(x + at(v.x, rootViewport_.width), y + at(v.y, rootViewport_.height), w, h);
+  }
   if (tag == u"use") {
     const QStringView href = attributes.value(kXlinkNs, QStringLiteral("href"));
     if (!href.startsWith(u'#') || !symbols_.count(href.mid(1).toString())) return std::nullopt;

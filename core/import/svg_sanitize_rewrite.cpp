@@ -13,7 +13,7 @@ namespace detail {
 void Sanitizer::setViewport() {
   const RootAttributes& root = result_.root;
   if (const std::optional<QRectF> box = parseViewBox(root.viewBox); box && box->width() > 0.0) {
-    viewport_ = {box->width(), box->height()};
+    viewport_ = rootViewport_ = {box->width(), box->height()};
     return;
   }
   auto side = [&](const QString& text) {
@@ -21,7 +21,7 @@ void Sanitizer::setViewport() {
     if (!length || length->unit == LengthUnit::Percent) return 0.0;
     return lengthToMm(*length, dpi_).value_or(0.0) * dpi_ / 25.4;
   };
-  viewport_ = {side(root.width), side(root.height)};
+  viewport_ = rootViewport_ = {side(root.width), side(root.height)};
 }
 
 // Lengths Qt 6.4 misreads (units, em/ex, % on the wrong axis: svg_lengths.hpp), made user units;

@@ -162,4 +162,57 @@ bool Sanitizer::writeRoundedRect(const QXmlStreamAttributes& attributes) {
   return true;
 }
 
+const NestedSvgInfo* Sanitizer::sizedSvgOfUse(const QXmlStreamAttributes& attributes) const {
+  if (reader_.name() != u"use" || nestedSvgs_.empty()) return nullptr;
+  if (!attributes.hasAttribute(QStringLiteral("width")) && !attributes.hasAttribute(QStringLiteral("height")))
+    return nullptr;
+  const QStringView href = attributes.value(kXlinkNs, QStringLiteral("href"));
+  const auto svg = href.startsWith(u'#') ? nestedSvgs_.find(href.mid(1).toString()) : nestedSvgs_.end();
+  return svg == nestedSvgs_.end() ? nullptr : &svg->second;
+}
+
+NestedViewport Sanitizer::viewportAtUse(const NestedSvgInfo& svg, const QXmlStreamAttributes& use) const {
+  NestedViewport v{svg.x, svg.y, svg.width, svg.height, svg.viewBox, svg.preserveAspectRatio};
+  if (use.hasAttribute(QStringLiteral("width"))) v.width = use.value(QStringLiteral("width")).toString();
+  if (use.hasAttribute(QStringLiteral("height"))) v.height = use.value(QStringLiteral("height")).toString();
+  return v;
+}
+
+// SVG: a <use> of an <svg> with width/height gives that svg its size. The svg's content was
+// written for its own size (writeNestedSvgAsGroup): the use gets the matrix that takes that
+// mapping to the one at the use's size.
+bool Sanitizer::writeUseOfSvg(const QXmlStreamAttributes& attributes) {
+  const NestedSvgInfo* svg = sizedSvgOfUse(attributes);
+  if (!svg) return false;
+  const NestedViewport own{svg->x, svg->y, svg->width, svg->height, svg->viewBox, svg->preserveAspectRatio};
+  const QTransform atDefinition = nestedViewportMatrix(own, rootViewport_.width, rootViewport_.height, dpi_);
+  const QTransform atUse =
+      nestedViewportMatrix(viewportAtUse(*svg, attributes), rootViewport_.width, rootViewport_.height, dpi_);
+  bool invertible = false;
+  const QTransform c = atDefinition.inverted(&invertible) * atUse;
+  if (!invertible) return false;
+  auto num = [](double v) { return QString::number(v, 'g', 17); };
+  const QString ns = reader_.namespaceUri().toString();
+  writer_.writeStartElement(ns, QStringLiteral("g"));
+  QString transform = attributes.value(QStringLiteral("transform")).toString();
+  for (const QXmlStreamAttribute& a : attributes) {
+    const QStringView n = a.name();
+    if (a.namespaceUri().isEmpty() && (n == u"x" || n == u"y" || n == u"width" || n == u"height" || n == u"transform"))
+      continue;
+    if (n == u"href") continue;
+    writer_.writeAttribute(a);
+  }
+  bool okX = false, okY = false;
+  const double x = attributes.value(QStringLiteral("x")).toDouble(&okX);
+  const double y = attributes.value(QStringLiteral("y")).toDouble(&okY);
+  transform += QStringLiteral(" translate(%1,%2) matrix(%3,%4,%5,%6,%7,%8)")
+                   .arg(num(okX ? x : 0.0), num(okY ? y : 0.0), num(c.m11()), num(c.m12()), num(c.m21()),
+                        num(c.m22()), num(c.dx()), num(c.dy()));
+  writer_.writeAttribute(QStringLiteral("transform"), transform.trimmed());
+  writer_.writeStartElement(ns, QStringLiteral("use"));
+  writer_.writeAttribute(kXlinkNs, QStringLiteral("href"), attributes.value(kXlinkNs, QStringLiteral("href")).toString());
+  extraEnds_.back() = 1;
+  return true;
+}
+
 }  // namespace fivebar::svg::detail

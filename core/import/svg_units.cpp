@@ -281,4 +281,19 @@ QString nestedViewportTransform(const NestedViewport& nested, double parentWidth
            num(place.height() / box->height()), num(-box->x()), num(-box->y()));
 }
 
+QTransform nestedViewportMatrix(const NestedViewport& nested, double parentWidth, double parentHeight,
+                                double dpi) {
+  const double x = userLength(nested.x, parentWidth, dpi).value_or(0.0);
+  const double y = userLength(nested.y, parentHeight, dpi).value_or(0.0);
+  const std::optional<QRectF> box = parseViewBox(nested.viewBox);
+  if (!box || box->width() <= 0.0 || box->height() <= 0.0) return QTransform::fromTranslate(x, y);
+  const double w = userLength(nested.width.isEmpty() ? QStringLiteral("100%") : nested.width, parentWidth, dpi)
+                       .value_or(box->width());
+  const double h = userLength(nested.height.isEmpty() ? QStringLiteral("100%") : nested.height, parentHeight, dpi)
+                       .value_or(box->height());
+  const QRectF place = placeViewBox(*box, QRectF(0, 0, w, h), parsePreserveAspectRatio(nested.preserveAspectRatio));
+  const double sx = place.width() / box->width(), sy = place.height() / box->height();
+  return QTransform(sx, 0, 0, sy, x + place.x() - box->x() * sx, y + place.y() - box->y() * sy);
+}
+
 }  // namespace fivebar::svg

@@ -5,6 +5,7 @@
 
 #include <QRectF>
 #include <QSizeF>
+#include <QTransform>
 #include <QString>
 #include <QStringList>
 #include <QStringView>
@@ -98,5 +99,9 @@ struct NestedViewport {
 // units (the viewBox's size, else the viewport's).
 QString nestedViewportTransform(const NestedViewport& nested, double parentWidth, double parentHeight,
                                 double dpi, QSizeF* viewport = nullptr);
+
+// The same mapping as a matrix (parent user space from the nested <svg>'s content).
+QTransform nestedViewportMatrix(const NestedViewport& nested, double parentWidth, double parentHeight,
+                                double dpi);
 
 }  // namespace fivebar::svg

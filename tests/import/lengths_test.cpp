@@ -182,6 +182,20 @@ TEST(Lengths, PercentagesInsideANestedSvgAreOfItsViewport) {
   EXPECT_NEAR(b.height(), 20.0, 1e-9);
 }
 
+TEST(Lengths, AUseOfAnSvgGivesItTheUsesSize) {
+  // A 10 x 10 viewBox in a 40 x 80 viewport at (20, 10), meet, centred: scale 4, 40 x 40 at
+  // (20, 30). At its own size (100 % of the root: 200 x 100) it would be 100 x 100 at (50, 0).
+  const ImportResult r = importText(mmPage(
+      "<defs><svg id=\"s\" viewBox=\"0 0 10 10\"><rect width=\"10\" height=\"10\" fill=\"none\" "
+      "stroke=\"black\"/></svg></defs><use href=\"#s\" x=\"20\" y=\"10\" width=\"40\" height=\"80\"/>"));
+  ASSERT_TRUE(r.ok()) << r.message;
+  const Box b = pageBox(r.drawing);
+  EXPECT_NEAR(b.minX, 20.0, 1e-9);
+  EXPECT_NEAR(b.minY, 30.0, 1e-9);
+  EXPECT_NEAR(b.width(), 40.0, 1e-9);
+  EXPECT_NEAR(b.height(), 40.0, 1e-9);
+}
+
 TEST(Lengths, UseAndMarkerLengthsInUnits) {
   const ImportResult use = importText(mmPage(
       "<defs><rect id=\"r\" width=\"10\" height=\"10\" fill=\"none\" stroke=\"black\"/></defs>"

@@ -82,8 +82,6 @@ const char* knownDifference(const std::string& file) {
       {"structure/svg/mixed-namespaces.svg", "text: the system font's glyphs (the foreign <a> is not drawn: "
                                              "Visibility.ElementsOfAForeignNamespaceAreNotDrawn)"},
       {"structure/symbol/with-transform.svg", "resvg follows SVG 1.1 (no transform on <symbol>); SVG 2 applies it"},
-      {"structure/use/xlink-to-svg-element-with-viewBox.svg",
-       "NOT DONE: a <use> of an <svg> element does not take the use's width and height"},
   };
   for (const auto& [name, reason] : known)
     if (file == name) return reason;
