@@ -49,7 +49,12 @@ std::map<QString, SymbolInfo> scanSymbols(const QByteArray& document) {
 
 std::map<QString, NestedSvgInfo> scanNestedSvgs(const QByteArray& document) {
   std::map<QString, NestedSvgInfo> svgs;
-  if (document.indexOf("svg", document.indexOf("<svg") + 4) < 0) return svgs;
+  // Only when a second <svg> element exists (the namespace URI holds "svg" too: not enough).
+  const qsizetype first = document.indexOf("<svg");
+  const qsizetype prefixed = document.indexOf(":svg");
+  if ((first < 0 || document.indexOf("<svg", first + 4) < 0) &&
+      (prefixed < 0 || document.indexOf("svg:svg", document.indexOf("svg:svg") + 7) < 0))
+    return svgs;
   QXmlStreamReader reader(document);
   int depth = 0;
   while (!reader.atEnd()) {

@@ -24,7 +24,7 @@ struct SymbolInfo {
 };
 
 // id -> the viewport attributes of a nested <svg> (not the root) with an id, for a <use> of it;
-// one quick pass, only when the text holds a second "<svg".
+// one quick pass, only when the text holds a second <svg> element.
 struct NestedSvgInfo {
   QString x, y, width, height, viewBox, preserveAspectRatio;
 };
