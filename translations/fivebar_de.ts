@@ -112,6 +112,14 @@
 <context>
     <name>ImportError</name>
     <message>
+        <source>%1 has a point at (%2, %3) mm, beyond the %4 mm limit</source>
+        <translation>%1 hat einen Punkt bei (%2, %3) mm, jenseits der Grenze von %4 mm</translation>
+    </message>
+    <message>
+        <source>%1 has a non-finite coordinate</source>
+        <translation>%1 hat eine nicht endliche Koordinate</translation>
+    </message>
+    <message>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -235,6 +243,30 @@
 <context>
     <name>ImportWarning</name>
     <message>
+        <source>clip-path set in a style sheet is not applied: those shapes are drawn unclipped</source>
+        <translation>clip-path in einem Stylesheet wird nicht angewandt: diese Formen werden unbeschnitten gezeichnet</translation>
+    </message>
+    <message>
+        <source>%1: its lines there are not drawn</source>
+        <translation>%1: seine Linien dort werden nicht gezeichnet</translation>
+    </message>
+    <message>
+        <source>lines outside the page (the SVG viewport) are not drawn: cut at its edge</source>
+        <translation>Linien außerhalb der Seite (des SVG-Viewports) werden nicht gezeichnet: an ihrem Rand abgeschnitten</translation>
+    </message>
+    <message>
+        <source>%1: the element is not drawn</source>
+        <translation>%1: das Element wird nicht gezeichnet</translation>
+    </message>
+    <message>
+        <source>attribute d: path data begins with &quot;%1&quot;, not a moveto (M or m): in error from its first command, nothing drawn</source>
+        <translation>Attribut d: die Pfaddaten beginnen mit „%1“, nicht mit einem moveto (M oder m): fehlerhaft ab dem ersten Befehl, nichts gezeichnet</translation>
+    </message>
+    <message>
+        <source>clip-path #%1 not found: drawn unclipped</source>
+        <translation>clip-path #%1 nicht gefunden: unbeschnitten gezeichnet</translation>
+    </message>
+    <message>
         <source>attribute d: invalid path data at character %1 %2: drawn up to the error</source>
         <translation>Attribut d: ungültige Pfaddaten bei Zeichen %1 %2: bis zum Fehler gezeichnet</translation>
     </message>
@@ -297,10 +329,6 @@
     <message>
         <source>transform-origin in a style is not applied</source>
         <translation>transform-origin in einem style wird nicht angewandt</translation>
-    </message>
-    <message>
-        <source>clip-path not applied: clipped shapes are drawn whole</source>
-        <translation>clip-path nicht angewandt: beschnittene Formen werden ganz gezeichnet</translation>
     </message>
     <message>
         <source>mask not applied: masked shapes are drawn whole</source>
@@ -1263,6 +1291,14 @@
 </context>
 <context>
     <name>fivebar::widgets::FillOptionsBox</name>
+    <message>
+        <source>Draw dashed strokes solid</source>
+        <translation>Gestrichelte Linien durchgehend zeichnen</translation>
+    </message>
+    <message>
+        <source>Dashed strokes are drawn as their dashes, the pen lifted between them; checked: each dashed stroke is drawn as one line.</source>
+        <translation>Gestrichelte Linien werden als ihre Striche gezeichnet, dazwischen wird der Stift gehoben; angekreuzt: jede gestrichelte Linie wird als eine Linie gezeichnet.</translation>
+    </message>
     <message>
         <source>Filled shapes</source>
         <translation>Gefüllte Formen</translation>

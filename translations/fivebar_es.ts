@@ -112,6 +112,14 @@
 <context>
     <name>ImportError</name>
     <message>
+        <source>%1 has a point at (%2, %3) mm, beyond the %4 mm limit</source>
+        <translation>%1 tiene un punto en (%2, %3) mm, más allá del límite de %4 mm</translation>
+    </message>
+    <message>
+        <source>%1 has a non-finite coordinate</source>
+        <translation>%1 tiene una coordenada no finita</translation>
+    </message>
+    <message>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -235,6 +243,30 @@
 <context>
     <name>ImportWarning</name>
     <message>
+        <source>clip-path set in a style sheet is not applied: those shapes are drawn unclipped</source>
+        <translation>clip-path definido en una hoja de estilo no se aplica: esas formas se dibujan sin recortar</translation>
+    </message>
+    <message>
+        <source>%1: its lines there are not drawn</source>
+        <translation>%1: sus líneas allí no se dibujan</translation>
+    </message>
+    <message>
+        <source>lines outside the page (the SVG viewport) are not drawn: cut at its edge</source>
+        <translation>las líneas fuera de la página (el viewport SVG) no se dibujan: cortadas en su borde</translation>
+    </message>
+    <message>
+        <source>%1: the element is not drawn</source>
+        <translation>%1: el elemento no se dibuja</translation>
+    </message>
+    <message>
+        <source>attribute d: path data begins with &quot;%1&quot;, not a moveto (M or m): in error from its first command, nothing drawn</source>
+        <translation>atributo d: los datos del trazado empiezan por «%1», no por un moveto (M o m): erróneos desde el primer comando, no se dibuja nada</translation>
+    </message>
+    <message>
+        <source>clip-path #%1 not found: drawn unclipped</source>
+        <translation>clip-path #%1 no encontrado: se dibuja sin recortar</translation>
+    </message>
+    <message>
         <source>attribute d: invalid path data at character %1 %2: drawn up to the error</source>
         <translation>atributo d: datos de trazado no válidos en el carácter %1 %2: dibujado hasta el error</translation>
     </message>
@@ -297,10 +329,6 @@
     <message>
         <source>transform-origin in a style is not applied</source>
         <translation>transform-origin en un estilo no se aplica</translation>
-    </message>
-    <message>
-        <source>clip-path not applied: clipped shapes are drawn whole</source>
-        <translation>clip-path no aplicado: las formas recortadas se dibujan completas</translation>
     </message>
     <message>
         <source>mask not applied: masked shapes are drawn whole</source>
@@ -1263,6 +1291,14 @@
 </context>
 <context>
     <name>fivebar::widgets::FillOptionsBox</name>
+    <message>
+        <source>Draw dashed strokes solid</source>
+        <translation>Dibujar los trazos discontinuos como continuos</translation>
+    </message>
+    <message>
+        <source>Dashed strokes are drawn as their dashes, the pen lifted between them; checked: each dashed stroke is drawn as one line.</source>
+        <translation>Los trazos discontinuos se dibujan guion a guion, con el lápiz levantado entre ellos; marcado: cada trazo discontinuo se dibuja como una sola línea.</translation>
+    </message>
     <message>
         <source>Filled shapes</source>
         <translation>Formas rellenas</translation>

@@ -112,6 +112,14 @@
 <context>
     <name>ImportError</name>
     <message>
+        <source>%1 has a point at (%2, %3) mm, beyond the %4 mm limit</source>
+        <translation>%1 a un point en (%2, %3) mm, au-delà de la limite de %4 mm</translation>
+    </message>
+    <message>
+        <source>%1 has a non-finite coordinate</source>
+        <translation>%1 a une coordonnée non finie</translation>
+    </message>
+    <message>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -235,6 +243,30 @@
 <context>
     <name>ImportWarning</name>
     <message>
+        <source>clip-path set in a style sheet is not applied: those shapes are drawn unclipped</source>
+        <translation>clip-path défini dans une feuille de style n’est pas appliqué : ces formes sont dessinées sans découpe</translation>
+    </message>
+    <message>
+        <source>%1: its lines there are not drawn</source>
+        <translation>%1 : ses lignes à cet endroit ne sont pas dessinées</translation>
+    </message>
+    <message>
+        <source>lines outside the page (the SVG viewport) are not drawn: cut at its edge</source>
+        <translation>les lignes hors de la page (le viewport SVG) ne sont pas dessinées : coupées à son bord</translation>
+    </message>
+    <message>
+        <source>%1: the element is not drawn</source>
+        <translation>%1 : l’élément n’est pas dessiné</translation>
+    </message>
+    <message>
+        <source>attribute d: path data begins with &quot;%1&quot;, not a moveto (M or m): in error from its first command, nothing drawn</source>
+        <translation>attribut d : les données du chemin commencent par « %1 », pas par un moveto (M ou m) : en erreur dès la première commande, rien n’est dessiné</translation>
+    </message>
+    <message>
+        <source>clip-path #%1 not found: drawn unclipped</source>
+        <translation>clip-path #%1 introuvable : dessiné sans découpe</translation>
+    </message>
+    <message>
         <source>attribute d: invalid path data at character %1 %2: drawn up to the error</source>
         <translation>attribut d : données de tracé invalides au caractère %1 %2 : tracé jusqu'à l'erreur</translation>
     </message>
@@ -297,10 +329,6 @@
     <message>
         <source>transform-origin in a style is not applied</source>
         <translation>transform-origin dans un style n'est pas appliqué</translation>
-    </message>
-    <message>
-        <source>clip-path not applied: clipped shapes are drawn whole</source>
-        <translation>clip-path non appliqué : les formes découpées sont tracées entières</translation>
     </message>
     <message>
         <source>mask not applied: masked shapes are drawn whole</source>
@@ -1263,6 +1291,14 @@
 </context>
 <context>
     <name>fivebar::widgets::FillOptionsBox</name>
+    <message>
+        <source>Draw dashed strokes solid</source>
+        <translation>Dessiner les traits pointillés en continu</translation>
+    </message>
+    <message>
+        <source>Dashed strokes are drawn as their dashes, the pen lifted between them; checked: each dashed stroke is drawn as one line.</source>
+        <translation>Les traits pointillés sont dessinés tiret par tiret, le stylo levé entre les tirets ; coché : chaque trait pointillé est dessiné d’un seul trait.</translation>
+    </message>
     <message>
         <source>Filled shapes</source>
         <translation>Formes remplies</translation>

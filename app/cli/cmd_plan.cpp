@@ -150,7 +150,7 @@ int plan(const Options& o) {
   // The points budget stops the import itself as soon as it is passed (a runaway file is never
   // flattened whole); withinPointBudget checks it again after hatching.
   auto job = widgets::loadJob(QString::fromStdString(file), machine, opt, error, importSettings.fill,
-                              importSettings.hatch, importSettings.maxPoints);
+                              importSettings.hatch, importSettings.maxPoints, importSettings.solidDashes);
   if (!job && widgets::isPointBudgetError(error)) {
     std::cerr << "fivebar plan: " << error << "; nothing planned. Raise it with --max-points N if the "
                  "drawing is meant to be this big\n";

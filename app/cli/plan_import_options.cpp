@@ -20,10 +20,12 @@ const char* const kPlanImportHelp =
     "  --hatch-angle DEG         direction of the hatch lines, counter-clockwise (default 45)\n"
     "  --crosshatch              a second set of hatch lines at 90 deg to the first\n"
     "  --no-hatch-outline        hatch fill-only shapes without drawing their outline\n"
+    "  --dashes dashed|solid     dashed strokes: their dashes, pen up between (default), or\n"
+    "                            drawn whole\n"
     "  Import warnings (dropped images, unsupported features, path data errors) go to stderr.\n";
 
 std::set<std::string> withImportValuedOptions(std::set<std::string> valued) {
-  valued.insert({"--max-points", "--fill", "--hatch-spacing", "--hatch-angle"});
+  valued.insert({"--max-points", "--fill", "--hatch-spacing", "--hatch-angle", "--dashes"});
   return valued;
 }
 
@@ -61,6 +63,11 @@ PlanImportSettings planImportSettingsFrom(const Options& o) {
     const auto fill = fillModeFromString(*mode);
     if (!fill) throw UsageError("--fill must be outline, hatch or none, got '" + *mode + "'");
     s.fill = *fill;
+  }
+  if (const auto dashes = o.value("--dashes")) {
+    if (*dashes != "dashed" && *dashes != "solid")
+      throw UsageError("--dashes must be dashed or solid, got '" + *dashes + "'");
+    s.solidDashes = *dashes == "solid";
   }
   s.hatch.spacingMm = numberOption(o, "--hatch-spacing", 0.5);
   s.hatch.angleRad = radFromDeg(numberOption(o, "--hatch-angle", 45.0));  // as the studio converts

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dashes.hpp"
 #include "flatten.hpp"
 
 namespace fivebar::svg {
@@ -43,6 +44,25 @@ void finishPolyline(Polyline& line, bool closed, std::vector<Polyline>& out) {
   if (pts.size() < 2) return;
   line.closed = closed && pts.size() > 2;
   out.push_back(std::move(line));
+}
+
+void dropInvisibleStrokes(std::vector<Polyline>& lines, double extentMm) {
+  const double limit2 = extentMm * extentMm;
+  std::erase_if(lines, [&](const Polyline& line) {
+    const Vec2& first = line.points.front();
+    const Vec2* far = &first;
+    for (const Vec2& p : line.points) {
+      if ((p - first).squaredNorm() > limit2) return false;
+      if ((p - first).squaredNorm() > (*far - first).squaredNorm()) far = &p;
+    }
+    const Vec2 axis = *far - first;
+    const double length = axis.norm();
+    if (length == 0.0) return true;
+    return std::all_of(line.points.begin(), line.points.end(), [&](const Vec2& p) {
+      const Vec2 d = p - first;
+      return std::abs(axis.x() * d.y() - axis.y() * d.x()) / length <= 0.01 * extentMm;
+    });
+  });
 }
 
 void closeFillOutlines(std::vector<Polyline>& lines) {
@@ -129,13 +149,8 @@ CaptureEngine::Paint CaptureEngine::currentPaint() const {
 
 void CaptureEngine::record(std::vector<Polyline>&& lines, std::uint32_t rgb) {
   if (lines.empty()) return;
-  if (runs_.empty() || runs_.back().topIndex != topIndex_ || runs_.back().rgb != rgb)
-    runs_.push_back(CapturedRun{topIndex_, rgb, {}});
-  auto& paths = runs_.back().paths;
-  for (Polyline& line : lines) {
-    points_ += line.points.size();
-    paths.push_back(std::move(line));
-  }
+  for (const Polyline& line : lines) points_ += line.points.size();
+  store(CapturedRun{topIndex_, rgb, std::move(lines)});
   if (settings_.maxPoints > 0 && points_ > settings_.maxPoints) overBudget_ = true;
 }
 
@@ -164,6 +179,11 @@ bool CaptureEngine::admit(const Signature& signature, const Paint& paint,
       filled = true;
       rule = pendingRule_;
     }
+    if (const std::optional<DashPattern> dash =
+            settings_.dashes ? dashPatternOf(painter()->pen()) : std::nullopt) {
+      lines = applyDashes(lines, *dash, signature.transform);
+      filled = false;  // dashes are no rings: a dashed filled shape is not hatched
+    }
     if (filled) markFill(lines, rule, false);
     flushPending();
     record(std::move(lines), paint.rgb);
@@ -180,11 +200,19 @@ bool CaptureEngine::admit(const Signature& signature, const Paint& paint,
 }
 
 void CaptureEngine::drawPath(const QPainterPath& path) {
+  if (collecting_) {
+    std::vector<Polyline> rings;
+    appendFlattenedPath(path, painter()->combinedTransform(), clipTolerance(), rings);
+    collectClip(std::move(rings), path.fillRule() == Qt::WindingFill ? FillRule::NonZero : FillRule::EvenOdd);
+    return;
+  }
   const Paint paint = currentPaint();
   if (cancelled() || (!paint.stroke && !paint.fill)) return flushPending();
   const QTransform t = painter()->combinedTransform();
   std::vector<Polyline> lines;
   appendFlattenedPath(path, t, settings_.toleranceMm, lines);
+  if (paint.stroke && !paint.fill && painter()->pen().capStyle() == Qt::FlatCap)
+    dropInvisibleStrokes(lines, settings_.toleranceMm);
   Signature s;
   s.kind = kPath;
   s.path = path;
@@ -194,6 +222,14 @@ void CaptureEngine::drawPath(const QPainterPath& path) {
 }
 
 void CaptureEngine::drawPolygon(const QPointF* points, int count, PolygonDrawMode mode) {
+  if (collecting_) {
+    const QTransform t = painter()->combinedTransform();
+    Polyline ring;
+    for (int i = 0; i < count; ++i) ring.points.push_back(mapped(t, points[i].x(), points[i].y()));
+    std::vector<Polyline> rings{std::move(ring)};
+    collectClip(std::move(rings), mode == OddEvenMode ? FillRule::EvenOdd : FillRule::NonZero);
+    return;
+  }
   Paint paint = currentPaint();
   // QPainter::drawPolyline strokes only: its brush paints nothing.
   if (mode == PolylineMode) paint.fill = false;
@@ -204,6 +240,8 @@ void CaptureEngine::drawPolygon(const QPointF* points, int count, PolygonDrawMod
   for (int i = 0; i < count; ++i) line.points.push_back(mapped(t, points[i].x(), points[i].y()));
   std::vector<Polyline> lines;
   finishPolyline(line, mode != PolylineMode, lines);
+  if (paint.stroke && !paint.fill && painter()->pen().capStyle() == Qt::FlatCap)
+    dropInvisibleStrokes(lines, settings_.toleranceMm);
   Signature s;
   s.kind = mode == PolylineMode ? kPolyline : kPolygon;
   s.data = points;
@@ -218,6 +256,8 @@ void CaptureEngine::drawPolygon(const QPointF* points, int count, PolygonDrawMod
 void CaptureEngine::drawLines(const QLineF* lines, int count) {
   const QPainter* p = painter();
   const QPen& pen = p->pen();
+  if (count == 1 && pen.widthF() == kClipSentinelPenWidth) return clipCommand(rgbOf(pen.brush()));
+  if (collecting_) return;  // lines enclose no area
   if (count == 1 && pen.widthF() == kSentinelPenWidth) {
     flushPending();
     topIndex_ = static_cast<int>(rgbOf(pen.brush())) - 1;  // sentinel colour = index + 1
@@ -232,6 +272,7 @@ void CaptureEngine::drawLines(const QLineF* lines, int count) {
     line.points = {mapped(t, lines[i].x1(), lines[i].y1()), mapped(t, lines[i].x2(), lines[i].y2())};
     finishPolyline(line, false, out);
   }
+  if (pen.capStyle() == Qt::FlatCap) dropInvisibleStrokes(out, settings_.toleranceMm);
   Signature s;
   s.kind = kPolyline;
   s.data = lines;
@@ -241,6 +282,18 @@ void CaptureEngine::drawLines(const QLineF* lines, int count) {
 }
 
 void CaptureEngine::drawRects(const QRectF* rects, int count) {
+  if (collecting_) {
+    const QTransform t = painter()->combinedTransform();
+    for (int i = 0; i < count; ++i) {
+      const QRectF& r = rects[i];
+      Polyline ring;
+      ring.points = {mapped(t, r.left(), r.top()), mapped(t, r.right(), r.top()),
+                     mapped(t, r.right(), r.bottom()), mapped(t, r.left(), r.bottom())};
+      std::vector<Polyline> rings{std::move(ring)};
+      collectClip(std::move(rings), FillRule::NonZero);
+    }
+    return;
+  }
   const Paint paint = currentPaint();
   if (cancelled() || (!paint.stroke && !paint.fill)) return flushPending();
   const QTransform t = painter()->combinedTransform();
@@ -263,6 +316,17 @@ void CaptureEngine::drawRects(const QRectF* rects, int count) {
 }
 
 void CaptureEngine::drawEllipse(const QRectF& rect) {
+  if (collecting_) {
+    const QTransform t = painter()->combinedTransform();
+    const QPointF c = rect.center();
+    const Vec2 centre = mapped(t, c.x(), c.y());
+    Polyline ring;
+    flattenEllipse(centre, mapped(t, c.x() + 0.5 * rect.width(), c.y()) - centre,
+                   mapped(t, c.x(), c.y() + 0.5 * rect.height()) - centre, clipTolerance(), ring.points);
+    std::vector<Polyline> rings{std::move(ring)};
+    collectClip(std::move(rings), FillRule::NonZero);
+    return;
+  }
   const Paint paint = currentPaint();
   if (cancelled() || (!paint.stroke && !paint.fill)) return flushPending();
   const QTransform t = painter()->combinedTransform();
@@ -289,6 +353,12 @@ void CaptureEngine::drawTextItem(const QPointF& p, const QTextItem& textItem) {
 
 std::vector<CapturedRun> CaptureEngine::takeRuns() {
   flushPending();
+  collecting_ = false;
+  while (!clipBuffers_.empty()) {  // a Begin without Apply (cannot happen): unclipped
+    std::vector<CapturedRun> runs = std::move(clipBuffers_.back());
+    clipBuffers_.pop_back();
+    for (CapturedRun& run : runs) store(std::move(run));
+  }
   return std::move(runs_);
 }
 

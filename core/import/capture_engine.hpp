@@ -23,11 +23,20 @@
 #include <memory>
 #include <vector>
 
+#include "clip.hpp"
 #include "core/planning/drawing.hpp"
 
 namespace fivebar::svg {
 
 inline constexpr double kSentinelPenWidth = 0.0009765625;  // 2^-10: exact in text and binary
+
+// Clip paths (svg_sanitize_clip.cpp writes them, clip.hpp cuts): sentinel <line>s of stroke width
+// 2^-11 whose stroke colour is the command. Begin: what follows is recorded into a buffer of its
+// own; ShapesUser/ShapesBox: the shapes drawn until Apply are the clip region (their geometry
+// only, whatever their paint), in the current user space or in its objectBoundingBox units of
+// the buffered lines; Apply: the buffer is cut by the region and handed to the enclosing level.
+inline constexpr double kClipSentinelPenWidth = 0.00048828125;  // 2^-11
+enum ClipCommand : std::uint32_t { kClipBegin = 1, kClipShapesUser = 2, kClipShapesBox = 3, kClipApply = 4 };
 
 // Consecutive polylines painted by one top-level element in one colour.
 struct CapturedRun {
@@ -39,6 +48,7 @@ struct CapturedRun {
 struct CaptureSettings {
   double toleranceMm = 0.05;
   bool outlineFills = true;
+  bool dashes = true;  // dashed strokes drawn as their dashes (dashes.hpp); false: solid
   std::function<void(long long shapesPainted)> onShape;  // progress hook, may be empty
   const std::atomic<bool>* cancel = nullptr;             // when raised, further shapes are ignored
   // Points recorded at most (0 = no limit): past it further shapes are ignored and
@@ -94,7 +104,12 @@ class CaptureEngine final : public QPaintEngine {
   bool admit(const Signature& signature, const Paint& paint, std::vector<Polyline>&& lines,
              FillRule rule);
   void record(std::vector<Polyline>&& lines, std::uint32_t rgb);
+  void store(CapturedRun&& run);  // into the innermost clip buffer, else the result
   void flushPending();
+  void clipCommand(std::uint32_t command);
+  // While collecting a clip region: takes the shape's rings (closed) and returns true.
+  bool collectClip(std::vector<Polyline>&& rings, FillRule rule);
+  double clipTolerance() const { return collectBox_ ? 1e-3 * settings_.toleranceMm : settings_.toleranceMm; }
   bool cancelled() const { return overBudget_ || (settings_.cancel && settings_.cancel->load()); }
 
   CaptureSettings settings_;
@@ -108,6 +123,11 @@ class CaptureEngine final : public QPaintEngine {
   std::vector<Polyline> pendingLines_;
   std::uint32_t pendingRgb_ = 0;
   FillRule pendingRule_ = FillRule::NonZero;
+  std::vector<std::vector<CapturedRun>> clipBuffers_;  // one per open Begin
+  bool collecting_ = false;  // between Shapes and Apply
+  bool collectBox_ = false;  // objectBoundingBox units
+  QTransform clipSpace_;     // page from the user space the clip was referenced in
+  std::vector<ClipShape> clipShapes_;
 };
 
 // The paint device handed to QPainter; size in device units (= mm after the render mapping).
@@ -130,6 +150,14 @@ class CaptureDevice final : public QPaintDevice {
 // Drops consecutive duplicate points; marks the polyline closed when it ends where it started;
 // appends it to `out` when at least two points remain (shared with the direct reader).
 void finishPolyline(Polyline& line, bool closed, std::vector<Polyline>& out);
+
+// Drops the subpaths a renderer does not show when stroked with butt caps and not filled: the
+// zero-length ones, i.e. those that enclose nothing (every point on one straight line, within
+// 1 % of extentMm) and whose every point lies within extentMm of their first point, such as
+// "M x y a 0 0 0 1 0 0.001 0 Z" (a zero-radius arc is a 0.001 line, there and back). A tiny
+// closed curve is kept: its stroke shows as a dot. Round and square caps paint a dot too: the
+// caller keeps those.
+void dropInvisibleStrokes(std::vector<Polyline>& lines, double extentMm);
 
 // A filled area is closed whatever its path data says: marks every outline of more than two
 // points closed (the closing edge of a fill-only open path is drawn).

@@ -200,6 +200,7 @@ bool DirectReader::drawPath(std::string_view d, const Paint& paint) {
   if (!paint.stroke && !(paint.fill && options_.outlineFills)) return true;
   std::vector<Polyline> lines;
   appendFlattenedPath(path, transform_, options_.toleranceMm, lines);
+  if (paint.stroke && !paint.fill) dropInvisibleStrokes(lines, options_.toleranceMm);  // butt caps
   if (!paint.stroke) closeFillOutlines(lines);
   if (paint.fill) markFill(lines, FillRule::NonZero, !paint.stroke);
   record(std::move(lines), paint.stroke ? paint.strokeRgb : paint.fillRgb);
@@ -211,7 +212,7 @@ bool DirectReader::drawPath(std::string_view d, const Paint& paint) {
 bool DirectReader::drawPoints(std::string_view points, bool polygon, const Paint& paint) {
   std::vector<double> numbers;
   if (!parseNumberList(points, numbers) || numbers.size() % 2 != 0) return false;
-  auto polyline = [&](bool closed) {
+  auto polyline = [&](bool closed, bool stroke) {
     Polyline line;
     line.points.reserve(numbers.size() / 2);
     for (std::size_t i = 0; i + 1 < numbers.size(); i += 2) {
@@ -220,10 +221,11 @@ bool DirectReader::drawPoints(std::string_view points, bool polygon, const Paint
     }
     std::vector<Polyline> lines;
     if (numbers.size() >= 4) finishPolyline(line, closed, lines);
+    if (stroke) dropInvisibleStrokes(lines, options_.toleranceMm);  // the capture engine's rule
     return lines;
   };
   auto filled = [&](bool fillOnly) {
-    std::vector<Polyline> lines = polyline(true);
+    std::vector<Polyline> lines = polyline(true, paint.stroke && !paint.fill);
     if (paint.fill) markFill(lines, FillRule::NonZero, fillOnly);
     return lines;
   };
@@ -234,7 +236,7 @@ bool DirectReader::drawPoints(std::string_view points, bool polygon, const Paint
   }
   if (paint.fill && options_.outlineFills) record(filled(true), paint.fillRgb);
   // The stroke pass (QPainter::drawPolyline) strokes only.
-  if (paint.stroke) record(polyline(false), paint.strokeRgb);
+  if (paint.stroke) record(polyline(false, true), paint.strokeRgb);
   return true;
 }
 
@@ -250,6 +252,7 @@ bool DirectReader::drawLine(const std::vector<XmlAttribute>& attributes, const P
   line.points = {Vec2(p1.x(), p1.y()), Vec2(p2.x(), p2.y())};
   std::vector<Polyline> lines;
   finishPolyline(line, false, lines);
+  dropInvisibleStrokes(lines, options_.toleranceMm);
   record(std::move(lines), paint.strokeRgb);
   return true;
 }

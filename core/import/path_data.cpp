@@ -164,6 +164,11 @@ ParsedPath parsePathData(QStringView d) {
   char op = 0;
   while (!scan.atEnd()) {
     const QChar c = scan.peek();
+    if (op == 0 && c != u'M' && c != u'm') {  // SVG: in error from a first command that is no moveto
+      result.error = true;
+      result.errorOffset = scan.pos();
+      return result;
+    }
     if (c.isLetter() && c != u'e' && c != u'E') {
       op = static_cast<char>(c.unicode());
       scan.advance();

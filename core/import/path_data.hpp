@@ -20,7 +20,8 @@ struct PathCommand {
 
 struct ParsedPath {
   std::vector<PathCommand> commands;  // S/T/H/V and relative forms already made absolute
-  bool error = false;                 // true when parsing stopped at bad data
+  bool error = false;                 // true when parsing stopped at bad data (a first command
+                                      // that is not a moveto: error at its offset, no commands)
   qsizetype errorOffset = 0;          // character offset of the bad data
 };
 

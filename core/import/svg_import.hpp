@@ -34,6 +34,12 @@ enum class LayerMode {
   ByColor,  // one layer per stroke colour (fill colour for outlined fills)
 };
 
+// How a dashed stroke (stroke-dasharray) is drawn.
+enum class DashMode {
+  Dashed,  // as SVG draws it: the dashes, pen up between them (dasharray, dashoffset)
+  Solid,   // the whole stroke, as if it had no dasharray
+};
+
 enum class Isolation {
   WorkerProcess,  // parse in fivebar-svg-worker (default for importSvgFile)
   InProcess,      // parse in this process: faster start, no protection against Qt SVG crashes
@@ -45,6 +51,7 @@ struct ImportOptions {
   double forcedWidthMm = 0.0;   // > 0: page width in mm regardless of the file
   double forcedHeightMm = 0.0;  // > 0: page height in mm; one forced side keeps the aspect ratio
   bool outlineFills = true;     // fill-only shapes are drawn as their outline; false: skipped
+  DashMode dashes = DashMode::Dashed;  // dashed strokes: their dashes (pen up between), or solid
   LayerMode layerMode = LayerMode::Auto;
   double maxCoordinateMm = 1.0e6;  // any point beyond this (absolute, mm) refuses the file
   // Points after flattening the import may produce; 0 = no limit. Reading stops as soon as the

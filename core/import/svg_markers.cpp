@@ -1,5 +1,7 @@
 #include "svg_markers.hpp"
 
+#include "svg_lengths.hpp"
+
 #include <QRectF>
 #include <QRegularExpression>
 #include <QXmlStreamReader>
@@ -115,17 +117,6 @@ std::optional<double> number(const QXmlStreamAttributes& a, const char* name) {
   const std::optional<Length> l = parseLength(a.value(QLatin1String(name)));
   if (!l || l->unit == LengthUnit::Percent) return std::nullopt;
   return l->value;
-}
-
-// The value of a property in a style attribute ("a: b; c: d"), empty when absent.
-QString styleValue(QStringView style, QStringView property) {
-  QString found;
-  for (QStringView decl : style.split(u';')) {
-    const qsizetype colon = decl.indexOf(u':');
-    if (colon < 0) continue;
-    if (decl.left(colon).trimmed() == property) found = decl.mid(colon + 1).trimmed().toString();
-  }
-  return found;
 }
 
 // "url(#id)" -> "id"; "none" or anything else -> empty.
@@ -340,12 +331,13 @@ double strokeWidthUser(const QXmlStreamAttributes& attributes, double inherited)
 }
 
 std::optional<QString> markerInstanceTransform(const MarkerInfo& marker, const MarkerVertex& vertex,
-                                               MarkerSlot slot, double strokeWidth) {
-  auto length = [](const QString& text, double fallback) {
-    const std::optional<Length> l = parseLength(text);
-    return l && l->unit != LengthUnit::Percent ? l->value : fallback;
+                                               MarkerSlot slot, double strokeWidth,
+                                               const LengthContext& lengths) {
+  auto length = [&](const QString& text, LengthAxis axis, double fallback) {
+    return resolveLength(text, axis, lengths).value_or(fallback);
   };
-  const double width = length(marker.markerWidth, 3.0), height = length(marker.markerHeight, 3.0);
+  const double width = length(marker.markerWidth, LengthAxis::Width, 3.0);
+  const double height = length(marker.markerHeight, LengthAxis::Height, 3.0);
   if (width <= 0.0 || height <= 0.0) return std::nullopt;
   double sx = 1.0, sy = 1.0;
   QRectF box(0, 0, width, height);
@@ -358,14 +350,15 @@ std::optional<QString> markerInstanceTransform(const MarkerInfo& marker, const M
     sx = place.width() / vb->width();
     sy = place.height() / vb->height();
   }
-  auto ref = [&](const QString& text, double lo, double size) {
+  auto ref = [&](const QString& text, LengthAxis axis, double lo, double size) {
     const QString t = text.trimmed();
     if (t == u"left" || t == u"top") return lo;
     if (t == u"center") return lo + size / 2.0;
     if (t == u"right" || t == u"bottom") return lo + size;
-    return length(t, 0.0);
+    return length(t, axis, 0.0);
   };
-  const double refX = ref(marker.refX, box.x(), box.width()), refY = ref(marker.refY, box.y(), box.height());
+  const double refX = ref(marker.refX, LengthAxis::Width, box.x(), box.width());
+  const double refY = ref(marker.refY, LengthAxis::Height, box.y(), box.height());
   const QString orient = marker.orient.trimmed();
   double angleDeg = 0.0;
   if (orient == u"auto" || orient == u"auto-start-reverse") {

@@ -15,6 +15,8 @@
 #include <optional>
 #include <vector>
 
+#include "svg_lengths.hpp"
+
 namespace fivebar::svg {
 
 struct MarkerInfo {
@@ -78,8 +80,10 @@ enum class MarkerSlot { Start, Mid, End };
 
 // The transform of one marker instance: translate(vertex) rotate(orient) scale(stroke width if
 // markerUnits="strokeWidth") scale(viewBox -> markerWidth x markerHeight) translate(-refX, -refY).
+// Lengths (markerWidth/Height, refX/refY) in units, em or % resolve in `lengths`.
 // nullopt when the marker is not drawn (markerWidth/markerHeight <= 0, empty viewBox).
 std::optional<QString> markerInstanceTransform(const MarkerInfo& marker, const MarkerVertex& vertex,
-                                               MarkerSlot slot, double strokeWidth);
+                                               MarkerSlot slot, double strokeWidth,
+                                               const LengthContext& lengths = {});
 
 }  // namespace fivebar::svg

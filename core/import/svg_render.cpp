@@ -13,6 +13,7 @@
 #include <limits>
 
 #include "capture_engine.hpp"
+#include "clip.hpp"
 #include "fast_import.hpp"
 #include "import_pipeline.hpp"
 #include "layers.hpp"
@@ -92,6 +93,66 @@ Extent inspect(const std::vector<Layer>& layers, double limitMm) {
   return e;
 }
 
+// Drops every page-frame polyline with a non-finite point or a point beyond limitMm (an absurd
+// transform or coordinate), with one warning per top-level element naming it and the first such
+// point; returns the first problem (empty when none), which refuses the file when nothing is left.
+Message dropAbsurdLines(std::vector<CapturedRun>& runs, const std::vector<TopLevelElement>& topLevel,
+                        double limitMm, std::vector<Message>& warnings) {
+  Message first;
+  int warnedTop = -2;
+  for (CapturedRun& run : runs) {
+    std::erase_if(run.paths, [&](const Polyline& line) {
+      const auto bad = std::find_if(line.points.begin(), line.points.end(), [&](const Vec2& p) {
+        return !std::isfinite(p.x()) || !std::isfinite(p.y()) || std::abs(p.x()) > limitMm ||
+               std::abs(p.y()) > limitMm;
+      });
+      if (bad == line.points.end()) return false;
+      std::string element = "the drawing";
+      if (run.topIndex >= 0 && static_cast<std::size_t>(run.topIndex) < topLevel.size()) {
+        const TopLevelElement& top = topLevel[static_cast<std::size_t>(run.topIndex)];
+        element = "<" + top.tag.toStdString() + (top.id.isEmpty() ? "" : " id=\"" + top.id.toStdString() + "\"") + ">";
+      }
+      Message problem =
+          std::isfinite(bad->x()) && std::isfinite(bad->y())
+              ? FB_TR("ImportError", "%1 has a point at (%2, %3) mm, beyond the %4 mm limit")
+                    .arg(element).arg(bad->x(), 6).arg(bad->y(), 6).arg(limitMm, 6)
+              : FB_TR("ImportError", "%1 has a non-finite coordinate").arg(element);
+      if (run.topIndex != warnedTop) {
+        warnings.push_back(FB_TR("ImportWarning", "%1: its lines there are not drawn").arg(problem));
+        warnedTop = run.topIndex;
+      }
+      if (first.empty()) first = std::move(problem);
+      return true;
+    });
+  }
+  if (!first.empty()) std::erase_if(runs, [](const CapturedRun& run) { return run.paths.empty(); });
+  return first;
+}
+
+// The page is the root viewport: a browser shows nothing outside it (a viewBox not at the
+// origin, "slice", content beyond the size). Lines reaching outside are cut at its edge (clip.hpp),
+// with one warning; a page of unknown size (the drawing's extent) cuts nothing.
+void clipToPage(std::vector<CapturedRun>& runs, const PageSetup& page, std::vector<Message>& warnings) {
+  if (!page.sizeKnown || !(page.widthMm > 0.0) || !(page.heightMm > 0.0)) return;
+  constexpr double kEdgeMm = 1e-9;
+  const double w = page.widthMm, h = page.heightMm;
+  auto outside = [&](const Polyline& line) {
+    return std::any_of(line.points.begin(), line.points.end(), [&](const Vec2& p) {
+      return p.x() < -kEdgeMm || p.y() < -kEdgeMm || p.x() > w + kEdgeMm || p.y() > h + kEdgeMm;
+    });
+  };
+  const std::vector<ClipShape> pageRect{{{{Vec2(0, 0), Vec2(w, 0), Vec2(w, h), Vec2(0, h)}}, FillRule::NonZero}};
+  bool cut = false;
+  for (CapturedRun& run : runs) {
+    if (std::none_of(run.paths.begin(), run.paths.end(), outside)) continue;
+    cut = true;
+    run.paths = clipLines(std::move(run.paths), pageRect);
+  }
+  if (!cut) return;
+  std::erase_if(runs, [](const CapturedRun& run) { return run.paths.empty(); });
+  warnings.push_back(FB_TR("ImportWarning", "lines outside the page (the SVG viewport) are not drawn: cut at its edge"));
+}
+
 // Scales for forced page sizes (uniform, fitted and centred when both are forced), then flips
 // page (y down) into work (y up): workFromPage = (x, H - y).
 void toWorkFrame(Drawing& drawing, const ImportOptions& o) {
@@ -135,6 +196,7 @@ std::string render(SanitizeResult& clean, const PageSetup& page, const ImportOpt
   CaptureSettings settings;
   settings.toleranceMm = o.toleranceMm;
   settings.outlineFills = o.outlineFills;
+  settings.dashes = o.dashes == DashMode::Dashed;
   settings.cancel = o.cancel;
   settings.maxPoints = o.maxPoints;
   const double shapes = static_cast<double>(std::max<long long>(1, clean.shapeCount));
@@ -240,9 +302,14 @@ ImportResult finishImport(Capture&& capture, const QString& source, const Import
     return result;
   }
   result.warnings = std::move(capture.warnings);
+  Message absurd = dropAbsurdLines(capture.runs, capture.topLevel, o.maxCoordinateMm, result.warnings);
+  if (absurd.empty()) clipToPage(capture.runs, capture.page, result.warnings);
   Drawing& drawing = result.drawing;
   drawing.source = source.toStdString();
   drawing.layers = buildLayers(std::move(capture.runs), capture.topLevel, o.layerMode);
+  if (!absurd.empty() && std::none_of(drawing.layers.begin(), drawing.layers.end(),
+                                      [](const Layer& l) { return !l.paths.empty(); }))
+    return failure(ImportStatus::AbsurdCoordinates, source, std::move(absurd));  // nothing left
   Extent extent = inspect(drawing.layers, o.maxCoordinateMm);
   if (!extent.problem.empty()) return failure(ImportStatus::AbsurdCoordinates, source, std::move(extent.problem));
   const PageSetup& page = capture.page;

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "svg_lengths.hpp"
 #include "svg_units.hpp"
 
 namespace fivebar::svg {
@@ -12,20 +13,11 @@ namespace {
 
 QString num(double v) { return QString::number(v, 'g', 17); }
 
-// A length in user units: unitless/px as is, absolute units at dpi, % of reference,
-// em/ex of the font size. nullopt when not a length or a percentage without a reference.
+// A length in user units (svg_lengths.hpp) with one reference for %.
 std::optional<double> userUnits(QStringView text, double percentReference, double fontSize,
                                 double dpi) {
-  const std::optional<Length> length = parseLength(text);
-  if (!length) return std::nullopt;
-  switch (length->unit) {
-    case LengthUnit::Percent:
-      if (percentReference <= 0.0) return std::nullopt;
-      return length->value / 100.0 * percentReference;
-    case LengthUnit::Em: return length->value * fontSize;
-    case LengthUnit::Ex: return length->value * fontSize * 0.5;
-    default: return lengthToMm(*length, dpi).value() * dpi / 25.4;
-  }
+  return resolveLength(text, LengthAxis::Width,
+                       LengthContext{{percentReference, percentReference}, fontSize, dpi});
 }
 
 std::optional<double> attributeLength(const QXmlStreamAttributes& a, const char16_t* name) {
@@ -53,6 +45,33 @@ std::map<QString, SymbolInfo> scanSymbols(const QByteArray& document) {
                              a.value(QStringLiteral("height")).toString()};
   }
   return symbols;  // a reader error is reported by the sanitiser's own pass
+}
+
+std::map<QString, NestedSvgInfo> scanNestedSvgs(const QByteArray& document) {
+  std::map<QString, NestedSvgInfo> svgs;
+  // Only when a second <svg> element exists (the namespace URI holds "svg" too: not enough).
+  const qsizetype first = document.indexOf("<svg");
+  const qsizetype prefixed = document.indexOf(":svg");
+  if ((first < 0 || document.indexOf("<svg", first + 4) < 0) &&
+      (prefixed < 0 || document.indexOf("svg:svg", document.indexOf("svg:svg") + 7) < 0))
+    return svgs;
+  QXmlStreamReader reader(document);
+  int depth = 0;
+  while (!reader.atEnd()) {
+    const QXmlStreamReader::TokenType t = reader.readNext();
+    if (t == QXmlStreamReader::EndElement) --depth;
+    if (t != QXmlStreamReader::StartElement) continue;
+    ++depth;
+    if (depth < 2 || reader.name() != u"svg") continue;
+    const QXmlStreamAttributes a = reader.attributes();
+    const QString id = a.value(QStringLiteral("id")).toString();
+    if (id.isEmpty()) continue;
+    svgs[id] = NestedSvgInfo{a.value(QStringLiteral("x")).toString(), a.value(QStringLiteral("y")).toString(),
+                             a.value(QStringLiteral("width")).toString(), a.value(QStringLiteral("height")).toString(),
+                             a.value(QStringLiteral("viewBox")).toString(),
+                             a.value(QStringLiteral("preserveAspectRatio")).toString()};
+  }
+  return svgs;
 }
 
 bool isZeroSizeShape(QStringView tag, const QXmlStreamAttributes& attributes) {

@@ -23,8 +23,28 @@ struct SymbolInfo {
   QString viewBox, preserveAspectRatio, width, height;
 };
 
+// id -> the viewport attributes of a nested <svg> (not the root) with an id, for a <use> of it;
+// one quick pass, only when the text holds a second <svg> element.
+struct NestedSvgInfo {
+  QString x, y, width, height, viewBox, preserveAspectRatio;
+};
+std::map<QString, NestedSvgInfo> scanNestedSvgs(const QByteArray& document);
+
 // id -> the symbol's viewport attributes; one quick pass, only when the text holds "<symbol".
 std::map<QString, SymbolInfo> scanSymbols(const QByteArray& document);
+
+// A <clipPath id>: its units and rule, and the clip path it is itself clipped by (an id or empty).
+struct ClipPathInfo {
+  bool objectBoundingBox = false;  // clipPathUnits="objectBoundingBox"
+  QString clipRule;
+  QString clipRef;
+};
+
+// id -> the clip path; one quick pass, only when the text holds "clipPath".
+std::map<QString, ClipPathInfo> scanClipPaths(const QByteArray& document);
+
+// The id in an element's clip-path="url(#id)" (attribute or style), empty when none.
+QString clipPathReference(const QXmlStreamAttributes& attributes);
 
 struct UserViewport {
   double width = 0.0;   // user units; 0 = unknown

@@ -27,6 +27,26 @@ bool isRendering(QStringView tag) {
   return rendering.contains(tag);
 }
 
+// Never drawn by themselves, wherever they stand (SVG "never-rendered elements" and metadata);
+// Qt SVG 6.4 draws the content of those it does not know. Markers and symbols are rewritten
+// (svg_sanitize_rewrite.cpp); gradients are kept for Qt's brushes (their <stop>s draw nothing).
+bool isNeverRendered(QStringView tag) {
+  static const QSet<QStringView> never{u"clipPath", u"mask", u"pattern", u"filter", u"metadata",
+                                       u"title", u"desc", u"cursor", u"view"};
+  return never.contains(tag);
+}
+
+// The first command of path data when it is not a moveto (SVG: the data is in error from it
+// and nothing is drawn); empty for a good start or empty data.
+QString badFirstCommand(QStringView d) {
+  const QStringView t = d.trimmed();
+  if (t.isEmpty() || t.front() == u'M' || t.front() == u'm') return {};
+  if (t.front().isLetter()) return t.left(1).toString();  // the command
+  qsizetype n = 1;  // data without a command: its first token
+  while (n < t.size() && n < 24 && !t[n].isSpace() && t[n] != u',') ++n;
+  return t.left(n).toString();
+}
+
 bool isShape(QStringView tag) {
   static const QSet<QStringView> shapes{u"path", u"rect", u"circle", u"ellipse", u"line", u"polyline",
                                     u"polygon", u"text", u"use", u"textArea"};
@@ -55,6 +75,18 @@ bool styleSheetSelectsRect(const QByteArray& document) {
   }
   static const QRegularExpression selector(QStringLiteral("(^|[^-\\w#.])rect($|[^-\\w])"));
   return css.contains(selector);
+}
+
+// The ids of the document's <pattern> elements (one quick pass, only when the text holds one).
+QSet<QString> scanPatternIds(const QByteArray& document) {
+  QSet<QString> ids;
+  if (!document.contains("pattern")) return ids;
+  QXmlStreamReader reader(document);
+  while (!reader.atEnd())
+    if (reader.readNext() == QXmlStreamReader::StartElement && reader.name() == u"pattern")
+      if (const QStringView id = reader.attributes().value(QStringLiteral("id")); !id.isEmpty())
+        ids.insert(id.toString());
+  return ids;
 }
 
 }  // namespace
@@ -126,6 +158,8 @@ SanitizeResult Sanitizer::run() {
   }
   if (result_.status == ImportStatus::Ok && !sawRoot_)
     fail(ImportStatus::InvalidDocument, FB_TR("ImportError", "no <svg> element found"));
+  if (result_.status == ImportStatus::Ok && !firstNumberDrop_.empty() && result_.shapeCount == 0)
+    fail(ImportStatus::InvalidNumber, std::move(firstNumberDrop_));  // nothing drawable left
   writer_.writeEndDocument();
   result_.warnings = std::move(located_);
   for (auto& [text, repeated] : warnings_) {
@@ -149,23 +183,21 @@ void Sanitizer::recordRoot(const QXmlStreamAttributes& attributes) {
   root.preserveAspectRatio = attributes.value(QStringLiteral("preserveAspectRatio")).toString();
 }
 
-bool Sanitizer::checkNumbers(QStringView tag, const QXmlStreamAttributes& attributes) {
+Message Sanitizer::numberProblem(QStringView tag, const QXmlStreamAttributes& attributes) const {
   for (const QXmlStreamAttribute& a : attributes) {
     if (!a.namespaceUri().isEmpty() || !isGeometryAttribute(a.name())) continue;
     if (const std::optional<NonFiniteNumber> bad = firstNonFiniteNumber(a.value())) {
       const QString id = attributes.value(QStringLiteral("id")).toString();
-      fail(ImportStatus::InvalidNumber,
-           Message(bad->notANumber
-                       ? FB_TR("ImportError", "line %1: <%2> attribute %3 contains a value that is not a number (%4)")
-                       : FB_TR("ImportError", "line %1: <%2> attribute %3 contains a number beyond 1e300 (%4)"))
-               .arg(static_cast<long long>(reader_.lineNumber()))
-               .arg(tag.toString().toStdString() + (id.isEmpty() ? "" : " id=\"" + id.toStdString() + "\""))
-               .arg(a.name().toString().toStdString())
-               .arg(bad->token));
-      return false;
+      return Message(bad->notANumber
+                         ? FB_TR("ImportError", "line %1: <%2> attribute %3 contains a value that is not a number (%4)")
+                         : FB_TR("ImportError", "line %1: <%2> attribute %3 contains a number beyond 1e300 (%4)"))
+          .arg(static_cast<long long>(reader_.lineNumber()))
+          .arg(tag.toString().toStdString() + (id.isEmpty() ? "" : " id=\"" + id.toStdString() + "\""))
+          .arg(a.name().toString().toStdString())
+          .arg(bad->token);
     }
   }
-  return true;
+  return {};
 }
 
 QXmlStreamAttributes Sanitizer::cleanAttributes(QStringView tag) {
@@ -195,158 +227,6 @@ QXmlStreamAttributes Sanitizer::cleanAttributes(QStringView tag) {
   return out;
 }
 
-void Sanitizer::writeSentinel(int index) {
-  const int code = index + 1;
-  writer_.writeStartElement(svgNamespace_, QStringLiteral("line"));
-  writer_.writeAttribute(QStringLiteral("x1"), QStringLiteral("0"));
-  writer_.writeAttribute(QStringLiteral("y1"), QStringLiteral("0"));
-  writer_.writeAttribute(QStringLiteral("x2"), QStringLiteral("1"));
-  writer_.writeAttribute(QStringLiteral("y2"), QStringLiteral("0"));
-  writer_.writeAttribute(QStringLiteral("stroke"),
-                         QStringLiteral("#%1").arg(code, 6, 16, QLatin1Char('0')));
-  writer_.writeAttribute(QStringLiteral("stroke-width"), QStringLiteral("0.0009765625"));
-  writer_.writeAttribute(QStringLiteral("stroke-opacity"), QStringLiteral("1"));
-  writer_.writeAttribute(QStringLiteral("opacity"), QStringLiteral("1"));
-  writer_.writeAttribute(QStringLiteral("display"), QStringLiteral("inline"));
-  writer_.writeAttribute(QStringLiteral("visibility"), QStringLiteral("visible"));
-  // Inline style too, so that a document style sheet ("line { stroke-width: 3 }") cannot
-  // override the sentinel's marks.
-  writer_.writeAttribute(QStringLiteral("style"),
-                         QStringLiteral("stroke:#%1;stroke-width:0.0009765625;stroke-opacity:1;"
-                                        "opacity:1;display:inline;visibility:visible")
-                             .arg(code, 6, 16, QLatin1Char('0')));
-  writer_.writeEndElement();
-}
-
-// Rewrites the path data when Qt SVG would not draw it as SVG means it: elliptical arcs become
-// our cubics (path_data.hpp appendArcAsCubics; Qt's own are up to 0.027 mm off on r = 100 mm),
-// and data beyond Qt's 32,767-element limit is split into several <path>s.
-bool Sanitizer::writeSplitPath(const QXmlStreamAttributes& attributes) {
-  const QStringView d = attributes.value(QStringLiteral("d"));
-  const bool arcs = d.contains(u'a') || d.contains(u'A');  // no other command has these letters
-  if (!arcs && d.size() <= kPathScanChars) return false;
-  ParsedPath parsed = parsePathData(d);
-  if (arcs) parsed.commands = arcsAsCubics(parsed.commands);
-  long long estimate = 0;
-  for (const PathCommand& c : parsed.commands) estimate += qtElementEstimate(c);
-  const bool split = estimate > kMaxPathElements;
-  if (!split && !arcs) return false;
-  std::vector<QString> parts = splitPathData(parsed.commands, kMaxPathElements);
-  if (parts.empty()) parts.emplace_back();
-  if (split) {
-    warn(FB_TR("ImportWarning", "long <path> split into %1 parts to avoid Qt SVG's 32,767-element truncation")
-             .arg(parts.size()));
-    if (parsed.error)
-      warnAt(attributes, FB_TR("ImportWarning", "attribute d: invalid path data at character %1: drawn up to the error")
-                             .arg(static_cast<long long>(parsed.errorOffset + 1)));
-  } else {
-    checkPathData(attributes);
-  }
-  for (std::size_t i = 0; i < parts.size(); ++i) {
-    if (i > 0) writer_.writeStartElement(reader_.namespaceUri().toString(), QStringLiteral("path"));
-    for (const QXmlStreamAttribute& a : attributes) {
-      if (a.name() == u"d" && a.namespaceUri().isEmpty()) continue;
-      if (i > 0 && a.name() == u"id") continue;  // ids must stay unique
-      writer_.writeAttribute(a);
-    }
-    if (!parts[i].isEmpty()) writer_.writeAttribute(QStringLiteral("d"), parts[i]);
-    if (i + 1 < parts.size()) writer_.writeEndElement();
-  }
-  return true;
-}
-
-// A <rect> with rounded corners becomes the <path> SVG defines for it (rx/ry: one stands in for
-// a missing other, each at most half the side), its corners our arcs: Qt SVG would round them
-// with its own (drawRoundedRect: 90 deg cubics). Only plain numbers (user units) are converted;
-// anything else (units, %, auto spelled out) is left to Qt SVG.
-bool Sanitizer::writeRoundedRect(const QXmlStreamAttributes& attributes) {
-  if (rectStyled_) return false;
-  auto number = [&](const char* name, double fallback, bool& ok) {
-    const QStringView v = attributes.value(QLatin1String(name)).trimmed();
-    if (v.isEmpty()) return fallback;
-    const std::optional<Length> length = parseLength(v);
-    if (!length || (length->unit != LengthUnit::None && length->unit != LengthUnit::Px)) ok = false;
-    return length ? length->value : 0.0;
-  };
-  bool ok = true;
-  const double x = number("x", 0.0, ok), y = number("y", 0.0, ok);
-  const double w = number("width", 0.0, ok), h = number("height", 0.0, ok);
-  double rx = number("rx", -1.0, ok), ry = number("ry", -1.0, ok);
-  if (!ok || !(w > 0.0) || !(h > 0.0)) return false;
-  if (rx < 0.0 && ry < 0.0) return false;  // no radius given: square corners
-  if (rx < 0.0) rx = ry;
-  if (ry < 0.0) ry = rx;
-  if (rx == 0.0 || ry == 0.0) return false;  // square corners
-  if (attributes.value(QStringLiteral("rx")).trimmed().startsWith(u'-') ||
-      attributes.value(QStringLiteral("ry")).trimmed().startsWith(u'-'))
-    return false;
-  rx = std::min(rx, 0.5 * w);
-  ry = std::min(ry, 0.5 * h);
-  std::vector<PathCommand> c;
-  const double r = x + w, b = y + h;
-  auto arc = [&](double ex, double ey) { c.push_back({'A', {rx, ry, 0, 0, 1, ex, ey}}); };
-  c.push_back({'M', {x + rx, y}});
-  c.push_back({'L', {r - rx, y}});
-  arc(r, y + ry);
-  c.push_back({'L', {r, b - ry}});
-  arc(r - rx, b);
-  c.push_back({'L', {x + rx, b}});
-  arc(x, b - ry);
-  c.push_back({'L', {x, y + ry}});
-  arc(x + rx, y);
-  c.push_back({'Z', {}});
-  const std::vector<QString> parts = splitPathData(arcsAsCubics(c), kMaxPathElements);
-  writer_.writeStartElement(reader_.namespaceUri().toString(), QStringLiteral("path"));
-  for (const QXmlStreamAttribute& a : attributes) {
-    const QStringView n = a.name();
-    if (a.namespaceUri().isEmpty() && (n == u"x" || n == u"y" || n == u"width" || n == u"height" ||
-                                       n == u"rx" || n == u"ry" || n == u"d"))
-      continue;
-    writer_.writeAttribute(a);
-  }
-  writer_.writeAttribute(QStringLiteral("d"), parts.front());
-  return true;
-}
-
-// Declares the element's namespaces (before its start tag, so that the writer uses the
-// document's own prefixes); the root also gets xlink, which "href" conversion relies on.
-void Sanitizer::writeNamespaces() {
-  bool hasXlink = depth_ > 1;
-  for (const QXmlStreamNamespaceDeclaration& ns : reader_.namespaceDeclarations()) {
-    if (ns.prefix().isEmpty()) {
-      writer_.writeDefaultNamespace(ns.namespaceUri().toString());
-    } else if (ns.prefix() == u"xlink") {
-      if (depth_ == 1) writer_.writeNamespace(kXlinkNs, QStringLiteral("xlink"));
-      hasXlink = true;
-    } else {
-      writer_.writeNamespace(ns.namespaceUri().toString(), ns.prefix().toString());
-    }
-  }
-  if (!hasXlink) writer_.writeNamespace(kXlinkNs, QStringLiteral("xlink"));
-}
-
-// Qt SVG 6.4 ignores a nested <svg>'s position and viewBox: write it as a <g> with the
-// equivalent transform.
-void Sanitizer::writeNestedSvgAsGroup(const QXmlStreamAttributes& attributes) {
-  NestedViewport nested;
-  QXmlStreamAttributes kept;
-  for (const QXmlStreamAttribute& a : attributes) {
-    const QStringView n = a.name();
-    const QString v = a.value().toString();
-    if (!a.namespaceUri().isEmpty()) kept.append(a);
-    else if (n == u"x") nested.x = v;
-    else if (n == u"y") nested.y = v;
-    else if (n == u"width") nested.width = v;
-    else if (n == u"height") nested.height = v;
-    else if (n == u"viewBox") nested.viewBox = v;
-    else if (n == u"preserveAspectRatio") nested.preserveAspectRatio = v;
-    else if (n != u"transform") kept.append(a);
-  }
-  writer_.writeStartElement(reader_.namespaceUri().toString(), QStringLiteral("g"));
-  writer_.writeAttributes(kept);
-  writer_.writeAttribute(QStringLiteral("transform"), nestedViewportTransform(nested, result_.root, dpi_));
-}
-
 void Sanitizer::startElement() {
   ++depth_;
   if (skipDepth_ > 0) return;
@@ -371,12 +251,38 @@ void Sanitizer::startElement() {
     recordRoot(reader_.attributes());
     setViewport();
   }
+  // Inside a gradient only <stop> (and animation) belongs: Qt SVG would draw anything else.
+  const bool inGradient = gradientDepth_ > 0 && depth_ == gradientDepth_ + 1 && tag != u"stop" &&
+                          tag != u"animate" && tag != u"set";
+  const bool clipDefinition =
+      tag == u"clipPath" && clipPaths_.count(reader_.attributes().value(QStringLiteral("id")).toString());
+  if (depth_ > 1 && ((isNeverRendered(tag) && !clipDefinition) || inGradient ||
+                     !isSvgNamespace(reader_.namespaceUri()))) {
+    if (tag == u"pattern") warn(FB_TR("ImportWarning", "pattern fills are drawn as outlines, without the pattern"));
+    skipDepth_ = depth_;
+    return;
+  }
   const QXmlStreamAttributes cleaned = cleanAttributes(tag);
-  if (!checkNumbers(tag, cleaned)) return;
-  // Not drawn, as SVG says: a marker without an id, zero-size shapes.
-  const QXmlStreamAttributes attributes = rewriteAttributes(tag, cleaned);
+  // A non-finite number: the root refuses the file; any other element is dropped (the file is
+  // refused at the end only when nothing drawable is left).
+  if (Message bad = numberProblem(tag, cleaned); !bad.empty()) {
+    if (depth_ == 1) return fail(ImportStatus::InvalidNumber, std::move(bad));
+    if (firstNumberDrop_.empty()) firstNumberDrop_ = bad;
+    located_.push_back(FB_TR("ImportWarning", "%1: the element is not drawn").arg(std::move(bad)));
+    skipDepth_ = depth_;
+    return;
+  }
+  // Not drawn, as SVG says: a marker without an id, zero-size shapes, path data whose first
+  // command is not a moveto.
+  QXmlStreamAttributes attributes = rewriteAttributes(tag, cleaned);
+  if (clipContentDepth_ > 0) attributes = clipContentAttributes(attributes);
+  const QString badStart = tag == u"path" ? badFirstCommand(attributes.value(QStringLiteral("d"))) : QString();
+  if (!badStart.isEmpty())
+    warnAt(attributes, FB_TR("ImportWarning", "attribute d: path data begins with \"%1\", not a moveto (M or m): "
+                                              "in error from its first command, nothing drawn")
+                           .arg(badStart.toStdString()));
   if ((tag == u"marker" && !markers_.count(attributes.value(QStringLiteral("id")).toString())) ||
-      isZeroSizeShape(tag, attributes)) {
+      isZeroSizeShape(tag, attributes) || !badStart.isEmpty()) {
     fontSizes_.pop_back();
     skipDepth_ = depth_;
     return;
@@ -398,10 +304,14 @@ void Sanitizer::startElement() {
     writeSentinel(index);
   }
   if (isShape(tag)) ++result_.shapeCount;
+  if (tag == u"linearGradient" || tag == u"radialGradient") gradientDepth_ = depth_;
   inStyle_ = tag == u"style";
+  beginClip(attributes);
   writeNamespaces();
   if (depth_ > 1 && tag == u"svg") return writeNestedSvgAsGroup(attributes);
-  if (writeSymbolOrUse(tag, attributes) || writeMarkerDefinition(tag, attributes)) return;
+  if (writeUseOfSvg(attributes) || writeSymbolOrUse(tag, attributes) || writeMarkerDefinition(tag, attributes) ||
+      writeClipPathDefinition(tag, attributes))
+    return;
   if (tag == u"rect" && writeRoundedRect(attributes)) return;
   writer_.writeStartElement(reader_.namespaceUri().toString(), tag);
   if (tag == u"path") {
@@ -418,6 +328,12 @@ void Sanitizer::endElement() {
     return;
   }
   if (depth_ == markerContentDepth_) markerContentDepth_ = 0;
+  if (depth_ == gradientDepth_) gradientDepth_ = 0;
+  if (depth_ == clipContentDepth_) clipContentDepth_ = 0;
+  if (!outerViewports_.empty() && outerViewports_.back().first == depth_) {
+    viewport_ = outerViewports_.back().second;
+    outerViewports_.pop_back();
+  }
   --depth_;
   inStyle_ = false;
   if (result_.status != ImportStatus::Ok) return;
@@ -426,6 +342,7 @@ void Sanitizer::endElement() {
   for (int i = 0; i < extraEnds_.back(); ++i) writer_.writeEndElement();
   extraEnds_.pop_back();
   writeMarkerInstances();
+  endClip();
   markerStates_.pop_back();
   fontSizes_.pop_back();
 }
@@ -438,6 +355,8 @@ void Sanitizer::characters() {
       warn(FB_TR("ImportWarning", "markers set in a style sheet for the selector '%1' are not drawn "
                                   "(only type, #id and .class selectors are applied)")
                .arg(selector.toStdString()));
+  if (inStyle_ && text.contains(QStringLiteral("clip-path")))
+    warn(FB_TR("ImportWarning", "clip-path set in a style sheet is not applied: those shapes are drawn unclipped"));
   if (inStyle_ && text.contains(QStringLiteral("@import"))) {
     static const QRegularExpression import(QStringLiteral("@import[^;]*;?"));
     text.remove(import);
@@ -464,6 +383,12 @@ SanitizeResult sanitizeSvg(QIODevice& input, double dpi,
   detail::Sanitizer sanitizer(input, dpi, progress, std::move(symbols), std::move(markers));
   sanitizer.setMarkerSheet(std::move(sheet));
   sanitizer.setRectStyled(rectStyled);
+  if (const auto* buffer = qobject_cast<const QBuffer*>(&input))
+    sanitizer.setPatternIds(detail::scanPatternIds(buffer->data()));
+  if (const auto* buffer = qobject_cast<const QBuffer*>(&input)) {
+    sanitizer.setClipPaths(scanClipPaths(buffer->data()));
+    sanitizer.setNestedSvgs(scanNestedSvgs(buffer->data()));
+  }
   return sanitizer.run();
 }
 

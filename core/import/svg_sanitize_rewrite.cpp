@@ -1,8 +1,10 @@
 // The Sanitizer's rewrites for browser fidelity (symbols, lengths, transform-origin, path data
 // errors, unsupported features) and the number checks; see svg_rewrite.hpp.
 #include <QRectF>
+#include <QRegularExpression>
 
 #include "path_data.hpp"
+#include "svg_lengths.hpp"
 #include "sanitizer.hpp"
 
 namespace fivebar::svg {
@@ -11,7 +13,7 @@ namespace detail {
 void Sanitizer::setViewport() {
   const RootAttributes& root = result_.root;
   if (const std::optional<QRectF> box = parseViewBox(root.viewBox); box && box->width() > 0.0) {
-    viewport_ = {box->width(), box->height()};
+    viewport_ = rootViewport_ = {box->width(), box->height()};
     return;
   }
   auto side = [&](const QString& text) {
@@ -19,18 +21,22 @@ void Sanitizer::setViewport() {
     if (!length || length->unit == LengthUnit::Percent) return 0.0;
     return lengthToMm(*length, dpi_).value_or(0.0) * dpi_ / 25.4;
   };
-  viewport_ = {side(root.width), side(root.height)};
+  viewport_ = rootViewport_ = {side(root.width), side(root.height)};
 }
 
-// Lengths Qt 6.4 misreads, made user units; transform-origin folded into transform.
+// Lengths Qt 6.4 misreads (units, em/ex, % on the wrong axis: svg_lengths.hpp), made user units;
+// transform-origin folded into transform.
 QXmlStreamAttributes Sanitizer::rewriteAttributes(QStringView tag,
                                                   const QXmlStreamAttributes& attributes) {
   const double parentFont = fontSizes_.empty() ? 16.0 : fontSizes_.back();
   double font = parentFont;
-  if (const QStringView f = attributes.value(QStringLiteral("font-size")); !f.isEmpty())
-    font = fontSizeUser(f, parentFont, dpi_).value_or(parentFont);
+  QStringView fontText = attributes.value(QStringLiteral("font-size"));
+  const QString styleFont = styleValue(attributes.value(QStringLiteral("style")), u"font-size");
+  if (!styleFont.isEmpty()) fontText = styleFont;
+  if (!fontText.isEmpty()) font = fontSizeUser(fontText, parentFont, dpi_).value_or(parentFont);
   fontSizes_.push_back(font);
   const bool text = tag == u"text" || tag == u"tspan";
+  const bool root = depth_ == 1;  // its size is the page's (svg_units.hpp computePage)
   // Most elements need nothing: find out without copying a value.
   bool needed = tag == u"ellipse";
   for (const QXmlStreamAttribute& a : attributes) {
@@ -39,10 +45,14 @@ QXmlStreamAttributes Sanitizer::rewriteAttributes(QStringView tag,
     const QStringView n = a.name(), v = a.value();
     needed = n == u"transform-origin" || v.contains(u"vw") || v.contains(u"vh") ||
              v.contains(u"vmin") || v.contains(u"vmax") ||
-             (text && (n == u"x" || n == u"dx" || n == u"y" || n == u"dy") && !v.isEmpty() &&
-              !v.back().isDigit() && v.back() != u'.');
+             (!root && hasLengthUnit(v) &&
+              (n == u"font-size" || n == u"stroke-width" || lengthAttributeAxis(tag, n))) ||
+             (text && (n == u"x" || n == u"dx" || n == u"y" || n == u"dy") && hasLengthUnit(v)) ||
+             (!patternIds_.isEmpty() && (n == u"fill" || n == u"style") && v.contains(u"url(")) ||
+             ((n == u"stroke-dasharray" || n == u"stroke-dashoffset") && hasLengthUnit(v));
   }
   if (!needed) return attributes;
+  const LengthContext lengths{viewport_, font, dpi_};
   QXmlStreamAttributes out;
   out.reserve(attributes.size());
   QString origin;
@@ -58,6 +68,36 @@ QXmlStreamAttributes Sanitizer::rewriteAttributes(QStringView tag,
       continue;
     }
     if (const std::optional<QString> v = resolveViewportUnits(value, viewport_)) value = *v;
+    if (!patternIds_.isEmpty() && n == u"fill") value = withoutPatternPaint(value);
+    if (!patternIds_.isEmpty() && n == u"style" && value.contains(u"url(")) {
+      QStringList declarations = value.split(u';');
+      for (QString& d : declarations)
+        if (const qsizetype colon = d.indexOf(u':'); colon > 0 && d.left(colon).trimmed() == u"fill")
+          d = QStringLiteral("fill:") + withoutPatternPaint(d.mid(colon + 1));
+      value = declarations.join(u';');
+    }
+    if ((n == u"stroke-dasharray" || n == u"stroke-dashoffset") && hasLengthUnit(value)) {
+      // Qt SVG reads plain numbers only; % of the normalised diagonal (SVG 2).
+      static const QRegularExpression separators(QStringLiteral("[\\s,]+"));
+      QStringList parts = value.trimmed().split(separators, Qt::SkipEmptyParts);
+      bool all = !parts.isEmpty();
+      for (QString& part : parts) {
+        const std::optional<double> v = resolveLength(part, LengthAxis::Diagonal, lengths);
+        all = all && v.has_value();
+        if (v) part = QString::number(*v, 'g', 17);
+      }
+      if (all) value = parts.join(u' ');
+    }
+    if (!root && hasLengthUnit(value)) {
+      if (n == u"font-size") value = QString::number(font, 'g', 17);
+      else if (n == u"stroke-width") {
+        if (const std::optional<double> v = resolveLength(value, LengthAxis::Diagonal, lengths))
+          value = QString::number(*v, 'g', 17);
+      }
+      else if (const std::optional<LengthAxis> axis = lengthAttributeAxis(tag, n))
+        if (const std::optional<double> v = resolveLength(value, *axis, lengths))
+          value = QString::number(*v, 'g', 17);
+    }
     if (text && (n == u"x" || n == u"dx" || n == u"y" || n == u"dy")) {
       const double reference = (n == u"x" || n == u"dx") ? viewport_.width : viewport_.height;
       if (const std::optional<QString> v = resolveTextLengths(value, reference, font, dpi_)) value = *v;
@@ -86,23 +126,29 @@ QXmlStreamAttributes Sanitizer::rewriteAttributes(QStringView tag,
   return out;
 }
 
+QString Sanitizer::withoutPatternPaint(const QString& paint) const {
+  static const QRegularExpression url(
+      QStringLiteral("^\\s*url\\(\\s*['\"]?#([^'\")\\s]+)['\"]?\\s*\\)\\s*(.*)$"));
+  const QRegularExpressionMatch m = url.match(paint);
+  if (!m.hasMatch() || !patternIds_.contains(m.captured(1))) return paint;
+  const QString fallback = m.captured(2).trimmed();
+  return fallback.isEmpty() || fallback == u"none" ? QStringLiteral("black") : fallback;
+}
+
 // Features not drawn: each is named once per file with its first line.
 void Sanitizer::warnUnsupported(QStringView tag, const QXmlStreamAttributes& attributes) {
-  bool clip = false, mask = false, rotate = false;
+  bool mask = false, rotate = false;
   for (const QXmlStreamAttribute& a : attributes) {
     if (!a.namespaceUri().isEmpty()) continue;
     const QStringView n = a.name();
     if (n == u"style") {
       const QStringView style = a.value();
-      clip = clip || style.contains(u"clip-path");
       mask = mask || style.contains(u"mask");
       if (style.contains(u"transform-origin")) warn(FB_TR("ImportWarning", "transform-origin in a style is not applied"));
     }
-    clip = clip || n == u"clip-path";
     mask = mask || n == u"mask";
     rotate = rotate || n == u"rotate";
   }
-  if (clip) warn(FB_TR("ImportWarning", "clip-path not applied: clipped shapes are drawn whole"));
   if (mask) warn(FB_TR("ImportWarning", "mask not applied: masked shapes are drawn whole"));
   if (rotate && (tag == u"text" || tag == u"tspan"))
     warn(FB_TR("ImportWarning", "per-glyph rotate on <text> is not applied: glyphs are drawn upright"));
@@ -186,7 +232,8 @@ void Sanitizer::pushMarkerState(QStringView tag, const QXmlStreamAttributes& att
         if (marker->second.clips)
           warn(FB_TR("ImportWarning", "marker overflow clipping not applied: marker content is drawn whole"));
         if (const std::optional<QString> t =
-                markerInstanceTransform(marker->second, vertices[i], slot, state.strokeWidth)) {
+                markerInstanceTransform(marker->second, vertices[i], slot, state.strokeWidth,
+                                        LengthContext{viewport_, fontSizes_.back(), dpi_})) {
           state.instances.emplace_back(id, *t);
           ++markerInstances_;
         }

@@ -18,6 +18,7 @@ std::optional<LengthUnit> unitFromSuffix(QStringView suffix) {
   if (s == u"px") return LengthUnit::Px;
   if (s == u"mm") return LengthUnit::Mm;
   if (s == u"cm") return LengthUnit::Cm;
+  if (s == u"q") return LengthUnit::Q;
   if (s == u"in") return LengthUnit::In;
   if (s == u"pt") return LengthUnit::Pt;
   if (s == u"pc") return LengthUnit::Pc;
@@ -60,6 +61,7 @@ std::optional<double> lengthToMm(const Length& length, double dpi) {
     case LengthUnit::Px: return length.value * mmPerPx;
     case LengthUnit::Mm: return length.value;
     case LengthUnit::Cm: return length.value * 10.0;
+    case LengthUnit::Q: return length.value * 0.25;
     case LengthUnit::In: return length.value * kMmPerInch;
     case LengthUnit::Pt: return length.value * kMmPerInch / 72.0;
     case LengthUnit::Pc: return length.value * kMmPerInch / 6.0;
@@ -70,33 +72,77 @@ std::optional<double> lengthToMm(const Length& length, double dpi) {
   return std::nullopt;
 }
 
+NumberList scanNumberList(QStringView text) {
+  NumberList out;
+  const qsizetype n = text.size();
+  qsizetype i = 0;
+  auto digits = [&](qsizetype& k) {
+    const qsizetype start = k;
+    while (k < n && text[k].isDigit()) ++k;
+    return k > start;
+  };
+  bool comma = false;  // one comma between numbers at most
+  for (;;) {
+    while (i < n && text[i].isSpace()) ++i;
+    if (i < n && text[i] == u',' && !comma && !out.tokens.isEmpty()) {
+      comma = true;
+      ++i;
+      continue;
+    }
+    if (i >= n) {
+      if (comma) out.badAt = i;  // a trailing comma
+      return out;
+    }
+    qsizetype k = i;
+    if (text[k] == u'+' || text[k] == u'-') ++k;
+    const bool whole = digits(k);
+    bool fraction = false;
+    if (k < n && text[k] == u'.') {
+      qsizetype f = k + 1;
+      fraction = digits(f);
+      if (fraction || whole) k = f;
+    }
+    if (!whole && !fraction) {
+      out.badAt = i;
+      return out;
+    }
+    if (k < n && (text[k] == u'e' || text[k] == u'E')) {
+      qsizetype e = k + 1;
+      if (e < n && (text[e] == u'+' || text[e] == u'-')) ++e;
+      if (digits(e)) k = e;
+    }
+    out.tokens.push_back(text.mid(i, k - i).toString());
+    comma = false;
+    i = k;
+  }
+}
+
 std::optional<QRectF> parseViewBox(QStringView text) {
-  static const QRegularExpression separators(QStringLiteral("[\\s,]+"));
-  const QStringList parts = text.toString().trimmed().split(separators, Qt::SkipEmptyParts);
-  if (parts.size() != 4) return std::nullopt;
+  const NumberList list = scanNumberList(text);
+  if (list.badAt >= 0 || list.tokens.size() != 4) return std::nullopt;
   double v[4];
   for (int i = 0; i < 4; ++i) {
     bool ok = false;
-    v[i] = parts[i].toDouble(&ok);
+    v[i] = list.tokens[i].toDouble(&ok);
     if (!ok || !std::isfinite(v[i])) return std::nullopt;
   }
   return QRectF(v[0], v[1], v[2], v[3]);
 }
 
 std::string viewBoxProblem(QStringView text) {
-  static const QRegularExpression separators(QStringLiteral("[\\s,]+"));
-  const QStringList parts = text.toString().trimmed().split(separators, Qt::SkipEmptyParts);
-  if (parts.size() != 4)
-    return "not four numbers (" + std::to_string(parts.size()) + " values)";
+  const NumberList list = scanNumberList(text);
+  if (list.badAt >= 0)
+    return "\"" + text.mid(list.badAt, 16).toString().simplified().toStdString() +
+           "\" is not a number (after " + std::to_string(list.tokens.size()) + " numbers)";
+  if (list.tokens.size() != 4)
+    return "not four numbers (" + std::to_string(list.tokens.size()) + " numbers)";
   double v[4];
   for (int i = 0; i < 4; ++i) {
     bool ok = false;
-    v[i] = parts[i].toDouble(&ok);
-    if (!ok && !std::isfinite(v[i])) return "a number beyond 1e300 (" + parts[i].toStdString() + ")";
-    if (!ok) return "\"" + parts[i].toStdString() + "\" is not a number";
-    if (!std::isfinite(v[i])) return "a number beyond 1e300 (" + parts[i].toStdString() + ")";
+    v[i] = list.tokens[i].toDouble(&ok);
+    if (!ok || !std::isfinite(v[i])) return "a number beyond 1e300 (" + list.tokens[i].toStdString() + ")";
     if (std::abs(v[i]) > kMaxViewBoxNumber)
-      return "a number too large (" + parts[i].toStdString() + "; at most 1e12)";
+      return "a number too large (" + list.tokens[i].toStdString() + "; at most 1e12)";
   }
   if (v[2] <= 0.0 || v[3] <= 0.0) return "width and height must be positive";
   return {};
@@ -212,25 +258,42 @@ std::optional<double> userLength(const QString& text, double reference, double d
 
 }  // namespace
 
-QString nestedViewportTransform(const NestedViewport& nested, const RootAttributes& root, double dpi) {
-  const std::optional<QRectF> rootBox = parseViewBox(root.viewBox);
-  const double refW = rootBox ? rootBox->width() : 0.0;
-  const double refH = rootBox ? rootBox->height() : 0.0;
+QString nestedViewportTransform(const NestedViewport& nested, double parentWidth, double parentHeight,
+                                double dpi, QSizeF* viewport) {
+  const double refW = parentWidth, refH = parentHeight;
   const double x = userLength(nested.x, refW, dpi).value_or(0.0);
   const double y = userLength(nested.y, refH, dpi).value_or(0.0);
   const std::optional<QRectF> box = parseViewBox(nested.viewBox);
   auto num = [](double v) { return QString::number(v, 'g', 17); };
-  if (!box || box->width() <= 0.0 || box->height() <= 0.0)
-    return QStringLiteral("translate(%1,%2)").arg(num(x), num(y));
   const double w = userLength(nested.width.isEmpty() ? QStringLiteral("100%") : nested.width, refW, dpi)
-                       .value_or(box->width());
+                       .value_or(box ? box->width() : refW);
   const double h = userLength(nested.height.isEmpty() ? QStringLiteral("100%") : nested.height, refH, dpi)
-                       .value_or(box->height());
+                       .value_or(box ? box->height() : refH);
+  if (!box || box->width() <= 0.0 || box->height() <= 0.0) {
+    if (viewport) *viewport = QSizeF(w, h);
+    return QStringLiteral("translate(%1,%2)").arg(num(x), num(y));
+  }
+  if (viewport) *viewport = box->size();
   const QRectF place = placeViewBox(*box, QRectF(0, 0, w, h),
                                     parsePreserveAspectRatio(nested.preserveAspectRatio));
   return QStringLiteral("translate(%1,%2) scale(%3,%4) translate(%5,%6)")
       .arg(num(x + place.x()), num(y + place.y()), num(place.width() / box->width()),
            num(place.height() / box->height()), num(-box->x()), num(-box->y()));
+}
+
+QTransform nestedViewportMatrix(const NestedViewport& nested, double parentWidth, double parentHeight,
+                                double dpi) {
+  const double x = userLength(nested.x, parentWidth, dpi).value_or(0.0);
+  const double y = userLength(nested.y, parentHeight, dpi).value_or(0.0);
+  const std::optional<QRectF> box = parseViewBox(nested.viewBox);
+  if (!box || box->width() <= 0.0 || box->height() <= 0.0) return QTransform::fromTranslate(x, y);
+  const double w = userLength(nested.width.isEmpty() ? QStringLiteral("100%") : nested.width, parentWidth, dpi)
+                       .value_or(box->width());
+  const double h = userLength(nested.height.isEmpty() ? QStringLiteral("100%") : nested.height, parentHeight, dpi)
+                       .value_or(box->height());
+  const QRectF place = placeViewBox(*box, QRectF(0, 0, w, h), parsePreserveAspectRatio(nested.preserveAspectRatio));
+  const double sx = place.width() / box->width(), sy = place.height() / box->height();
+  return QTransform(sx, 0, 0, sy, x + place.x() - box->x() * sx, y + place.y() - box->y() * sy);
 }
 
 }  // namespace fivebar::svg

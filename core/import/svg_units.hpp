@@ -4,7 +4,10 @@
 #pragma once
 
 #include <QRectF>
+#include <QSizeF>
+#include <QTransform>
 #include <QString>
+#include <QStringList>
 #include <QStringView>
 
 #include <optional>
@@ -14,7 +17,7 @@
 
 namespace fivebar::svg {
 
-enum class LengthUnit { None, Px, Mm, Cm, In, Pt, Pc, Em, Ex, Percent };
+enum class LengthUnit { None, Px, Mm, Cm, Q, In, Pt, Pc, Em, Ex, Percent };
 
 struct Length {
   double value = 0.0;
@@ -24,16 +27,26 @@ struct Length {
 // "12.5mm", "3in", "100", "50%"; nullopt when the text is not a length.
 std::optional<Length> parseLength(QStringView text);
 
-// Millimetres for an absolute or unitless length ("px" and no unit are 1/dpi inch, em = 16 px,
-// ex = 8 px); nullopt for percentages.
+// Millimetres for an absolute or unitless length ("px" and no unit are 1/dpi inch, Q = 1/4 mm,
+// em = 16 px, ex = 8 px: the initial font size); nullopt for percentages. Lengths inside the
+// document go through resolveLength (svg_lengths.hpp), which knows the element's font size.
 std::optional<double> lengthToMm(const Length& length, double dpi);
 
-// "minx miny width height" (spaces and/or commas); nullopt unless 4 finite numbers.
+// A list of numbers in the SVG number grammar (SVG 2 "number", separated by whitespace and at
+// most one comma): "9E80.7" is the two numbers 9E80 and .7, "1-2" is 1 and -2. badAt: offset of
+// the first text that is no number (-1 when the whole text is numbers).
+struct NumberList {
+  QStringList tokens;
+  qsizetype badAt = -1;
+};
+NumberList scanNumberList(QStringView text);
+
+// "minx miny width height" (SVG number grammar); nullopt unless 4 finite numbers.
 std::optional<QRectF> parseViewBox(QStringView text);
 
 inline constexpr double kMaxViewBoxNumber = 1e12;  // user units; beyond: refused as too large
 
-// What is wrong with a root viewBox text ("not four numbers (3 values)", "a number too large
+// What is wrong with a root viewBox text ("not four numbers (3 numbers)", "a number too large
 // (9e80; at most 1e12)", ...); empty when it is usable.
 std::string viewBoxProblem(QStringView text);
 
@@ -80,8 +93,15 @@ struct NestedViewport {
 };
 
 // The SVG transform text that maps a nested <svg>'s content into its parent's user space
-// (lengths: unitless/px = user units, absolute units at dpi, % of the root viewBox (when known)).
-// Clipping to the nested viewport is not modelled.
-QString nestedViewportTransform(const NestedViewport& nested, const RootAttributes& root, double dpi);
+// (lengths: unitless/px = user units, absolute units at dpi, % of the parent's viewport, whose
+// size in user units is parentWidth x parentHeight; 0 = unknown). Clipping to the nested
+// viewport is not modelled. `viewport` receives the size of the new viewport in its own user
+// units (the viewBox's size, else the viewport's).
+QString nestedViewportTransform(const NestedViewport& nested, double parentWidth, double parentHeight,
+                                double dpi, QSizeF* viewport = nullptr);
+
+// The same mapping as a matrix (parent user space from the nested <svg>'s content).
+QTransform nestedViewportMatrix(const NestedViewport& nested, double parentWidth, double parentHeight,
+                                double dpi);
 
 }  // namespace fivebar::svg

@@ -405,6 +405,7 @@ QStringList workerArguments(const QString& path, const ImportOptions& o) {
           QStringLiteral("--max-coordinate-mm"), number(o.maxCoordinateMm),
           QStringLiteral("--max-points"), QString::number(static_cast<qulonglong>(o.maxPoints)),
           QStringLiteral("--outline-fills"), o.outlineFills ? QStringLiteral("1") : QStringLiteral("0"),
+          QStringLiteral("--dashes"), o.dashes == DashMode::Solid ? QStringLiteral("solid") : QStringLiteral("dashed"),
           QStringLiteral("--layers"), QString::fromLatin1(mode),
           QStringLiteral("--"), path};
 }
@@ -427,6 +428,11 @@ QString parseWorkerArguments(const QStringList& arguments, QString& path, Import
     else if (key == u"--height-mm") o.forcedHeightMm = value.toDouble(&ok);
     else if (key == u"--max-coordinate-mm") o.maxCoordinateMm = value.toDouble(&ok);
     else if (key == u"--outline-fills") o.outlineFills = value == u"1";
+    else if (key == u"--dashes") {
+      if (value == u"dashed") o.dashes = DashMode::Dashed;
+      else if (value == u"solid") o.dashes = DashMode::Solid;
+      else ok = false;
+    }
     else if (key == u"--max-points") o.maxPoints = static_cast<std::size_t>(value.toULongLong(&ok));
     else if (key == QLatin1StringView(kResultFdOption) && resultFd) {
       *resultFd = value.toInt(&ok);

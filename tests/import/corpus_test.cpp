@@ -107,5 +107,32 @@ TEST(Corpus, VpypeMultilayerFileKeepsItsInkscapeLayers) {
   EXPECT_NE(std::find(names.begin(), names.end(), "2"), names.end());
 }
 
+// vpype's halftone jobs hold zero-radius arcs (a 0.001-unit line and back, butt caps): no
+// renderer shows them, so none may become a pen dot; each arc with a radius is one closed dot.
+TEST(Corpus, HalftoneZeroRadiusDotsAreNotDrawn) {
+  QDirIterator it(corpusDir() + QStringLiteral("/vpype-plotter/issue_59"), {QStringLiteral("halftone_*.svg")}, QDir::Files);
+  if (!it.hasNext()) GTEST_SKIP() << "corpus absent";
+  const QString file = it.next();
+  QFile text(file);
+  ASSERT_TRUE(text.open(QIODevice::ReadOnly));
+  const QString d = QString::fromUtf8(text.readAll());
+  const long long arcs = d.count(QStringLiteral(" a ")), zero = d.count(QStringLiteral(" a 0.000 0.000 "));
+  ASSERT_GT(zero, 0);
+  const ImportResult r = importSvgFile(file);
+  ASSERT_TRUE(r.ok()) << r.message;
+  std::size_t dots = 0, lines = 0;
+  for (const Layer& layer : r.drawing.layers)
+    for (const Polyline& line : layer.paths) {
+      ++lines;
+      // A zero-radius arc and its closepath: two points 0.001 units apart (0.00026 mm).
+      if (line.points.size() == 2 && (line.points[1] - line.points[0]).norm() <= 0.05) ++dots;
+    }
+  EXPECT_EQ(dots, 0u);
+  // One closed dot per arc with a radius, plus a pen lift where the long path was split
+  // (the import warns "split into 9 parts": at most 8 dots cut in two).
+  EXPECT_GE(static_cast<long long>(lines), arcs - zero);
+  EXPECT_LE(static_cast<long long>(lines), arcs - zero + 8);
+}
+
 }  // namespace
 }  // namespace fivebar::svg

@@ -102,6 +102,21 @@ TEST_F(PlanCli, HatchFillDrawsTheLinesTheAreaNeeds) {
   EXPECT_EQ(plan(svg, "--hatch-spacing 1").exitCode, 2);  // needs --fill hatch
 }
 
+// A 30 mm line dashed "4 2": five dashes of 4 mm (20 mm drawn); --dashes solid draws all 30 mm.
+TEST_F(PlanCli, DashesAreDrawnAsDashesUnlessSolidIsAsked) {
+  const fs::path svg = write("dashed.svg", doc("<path d=\"M5 20 L35 20\" stroke=\"black\" fill=\"none\" "
+                                                "stroke-dasharray=\"4 2\"/>"));
+  const PlanRun dashed = plan(svg, "");
+  ASSERT_EQ(dashed.exitCode, 0) << dashed.err;
+  EXPECT_NEAR(penDownMm(dashed.out), 20.0, 1.0) << dashed.out;
+  const PlanRun solid = plan(svg, "--dashes solid");
+  ASSERT_EQ(solid.exitCode, 0) << solid.err;
+  EXPECT_NEAR(penDownMm(solid.out), 30.0, 1.0) << solid.out;
+  const PlanRun bad = plan(svg, "--dashes dotted");
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("--dashes must be dashed or solid, got 'dotted'"), std::string::npos) << bad.err;
+}
+
 double scalePercent(const std::string& out) {
   std::smatch m;
   if (!std::regex_search(out, m, std::regex("scale ([0-9.]+) %"))) return -1.0;

@@ -77,12 +77,12 @@ void ImportController::openFile(const QString& path) {
       isProjectPath(path) ? std::nullopt : std::optional<MachineProfile>(doc_.profile());
   const PlanOptions options = importOptions(doc_);
   retry_ = [this, path] { openFile(path); };
-  start([path, profile, options, fill = fill_, hatch = hatch_,
-         maxPoints = maxPoints_](const std::atomic<bool>* cancel) {
+  start([path, profile, options, fill = fill_, hatch = hatch_, maxPoints = maxPoints_,
+         solid = solidDashes_](const std::atomic<bool>* cancel) {
           ImportOutcome out;
           PlanOptions o = options;
           o.cancel = cancel;
-          out.job = loadJob(path, profile, o, out.error, fill, hatch, maxPoints);
+          out.job = loadJob(path, profile, o, out.error, fill, hatch, maxPoints, solid);
           if (out.job) out.job->options.cancel = nullptr;
           return out;
         },
@@ -93,12 +93,12 @@ void ImportController::openData(const QByteArray& svg, const QString& name) {
   const MachineProfile profile = doc_.profile();
   const PlanOptions options = importOptions(doc_);
   retry_ = [this, svg, name] { openData(svg, name); };
-  start([svg, name, profile, options, fill = fill_, hatch = hatch_,
-         maxPoints = maxPoints_](const std::atomic<bool>* cancel) {
+  start([svg, name, profile, options, fill = fill_, hatch = hatch_, maxPoints = maxPoints_,
+         solid = solidDashes_](const std::atomic<bool>* cancel) {
           ImportOutcome out;
           PlanOptions o = options;
           o.cancel = cancel;
-          out.job = loadDrawing(DrawingSource{svg, name, fill, hatch, maxPoints}, profile, o, out.error);
+          out.job = loadDrawing(DrawingSource{svg, name, fill, hatch, maxPoints, solid}, profile, o, out.error);
           if (out.job) out.job->options.cancel = nullptr;
           return out;
         },

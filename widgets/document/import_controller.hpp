@@ -45,6 +45,9 @@ class ImportController : public QObject {
     hatch_ = hatch;
   }
   FillMode fill() const { return fill_; }
+  // Dashed strokes of the next imports drawn whole (true) or as their dashes (default).
+  void setSolidDashes(bool solid) { solidDashes_ = solid; }
+  bool solidDashes() const { return solidDashes_; }
   const HatchSettings& hatch() const { return hatch_; }
   QStringList recentFiles() const;
   // Puts a file at the top of the recent list (drawings on import, projects on save).
@@ -90,6 +93,7 @@ class ImportController : public QObject {
   bool budgetWaived_ = false;
   std::function<void()> retry_;
   FillMode fill_ = FillMode::Outline;
+  bool solidDashes_ = false;
   HatchSettings hatch_;
 };
 

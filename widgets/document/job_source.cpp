@@ -37,6 +37,7 @@ std::optional<Drawing> importSvgText(const DrawingSource& source, double toleran
   options.toleranceMm = toleranceMm;
   options.cancel = cancel;
   options.maxPoints = source.maxPoints;
+  options.dashes = source.solidDashes ? svg::DashMode::Solid : svg::DashMode::Dashed;
   svg::ImportResult r = svg::importSvgFile(file.fileName(), options);
   if (!r.ok()) {
     // In the user's language, naming the drawing, not the temporary copy.
@@ -155,7 +156,7 @@ std::optional<LoadedJob> loadDrawing(const DrawingSource& source, const MachineP
 
 std::optional<LoadedJob> loadJob(const QString& path, const std::optional<MachineProfile>& profile,
                                  PlanOptions options, std::string& error, FillMode fill,
-                                 const HatchSettings& hatch, std::size_t maxPoints) {
+                                 const HatchSettings& hatch, std::size_t maxPoints, bool solidDashes) {
   if (isProjectPath(path)) return loadProject(path, profile, error, maxPoints);
   if (!profile) {
     error = trSource(QT_TRANSLATE_NOOP("JobPipeline", "no machine profile given")).toStdString();
@@ -166,6 +167,7 @@ std::optional<LoadedJob> loadJob(const QString& path, const std::optional<Machin
   source.fill = fill;
   source.hatch = hatch;
   source.maxPoints = maxPoints;
+  source.solidDashes = solidDashes;
   if (!readFile(path, source.svg, error)) return std::nullopt;
   return loadDrawing(source, *profile, std::move(options), error);
 }

@@ -30,6 +30,7 @@ struct DrawingSource {
   // stops reading as soon as the count passes it and fails naming the budget (every import of
   // the source, the finer re-import too). kDefaultMaxPoints (drawing.hpp) is the usual budget.
   std::size_t maxPoints = 0;
+  bool solidDashes = false;  // dashed strokes drawn whole (svg::DashMode::Solid)
 };
 
 // True when `error` came from an import stopped by DrawingSource::maxPoints.
@@ -80,7 +81,7 @@ bool isProjectPath(const QString& path);
 std::optional<LoadedJob> loadJob(const QString& path, const std::optional<MachineProfile>& profile,
                                  PlanOptions options, std::string& error,
                                  FillMode fill = FillMode::Outline, const HatchSettings& hatch = {},
-                                 std::size_t maxPoints = 0);
+                                 std::size_t maxPoints = 0, bool solidDashes = false);
 
 // The same for SVG text already in memory (the built-in demo).
 std::optional<LoadedJob> loadDrawing(const DrawingSource& source, const MachineProfile& profile,

@@ -37,12 +37,16 @@ FillOptionsBox::FillOptionsBox(ImportController& importer, StudioDocument& doc, 
   angle_->setSuffix(tr(" deg"));
   cross_ = new QCheckBox(tr("Crosshatch"), this);
   outline_ = new QCheckBox(tr("Keep the outline"), this);
+  solidDashes_ = new QCheckBox(tr("Draw dashed strokes solid"), this);
+  solidDashes_->setToolTip(tr("Dashed strokes are drawn as their dashes, the pen lifted between "
+                              "them; checked: each dashed stroke is drawn as one line."));
   apply_ = new QPushButton(tr("Import again with these settings"), this);
   form->addRow(tr("Fill:"), mode_);
   form->addRow(tr("Line spacing:"), spacing_);
   form->addRow(tr("Angle:"), angle_);
   form->addRow(cross_);
   form->addRow(outline_);
+  form->addRow(solidDashes_);
   form->addRow(apply_);
 
   HatchSettings defaults;
@@ -54,6 +58,8 @@ FillOptionsBox::FillOptionsBox(ImportController& importer, StudioDocument& doc, 
   connect(angle_, &QDoubleSpinBox::valueChanged, this, &FillOptionsBox::push);
   connect(cross_, &QCheckBox::toggled, this, &FillOptionsBox::push);
   connect(outline_, &QCheckBox::toggled, this, &FillOptionsBox::push);
+  solidDashes_->setChecked(importer_.solidDashes());
+  connect(solidDashes_, &QCheckBox::toggled, &importer_, &ImportController::setSolidDashes);
   connect(&doc_, &StudioDocument::drawingChanged, this, &FillOptionsBox::updateEnabled);
   connect(apply_, &QPushButton::clicked, this, [this] {
     if (canImportAgain()) importer_.openFile(doc_.fileName());

@@ -1,6 +1,7 @@
 // How filled shapes are drawn when a drawing is imported: outline (default), hatch (spacing,
 // angle, crosshatch, outline kept or not) or none; "Apply" imports the current file again with
-// the new choice (for this session). The geometry is core/planning/hatch.hpp.
+// the new choice (for this session). The geometry is core/planning/hatch.hpp. "Draw dashed
+// strokes solid" makes the next imports draw stroke-dasharray strokes whole.
 #pragma once
 
 #include <QGroupBox>
@@ -39,6 +40,7 @@ class FillOptionsBox : public QGroupBox {
   QDoubleSpinBox* angle_ = nullptr;
   QCheckBox* cross_ = nullptr;
   QCheckBox* outline_ = nullptr;
+  QCheckBox* solidDashes_ = nullptr;
   QPushButton* apply_ = nullptr;
 };
 
