@@ -126,6 +126,7 @@ std::string projectToJson(const Project& p) {
       {"version", kProjectFormatVersion},
       {"drawing", {{"name", p.drawingName},
                    {"flattening_tolerance_mm", p.flatteningToleranceMm},
+                   {"dashes", p.solidDashes ? "solid" : "dashed"},
                    {"svg", p.drawingSvg}}},
       {"placement", {{"center_x_mm", p.placement.centerMm.x()},
                      {"center_y_mm", p.placement.centerMm.y()},
@@ -178,7 +179,12 @@ ProjectLoad projectFromJson(const std::string& text, const std::string& sourceNa
     d.string("name", p.drawingName);
     d.number("flattening_tolerance_mm", p.flatteningToleranceMm, true);
     d.string("svg", p.drawingSvg, true);
+    std::string dashes = "dashed";
+    d.string("dashes", dashes);
     d.finish();
+    if (dashes != "dashed" && dashes != "solid")
+      out.issues.push_back({"drawing.dashes", "drawing.dashes must be \"dashed\" or \"solid\", not \"" + dashes + "\""});
+    p.solidDashes = dashes == "solid";
     if (!(p.flatteningToleranceMm > 0.0) || !std::isfinite(p.flatteningToleranceMm))
       out.issues.push_back({"drawing.flattening_tolerance_mm", "drawing.flattening_tolerance_mm must be positive"});
   }

@@ -34,6 +34,7 @@ struct Project {
   std::string drawingName;             // the file the drawing was imported from (base name)
   std::string drawingSvg;              // its SVG text
   double flatteningToleranceMm = 0.0;  // the import tolerance the drawing was flattened with
+  bool solidDashes = false;            // dashed strokes drawn whole ("dashes": "solid"; default dashed)
   Placement placement;
   std::vector<ProjectLayer> layers;    // in plotting order
   std::optional<WorkingMode> mode;     // nullopt: Auto

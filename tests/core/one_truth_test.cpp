@@ -175,6 +175,7 @@ Project sampleProject() {
   p.drawingSvg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"10mm\" height=\"10mm\">\n"
                  "<path d=\"M1 1 L9 9\" stroke=\"#000\"/></svg>\n";
   p.flatteningToleranceMm = 0.04;
+  p.solidDashes = true;
   p.placement = Placement{Vec2(3.5, 180.25), 0.5, 0.75, 1.25};
   p.layers = {{"color:#ff0000", "red", false, {12.5, 400.0, true}, FillMode::Hatch, {0.75, 0.5, true, false}},
               {"ink", "ink", true, {}, FillMode::Outline, {}}};
@@ -192,6 +193,7 @@ TEST(OneTruth, ProjectRoundTripKeepsEverything) {
   EXPECT_EQ(q.drawingName, p.drawingName);
   EXPECT_EQ(q.drawingSvg, p.drawingSvg);
   EXPECT_EQ(q.flatteningToleranceMm, p.flatteningToleranceMm);
+  EXPECT_TRUE(q.solidDashes) << "the studio's 'draw dashed strokes solid' is the project's";
   EXPECT_EQ(q.placement.centerMm, p.placement.centerMm);
   EXPECT_NEAR(q.placement.rotationRad, p.placement.rotationRad, 1e-15);
   EXPECT_EQ(q.placement.scale, p.placement.scale);
@@ -235,6 +237,7 @@ TEST(OneTruth, BadProjectsNameTheField) {
   EXPECT_NE(issueOf(replace("\"mode\": \"+-\"", "\"mode\": \"sideways\"")).find("mode must be"), std::string::npos);
   EXPECT_NE(issueOf(replace("\"a1\": 70.0", "\"a1\": \"long\"")).find("machine.geometry.a1"), std::string::npos);
   EXPECT_NE(issueOf(replace("\"tolerance_mm\"", "\"tolerance_mn\"")).find("tolerance_mn"), std::string::npos);
+  EXPECT_NE(issueOf(replace("\"dashes\": \"solid\"", "\"dashes\": \"dotted\"")).find("drawing.dashes"), std::string::npos);
 }
 
 // A version 1 project (before layer fills) loads, its layers drawn with outline fills.
@@ -258,6 +261,18 @@ TEST(OneTruth, AVersionOneProjectLoadsWithOutlineFills) {
   ASSERT_TRUE(load.project) << load.issues.front().message;
   EXPECT_EQ(load.project->layers[0].fill, FillMode::Outline);
   EXPECT_FALSE(load.project->layers[0].visible);  // the rest as saved
+}
+
+// A project written before dashes were drawn has no "dashes": its dashed strokes are drawn dashed.
+TEST(OneTruth, AProjectWithoutDashesDrawsThemDashed) {
+  std::string text = projectToJson(sampleProject());
+  const std::string member = "\"dashes\": \"solid\",";
+  const std::size_t at = text.find(member);
+  ASSERT_NE(at, std::string::npos) << text.substr(0, 400);
+  text.erase(at, member.size());
+  const ProjectLoad load = projectFromJson(text, "old.fivebar");
+  ASSERT_TRUE(load.project) << load.issues.front().message;
+  EXPECT_FALSE(load.project->solidDashes);
 }
 
 // A layer's fill is applied where the drawing is placed: hatch lines for that layer only.

@@ -118,6 +118,7 @@ std::optional<LoadedJob> loadProject(const QString& path, const std::optional<Ma
   job.source.name = QString::fromStdString(p.drawingName);
   if (job.source.name.isEmpty()) job.source.name = QFileInfo(path).fileName();
   job.source.maxPoints = maxPoints;
+  job.source.solidDashes = p.solidDashes;
   auto drawing = importSvgText(job.source, p.flatteningToleranceMm, error, nullptr, &job.warnings);
   if (!drawing) return std::nullopt;
   applyLayerStates(*drawing, p.layers);
@@ -178,6 +179,7 @@ Project projectOf(const DrawingSource& source, const Drawing& drawing, const Pla
   p.drawingName = source.name.toStdString();
   p.drawingSvg = source.svg.toStdString();
   p.flatteningToleranceMm = drawing.flatteningToleranceMm;
+  p.solidDashes = source.solidDashes;
   p.placement = placement;
   p.layers = layerStatesOf(drawing);
   p.mode = mode;
