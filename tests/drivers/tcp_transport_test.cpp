@@ -5,6 +5,8 @@
 // the way ser2net bridges a board.
 #include <gtest/gtest.h>
 
+#include "tcp_bridge.hpp"
+
 #include <QTcpServer>
 #include <QTcpSocket>
 #include <memory>
@@ -165,24 +167,10 @@ TEST(PortTransport, TheNameChoosesTheTransport) {
 // The simulated machine behind a TCP bridge (as ser2net puts a board on the network): the
 // protocol over the network port gets the board's status reports and acks.
 TEST(TcpTransport, TheGrblProtocolRunsOverIt) {
-  sim::SimConfig config;
-  config.profile = *preset("maker-plotter");
-  config.setUp = true;
-  SimulatedTransport board(config, 4.0);
+  test::TcpBridge bridge(*preset("maker-plotter"));
+  ASSERT_TRUE(bridge.listening());
   QString error;
-  ASSERT_TRUE(board.open(&error)) << error.toStdString();
-  board.startClock(5);
-  QTcpServer bridge;
-  ASSERT_TRUE(bridge.listen(QHostAddress::LocalHost));
-  QTcpSocket* wire = nullptr;
-  QObject::connect(&bridge, &QTcpServer::newConnection, [&] {
-    wire = bridge.nextPendingConnection();
-    QObject::connect(wire, &QTcpSocket::readyRead, [&] { board.write(wire->readAll()); });
-  });
-  QObject::connect(&board, &Transport::bytesReceived, [&](const QByteArray& bytes) {
-    if (wire) wire->write(bytes);
-  });
-  const auto port = makePortTransport(nameOf(bridge), 115200);
+  const auto port = makePortTransport(bridge.portName(), 115200);
   ASSERT_TRUE(port->open(&error)) << error.toStdString();
   MachineLink link(*port);
   link.start();
