@@ -110,7 +110,9 @@ Message dropAbsurdLines(std::vector<CapturedRun>& runs, const std::vector<TopLev
       std::string element = "the drawing";
       if (run.topIndex >= 0 && static_cast<std::size_t>(run.topIndex) < topLevel.size()) {
         const TopLevelElement& top = topLevel[static_cast<std::size_t>(run.topIndex)];
-        element = "<" + top.tag.toStdString() + (top.id.isEmpty() ? "" : " id=\"" + top.id.toStdString() + "\"") + ">";
+        element = (top.id.isEmpty() ? QStringLiteral("<%1>").arg(top.tag)
+                                    : QStringLiteral("<%1 id=\"%2\">").arg(top.tag, top.id))
+                      .toStdString();
       }
       Message problem =
           std::isfinite(bad->x()) && std::isfinite(bad->y())

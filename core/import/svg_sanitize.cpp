@@ -108,8 +108,10 @@ void Sanitizer::warnAt(const QXmlStreamAttributes& attributes, Message what) {
   constexpr std::size_t kMaxLocated = 50;
   if (located_.size() >= kMaxLocated) return warn(FB_TR("ImportWarning", "further element warnings not listed"));
   const QString id = attributes.value(QStringLiteral("id")).toString();
-  const std::string element = "<" + reader_.name().toString().toStdString() +
-                              (id.isEmpty() ? "" : " id=\"" + id.toStdString() + "\"") + ">";
+  std::string element = "<";  // appended piece by piece (GCC 12 warns falsely on "literal" + std::string&&)
+  element += reader_.name().toString().toStdString();
+  if (!id.isEmpty()) (element += " id=\"") += id.toStdString() + "\"";
+  element += ">";
   located_.push_back(FB_TR("ImportWarning", "line %1: %2 %3")
                          .arg(static_cast<long long>(reader_.lineNumber())).arg(element).arg(std::move(what)));
 }
@@ -214,7 +216,7 @@ QXmlStreamAttributes Sanitizer::cleanAttributes(QStringView tag) {
     }
     if (name == u"href" && (a.namespaceUri() == kXlinkNs || a.namespaceUri().isEmpty())) {
       if (!a.value().startsWith(u'#')) {
-        warn(FB_TR("ImportWarning", "external reference removed from %1").arg("<" + tag.toString().toStdString() + ">"));
+        warn(FB_TR("ImportWarning", "external reference removed from %1").arg(QStringLiteral("<%1>").arg(tag).toStdString()));
         continue;
       }
       if (a.namespaceUri().isEmpty()) {

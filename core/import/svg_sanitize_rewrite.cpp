@@ -247,7 +247,7 @@ void Sanitizer::pushMarkerState(QStringView tag, const QXmlStreamAttributes& att
                (state.refs.start != inherited.start || state.refs.mid != inherited.mid ||
                 state.refs.end != inherited.end)) {  // SVG draws markers on the four above only
       warn(FB_TR("ImportWarning", "markers on %1 are not drawn (drawn on path, line, polyline and polygon)")
-               .arg("<" + tag.toString().toStdString() + ">"));
+               .arg(QStringLiteral("<%1>").arg(tag).toStdString()));
     }
   }
   markerStates_.push_back(std::move(state));

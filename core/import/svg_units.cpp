@@ -132,8 +132,10 @@ std::optional<QRectF> parseViewBox(QStringView text) {
 std::string viewBoxProblem(QStringView text) {
   const NumberList list = scanNumberList(text);
   if (list.badAt >= 0)
-    return "\"" + text.mid(list.badAt, 16).toString().simplified().toStdString() +
-           "\" is not a number (after " + std::to_string(list.tokens.size()) + " numbers)";
+    return QStringLiteral("\"%1\" is not a number (after %2 numbers)")
+        .arg(text.mid(list.badAt, 16).toString().simplified())
+        .arg(list.tokens.size())
+        .toStdString();
   if (list.tokens.size() != 4)
     return "not four numbers (" + std::to_string(list.tokens.size()) + " numbers)";
   double v[4];

@@ -107,7 +107,8 @@ std::optional<LoadedJob> loadProject(const QString& path, const std::optional<Ma
   if (!load.project) {
     error.clear();
     for (const ValidationIssue& issue : load.issues)
-      error += (error.empty() ? "" : "\n") + path.toStdString() + ": " + translated(issue.message).toStdString();
+      error += (error.empty() ? QString() : QStringLiteral("\n")).toStdString() +
+               QStringLiteral("%1: %2").arg(path, translated(issue.message)).toStdString();
     return std::nullopt;
   }
   LoadedJob job;
