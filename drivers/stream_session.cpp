@@ -400,11 +400,24 @@ void StreamSession::liftPen(const std::string& message) {
     finish(false, message);
     return;
   }
+  // Through the one motion check like every line that reaches the board (a pen command moves no
+  // joint: it passes; a profile whose pen-up would is not sent).
+  const std::vector<std::string> lines = job::penUpCommands(options_.profile->tool);
+  if (auto pose = motion::boardPoseOf(link_.protocol())) {
+    for (const std::string& line : lines) {
+      const motion::LineCheck c = motion::checkLine(*options_.profile, line, *pose);
+      if (!c.ok()) {
+        finish(false, message + " The pen was not lifted: '" + line + "': " + c.reason.text());
+        return;
+      }
+      motion::applyLine(line, c, *pose);
+    }
+  }
   stopMessage_ = message;
   phase_ = Phase::LiftingPen;
   penRunner_ = std::make_unique<job::JobRunner>(link_.protocol(), noLines_);
   penRunner_->changed = [this] { onPenRunnerChanged(); };
-  penRunner_->start(0, job::penUpCommands(options_.profile->tool), link_.nowS());
+  penRunner_->start(0, lines, link_.nowS());
 }
 
 void StreamSession::onPenRunnerChanged() {

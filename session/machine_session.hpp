@@ -192,7 +192,7 @@ class MachineSession : public QObject,
   void onConnectTimeout();
   bool checkConsoleLine(const std::string& line, QString* refusal);
   bool enqueueUserLine(const std::string& line, bool log);
-  bool sendPen(const std::vector<std::string>& lines, PenState state);  // penUp / penDown
+  bool sendPen(const std::vector<std::string>& lines);  // penUp / penDown
   void setProblem(MachineProblem problem);
   void setPenState(PenState pen);
   void teardown(const QString& reason);

@@ -309,16 +309,15 @@ void MachineSession::cycleStart() {
   emit consoleLine(tr("[cycle start]"), ConsoleKind::Sent);
 }
 
-bool MachineSession::penUp() { return sendPen(job::penUpCommands(inputs_.profile().tool), PenState::Up); }
+bool MachineSession::penUp() { return sendPen(job::penUpCommands(inputs_.profile().tool)); }
 
 bool MachineSession::penDown() {
-  return sendPen(job::penDownCommands(inputs_.profile().tool), PenState::Down);
+  return sendPen(job::penDownCommands(inputs_.profile().tool));
 }
 
-bool MachineSession::sendPen(const std::vector<std::string>& lines, PenState state) {
+bool MachineSession::sendPen(const std::vector<std::string>& lines) {
   if (!canJog()) return false;
   // The pen shown follows the board's own reports (onStatus), not this command.
-  (void)state;
   for (const std::string& line : lines)
     if (!enqueueUserLine(line, true)) return false;
   return true;

@@ -47,6 +47,7 @@ RunController::RunController(const StudioInputs& inputs, MachineSession& session
   });
   connect(&inputs_, &StudioInputs::plannedJobChanged, this, [this] {
     hashedPlan_ = nullptr;  // a new plan may live where the old one did
+    plannedGcode_.reset();
     emit runChanged();
   });
   connect(&inputs_, &StudioInputs::drawingChanged, this, &RunController::runChanged);
@@ -84,15 +85,20 @@ QString RunController::resumeOffer() const {
   return offer;
 }
 
-QString RunController::planHash() const {
+// The planned job's G-code, written once per plan: Start and Resume stream it, its hash is the
+// plan's identity.
+std::shared_ptr<const std::string> RunController::plannedGcode() const {
   const PlannedJob* job = inputs_.plannedJob();
-  if (job == nullptr) return {};
-  if (job != hashedPlan_) {
+  if (job == nullptr) return nullptr;
+  if (job != hashedPlan_ || !plannedGcode_) {
     hashedPlan_ = job;
-    planHash_ = QString::fromStdString(job::sha256Hex(writeGcode(*job, inputs_.profile())));
+    plannedGcode_ = std::make_shared<const std::string>(writeGcode(*job, inputs_.profile()));
+    planHash_ = QString::fromStdString(job::sha256Hex(*plannedGcode_));
   }
-  return planHash_;
+  return plannedGcode_;
 }
+
+QString RunController::planHash() const { return plannedGcode() ? planHash_ : QString(); }
 
 bool RunController::planMatchesSaved() const {
   const auto saved = savedProgress();
@@ -104,16 +110,18 @@ QString RunController::progressText() const {
   return tr("line %1 of %2").arg(done).arg(snapshot_.totalLines);
 }
 
-// The drivers' messages are written for the command line: say it with the studio's buttons,
-// and leave the alarm's explanation to the banner (it is shown there once).
+// The alarm's explanation is the banner's (shown there once): the run panel says what to do.
+QString RunController::alarmMessage() {
+  return tr("The machine raised an alarm and the job stopped (the banner in the Machine panel "
+            "says why). The progress is saved: clear the alarm (Reset, Unlock), check the pen "
+            "stands where the studio shows it, then press Resume.");
+}
+
+// A drivers' message the studio has no words of its own for; an alarm is said once, above.
 QString RunController::guiMessage(const QString& message) const {
-  const QString text = message;
-  const MachineProblem& p = session_.problem();
-  if (p.kind == MachineProblem::Kind::Alarm || text.startsWith(QStringLiteral("ALARM")))
-    return tr("The machine raised an alarm and the job stopped (the banner in the Machine panel "
-              "says why). The progress is saved: clear the alarm (Reset, Unlock), check the pen "
-              "stands where the studio shows it, then press Resume.");
-  return text;
+  if (session_.problem().kind == MachineProblem::Kind::Alarm || message.startsWith(QStringLiteral("ALARM")))
+    return alarmMessage();
+  return message;
 }
 
 // The end of a run in the studio's words, from the drivers' structured stop.
@@ -139,7 +147,7 @@ QString RunController::stopMessage(bool ok, const QString& message) const {
                              : tr("Stopped after line %1 of %2; the pen could not be lifted.")).arg(stop.linesDone).arg(stop.totalLines) +
              QLatin1Char(' ') + tr("The progress is saved: press Resume to continue.");
     case StreamStop::Kind::RunProblem:
-      if (session_.problem().kind == MachineProblem::Kind::Alarm) return guiMessage(QStringLiteral("ALARM"));
+      if (session_.problem().kind == MachineProblem::Kind::Alarm) return alarmMessage();
       return tr("Stopped after line %1 of %2: %3 The progress is saved: press Resume to continue.")
           .arg(stop.linesDone)
           .arg(stop.totalLines)
@@ -201,7 +209,7 @@ bool RunController::start(QString* error) {
   } else {
     // The job is written once: the file is the resume record, the stream reads the same text
     // from memory. The board's soft limits are checked by the stream itself, before a byte.
-    auto gcode = std::make_shared<const std::string>(writeGcode(*inputs_.plannedJob(), inputs_.profile()));
+    const auto gcode = plannedGcode();
     why = writeAtomically(jobPath(), *gcode);
     if (why.isEmpty()) {
       QFile::remove(QString::fromStdString(job::progressPathFor(jobPath().toStdString())));
@@ -231,8 +239,7 @@ bool RunController::resume(QString* error) {
     why = tr("Not resumed: %1").arg(session_.poseDoubtText());
   } else {
     // The planned job is the interrupted one (same G-code, planMatchesSaved): streamed from memory.
-    auto gcode = std::make_shared<const std::string>(writeGcode(*inputs_.plannedJob(), inputs_.profile()));
-    if (launch(true, gcode, &why)) return true;
+    if (launch(true, plannedGcode(), &why)) return true;
   }
   lastMessage_ = why;
   if (error) *error = why;

@@ -87,8 +87,10 @@ class RunController : public QObject {
   void dropStream();
   void clearPreviousRun();
   QString guiMessage(const QString& message) const;
+  static QString alarmMessage();
   QString stopMessage(bool ok, const QString& message) const;
-  QString planHash() const;  // of the planned job's G-code, cached per plan
+  std::shared_ptr<const std::string> plannedGcode() const;  // nullptr while nothing is planned
+  QString planHash() const;  // of plannedGcode()
 
   const StudioInputs& inputs_;
   MachineSession& session_;
@@ -102,6 +104,7 @@ class RunController : public QObject {
   bool ignoreSettings_ = false;
   mutable const PlannedJob* hashedPlan_ = nullptr;
   mutable QString planHash_;
+  mutable std::shared_ptr<const std::string> plannedGcode_;
   QString lastMessage_;
   QTimer refresh_;
 };

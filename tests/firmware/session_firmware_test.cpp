@@ -269,8 +269,8 @@ TEST_P(SessionOnBoard, APowerCutMidJobLeavesThePositionUnknownUntilTheReference)
 }
 
 INSTANTIATE_TEST_SUITE_P(Boards, SessionOnBoard, ::testing::Values(Backend::Firmware, Backend::OurSimulator),
-                         [](const auto& info) {
-                           return info.param == Backend::Firmware ? std::string("RealFirmware")
+                         [](const auto& instance) {
+                           return instance.param == Backend::Firmware ? std::string("RealFirmware")
                                                                   : std::string("OurSimulator");
                          });
 
