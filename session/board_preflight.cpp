@@ -3,7 +3,7 @@
 #include "core/output/gcode.hpp"
 #include "drivers/gcode_job.hpp"
 #include "drivers/soft_limits.hpp"
-#include "session/core_message.hpp"
+#include "i18n/translated.hpp"
 
 namespace fivebar::session {
 

@@ -12,7 +12,7 @@
 #include "drivers/open_transport.hpp"
 #include "drivers/serial_transport.hpp"
 #include "drivers/simulated_transport.hpp"
-#include "session/core_message.hpp"
+#include "i18n/translated.hpp"
 
 namespace fivebar::session {
 namespace {

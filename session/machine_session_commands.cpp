@@ -10,7 +10,7 @@
 #include "drivers/jog.hpp"
 #include "drivers/motion_check.hpp"
 #include "drivers/stream_session.hpp"
-#include "session/core_message.hpp"
+#include "i18n/translated.hpp"
 
 namespace fivebar::session {
 namespace {

@@ -17,7 +17,7 @@
 #include <QCoreApplication>
 #include <clocale>
 
-#include "widgets/document/job_source.hpp"
+#include "job/job_source.hpp"
 #endif
 
 namespace fivebar::cli {
@@ -144,32 +144,32 @@ int plan(const Options& o) {
   const auto start = std::chrono::steady_clock::now();
   StageTimes times;
   StageClock clock(times);
-  // The same steps as the studio (widgets/document/job_source.hpp): import, place, plan (importing again
+  // The same steps as the studio (job/job_source.hpp): import, place, plan (importing again
   // more finely when the placement enlarges the drawing).
-  std::string error;
+  job::JobError error;
   // The points budget stops the import itself as soon as it is passed (a runaway file is never
   // flattened whole); withinPointBudget checks it again after hatching.
-  auto job = widgets::loadJob(QString::fromStdString(file), machine, opt, error, importSettings.fill,
+  auto loaded = job::loadJob(QString::fromStdString(file), machine, opt, error, importSettings.fill,
                               importSettings.hatch, importSettings.maxPoints, importSettings.solidDashes);
-  if (!job && widgets::isPointBudgetError(error)) {
-    std::cerr << "fivebar plan: " << error << "; nothing planned. Raise it with --max-points N if the "
+  if (!loaded && error.pointBudgetExceeded()) {
+    std::cerr << "fivebar plan: " << error.text << "; nothing planned. Raise it with --max-points N if the "
                  "drawing is meant to be this big\n";
     return 1;
   }
-  if (!job) {
-    std::cerr << "fivebar plan: " << error << "\n";
+  if (!loaded) {
+    std::cerr << "fivebar plan: " << error.text << "\n";
     return 1;
   }
-  for (const Message& w : job->warnings) std::cerr << "fivebar plan: " << file << ": warning: " << w << "\n";
-  if (!withinPointBudget(file, job->drawing, importSettings)) return 1;
+  for (const Message& w : loaded->warnings) std::cerr << "fivebar plan: " << file << ": warning: " << w << "\n";
+  if (!withinPointBudget(file, loaded->drawing, importSettings)) return 1;
   clock.lap("import and placement");
-  if (!job->note.empty()) std::cerr << "fivebar plan: " << file << ": " << job->note << "\n";
-  if (o.flag("--timings")) std::cerr << "  placement scale " << job->options.scale << "\n";
-  PlanResult r = widgets::planRefining(job->drawing, job->source, job->profile, job->options, error);
+  if (!loaded->note.empty()) std::cerr << "fivebar plan: " << file << ": " << loaded->note << "\n";
+  if (o.flag("--timings")) std::cerr << "  placement scale " << loaded->options.scale << "\n";
+  PlanResult r = job::planRefining(loaded->drawing, loaded->source, loaded->profile, loaded->options, error);
   times.append(r.timings);
   clock.restart();
   if (!error.empty()) {
-    std::cerr << "fivebar plan: " << error << "\n";
+    std::cerr << "fivebar plan: " << error.text << "\n";
     return 1;
   }
   if (const auto report = o.value("--report"); report && !writeFile(*report, reportToJson(r.report)))
@@ -178,7 +178,7 @@ int plan(const Options& o) {
     printProblems(file, r);
     return 1;
   }
-  if (!writeGcodeFile(output, r.job, job->profile)) return 1;
+  if (!writeGcodeFile(output, r.job, loaded->profile)) return 1;
   clock.lap("G-code");
   const double wallS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const PlanReport& rep = r.report;

@@ -4,7 +4,7 @@
 #include <clocale>
 #include <memory>
 
-#include "widgets/design/design_painter.hpp"
+#include "paint/design_painter.hpp"
 
 namespace fivebar::cli {
 
@@ -20,11 +20,11 @@ std::string writeDesignPng(const std::string& path, const design::Design& d,
     app = std::make_unique<QGuiApplication>(argc, argv);
     std::setlocale(LC_NUMERIC, "C");  // Qt took the environment's; CLI output keeps the point
   }
-  const widgets::DesignMaps maps = widgets::computeDesignMaps(d, brief.rules);
+  const paint::DesignMaps maps = paint::computeDesignMaps(d, brief.rules);
   const QString title = QStringLiteral("Design for a %1 x %2 mm rectangle")
                             .arg(brief.widthMm, 0, 'f', 0)
                             .arg(brief.heightMm, 0, 'f', 0);
-  const QImage image = widgets::designAtlas(d, maps, title);
+  const QImage image = paint::designAtlas(d, maps, title);
   if (!image.save(QString::fromStdString(path), "PNG")) return "cannot write PNG " + path;
   return {};
 }

@@ -8,10 +8,10 @@
 #include <optional>
 
 #include "core/kinematics/kinematics.hpp"
-#include "widgets/canvas/machine_painter.hpp"
-#include "widgets/canvas/studio_palette.hpp"
-#include "widgets/canvas/view_transform.hpp"
-#include "widgets/canvas/workspace_painter.hpp"
+#include "paint/machine_painter.hpp"
+#include "paint/studio_palette.hpp"
+#include "paint/view_transform.hpp"
+#include "paint/workspace_painter.hpp"
 
 namespace fivebar::cli {
 namespace {
@@ -70,14 +70,14 @@ QRectF contentBoxMm(const Geometry& g, const WorkspaceMap& map, const std::optio
 }
 
 // The view placing `box` in the plot area (left of the legend panel, below the title).
-widgets::ViewTransform fitView(const QRectF& box) {
+paint::ViewTransform fitView(const QRectF& box) {
   const QRectF plot(kMarginPx, kTitlePx + kMarginPx, kWidthPx - kPanelPx - 2 * kMarginPx,
                     kHeightPx - kTitlePx - 2 * kMarginPx);
   const double s = std::min(plot.width() / box.width(), plot.height() / box.height());
   // The view centres on the image; shift its centre so that the box centres on the plot area.
   const QPointF shiftPx = QPointF(0.5 * kWidthPx, 0.5 * kHeightPx) - plot.center();
   const QPointF centreMm = box.center() + QPointF(shiftPx.x() / s, -shiftPx.y() / s);
-  return widgets::ViewTransform(centreMm, s, QSizeF(kWidthPx, kHeightPx));
+  return paint::ViewTransform(centreMm, s, QSizeF(kWidthPx, kHeightPx));
 }
 
 void paintTitle(QPainter& painter, const MachineProfile& p, const WorkspaceAnalysis& a) {
@@ -87,7 +87,7 @@ void paintTitle(QPainter& painter, const MachineProfile& p, const WorkspaceAnaly
   font.setPointSizeF(15.0);
   font.setBold(true);
   painter.setFont(font);
-  painter.setPen(widgets::palette::machineBase());
+  painter.setPen(paint::palette::machineBase());
   const QString title = QStringLiteral("%1  \u2014  working mode %2")
                             .arg(QString::fromStdString(p.name), QString::fromUtf8(toString(a.mode).data(), 2));
   painter.drawText(QRectF(20, 0, kWidthPx - 40, kTitlePx), Qt::AlignVCenter | Qt::AlignLeft, title);
@@ -106,19 +106,19 @@ std::string writeWorkspacePng(const std::string& path, const MachineProfile& pro
   const auto app = ensureGuiApplication();
   QImage image(kWidthPx, kHeightPx, QImage::Format_ARGB32_Premultiplied);
   const std::optional<Pose> pose = displayPose(profile, analysis);
-  const widgets::ViewTransform view = fitView(contentBoxMm(profile.geometry, map, pose));
+  const paint::ViewTransform view = fitView(contentBoxMm(profile.geometry, map, pose));
   const QTransform widgetFromMachine = view.widgetFromMachine();
   {
     QPainter painter(&image);
     painter.setRenderHint(QPainter::Antialiasing, true);
     painter.setRenderHint(QPainter::TextAntialiasing, true);
-    widgets::paintGrid(painter, view);
-    widgets::paintWorkspace(painter, widgetFromMachine, map, analysis);
-    if (pose) widgets::paintMachine(painter, widgetFromMachine, profile.geometry, *pose, 0.85);
+    paint::paintGrid(painter, view);
+    paint::paintWorkspace(painter, widgetFromMachine, map, analysis);
+    if (pose) paint::paintMachine(painter, widgetFromMachine, profile.geometry, *pose, 0.85);
     paintTitle(painter, profile, analysis);
-    widgets::paintWorkspaceLegend(painter, QPointF(kWidthPx - kPanelPx + 10.0, kTitlePx + kMarginPx),
+    paint::paintWorkspaceLegend(painter, QPointF(kWidthPx - kPanelPx + 10.0, kTitlePx + kMarginPx),
                                   map, analysis);
-    widgets::paintScaleBar(painter, widgetFromMachine,
+    paint::paintScaleBar(painter, widgetFromMachine,
                            QPointF(kWidthPx - kPanelPx + 20.0, kHeightPx - kMarginPx));
   }
   if (!image.save(QString::fromStdString(path), "PNG")) return "cannot write PNG " + path;

@@ -60,7 +60,7 @@ bool FileActions::maybeSave() {
 }
 
 bool FileActions::saveTo(const QString& path, QString* error) {
-  const Project project = widgets::projectOf(doc_.source(), doc_.drawing(), doc_.placement(),
+  const Project project = job::projectOf(doc_.source(), doc_.drawing(), doc_.placement(),
                                              doc_.modeSelection(), doc_.toleranceMm(), doc_.profile());
   QSaveFile file(path);
   const QByteArray text = QByteArray::fromStdString(projectToJson(project));

@@ -10,7 +10,7 @@
 #include "app/studio/startup.hpp"
 #include "core/output/gcode.hpp"
 #include "widgets/document/job_pipeline.hpp"
-#include "widgets/document/job_source.hpp"
+#include "job/job_source.hpp"
 
 namespace fivebar::studio {
 namespace {
@@ -48,24 +48,25 @@ int runHeadlessExport(int argc, char** argv) {
   // remembered profile, else the default preset.
   std::optional<MachineProfile> profile;
   std::string error;
-  if (parser.isSet(machine) || !widgets::isProjectPath(input)) {
+  if (parser.isSet(machine) || !job::isProjectPath(input)) {
     profile = startupProfile(parser.isSet(machine) ? std::optional<QString>(parser.value(machine))
                                                    : std::nullopt, error);
     if (!profile) return fail(error, 2);
   }
   PlanOptions defaults;  // the document's defaults: Auto mode, 0.1 mm
-  auto job = widgets::loadJob(input, profile, defaults, error);
-  if (!job) return fail(error);
-  if (!job->note.empty()) std::fprintf(stderr, "fivebar-studio: %s: %s\n", qPrintable(input), job->note.text().c_str());
-  if (!job->options.atMm) return fail(input.toStdString() + ": nothing to place (no visible path or no singularity-free area)");
-  const Placement placement{*job->options.atMm, job->options.rotationRad, job->options.scale,
-                            job->options.stretchY};
+  job::JobError jobError;
+  auto loaded = job::loadJob(input, profile, defaults, jobError);
+  if (!loaded) return fail(jobError.text);
+  if (!loaded->note.empty()) std::fprintf(stderr, "fivebar-studio: %s: %s\n", qPrintable(input), loaded->note.text().c_str());
+  if (!loaded->options.atMm) return fail(input.toStdString() + ": nothing to place (no visible path or no singularity-free area)");
+  const Placement placement{*loaded->options.atMm, loaded->options.rotationRad, loaded->options.scale,
+                            loaded->options.stretchY};
   const PlanOptions options =
-      widgets::studioPlanOptions(placement, job->options.mode, job->options.toleranceMm);
-  PlanResult r = widgets::planRefining(job->drawing, job->source, job->profile, options, error);
+      widgets::studioPlanOptions(placement, loaded->options.mode, loaded->options.toleranceMm);
+  PlanResult r = job::planRefining(loaded->drawing, loaded->source, loaded->profile, options, jobError);
   if (!r.ok()) {
     std::fprintf(stderr, "fivebar-studio: %s: %s\n", qPrintable(input),
-                 (error.empty() ? r.message.text() : error).c_str());
+                 (jobError.empty() ? r.message.text() : jobError.text).c_str());
     for (std::size_t i = 0; i < r.report.problems.size() && i < 10; ++i)
       std::fprintf(stderr, "  %s: %s\n", r.report.problems[i].path.text().c_str(),
                    r.report.problems[i].why.text().c_str());
@@ -74,7 +75,7 @@ int runHeadlessExport(int argc, char** argv) {
   QSaveFile file(output);
   if (!file.open(QIODevice::WriteOnly)) return fail(output.toStdString() + ": " + file.errorString().toStdString());
   bool ok = true;
-  writeGcode(r.job, job->profile, [&](std::string_view piece) {
+  writeGcode(r.job, loaded->profile, [&](std::string_view piece) {
     ok = ok && file.write(piece.data(), static_cast<qint64>(piece.size())) == static_cast<qint64>(piece.size());
   });
   if (!ok || !file.commit()) return fail(output.toStdString() + ": cannot write (" + file.errorString().toStdString() + ")");

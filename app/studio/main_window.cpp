@@ -64,6 +64,9 @@ MainWindow::MainWindow(const MachineProfile& profile, QWidget* parent) : QMainWi
   preview_ = new PreviewController(*doc_, this);
   simulation_ = new SimulationController(this);
   importer_ = new ImportController(*doc_, this, this);
+  importer_->setBudgetQuestion([this](const QString& title, const QString& question) {
+    return askBeyondPointBudget(this, title, question);
+  });
   files_ = new FileActions(*doc_, *preview_, *importer_, this);
   connect(preview_, &PreviewController::resultChanged, this,
           [this] { simulation_->setTrajectory(preview_->result().trajectory); });

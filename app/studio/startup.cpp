@@ -93,9 +93,9 @@ QString applyViewOptions(MainWindow& window, const QStringList& overlays, const 
   for (const QString& overlay : overlays) {
     widgets::WorkspaceOverlays o = window.workspaceLayer().overlays();
     if (overlay == QLatin1String("legend")) o.legend = true;
-    else if (overlay == QLatin1String("transmission")) o.map = widgets::MapKind::Transmission;
-    else if (overlay == QLatin1String("conditioning")) o.map = widgets::MapKind::Conditioning;
-    else if (overlay == QLatin1String("resolution")) o.map = widgets::MapKind::Resolution;
+    else if (overlay == QLatin1String("transmission")) o.map = paint::MapKind::Transmission;
+    else if (overlay == QLatin1String("conditioning")) o.map = paint::MapKind::Conditioning;
+    else if (overlay == QLatin1String("resolution")) o.map = paint::MapKind::Resolution;
     else return QStringLiteral("--overlay: expected legend, transmission, conditioning or resolution, got '%1'").arg(overlay);
     window.workspaceLayer().setOverlays(o);
   }

@@ -40,7 +40,7 @@ struct JointLimits {
 
 // One problem found by validation: the field it concerns ("a1", "limits.theta1", ...) and a
 // sentence a person can act on, translatable (message.text() is the English the CLI prints; the
-// studio shows it in the user's language, widgets/document/core_message.hpp).
+// studio shows it in the user's language, i18n/translated.hpp).
 struct ValidationIssue {
   std::string field;
   Message message;

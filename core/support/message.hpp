@@ -3,7 +3,7 @@
 // studio formats in the user's locale. The core stays free of Qt: text() gives the English
 // sentence (what the CLI prints, REPORT.json and the tests read); the studio translates the
 // template with QCoreApplication::translate(context, templ) and formats the numbers with QLocale
-// (widgets/support/core_message.hpp). Templates are marked for lupdate with FB_TR or FB_TR_NOOP,
+// (i18n/translated.hpp). Templates are marked for lupdate with FB_TR or FB_TR_NOOP,
 // which lupdate reads as QT_TRANSLATE_NOOP (-tr-function-alias QT_TRANSLATE_NOOP+=FB_TR,...).
 // Design: docs/translations.md.
 #pragma once

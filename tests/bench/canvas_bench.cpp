@@ -15,11 +15,13 @@
 #include <random>
 
 #include "core/kinematics/kinematics.hpp"
-#include "widgets/canvas/machine_painter.hpp"
+#include "paint/machine_painter.hpp"
 #include "widgets/canvas/path_scene.hpp"
 #include "widgets/canvas/scene_renderer.hpp"
-#include "widgets/canvas/studio_palette.hpp"
-#include "widgets/canvas/view_transform.hpp"
+#include "paint/studio_palette.hpp"
+#include "paint/view_transform.hpp"
+
+namespace paint = fivebar::paint;
 
 namespace {
 
@@ -28,7 +30,7 @@ using fivebar::widgets::PathScene;
 using fivebar::widgets::SceneRenderer;
 using fivebar::widgets::ScenePaintOptions;
 using fivebar::widgets::ScenePath;
-using fivebar::widgets::ViewTransform;
+using fivebar::paint::ViewTransform;
 
 constexpr int kSegments = 1000000;
 constexpr int kPointsPerPath = 500;
@@ -76,8 +78,8 @@ std::shared_ptr<const PathScene> jobScene() {
   return scene;
 }
 
-ViewTransform fitView() {
-  ViewTransform v(QPointF(0.0, 180.0), 1.0, QSizeF(kFrame));
+paint::ViewTransform fitView() {
+  paint::ViewTransform v(QPointF(0.0, 180.0), 1.0, QSizeF(kFrame));
   v.fit(QRectF(-110.0, 100.0, 220.0, 160.0), 20.0);
   return v;
 }
@@ -95,7 +97,7 @@ double elapsedMs(std::chrono::steady_clock::time_point t0) {
 
 void BM_Baseline_WidePolylineAntialiased(benchmark::State& state) {
   const auto& paths = jobPaths();
-  const ViewTransform view = fitView();
+  const paint::ViewTransform view = fitView();
   QImage image(kFrame, QImage::Format_ARGB32_Premultiplied);
   double totalMs = 0.0;
   for (auto _ : state) {
@@ -127,7 +129,7 @@ void BM_SceneBuild(benchmark::State& state) {
 // A full re-render (a zoom step) at the given zoom relative to the fitted view.
 void BM_Scene_Render(benchmark::State& state) {
   const auto scene = jobScene();
-  ViewTransform view = fitView();
+  paint::ViewTransform view = fitView();
   view.zoomAround(QPointF(640.0, 400.0), static_cast<double>(state.range(0)));
   QImage image(kFrame, QImage::Format_ARGB32_Premultiplied);
   ScenePaintOptions options;
@@ -151,7 +153,7 @@ void BM_Scene_Render(benchmark::State& state) {
 // cached margin (every ~10 frames here), and its cost is included in the mean.
 void BM_Renderer_Pan(benchmark::State& state) {
   const auto scene = jobScene();
-  ViewTransform view = fitView();
+  paint::ViewTransform view = fitView();
   view.zoomAround(QPointF(640.0, 400.0), static_cast<double>(state.range(0)));
   QImage image(kFrame, QImage::Format_ARGB32_Premultiplied);
   SceneRenderer renderer;
@@ -178,7 +180,7 @@ void BM_Renderer_Pan(benchmark::State& state) {
 // Wheel zoom frames around the cursor: every frame is at a new scale (a full re-render).
 void BM_Renderer_WheelZoom(benchmark::State& state) {
   const auto scene = jobScene();
-  ViewTransform view = fitView();
+  paint::ViewTransform view = fitView();
   QImage image(kFrame, QImage::Format_ARGB32_Premultiplied);
   SceneRenderer renderer;
   ScenePaintOptions options;
@@ -201,7 +203,7 @@ void BM_Renderer_WheelZoom(benchmark::State& state) {
 // settled re-render after each burst of 6 wheel steps is included in the mean.
 void BM_Renderer_WheelZoomQuick(benchmark::State& state) {
   const auto scene = jobScene();
-  ViewTransform view = fitView();
+  paint::ViewTransform view = fitView();
   QImage image(kFrame, QImage::Format_ARGB32_Premultiplied);
   SceneRenderer renderer;
   ScenePaintOptions options;
@@ -266,7 +268,7 @@ void BM_Simulation_Frame(benchmark::State& state) {
   g.a1 = g.a2 = 200.0;
   g.b1 = g.b2 = 200.0;
   g.w = 100.0;
-  const ViewTransform view = fitView();
+  const paint::ViewTransform view = fitView();
   QImage image(kFrame, QImage::Format_ARGB32_Premultiplied);
   SceneRenderer mainRenderer;
   SceneRenderer traceRenderer;
@@ -275,7 +277,7 @@ void BM_Simulation_Frame(benchmark::State& state) {
   faded.opacity = 0.25;
   ScenePaintOptions trace;
   trace.colourBySpeed = false;
-  trace.drawColour = fivebar::widgets::palette::trace();
+  trace.drawColour = fivebar::paint::palette::trace();
   trace.penWidthPx = 1.5;
   fivebar::Pose pose;
   bool havePose = false;
@@ -305,10 +307,10 @@ void BM_Simulation_Frame(benchmark::State& state) {
     trace.orderLimit = move;
     image.fill(Qt::white);
     QPainter painter(&image);
-    fivebar::widgets::paintGrid(painter, view);
+    fivebar::paint::paintGrid(painter, view);
     mainRenderer.paint(painter, view, scene, faded, 1u | 16u);
     traceRenderer.paint(painter, view, scene, trace, 32u);
-    if (havePose) fivebar::widgets::paintMachine(painter, view.widgetFromMachine(), g, pose, 0.85);
+    if (havePose) fivebar::paint::paintMachine(painter, view.widgetFromMachine(), g, pose, 0.85);
     painter.end();
     totalMs += elapsedMs(t0);
   }

@@ -16,21 +16,21 @@
 #include "core/machine/profile.hpp"
 #include "core/planning/planner.hpp"
 #include "core/planning/time_optimal.hpp"
-#include "widgets/document/job_source.hpp"
+#include "job/job_source.hpp"
 
 namespace fivebar {
 namespace {
 
 // The plan `fivebar plan FILE --fit` makes: the same job source as the CLI and the studio
-// (widgets/document/job_source.hpp), the drawing fitted to the workspace.
+// (job/job_source.hpp), the drawing fitted to the workspace.
 std::optional<PlanResult> planFile(const QString& path, const MachineProfile& p, double toleranceMm) {
   PlanOptions o;
   o.toleranceMm = toleranceMm;
   o.fit = true;
-  std::string error;
-  auto job = widgets::loadJob(path, p, o, error);
-  if (!job) return std::nullopt;
-  PlanResult r = widgets::planRefining(job->drawing, job->source, job->profile, job->options, error);
+  job::JobError error;
+  auto loaded = job::loadJob(path, p, o, error);
+  if (!loaded) return std::nullopt;
+  PlanResult r = job::planRefining(loaded->drawing, loaded->source, loaded->profile, loaded->options, error);
   if (!error.empty() || !r.ok()) return std::nullopt;
   return r;
 }

@@ -141,9 +141,9 @@ TEST(DesignPainter, AtlasShowsFourPanels) {
   d.geometry = {70, 200, 70, 200, 250};
   d.rect = {-55, 110.7, 55, 200.7};
   d.evaluation = design::evaluateDesign(d.geometry, d.mode, d.rect, {}, design::Sampling{5});
-  const DesignMaps maps = computeDesignMaps(d, {}, 160);
+  const paint::DesignMaps maps = paint::computeDesignMaps(d, {}, 160);
   EXPECT_GT(maps.analysis.reachableAreaMm2, 10000.0);
-  const QImage atlas = designAtlas(d, maps, QStringLiteral("hoang2015"), QSize(900, 700));
+  const QImage atlas = paint::designAtlas(d, maps, QStringLiteral("hoang2015"), QSize(900, 700));
   ASSERT_EQ(atlas.size(), QSize(900, 700));
   // Each quadrant holds painted content (not just the white page).
   for (int q = 0; q < 4; ++q) {

@@ -165,7 +165,7 @@ TEST(StudioDocument, ProfileEditIsUndoable) {
 namespace fivebar::widgets {
 namespace {
 
-void drag(PlacementTool& tool, const ViewTransform& view, QPointF from, QPointF to,
+void drag(PlacementTool& tool, const paint::ViewTransform& view, QPointF from, QPointF to,
           Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
   QMouseEvent press(QEvent::MouseButtonPress, from, from, Qt::LeftButton, Qt::LeftButton, modifiers);
   ASSERT_TRUE(tool.mousePress(&press, view));
@@ -249,7 +249,7 @@ TEST(PlacementTool, DragsMoveScaleAndRotateInOneUndoStepEach) {
   big.scale = 20.0;  // 60 x 20 mm on the machine
   doc.setPlacement(big);
   PlacementTool tool(doc);
-  const ViewTransform view(QPointF(0.0, 150.0), 4.0, QSizeF(800.0, 600.0));
+  const paint::ViewTransform view(QPointF(0.0, 150.0), 4.0, QSizeF(800.0, 600.0));
   const int before = doc.undoStack()->count();
   // Move: drag the body 40 px right and 20 px up = +10 mm x, +5 mm y.
   const QPointF centre = view.widgetFromMachine(QPointF(0.0, 150.0));

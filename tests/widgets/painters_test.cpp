@@ -16,10 +16,10 @@
 #include "widgets/canvas/machine_layer.hpp"
 #include "widgets/document/simulation_controller.hpp"
 #include "widgets/document/studio_document.hpp"
-#include "widgets/canvas/machine_painter.hpp"
-#include "widgets/canvas/map_painter.hpp"
-#include "widgets/canvas/studio_palette.hpp"
-#include "widgets/canvas/view_transform.hpp"
+#include "paint/machine_painter.hpp"
+#include "paint/map_painter.hpp"
+#include "paint/studio_palette.hpp"
+#include "paint/view_transform.hpp"
 
 namespace fivebar::widgets {
 namespace {
@@ -37,7 +37,7 @@ bool differsFrom(const QImage& image, QPoint p, QColor c, int tolerance = 12) {
 }
 
 TEST(ViewTransform, RoundTripAndYFlip) {
-  const ViewTransform view(QPointF(10.0, 50.0), 3.0, QSizeF(400.0, 300.0));
+  const paint::ViewTransform view(QPointF(10.0, 50.0), 3.0, QSizeF(400.0, 300.0));
   EXPECT_EQ(view.widgetFromMachine(QPointF(10.0, 50.0)), QPointF(200.0, 150.0));
   // y up in the machine frame is y down on screen.
   EXPECT_LT(view.widgetFromMachine(QPointF(10.0, 60.0)).y(), 150.0);
@@ -52,7 +52,7 @@ TEST(ViewTransform, RoundTripAndYFlip) {
 }
 
 TEST(ViewTransform, ZoomKeepsTheAnchorAndFitContains) {
-  ViewTransform view(QPointF(0.0, 100.0), 2.0, QSizeF(800.0, 600.0));
+  paint::ViewTransform view(QPointF(0.0, 100.0), 2.0, QSizeF(800.0, 600.0));
   const QPointF anchor(613.0, 97.0);
   const QPointF before = view.machineFromWidget(anchor);
   view.zoomAround(anchor, 1.7);
@@ -76,10 +76,10 @@ TEST(MachinePainter, DrawsLinksAtThePose) {
   ASSERT_TRUE(ik.ok());
   const Pose pose = makePose(g, ik.angles, p);
   QImage image = blank(600, 500);
-  const ViewTransform view(QPointF(0.0, p.y() / 2.0), 1.5, QSizeF(600.0, 500.0));
+  const paint::ViewTransform view(QPointF(0.0, p.y() / 2.0), 1.5, QSizeF(600.0, 500.0));
   {
     QPainter painter(&image);
-    paintMachine(painter, view.widgetFromMachine(), g, pose);
+    paint::paintMachine(painter, view.widgetFromMachine(), g, pose);
   }
   const auto at = [&](const Vec2& v) {
     return view.widgetFromMachine(QPointF(v.x(), v.y())).toPoint();
@@ -97,29 +97,29 @@ TEST(MachinePainter, DrawsLinksAtThePose) {
 
 TEST(MachinePainter, GridFillsTheBackgroundAndDrawsAxes) {
   QImage image = blank(300, 200);
-  const ViewTransform view(QPointF(0.0, 0.0), 2.0, QSizeF(300.0, 200.0));
+  const paint::ViewTransform view(QPointF(0.0, 0.0), 2.0, QSizeF(300.0, 200.0));
   {
     QPainter painter(&image);
-    paintGrid(painter, view);
+    paint::paintGrid(painter, view);
   }
   // Origin is at the centre: the dashed axes cross there; elsewhere the background colour.
-  EXPECT_TRUE(differsFrom(image, QPoint(150, 100), palette::background(), 8));
+  EXPECT_TRUE(differsFrom(image, QPoint(150, 100), paint::palette::background(), 8));
   int background = 0;
-  for (int x = 0; x < 300; ++x) background += !differsFrom(image, QPoint(x, 57), palette::background(), 2);
+  for (int x = 0; x < 300; ++x) background += !differsFrom(image, QPoint(x, 57), paint::palette::background(), 2);
   EXPECT_GT(background, 150);
 }
 
 TEST(MapPainter, ColourBarShowsTheScale) {
-  MapScale scale{0.0, 180.0, true, false, QStringLiteral("angle"), 0};
+  paint::MapScale scale{0.0, 180.0, true, false, QStringLiteral("angle"), 0};
   // Diverging: both ends alike (bad), the middle different (good).
-  const QColor low = mapColour(scale, 0.0), high = mapColour(scale, 180.0);
-  const QColor mid = mapColour(scale, 90.0);
+  const QColor low = paint::mapColour(scale, 0.0), high = paint::mapColour(scale, 180.0);
+  const QColor mid = paint::mapColour(scale, 90.0);
   EXPECT_EQ(low, high);
   EXPECT_NE(low, mid);
   QImage image = blank(300, 80);
   {
     QPainter painter(&image);
-    paintColourBar(painter, QRectF(5, 5, 260, 60), scale);
+    paint::paintColourBar(painter, QRectF(5, 5, 260, 60), scale);
   }
   // The bar's left end has the low colour.
   const QColor got = image.pixelColor(17, 5 + 6 + 20 + 6);
@@ -201,9 +201,9 @@ TEST(MachineLayerPen, ThePenIsDrawnWhereTheOffsetPutsIt) {
   t.translate(300, 300);
   t.scale(8, -8);
   t.translate(-layer.penMm()->x(), -layer.penMm()->y());
-  widgets::paintMachine(painter, t, p.geometry, *layer.pose(), 1.0, layer.penMm());
+  paint::paintMachine(painter, t, p.geometry, *layer.pose(), 1.0, layer.penMm());
   painter.end();
-  EXPECT_EQ(img.pixelColor(300, 300), widgets::palette::pen());
+  EXPECT_EQ(img.pixelColor(300, 300), paint::palette::pen());
 }
 
 }  // namespace

@@ -10,7 +10,7 @@
 #include "test_support.hpp"
 #include "widgets/canvas/path_scene.hpp"
 #include "widgets/canvas/scene_renderer.hpp"
-#include "widgets/canvas/studio_palette.hpp"
+#include "paint/studio_palette.hpp"
 
 namespace fivebar::widgets {
 namespace {
@@ -76,7 +76,7 @@ TEST(PathScene, FlatListMakesTheSameScene) {
   for (int l = 0; l < fromList.levelCount(); ++l)
     EXPECT_EQ(fromList.segmentCount(l), fromPaths.segmentCount(l));
   EXPECT_EQ(fromList.maxSpeedMmPerS(), fromPaths.maxSpeedMmPerS());
-  const ViewTransform view(QPointF(0.0, 160.0), 2.5, QSizeF(400.0, 300.0));
+  const paint::ViewTransform view(QPointF(0.0, 160.0), 2.5, QSizeF(400.0, 300.0));
   QImage a = transparentImage(QSize(400, 300)), b = transparentImage(QSize(400, 300));
   ScenePaintOptions o;
   o.colourBySpeed = true;
@@ -100,7 +100,7 @@ TEST(PathScene, PaintsWhereThePathIsAndNowhereElse) {
   ScenePath line;
   line.pointsMm = {QPointF(-50.0, 100.0), QPointF(50.0, 100.0)};
   const PathScene scene({line});
-  const ViewTransform view(QPointF(0.0, 100.0), 2.0, QSizeF(400.0, 300.0));
+  const paint::ViewTransform view(QPointF(0.0, 100.0), 2.0, QSizeF(400.0, 300.0));
   QImage image = transparentImage(QSize(400, 300));
   {
     QPainter painter(&image);
@@ -127,7 +127,7 @@ TEST(PathScene, OrderLimitAndClassesSelectSegments) {
   flagged.firstOrder = 3;
   const PathScene scene({draw, travel, flagged});
   EXPECT_EQ(scene.orderCount(), 4);
-  const ViewTransform view(QPointF(0.0, 100.0), 2.0, QSizeF(400.0, 300.0));
+  const paint::ViewTransform view(QPointF(0.0, 100.0), 2.0, QSizeF(400.0, 300.0));
   const auto render = [&](const ScenePaintOptions& o) {
     QImage image = transparentImage(QSize(400, 300));
     QPainter painter(&image);
@@ -150,13 +150,13 @@ TEST(PathScene, OrderLimitAndClassesSelectSegments) {
   EXPECT_GT(paintedPixels(c, QRect(299, 95, 3, 50)), 40);
   // The flagged path is red.
   const QColor red = c.pixelColor(150, 190);
-  EXPECT_EQ(red.rgb(), palette::problem().rgb());
+  EXPECT_EQ(red.rgb(), paint::palette::problem().rgb());
 }
 
 TEST(SceneRenderer, PanReusesTheImageAndTheTraceGrowsIncrementally) {
   auto scene = std::make_shared<const PathScene>(std::vector<ScenePath>{spiral(50000, 60.0)});
   SceneRenderer renderer;
-  ViewTransform view(QPointF(0.0, 150.0), 3.0, QSizeF(320.0, 240.0));
+  paint::ViewTransform view(QPointF(0.0, 150.0), 3.0, QSizeF(320.0, 240.0));
   QImage frame = transparentImage(QSize(320, 240));
   QPainter painter(&frame);
   ScenePaintOptions o;
@@ -189,7 +189,7 @@ TEST(SceneRenderer, PanReusesTheImageAndTheTraceGrowsIncrementally) {
 
 TEST(SceneRenderer, CachedFrameEqualsDirectPaint) {
   auto scene = std::make_shared<const PathScene>(std::vector<ScenePath>{spiral(20000, 60.0)});
-  ViewTransform view(QPointF(3.0, 147.0), 2.5, QSizeF(300.0, 200.0));
+  paint::ViewTransform view(QPointF(3.0, 147.0), 2.5, QSizeF(300.0, 200.0));
   SceneRenderer renderer;
   ScenePaintOptions o;
   o.colourBySpeed = true;
@@ -229,7 +229,7 @@ namespace {
 
 TEST(SceneRenderer, QuickZoomScalesTheCacheUntilSettled) {
   auto scene = std::make_shared<const PathScene>(std::vector<ScenePath>{spiral(20000, 60.0)});
-  ViewTransform view(QPointF(0.0, 150.0), 2.0, QSizeF(300.0, 200.0));
+  paint::ViewTransform view(QPointF(0.0, 150.0), 2.0, QSizeF(300.0, 200.0));
   SceneRenderer renderer;
   renderer.setQuickZoom(true);
   QImage frame = transparentImage(QSize(300, 200));

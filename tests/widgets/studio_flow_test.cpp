@@ -27,10 +27,10 @@
 #include "widgets/document/preview_controller.hpp"
 #include "widgets/document/simulation_controller.hpp"
 #include "widgets/document/studio_document.hpp"
-#include "widgets/canvas/studio_palette.hpp"
+#include "paint/studio_palette.hpp"
 #include "core/planning/auto_placement.hpp"
 #include "core/planning/planner.hpp"
-#include "widgets/canvas/view_transform.hpp"
+#include "paint/view_transform.hpp"
 #include "widgets/document/job_pipeline.hpp"
 #include "widgets/canvas/workspace_cache.hpp"
 
@@ -180,7 +180,7 @@ TEST(StudioFlow, PreflightPaintsOnlyTheOffendingPathRed) {
     const auto b = strokeBounds(strokes);
     return QRectF(QPointF(b->x0, b->y0), QPointF(b->x1, b->y1));
   }();
-  ViewTransform view;
+  paint::ViewTransform view;
   view.setViewportPx(QSizeF(800, 200));
   view.fit(all, 20.0);
   QImage image(800, 200, QImage::Format_ARGB32_Premultiplied);
@@ -199,7 +199,7 @@ TEST(StudioFlow, PreflightPaintsOnlyTheOffendingPathRed) {
         for (int dy = -1; dy <= 1; ++dy)
           for (int dx = -1; dx <= 1; ++dx) {
             const QColor c = image.pixelColor(px + QPoint(dx, dy));
-            if (c.rgb() == palette::problem().rgb()) ++counts.first;
+            if (c.rgb() == paint::palette::problem().rgb()) ++counts.first;
             else if (c.rgb() != QColor(Qt::white).rgb()) ++counts.second;
           }
       }
@@ -274,7 +274,7 @@ TEST(StudioFlow, WhilePlanningTheLastJobsDrawMovesShowTheDrawingAtTheNewPlacemen
   ASSERT_TRUE(r.jobScene);
   JobLayer layer(s.doc, s.preview, s.sim);
   const QRectF bounds = r.jobScene->boundsMm();
-  ViewTransform view(bounds.center(), 1.0, QSizeF(400, 400));
+  paint::ViewTransform view(bounds.center(), 1.0, QSizeF(400, 400));
   view.fit(bounds.adjusted(-60, -60, 60, 60), 10.0);
   // Painted pixels in the left and right halves of the image.
   auto painted = [&](int& left, int& right) {

@@ -36,7 +36,7 @@
 #include "widgets/design/pareto_plot.hpp"
 #include "core/calibration/measurements.hpp"
 #include "core/import/svg_import.hpp"
-#include "widgets/document/core_message.hpp"
+#include "i18n/translated.hpp"
 #include "widgets/document/import_controller.hpp"
 #include "widgets/document/job_pipeline.hpp"
 #include "widgets/panels/import_warnings_panel.hpp"
@@ -160,7 +160,7 @@ TEST(Translations, ImportWarningsAreShownInGerman) {
       "</svg>\n";
   const fivebar::svg::ImportResult r = fivebar::svg::importSvgData(svg, QStringLiteral("a.svg"));
   ASSERT_TRUE(r.ok()) << r.message;
-  const QStringList shown = fivebar::widgets::translated(r.warnings);
+  const QStringList shown = fivebar::translated(r.warnings);
   EXPECT_TRUE(shown.contains(QStringLiteral(
       "Zeile 4: <path id=\"wave\"> Attribut d: ungültige Pfaddaten bei Zeichen 17 (\"5\"): "
       "bis zum Fehler gezeichnet"))) << shown.join(QLatin1Char('\n')).toStdString();
@@ -241,9 +241,9 @@ TEST(Translations, ProfileProblemsAreShownInFrench) {
   editor.numberField("geometry.a1")->setValue(-1.5);
   const QString shown = editor.messageFor("geometry.a1")->text();
   // A range's unit is the studio's too ("deg" is "°"); a range without a unit has none.
-  const QString offset = fivebar::widgets::translated(
+  const QString offset = fivebar::translated(
       fivebar::checkField(*fivebar::findProfileField("calibration.zeroOffsetDeg1"), 200.0).at(0).message);
-  const QString version = fivebar::widgets::translated(
+  const QString version = fivebar::translated(
       fivebar::checkField(*fivebar::findProfileField("calibration.version"), 5.0).at(0).message);
   std::string english;
   for (const fivebar::ValidationIssue& i : fivebar::validate(bad))
@@ -262,8 +262,8 @@ TEST(Translations, ProfileProblemsAreShownInFrench) {
   ASSERT_FALSE(load.issues.empty());
   ASSERT_FALSE(broken.issues.empty());
   QCoreApplication::installTranslator(&translator);
-  const QString type = fivebar::widgets::translated(load.issues.front().message);
-  const QString json = fivebar::widgets::translated(broken.issues.front().message);
+  const QString type = fivebar::translated(load.issues.front().message);
+  const QString json = fivebar::translated(broken.issues.front().message);
   QCoreApplication::removeTranslator(&translator);
   EXPECT_EQ(type, QStringLiteral("schema doit être une chaîne, et non un nombre")) << type.toStdString();
   EXPECT_TRUE(json.startsWith(QStringLiteral("p.json:2:13 : JSON invalide : "))) << json.toStdString();
@@ -278,7 +278,7 @@ TEST(Translations, CalibrationFileProblemsAreShownInGerman) {
   QTranslator translator;
   ASSERT_TRUE(translator.load(QStringLiteral(":/i18n/fivebar_de.qm")));
   ASSERT_TRUE(QCoreApplication::installTranslator(&translator));
-  const QString shown = fivebar::widgets::translated(read.error);
+  const QString shown = fivebar::translated(read.error);
   QCoreApplication::removeTranslator(&translator);
   EXPECT_EQ(read.error.text(), "m.csv:2: x_mm is not a number: \"abc\"");
   EXPECT_EQ(shown, QStringLiteral("m.csv:2: x_mm ist keine Zahl: „abc“"));
@@ -300,7 +300,7 @@ TEST(Translations, ImportErrorsAreShownInSpanish) {
   QTranslator translator;
   ASSERT_TRUE(translator.load(QStringLiteral(":/i18n/fivebar_es.qm")));
   ASSERT_TRUE(QCoreApplication::installTranslator(&translator));
-  const QString shown = fivebar::widgets::translated(r.message);
+  const QString shown = fivebar::translated(r.message);
   QCoreApplication::removeTranslator(&translator);
   const std::string english = r.message.text();
   EXPECT_NE(english.find("line 2: <circle id=\"p\"> attribute cx contains"), std::string::npos) << english;

@@ -14,7 +14,7 @@
 
 #include "core/calibration/scan/scan_lines.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
-#include "widgets/document/core_message.hpp"
+#include "i18n/translated.hpp"
 
 namespace fivebar::widgets::calibration {
 

@@ -1,6 +1,6 @@
 #include "widgets/calibration/calibration_state.hpp"
 
-#include "widgets/document/core_message.hpp"
+#include "i18n/translated.hpp"
 
 #include <QCoreApplication>
 #include <algorithm>

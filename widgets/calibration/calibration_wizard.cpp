@@ -15,7 +15,7 @@
 #include "widgets/calibration/sheet_layer.hpp"
 #include "widgets/calibration/simulated_machine.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
-#include "widgets/document/core_message.hpp"
+#include "i18n/translated.hpp"
 #include "widgets/canvas/canvas_view.hpp"
 #include "session/machine_session.hpp"
 

@@ -12,7 +12,7 @@
 #include <cmath>
 
 #include "core/calibration/measurements.hpp"
-#include "widgets/document/core_message.hpp"
+#include "i18n/translated.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
 
 namespace fivebar::widgets::calibration {

@@ -17,7 +17,7 @@
 #include "core/output/gcode.hpp"
 #include "core/kinematics/units.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
-#include "widgets/document/core_message.hpp"
+#include "i18n/translated.hpp"
 #include "session/machine_session.hpp"
 
 namespace fivebar::widgets::calibration {

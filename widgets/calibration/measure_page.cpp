@@ -17,7 +17,7 @@
 #include "core/calibration/marks_csv.hpp"
 #include "core/calibration/rigid_fit.hpp"
 #include "core/calibration/scan/scan.hpp"
-#include "widgets/document/core_message.hpp"
+#include "i18n/translated.hpp"
 #include "core/kinematics/units.hpp"
 #include "widgets/calibration/distances_box.hpp"
 #include "widgets/calibration/wizard_pages.hpp"

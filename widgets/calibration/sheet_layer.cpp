@@ -15,7 +15,7 @@ void SheetLayer::setSheet(std::vector<std::vector<Vec2>> plan, std::vector<std::
   emit changed();
 }
 
-void SheetLayer::paint(QPainter& painter, const ViewTransform& view) {
+void SheetLayer::paint(QPainter& painter, const paint::ViewTransform& view) {
   if (empty()) return;
   painter.save();
   painter.setRenderHint(QPainter::Antialiasing);

@@ -18,7 +18,7 @@ class SheetLayer : public QObject, public CanvasLayer {
   void setSheet(std::vector<std::vector<Vec2>> plan, std::vector<std::vector<Vec2>> trace);
   void clear() { setSheet({}, {}); }
   bool empty() const { return plan_.empty() && trace_.empty(); }
-  void paint(QPainter& painter, const ViewTransform& view) override;
+  void paint(QPainter& painter, const paint::ViewTransform& view) override;
 
  signals:
   void changed();

@@ -38,7 +38,7 @@ void SimTraceLayer::refresh() {
   emit changed();
 }
 
-void SimTraceLayer::paint(QPainter& painter, const ViewTransform& view) {
+void SimTraceLayer::paint(QPainter& painter, const paint::ViewTransform& view) {
   if (!visible()) return;
   painter.save();
   painter.setRenderHint(QPainter::Antialiasing);

@@ -26,7 +26,7 @@ class SimTraceLayer : public QObject, public CanvasLayer {
   Q_OBJECT
  public:
   SimTraceLayer(session::MachineSession& session, SimulatedTruth& truth, QObject* parent = nullptr);
-  void paint(QPainter& painter, const ViewTransform& view) override;
+  void paint(QPainter& painter, const paint::ViewTransform& view) override;
   // What is shown (empty while the simulated machine is perfect).
   const std::vector<std::vector<Vec2>>& trace() const { return trace_; }
   bool visible() const;

@@ -8,27 +8,27 @@
 #include <QMouseEvent>
 #include <QPainter>
 
-#include "widgets/canvas/view_transform.hpp"
+#include "paint/view_transform.hpp"
 
 namespace fivebar::widgets {
 
 class CanvasLayer {
  public:
   virtual ~CanvasLayer() = default;
-  virtual void paint(QPainter& painter, const ViewTransform& view) = 0;
+  virtual void paint(QPainter& painter, const paint::ViewTransform& view) = 0;
 };
 
 class CanvasTool {
  public:
   virtual ~CanvasTool() = default;
   // Each returns true when it used the event (the view then repaints).
-  virtual bool mousePress(QMouseEvent* event, const ViewTransform& view) = 0;
-  virtual bool mouseMove(QMouseEvent* event, const ViewTransform& view) = 0;
-  virtual bool mouseRelease(QMouseEvent* event, const ViewTransform& view) = 0;
+  virtual bool mousePress(QMouseEvent* event, const paint::ViewTransform& view) = 0;
+  virtual bool mouseMove(QMouseEvent* event, const paint::ViewTransform& view) = 0;
+  virtual bool mouseRelease(QMouseEvent* event, const paint::ViewTransform& view) = 0;
   // Tool feedback (handles, previews) painted above every layer.
-  virtual void paintOverlay(QPainter& painter, const ViewTransform& view) = 0;
+  virtual void paintOverlay(QPainter& painter, const paint::ViewTransform& view) = 0;
   // Cursor for the given widget position (hover feedback).
-  virtual QCursor cursorAt(QPointF widgetPx, const ViewTransform& view) const = 0;
+  virtual QCursor cursorAt(QPointF widgetPx, const paint::ViewTransform& view) const = 0;
 };
 
 }  // namespace fivebar::widgets

@@ -5,7 +5,7 @@
 #include <QWheelEvent>
 #include <cmath>
 
-#include "widgets/canvas/machine_painter.hpp"
+#include "paint/machine_painter.hpp"
 
 namespace fivebar::widgets {
 namespace {
@@ -34,7 +34,7 @@ void CanvasView::setTool(CanvasTool* tool) {
 }
 
 void CanvasView::render(QPainter& painter) {
-  paintGrid(painter, view_);
+  paint::paintGrid(painter, view_);
   for (CanvasLayer* layer : layers_) layer->paint(painter, view_);
   if (tool_ != nullptr) tool_->paintOverlay(painter, view_);
 }
@@ -74,7 +74,7 @@ void CanvasView::centerOn(QPointF machineMm) {
   update();
 }
 
-void CanvasView::setView(const ViewTransform& view) {
+void CanvasView::setView(const paint::ViewTransform& view) {
   view_ = view;
   view_.setViewportPx(size());
   emit viewChanged();

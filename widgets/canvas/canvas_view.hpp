@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "widgets/canvas/canvas_layer.hpp"
-#include "widgets/canvas/view_transform.hpp"
+#include "paint/view_transform.hpp"
 
 namespace fivebar::widgets {
 
@@ -16,7 +16,7 @@ class CanvasView : public QWidget {
  public:
   explicit CanvasView(QWidget* parent = nullptr);
 
-  const ViewTransform& view() const { return view_; }
+  const paint::ViewTransform& view() const { return view_; }
   // Layers paint in the order added, above the grid. Not owned.
   void addLayer(CanvasLayer* layer);
   // The tool receiving mouse events; nullptr for none. Not owned.
@@ -33,7 +33,7 @@ class CanvasView : public QWidget {
   // Fits the given machine-frame rectangle (mm) into the viewport.
   void fitRect(const QRectF& machineRectMm);
   void centerOn(QPointF machineMm);
-  void setView(const ViewTransform& view);
+  void setView(const paint::ViewTransform& view);
 
  signals:
   void viewChanged();
@@ -51,7 +51,7 @@ class CanvasView : public QWidget {
   void keyReleaseEvent(QKeyEvent* event) override;
 
  private:
-  ViewTransform view_;
+  paint::ViewTransform view_;
   std::vector<CanvasLayer*> layers_;
   CanvasTool* tool_ = nullptr;
   bool spaceHeld_ = false;

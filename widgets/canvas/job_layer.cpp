@@ -3,7 +3,7 @@
 #include <QPen>
 #include <cmath>
 
-#include "widgets/canvas/studio_palette.hpp"
+#include "paint/studio_palette.hpp"
 
 namespace fivebar::widgets {
 namespace {
@@ -70,7 +70,7 @@ quint64 JobLayer::optionsKey() const {
   return (colourBySpeed_ ? 1u : 0u) | (showTravel_ ? 2u : 0u);
 }
 
-void JobLayer::paint(QPainter& painter, const ViewTransform& view) {
+void JobLayer::paint(QPainter& painter, const paint::ViewTransform& view) {
   const PreviewResult& r = preview_.result();
   // While a plan is on its way, the last result is not the document's: show its drawing moved to
   // the current placement, unflagged and faded, with "Planning..." (no old numbers, no red).
@@ -85,7 +85,7 @@ void JobLayer::paint(QPainter& painter, const ViewTransform& view) {
     ScenePaintOptions trace = o;
     trace.opacity = 1.0;
     trace.colourBySpeed = false;
-    trace.drawColour = palette::trace();
+    trace.drawColour = paint::palette::trace();
     trace.penWidthPx = 1.5;
     trace.orderLimit = sim_.completedMoves();
     traceRenderer_.paint(painter, view, r.jobScene, trace, optionsKey() | 32u);
@@ -121,7 +121,7 @@ void JobLayer::paint(QPainter& painter, const ViewTransform& view) {
     font.setPointSizeF(font.pointSizeF() * 1.4);
     font.setBold(true);
     painter.setFont(font);
-    painter.setPen(palette::trace());
+    painter.setPen(paint::palette::trace());
     const QRectF area(0, 0, painter.device()->width(), 48);
     painter.drawText(area, Qt::AlignCenter, tr("Planning..."));
     painter.restore();
@@ -130,7 +130,7 @@ void JobLayer::paint(QPainter& painter, const ViewTransform& view) {
     const QPointF c = view.widgetFromMachine(*marker_);
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);
-    painter.setPen(QPen(palette::problem(), 2.0));
+    painter.setPen(QPen(paint::palette::problem(), 2.0));
     painter.setBrush(Qt::NoBrush);
     painter.drawEllipse(c, 12.0, 12.0);
     painter.drawLine(c - QPointF(18, 0), c - QPointF(6, 0));

@@ -21,7 +21,7 @@ class JobLayer : public QObject, public CanvasLayer {
   JobLayer(const StudioDocument& doc, const PreviewController& preview,
            const SimulationController& sim, QObject* parent = nullptr);
 
-  void paint(QPainter& painter, const ViewTransform& view) override;
+  void paint(QPainter& painter, const paint::ViewTransform& view) override;
 
   bool colourBySpeed() const { return colourBySpeed_; }
   bool showTravel() const { return showTravel_; }

@@ -1,7 +1,7 @@
 #include "widgets/canvas/machine_layer.hpp"
 
 #include "core/machine/pen_kinematics.hpp"
-#include "widgets/canvas/machine_painter.hpp"
+#include "paint/machine_painter.hpp"
 
 namespace fivebar::widgets {
 
@@ -61,16 +61,16 @@ void MachineLayer::refresh() {
   emit changed();
 }
 
-void MachineLayer::paint(QPainter& painter, const ViewTransform& view) {
+void MachineLayer::paint(QPainter& painter, const paint::ViewTransform& view) {
   if (ghost_)
-    paintMachine(painter, view.widgetFromMachine(), doc_.profile().geometry, *ghost_, kGhostOpacity, ghostPen_);
+    paint::paintMachine(painter, view.widgetFromMachine(), doc_.profile().geometry, *ghost_, kGhostOpacity, ghostPen_);
   if (unknown_) {
-    paintUnknownPose(painter, view.widgetFromMachine(), doc_.profile().geometry);
+    paint::paintUnknownPose(painter, view.widgetFromMachine(), doc_.profile().geometry);
     return;
   }
   if (!pose_) return;
   // Slightly see-through so the drawing under the arms stays readable.
-  paintMachine(painter, view.widgetFromMachine(), doc_.profile().geometry, *pose_, kOpacity, pen_);
+  paint::paintMachine(painter, view.widgetFromMachine(), doc_.profile().geometry, *pose_, kOpacity, pen_);
 }
 
 }  // namespace fivebar::widgets

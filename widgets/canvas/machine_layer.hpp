@@ -25,7 +25,7 @@ class MachineLayer : public QObject, public CanvasLayer {
   MachineLayer(const StudioDocument& doc, const SimulationController& sim,
                QObject* parent = nullptr);
 
-  void paint(QPainter& painter, const ViewTransform& view) override;
+  void paint(QPainter& painter, const paint::ViewTransform& view) override;
   // The pose drawn (nullopt when the home pose does not close).
   const std::optional<Pose>& pose() const { return pose_; }
   // The simulation's pose drawn faintly behind the machine's (nullopt when none).

@@ -6,7 +6,7 @@
 #include <numeric>
 
 #include "core/support/memory_hint.hpp"
-#include "widgets/canvas/studio_palette.hpp"
+#include "paint/studio_palette.hpp"
 
 namespace fivebar::widgets {
 namespace {
@@ -313,7 +313,7 @@ std::size_t PathScene::segmentCount(int level) const {
   return (level >= 0 && level < levelCount()) ? levels_[level].lines.size() : 0;
 }
 
-void PathScene::paint(QPainter& painter, const ViewTransform& view,
+void PathScene::paint(QPainter& painter, const paint::ViewTransform& view,
                       const ScenePaintOptions& options) const {
   if (levels_.empty()) return;
   const Level& level = levels_[levelFor(view.pxPerMm())];
@@ -324,7 +324,7 @@ void PathScene::paint(QPainter& painter, const ViewTransform& view,
   painter.setRenderHint(QPainter::Antialiasing, false);
   painter.setTransform(options.machineFromScene * view.widgetFromMachine(), true);
   painter.setOpacity(painter.opacity() * options.opacity);
-  const QColor drawColour = options.drawColour.isValid() ? options.drawColour : palette::drawing();
+  const QColor drawColour = options.drawColour.isValid() ? options.drawColour : paint::palette::drawing();
   int currentClass = -1;
   for (const Run& run : level.runs) {
     if (run.colourClass == kTravelClass && !options.showTravel) continue;
@@ -343,8 +343,8 @@ void PathScene::paint(QPainter& painter, const ViewTransform& view,
     if (run.colourClass != currentClass) {
       currentClass = run.colourClass;
       QColor c = drawColour;
-      if (currentClass == kTravelClass) c = palette::travel();
-      else if (currentClass == kProblemClass) c = options.showFlags ? palette::problem() : drawColour;
+      if (currentClass == kTravelClass) c = paint::palette::travel();
+      else if (currentClass == kProblemClass) c = options.showFlags ? paint::palette::problem() : drawColour;
       else if (options.colourBySpeed)
         c = speedColour((currentClass - 2 + 0.5) / kSpeedClasses);
       QPen pen(c, options.penWidthPx);

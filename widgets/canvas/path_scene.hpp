@@ -19,7 +19,7 @@
 #include <limits>
 #include <vector>
 
-#include "widgets/canvas/view_transform.hpp"
+#include "paint/view_transform.hpp"
 
 namespace fivebar::widgets {
 
@@ -75,7 +75,7 @@ struct ScenePaintOptions {
   int orderLimit = -1;        //   and order < orderLimit (-1 = no upper limit)
   QTransform machineFromScene;  // extra transform of the scene (identity: scene is machine mm)
   double opacity = 1.0;
-  QColor drawColour;          // invalid = palette::drawing()
+  QColor drawColour;          // invalid = paint::palette::drawing()
   double penWidthPx = 1.0;    // cosmetic width
   bool showFlags = true;      // flagged (offending) paths in the problem colour
 };
@@ -102,7 +102,7 @@ class PathScene {
   int levelFor(double pxPerMm) const;
   std::size_t segmentCount(int level) const;
 
-  void paint(QPainter& painter, const ViewTransform& view, const ScenePaintOptions& options) const;
+  void paint(QPainter& painter, const paint::ViewTransform& view, const ScenePaintOptions& options) const;
 
   // Speed ramp colour for t in [0, 1] (slow to fast), shared with the legend.
   static QColor speedColour(double t);

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "core/kinematics/units.hpp"
-#include "widgets/canvas/studio_palette.hpp"
+#include "paint/studio_palette.hpp"
 
 namespace fivebar::widgets {
 namespace {
@@ -36,7 +36,7 @@ std::optional<std::array<QPointF, 4>> PlacementTool::cornersMm() const {
                                 map(b.x0, b.y1)};
 }
 
-QPointF PlacementTool::rotateHandlePx(const ViewTransform& view) const {
+QPointF PlacementTool::rotateHandlePx(const paint::ViewTransform& view) const {
   const auto corners = cornersMm();
   const QPointF top = (view.widgetFromMachine((*corners)[2]) +
                        view.widgetFromMachine((*corners)[3])) / 2.0;
@@ -47,7 +47,7 @@ QPointF PlacementTool::rotateHandlePx(const ViewTransform& view) const {
   return outward.p2();
 }
 
-PlacementTool::Handle PlacementTool::handleAt(QPointF px, const ViewTransform& view) const {
+PlacementTool::Handle PlacementTool::handleAt(QPointF px, const paint::ViewTransform& view) const {
   const auto corners = cornersMm();
   if (!corners) return Handle::None;
   const double grab = kHandleRadiusPx + 3.0;
@@ -61,7 +61,7 @@ PlacementTool::Handle PlacementTool::handleAt(QPointF px, const ViewTransform& v
   return box.containsPoint(px, Qt::OddEvenFill) ? Handle::Body : Handle::None;
 }
 
-bool PlacementTool::mousePress(QMouseEvent* event, const ViewTransform& view) {
+bool PlacementTool::mousePress(QMouseEvent* event, const paint::ViewTransform& view) {
   if (event->button() != Qt::LeftButton) return false;
   active_ = handleAt(event->position(), view);
   if (active_ == Handle::None) return false;
@@ -71,7 +71,7 @@ bool PlacementTool::mousePress(QMouseEvent* event, const ViewTransform& view) {
   return true;
 }
 
-bool PlacementTool::mouseMove(QMouseEvent* event, const ViewTransform& view) {
+bool PlacementTool::mouseMove(QMouseEvent* event, const paint::ViewTransform& view) {
   if (active_ == Handle::None) return false;
   const QPointF m = view.machineFromWidget(event->position());
   const QPointF c = toQ(start_.centerMm);
@@ -100,29 +100,29 @@ bool PlacementTool::mouseMove(QMouseEvent* event, const ViewTransform& view) {
   return true;
 }
 
-bool PlacementTool::mouseRelease(QMouseEvent* event, const ViewTransform&) {
+bool PlacementTool::mouseRelease(QMouseEvent* event, const paint::ViewTransform&) {
   if (event->button() != Qt::LeftButton || active_ == Handle::None) return false;
   active_ = Handle::None;
   gesture_ = 0;
   return true;
 }
 
-void PlacementTool::paintOverlay(QPainter& painter, const ViewTransform& view) {
+void PlacementTool::paintOverlay(QPainter& painter, const paint::ViewTransform& view) {
   const auto corners = cornersMm();
   if (!corners) return;
   painter.save();
   painter.setRenderHint(QPainter::Antialiasing, true);
   QPolygonF box;
   for (const QPointF& c : *corners) box << view.widgetFromMachine(c);
-  painter.setPen(QPen(palette::selection(), 1.2, Qt::DashLine));
+  painter.setPen(QPen(paint::palette::selection(), 1.2, Qt::DashLine));
   painter.setBrush(Qt::NoBrush);
   painter.drawPolygon(box);
   const QPointF top = (box[2] + box[3]) / 2.0;
   const QPointF handle = rotateHandlePx(view);
-  painter.setPen(QPen(palette::selection(), 1.2));
+  painter.setPen(QPen(paint::palette::selection(), 1.2));
   painter.drawLine(top, handle);
   painter.setBrush(Qt::white);
-  painter.setPen(QPen(palette::selection(), 2.0));
+  painter.setPen(QPen(paint::palette::selection(), 2.0));
   for (const QPointF& w : box) {
     painter.drawRect(QRectF(w - QPointF(kHandleRadiusPx, kHandleRadiusPx),
                             QSizeF(2 * kHandleRadiusPx, 2 * kHandleRadiusPx)));
@@ -131,7 +131,7 @@ void PlacementTool::paintOverlay(QPainter& painter, const ViewTransform& view) {
   painter.restore();
 }
 
-QCursor PlacementTool::cursorAt(QPointF px, const ViewTransform& view) const {
+QCursor PlacementTool::cursorAt(QPointF px, const paint::ViewTransform& view) const {
   switch (active_ != Handle::None ? active_ : handleAt(px, view)) {
     case Handle::Body: return Qt::SizeAllCursor;
     case Handle::Corner: return Qt::SizeFDiagCursor;

@@ -21,21 +21,21 @@ class PlacementTool : public QObject, public CanvasTool {
 
   explicit PlacementTool(StudioDocument& doc, QObject* parent = nullptr);
 
-  bool mousePress(QMouseEvent* event, const ViewTransform& view) override;
-  bool mouseMove(QMouseEvent* event, const ViewTransform& view) override;
-  bool mouseRelease(QMouseEvent* event, const ViewTransform& view) override;
-  void paintOverlay(QPainter& painter, const ViewTransform& view) override;
-  QCursor cursorAt(QPointF widgetPx, const ViewTransform& view) const override;
+  bool mousePress(QMouseEvent* event, const paint::ViewTransform& view) override;
+  bool mouseMove(QMouseEvent* event, const paint::ViewTransform& view) override;
+  bool mouseRelease(QMouseEvent* event, const paint::ViewTransform& view) override;
+  void paintOverlay(QPainter& painter, const paint::ViewTransform& view) override;
+  QCursor cursorAt(QPointF widgetPx, const paint::ViewTransform& view) const override;
 
   enum class Handle { None, Body, Corner, Rotate };
-  Handle handleAt(QPointF widgetPx, const ViewTransform& view) const;
+  Handle handleAt(QPointF widgetPx, const paint::ViewTransform& view) const;
   // Corners of the placed drawing's box in the machine frame (counter-clockwise from the
   // work frame's lower-left), or nullopt without a drawing.
   std::optional<std::array<QPointF, 4>> cornersMm() const;
 
  private:
   void refreshBounds();
-  QPointF rotateHandlePx(const ViewTransform& view) const;
+  QPointF rotateHandlePx(const paint::ViewTransform& view) const;
 
   StudioDocument& doc_;
   std::optional<RectMm> workBounds_;  // visible layers, work frame

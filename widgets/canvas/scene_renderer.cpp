@@ -8,12 +8,12 @@ namespace {
 constexpr double kMarginShare = 0.5;
 }  // namespace
 
-bool SceneRenderer::covers(const ViewTransform& view) const {
+bool SceneRenderer::covers(const paint::ViewTransform& view) const {
   if (image_.isNull() || view.pxPerMm() != imageView_.pxPerMm()) return false;
   return imageView_.visibleMachineRect().contains(view.visibleMachineRect());
 }
 
-void SceneRenderer::renderFull(const ViewTransform& view, const ScenePaintOptions& options) {
+void SceneRenderer::renderFull(const paint::ViewTransform& view, const ScenePaintOptions& options) {
   const QSizeF vp = view.viewportPx();
   // A new zoom renders just the viewport (zoom steps come in bursts); a pan at an unchanged zoom
   // renders the margins too, so the following pan frames are blits.
@@ -25,7 +25,7 @@ void SceneRenderer::renderFull(const ViewTransform& view, const ScenePaintOption
   const int marginY = static_cast<int>(std::ceil(vp.height() * marginShare));
   const QSize size(static_cast<int>(std::ceil(vp.width())) + 2 * marginX,
                    static_cast<int>(std::ceil(vp.height())) + 2 * marginY);
-  imageView_ = ViewTransform(view.centerMm(), view.pxPerMm(), QSizeF(size));
+  imageView_ = paint::ViewTransform(view.centerMm(), view.pxPerMm(), QSizeF(size));
   if (image_.size() != size) image_ = QImage(size, QImage::Format_ARGB32_Premultiplied);
   image_.fill(Qt::transparent);
   QPainter p(&image_);
@@ -35,7 +35,7 @@ void SceneRenderer::renderFull(const ViewTransform& view, const ScenePaintOption
   ++fullRenders_;
 }
 
-void SceneRenderer::paint(QPainter& painter, const ViewTransform& view,
+void SceneRenderer::paint(QPainter& painter, const paint::ViewTransform& view,
                           const std::shared_ptr<const PathScene>& scene,
                           const ScenePaintOptions& options, quint64 optionsKey) {
   if (!scene || scene->empty()) return;

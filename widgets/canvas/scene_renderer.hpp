@@ -10,7 +10,7 @@
 #include <memory>
 
 #include "widgets/canvas/path_scene.hpp"
-#include "widgets/canvas/view_transform.hpp"
+#include "paint/view_transform.hpp"
 
 namespace fivebar::widgets {
 
@@ -18,7 +18,7 @@ class SceneRenderer {
  public:
   // `optionsKey` identifies every option except the order limit (callers bump it when colours,
   // travel visibility or the scene transform change).
-  void paint(QPainter& painter, const ViewTransform& view,
+  void paint(QPainter& painter, const paint::ViewTransform& view,
              const std::shared_ptr<const PathScene>& scene, const ScenePaintOptions& options,
              quint64 optionsKey);
   void invalidate() { scene_.reset(); }
@@ -35,12 +35,12 @@ class SceneRenderer {
   int incrementalRenders() const { return incrementalRenders_; }
 
  private:
-  bool covers(const ViewTransform& view) const;
-  void renderFull(const ViewTransform& view, const ScenePaintOptions& options);
+  bool covers(const paint::ViewTransform& view) const;
+  void renderFull(const paint::ViewTransform& view, const ScenePaintOptions& options);
 
   std::shared_ptr<const PathScene> scene_;
   QImage image_;
-  ViewTransform imageView_;  // the view the image was rendered with (expanded viewport)
+  paint::ViewTransform imageView_;  // the view the image was rendered with (expanded viewport)
   quint64 optionsKey_ = 0;
   int orderBegin_ = 0;
   int orderLimit_ = -1;

@@ -18,7 +18,7 @@ QImage legendImageOf(const WorkspaceMap& map, const WorkspaceAnalysis& analysis,
   {
     QPainter p(&image);
     p.setFont(font);
-    height = paintWorkspaceLegend(p, QPointF(1.0, 1.0), map, analysis);
+    height = paint::paintWorkspaceLegend(p, QPointF(1.0, 1.0), map, analysis);
   }
   int right = 0;
   const int rows = std::min(image.height(), static_cast<int>(std::ceil(height)) + 3);
@@ -48,32 +48,32 @@ void WorkspaceLayer::setOverlays(const WorkspaceOverlays& overlays) {
   emit changed();
 }
 
-void WorkspaceLayer::paint(QPainter& painter, const ViewTransform& view) {
+void WorkspaceLayer::paint(QPainter& painter, const paint::ViewTransform& view) {
   const auto set = cache_.current();
   if (!set) return;
   const WorkingMode mode = doc_.effectiveMode();
   const WorkspaceMap& map = set->map(mode);
   const WorkspaceAnalysis& analysis = set->analysis(mode);
   const QTransform t = view.widgetFromMachine();
-  if (overlays_.map != MapKind::None) {
+  if (overlays_.map != paint::MapKind::None) {
     if (imageSet_ != set.get() || imageMode_ != mode || imageKind_ != overlays_.map) {
-      imageScale_ = mapScale(map, overlays_.map);
-      image_ = mapImage(map, overlays_.map, imageScale_);
+      imageScale_ = paint::mapScale(map, overlays_.map);
+      image_ = paint::mapImage(map, overlays_.map, imageScale_);
       imageSet_ = set.get();
       imageMode_ = mode;
       imageKind_ = overlays_.map;
     }
-    paintMapImage(painter, t, map, image_);
+    paint::paintMapImage(painter, t, map, image_);
   }
-  WorkspacePaintOptions options;
-  options.fillRegions = overlays_.regions && overlays_.map == MapKind::None;
+  paint::WorkspacePaintOptions options;
+  options.fillRegions = overlays_.regions && overlays_.map == paint::MapKind::None;
   options.drawBoundaries = overlays_.regions;
   options.drawTypeII = overlays_.typeII;
   options.drawRectangle = overlays_.rectangle;
-  paintWorkspace(painter, t, map, analysis, options);
+  paint::paintWorkspace(painter, t, map, analysis, options);
 }
 
-void WorkspaceLayer::paintLegends(QPainter& painter, const ViewTransform& view) {
+void WorkspaceLayer::paintLegends(QPainter& painter, const paint::ViewTransform& view) {
   const auto set = cache_.current();
   if (!set) return;
   const WorkingMode mode = doc_.effectiveMode();
@@ -90,9 +90,9 @@ void WorkspaceLayer::paintLegends(QPainter& painter, const ViewTransform& view) 
                               kLegendInsetPx + 16.0),
                       legendImage_);
   }
-  paintScaleBar(painter, view.widgetFromMachine(), QPointF(vp.width() - 150.0, vp.height() - 18.0));
-  if (overlays_.map != MapKind::None) {
-    paintColourBar(painter,
+  paint::paintScaleBar(painter, view.widgetFromMachine(), QPointF(vp.width() - 150.0, vp.height() - 18.0));
+  if (overlays_.map != paint::MapKind::None) {
+    paint::paintColourBar(painter,
                    QRectF(vp.width() - kColourBarWidthPx - kLegendInsetPx,
                           vp.height() - kColourBarHeightPx - 44.0, kColourBarWidthPx,
                           kColourBarHeightPx),

@@ -8,9 +8,9 @@
 #include <QObject>
 
 #include "widgets/canvas/canvas_layer.hpp"
-#include "widgets/canvas/map_painter.hpp"
+#include "paint/map_painter.hpp"
 #include "widgets/canvas/workspace_cache.hpp"
-#include "widgets/canvas/workspace_painter.hpp"
+#include "paint/workspace_painter.hpp"
 
 namespace fivebar::widgets {
 
@@ -19,7 +19,7 @@ struct WorkspaceOverlays {
   bool typeII = true;      // type II singularity curves
   bool rectangle = true;   // largest singularity-free rectangle
   bool legend = false;     // the workspace legend card (the map's colour bar is always shown)
-  MapKind map = MapKind::None;
+  paint::MapKind map = paint::MapKind::None;
 };
 
 class WorkspaceLayer : public QObject, public CanvasLayer {
@@ -29,10 +29,10 @@ class WorkspaceLayer : public QObject, public CanvasLayer {
                  QObject* parent = nullptr);
 
   // Regions, curves, rectangle and map (legends excluded: see paintLegends).
-  void paint(QPainter& painter, const ViewTransform& view) override;
+  void paint(QPainter& painter, const paint::ViewTransform& view) override;
   // The legend (top right), the map's colour bar and the scale bar (bottom right); painted by a
   // WorkspaceLegendLayer above every other layer so nothing hides them.
-  void paintLegends(QPainter& painter, const ViewTransform& view);
+  void paintLegends(QPainter& painter, const paint::ViewTransform& view);
   const WorkspaceOverlays& overlays() const { return overlays_; }
 
  public slots:
@@ -48,9 +48,9 @@ class WorkspaceLayer : public QObject, public CanvasLayer {
   // Cached map image: valid for this set, mode and kind.
   const WorkspaceSet* imageSet_ = nullptr;
   WorkingMode imageMode_ = WorkingMode::PlusPlus;
-  MapKind imageKind_ = MapKind::None;
+  paint::MapKind imageKind_ = paint::MapKind::None;
   QImage image_;
-  MapScale imageScale_;
+  paint::MapScale imageScale_;
   // Cached legend card: valid for this set and mode.
   const WorkspaceSet* legendSet_ = nullptr;
   WorkingMode legendMode_ = WorkingMode::PlusPlus;
@@ -60,7 +60,7 @@ class WorkspaceLayer : public QObject, public CanvasLayer {
 class WorkspaceLegendLayer : public CanvasLayer {
  public:
   explicit WorkspaceLegendLayer(WorkspaceLayer& layer) : layer_(layer) {}
-  void paint(QPainter& painter, const ViewTransform& view) override {
+  void paint(QPainter& painter, const paint::ViewTransform& view) override {
     layer_.paintLegends(painter, view);
   }
 

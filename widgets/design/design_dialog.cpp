@@ -23,7 +23,7 @@
 #include "core/design/design_json.hpp"
 #include "widgets/canvas/canvas_view.hpp"
 #include "widgets/design/pareto_plot.hpp"
-#include "widgets/document/core_message.hpp"
+#include "i18n/translated.hpp"
 #include "widgets/document/studio_document.hpp"
 
 namespace fivebar::widgets {
@@ -200,7 +200,7 @@ QWidget* DesignDialog::makeResultsPanel() {
   connect(table_, &QTableWidget::currentCellChanged, this, [this](int r) { if (r >= 0) selectDesign(r); });
   connect(plot_, &ParetoPlot::pointClicked, this, [this](int i) { selectDesign(i); });
   connect(mapKind_, &QComboBox::currentIndexChanged, this, [this](int k) {
-    const MapKind kinds[] = {MapKind::None, MapKind::Conditioning, MapKind::Transmission, MapKind::Resolution};
+    const paint::MapKind kinds[] = {paint::MapKind::None, paint::MapKind::Conditioning, paint::MapKind::Transmission, paint::MapKind::Resolution};
     layer_.setMapKind(kinds[std::clamp(k, 0, 3)]);
     canvas_.update();
   });
@@ -322,8 +322,8 @@ void DesignDialog::selectDesign(int row) {
     canvas_.addLayer(&layer_);
     layerAdded_ = true;
   }
-  DesignMaps maps = computeDesignMaps(d, searchedBrief_.rules);
-  QRectF box = designBoxMm(d, maps);
+  paint::DesignMaps maps = paint::computeDesignMaps(d, searchedBrief_.rules);
+  QRectF box = paint::designBoxMm(d, maps);
   box.setBottom(box.bottom() + 0.2 * box.height());  // room above for the measures card (y up)
   layer_.show(d, std::move(maps));
   table_->selectRow(row);

@@ -6,24 +6,24 @@
 #include <optional>
 
 #include "widgets/canvas/canvas_layer.hpp"
-#include "widgets/design/design_painter.hpp"
+#include "paint/design_painter.hpp"
 
 namespace fivebar::widgets {
 
 class DesignLayer : public CanvasLayer {
  public:
-  void show(const design::Design& d, DesignMaps maps);
+  void show(const design::Design& d, paint::DesignMaps maps);
   void hide() { design_.reset(); }
-  void setMapKind(MapKind kind) { kind_ = kind; }
-  MapKind mapKind() const { return kind_; }
+  void setMapKind(paint::MapKind kind) { kind_ = kind; }
+  paint::MapKind mapKind() const { return kind_; }
   bool showing() const { return design_.has_value(); }
-  const DesignMaps& maps() const { return maps_; }
-  void paint(QPainter& painter, const ViewTransform& view) override;
+  const paint::DesignMaps& maps() const { return maps_; }
+  void paint(QPainter& painter, const paint::ViewTransform& view) override;
 
  private:
   std::optional<design::Design> design_;
-  DesignMaps maps_;
-  MapKind kind_ = MapKind::Conditioning;
+  paint::DesignMaps maps_;
+  paint::MapKind kind_ = paint::MapKind::Conditioning;
 };
 
 }  // namespace fivebar::widgets

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "widgets/canvas/studio_palette.hpp"
+#include "paint/studio_palette.hpp"
 
 namespace fivebar::widgets {
 
@@ -44,14 +44,14 @@ QPointF ParetoPlot::positionOf(int index) const {
 void ParetoPlot::paintEvent(QPaintEvent*) {
   QPainter painter(this);
   painter.setRenderHint(QPainter::Antialiasing, true);
-  painter.fillRect(rect(), palette::background());
+  painter.fillRect(rect(), paint::palette::background());
   const QRectF r = plotRect();
-  painter.setPen(QPen(palette::axis(), 1.0));
+  painter.setPen(QPen(paint::palette::axis(), 1.0));
   painter.drawRect(r);
   QFont font = painter.font();
   font.setPointSizeF(8.0);
   painter.setFont(font);
-  painter.setPen(palette::gridLabel());
+  painter.setPen(paint::palette::gridLabel());
   // Footprints are whole cm² unless the range is narrow (an empty plot spans 0..1).
   const int xDecimals = (x1_ - x0_) >= 8.0 ? 0 : 2;
   for (int k = 0; k <= 4; ++k) {
@@ -66,13 +66,13 @@ void ParetoPlot::paintEvent(QPaintEvent*) {
   painter.rotate(-90);
   painter.drawText(QRectF(-80, -8, 160, 14), Qt::AlignCenter, tr("Worst condition number"));
   painter.restore();
-  painter.setPen(QPen(palette::travel(), 1.0, Qt::DashLine));
+  painter.setPen(QPen(paint::palette::travel(), 1.0, Qt::DashLine));
   for (std::size_t i = 1; i < points_.size(); ++i)
     painter.drawLine(positionOf(static_cast<int>(i - 1)), positionOf(static_cast<int>(i)));
   for (int i = 0; i < static_cast<int>(points_.size()); ++i) {
     const bool sel = i == selected_;
     painter.setPen(QPen(Qt::white, 1.0));
-    painter.setBrush(sel ? palette::selection() : palette::drawing());
+    painter.setBrush(sel ? paint::palette::selection() : paint::palette::drawing());
     painter.drawEllipse(positionOf(i), sel ? 6.5 : 4.5, sel ? 6.5 : 4.5);
   }
 }

@@ -10,7 +10,7 @@ QString trCmd(const char* text) { return QCoreApplication::translate("DocumentCo
 
 ReplaceDrawingCommand::ReplaceDrawingCommand(StudioDocument& doc, Drawing drawing,
                                              QString fileName, Placement placement,
-                                             DrawingSource source)
+                                             job::DrawingSource source)
     : QUndoCommand(trCmd(QT_TRANSLATE_NOOP("DocumentCommands", "Import drawing"))),
       doc_(doc),
       before_(doc.drawingSnapshot()),

@@ -15,7 +15,7 @@ namespace fivebar::widgets {
 class ReplaceDrawingCommand : public QUndoCommand {
  public:
   ReplaceDrawingCommand(StudioDocument& doc, Drawing drawing, QString fileName, Placement placement,
-                        DrawingSource source);
+                        job::DrawingSource source);
   void undo() override;
   void redo() override;
 
@@ -23,7 +23,7 @@ class ReplaceDrawingCommand : public QUndoCommand {
   StudioDocument& doc_;
   std::shared_ptr<const Drawing> before_, after_;  // shared with the document, not copied
   QString fileBefore_, fileAfter_;
-  DrawingSource sourceBefore_, sourceAfter_;
+  job::DrawingSource sourceBefore_, sourceAfter_;
   Placement placementBefore_, placementAfter_;
   // The project file before the import, and after it: none, or the file the imported state
   // was saved to later (taken when the import is undone, given back when it is redone).

@@ -2,6 +2,7 @@
 
 #include "widgets/panels/import_warnings_panel.hpp"
 
+#include <QCoreApplication>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLocale>
@@ -9,7 +10,7 @@
 #include <QSettings>
 #include <QtConcurrent/QtConcurrentRun>
 
-#include "widgets/document/core_message.hpp"
+#include "i18n/translated.hpp"
 #include "widgets/document/job_pipeline.hpp"
 
 namespace fivebar::widgets {
@@ -74,7 +75,7 @@ void ImportController::showOpenDialog() {
 void ImportController::openFile(const QString& path) {
   // A project brings its own machine; a drawing is placed for the document's.
   const std::optional<MachineProfile> profile =
-      isProjectPath(path) ? std::nullopt : std::optional<MachineProfile>(doc_.profile());
+      job::isProjectPath(path) ? std::nullopt : std::optional<MachineProfile>(doc_.profile());
   const PlanOptions options = importOptions(doc_);
   retry_ = [this, path] { openFile(path); };
   start([path, profile, options, fill = fill_, hatch = hatch_, maxPoints = maxPoints_,
@@ -82,7 +83,7 @@ void ImportController::openFile(const QString& path) {
           ImportOutcome out;
           PlanOptions o = options;
           o.cancel = cancel;
-          out.job = loadJob(path, profile, o, out.error, fill, hatch, maxPoints, solid);
+          out.job = job::loadJob(path, profile, o, out.error, fill, hatch, maxPoints, solid);
           if (out.job) out.job->options.cancel = nullptr;
           return out;
         },
@@ -98,7 +99,7 @@ void ImportController::openData(const QByteArray& svg, const QString& name) {
           ImportOutcome out;
           PlanOptions o = options;
           o.cancel = cancel;
-          out.job = loadDrawing(DrawingSource{svg, name, fill, hatch, maxPoints, solid}, profile, o, out.error);
+          out.job = job::loadDrawing(job::DrawingSource{svg, name, fill, hatch, maxPoints, solid}, profile, o, out.error);
           if (out.job) out.job->options.cancel = nullptr;
           return out;
         },
@@ -136,7 +137,7 @@ void ImportController::start(std::function<ImportOutcome(const std::atomic<bool>
       return out;
     } catch (const std::exception& e) {
       ImportOutcome failed;
-      failed.error = e.what();
+      failed.error.text = e.what();
       return failed;
     }
   }));
@@ -150,15 +151,14 @@ void ImportController::onFinished() {
   const QString name = pendingName_;
   const bool waived = budgetWaived_;
   budgetWaived_ = false;
-  if (!result.cancelled && !result.job && isPointBudgetError(result.error) && interactive_) {
+  if (!result.cancelled && !result.job && result.error.pointBudgetExceeded() && interactive_ && askBudget_) {
     // Stopped early by the points budget: ask before reading the whole file.
-    const auto answer = QMessageBox::question(
-        dialogParent_, tr("Very large drawing"),
+    const bool whole = askBudget_(
+        tr("Very large drawing"),
         tr("%1 has more than %2 points after flattening (a runaway file?). Reading it was stopped "
            "there.\n\nPlanning and plotting it may take very long. Import it whole anyway?")
-            .arg(QFileInfo(name).fileName(), QLocale().toString(static_cast<qulonglong>(kDefaultMaxPoints))),
-        QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
-    if (answer == QMessageBox::Yes && retry_) {
+            .arg(QFileInfo(name).fileName(), QLocale().toString(static_cast<qulonglong>(kDefaultMaxPoints))));
+    if (whole && retry_) {
       maxPoints_ = 0;
       budgetWaived_ = true;
       retry_();
@@ -167,7 +167,7 @@ void ImportController::onFinished() {
     }
   }
   if (result.cancelled || !result.job) {
-    QString message = QString::fromStdString(result.error);
+    QString message = QString::fromStdString(result.error.text);
     if (result.cancelled) message = tr("Import of %1 cancelled.").arg(name);
     if (message.isEmpty()) message = tr("%1 could not be imported.").arg(name);
     if (interactive_ && !result.cancelled)
@@ -175,34 +175,42 @@ void ImportController::onFinished() {
     emit finished(false, message);
     return;
   }
-  LoadedJob& job = *result.job;
-  if (job.drawing.layers.empty()) {
+  job::LoadedJob& loaded = *result.job;
+  if (loaded.drawing.layers.empty()) {
     const QString message = tr("%1 contains nothing to draw.").arg(name);
     if (interactive_) QMessageBox::warning(dialogParent_, tr("Import failed"), message);
     emit finished(false, message);
     return;
   }
   Placement placement;
-  if (job.options.atMm) {
-    placement = Placement{*job.options.atMm, job.options.rotationRad, job.options.scale,
-                          job.options.stretchY};
+  if (loaded.options.atMm) {
+    placement = Placement{*loaded.options.atMm, loaded.options.rotationRad, loaded.options.scale,
+                          loaded.options.stretchY};
   } else {  // no singularity-free area: in front of the motors, true size
     placement.centerMm = Vec2(0.0, 0.5 * (doc_.profile().geometry.a1 + doc_.profile().geometry.b1));
   }
   // After hatching the drawing may have grown past the budget: asked here (unless already waived).
-  if (QString refusal; !waived && !acceptPointBudget(dialogParent_, job.drawing, name, interactive_, refusal)) {
-    emit finished(false, refusal);
-    return;
+  if (const QString excess = waived ? QString() : pointBudgetExcess(loaded.drawing, name); !excess.isEmpty()) {
+    const bool anyway =
+        interactive_ && askBudget_ &&
+        askBudget_(QCoreApplication::translate("ImportWarningsPanel", "Very large drawing"),
+                   excess + QStringLiteral("\n\n") +
+                       QCoreApplication::translate("ImportWarningsPanel",
+                                                   "Planning and plotting it may take very long. Import it anyway?"));
+    if (!anyway) {
+      emit finished(false, excess);
+      return;
+    }
   }
-  note_ = translated(job.note);
-  if (job.isProject) {
-    doc_.loadProject(std::move(job.drawing), job.source, placement, job.options.mode, job.options.toleranceMm,
-                     job.profile, name);
+  note_ = translated(loaded.note);
+  if (loaded.isProject) {
+    doc_.loadProject(std::move(loaded.drawing), loaded.source, placement, loaded.options.mode, loaded.options.toleranceMm,
+                     loaded.profile, name);
   } else {
-    doc_.replaceDrawing(std::move(job.drawing), name, placement, job.source);
+    doc_.replaceDrawing(std::move(loaded.drawing), name, placement, loaded.source);
   }
   if (pendingRemember_) addRecent(name);
-  emit warningsReported(name, translated(job.warnings));
+  emit warningsReported(name, translated(loaded.warnings));
   emit finished(true, note_);
 }
 

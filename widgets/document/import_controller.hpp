@@ -1,7 +1,7 @@
 // Importing drawings and opening projects into the document: runs the SVG import off the UI
 // thread (the import library parses in its worker process) with a progress dialog and cancel,
 // places a drawing by core's autoPlacement (true size when it fits, centred in the largest
-// singularity-free rectangle; widgets/document/job_source.hpp, as `fivebar plan` does), and keeps the
+// singularity-free rectangle; job/job_source.hpp, as `fivebar plan` does), and keeps the
 // recent-files list (drawings and projects, QSettings). Errors are reported in a message naming
 // the file.
 #pragma once
@@ -16,7 +16,7 @@
 #include <memory>
 #include <string>
 
-#include "widgets/document/job_source.hpp"
+#include "job/job_source.hpp"
 #include "core/planning/hatch.hpp"
 #include "widgets/document/studio_document.hpp"
 
@@ -24,8 +24,8 @@ namespace fivebar::widgets {
 
 // What an import gives back: the loaded job or the error.
 struct ImportOutcome {
-  std::optional<LoadedJob> job;
-  std::string error;
+  std::optional<job::LoadedJob> job;
+  job::JobError error;
   bool cancelled = false;
 };
 
@@ -38,6 +38,10 @@ class ImportController : public QObject {
 
   // false: no dialogs (tests, --screenshot); results only through the signals.
   void setInteractive(bool on) { interactive_ = on; }
+  // Asked (interactive only) when a drawing passes the points budget: true imports it whole
+  // anyway. The composition root words the answer's box; unset, such a drawing is refused.
+  using BudgetQuestion = std::function<bool(const QString& title, const QString& question)>;
+  void setBudgetQuestion(BudgetQuestion ask) { askBudget_ = std::move(ask); }
   bool busy() const { return watcher_.isRunning(); }
   // How filled shapes of the next imports are drawn (core/planning/hatch.hpp; default outline).
   void setFill(FillMode mode, const HatchSettings& hatch) {
@@ -91,6 +95,7 @@ class ImportController : public QObject {
   // then import the same file again without it (retry_), and is not asked twice.
   std::size_t maxPoints_ = kDefaultMaxPoints;
   bool budgetWaived_ = false;
+  BudgetQuestion askBudget_;
   std::function<void()> retry_;
   FillMode fill_ = FillMode::Outline;
   bool solidDashes_ = false;

@@ -2,12 +2,10 @@
 
 #include <QCoreApplication>
 #include <QLocale>
-#include <set>
 #include <utility>
 
 #include "core/kinematics/units.hpp"
-#include "core/support/memory_hint.hpp"
-#include "widgets/document/core_message.hpp"
+#include "i18n/translated.hpp"
 
 namespace fivebar::widgets {
 namespace {
@@ -19,57 +17,7 @@ QString trPipe(const char* text) { return QCoreApplication::translate("JobPipeli
 
 QPointF toQ(const Vec2& v) { return {v.x(), v.y()}; }
 
-std::shared_ptr<PathScene> drawingSceneOf(const std::vector<Stroke>& strokes,
-                                          const std::vector<PreviewProblem>& problems) {
-  std::set<std::pair<int, int>> flagged;
-  for (const PreviewProblem& p : problems) flagged.insert({p.layerIndex, p.pathIndex});
-  ScenePathList paths;
-  std::size_t points = 0;
-  for (const Stroke& s : strokes) points += s.points.size();
-  paths.pointsMm.reserve(points);
-  paths.paths.reserve(strokes.size());
-  int order = 0;
-  for (const Stroke& s : strokes) {
-    paths.beginPath(PathKind::Draw, !flagged.empty() && flagged.count({s.layerIndex, s.pathIndex}) > 0, order);
-    for (const Vec2& p : s.points) paths.addPoint(toQ(p));
-    order += static_cast<int>(s.points.size());
-  }
-  return std::make_shared<PathScene>(paths);
-}
-
 }  // namespace
-
-std::shared_ptr<PathScene> jobSceneOf(const PlannedJob& job) {
-  // Allocated once for the most a job can need (a path per motion move, a point more per path):
-  // counting first would read the moves (over 100 bytes each) twice, and reserved pages that are
-  // never written cost nothing. With the huge-page hint (memory_hint.hpp).
-  ScenePathList paths;
-  reserveWithHugePages(paths.pointsMm, 2 * job.moves.size());
-  reserveWithHugePages(paths.speedsMmPerS, 2 * job.moves.size());
-  reserveWithHugePages(paths.paths, job.moves.size());
-  Vec2 at = job.startXY;
-  bool open = false;  // a path of `kind` is being built
-  PathKind kind = PathKind::Draw;
-  for (std::size_t i = 0; i < job.moves.size(); ++i) {
-    const JobMove& m = job.moves[i];
-    if (!isMotion(m.kind)) {
-      open = false;
-      continue;
-    }
-    const PathKind k = m.kind == JobMoveKind::Draw ? PathKind::Draw : PathKind::Travel;
-    if (!open || k != kind) {
-      paths.beginPath(k, false, static_cast<int>(i));
-      paths.addPoint(toQ(at), 0.0f);
-      open = true;
-      kind = k;
-    }
-    // The segment that ends at the target starts at the previous point: its speed goes there.
-    paths.speedsMmPerS.back() = static_cast<float>(m.feedMmPerS);
-    paths.addPoint(toQ(m.targetXY), 0.0f);
-    at = m.targetXY;
-  }
-  return std::make_shared<PathScene>(paths);
-}
 
 QString longJobQuestion(const PlannedJob& job) {
   const JobSummary& s = job.summary;
@@ -120,9 +68,9 @@ PreviewResult runPipeline(const PipelineInput& input) {
   PlanOptions options = studioPlanOptions(input.placement, input.modeSelection, input.toleranceMm);
   options.maxListedProblems = kListedProblems;
   options.cancel = input.cancel.get();
-  std::string importError;
+  job::JobError importError;
   std::optional<Drawing> refined;
-  PlanResult plan = planRefining(*input.drawing, input.source, input.profile, options, refined, importError);
+  PlanResult plan = job::planRefining(*input.drawing, input.source, input.profile, options, refined, importError);
   if (refined) out.refinedDrawing = std::make_shared<const Drawing>(std::move(*refined));
   out.report = plan.report;
   out.mode = plan.report.mode;
@@ -150,8 +98,10 @@ PreviewResult runPipeline(const PipelineInput& input) {
     out.jobScene = jobSceneOf(*job);
     clock.lap("job scene");
   } else {
+    std::vector<std::pair<int, int>> flagged;
+    for (const PreviewProblem& p : out.problems) flagged.emplace_back(p.layerIndex, p.pathIndex);
     out.drawingScene = drawingSceneOf(
-        placeDrawing(out.refinedDrawing ? *out.refinedDrawing : *input.drawing, input.placement), out.problems);
+        placeDrawing(out.refinedDrawing ? *out.refinedDrawing : *input.drawing, input.placement), flagged);
     clock.lap("drawing scene");
   }
   switch (plan.status) {
@@ -166,7 +116,7 @@ PreviewResult runPipeline(const PipelineInput& input) {
       return out;
     default:
       out.status = PreviewStatus::Failed;
-      out.message = importError.empty() ? translated(plan.message) : QString::fromStdString(importError);
+      out.message = importError.empty() ? translated(plan.message) : QString::fromStdString(importError.text);
       return out;
   }
   out.job = std::move(job);

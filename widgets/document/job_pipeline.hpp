@@ -1,5 +1,5 @@
 // The studio's planning, run off the UI thread whenever the document changes: core's planJob at
-// the document's fixed placement (widgets/document/job_source.hpp, the same call `fivebar plan` makes),
+// the document's fixed placement (job/job_source.hpp, the same call `fivebar plan` makes),
 // then the paint-ready scenes and the timed trajectory of its result. Pure function of its
 // inputs; no Qt object is touched.
 #pragma once
@@ -18,15 +18,15 @@
 #include "core/planning/planner.hpp"
 #include "core/planning/stage_times.hpp"
 #include "core/planning/trajectory.hpp"
-#include "widgets/document/job_source.hpp"
-#include "widgets/canvas/path_scene.hpp"
+#include "job/job_source.hpp"
+#include "widgets/canvas/job_scenes.hpp"
 #include "widgets/document/studio_document.hpp"
 
 namespace fivebar::widgets {
 
 struct PipelineInput {
   std::shared_ptr<const Drawing> drawing;  // shared with the document, never copied per plan
-  DrawingSource source;  // to import the drawing again more finely when the planner asks
+  job::DrawingSource source;  // to import the drawing again more finely when the planner asks
   Placement placement;
   MachineProfile profile;
   ModeSelection modeSelection;
@@ -76,9 +76,5 @@ inline constexpr double kLongJobS = 8.0 * 3600.0;
 inline constexpr int kLongJobSegments = 2000000;
 // The question to ask before running `job`, empty when it is not long.
 QString longJobQuestion(const PlannedJob& job);
-
-// Paint-ready scene of a planned job: one path per run of Draw or Travel moves, order = move
-// index, per-segment speed = planned feed.
-std::shared_ptr<PathScene> jobSceneOf(const PlannedJob& job);
 
 }  // namespace fivebar::widgets

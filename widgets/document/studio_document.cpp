@@ -12,7 +12,7 @@ StudioDocument::StudioDocument(MachineProfile profile, QObject* parent)
   connect(&undo_, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
 }
 
-void StudioDocument::loadProject(Drawing drawing, const DrawingSource& source,
+void StudioDocument::loadProject(Drawing drawing, const job::DrawingSource& source,
                                  const Placement& placement, ModeSelection mode, double toleranceMm,
                                  const MachineProfile& profile, const QString& projectPath) {
   undo_.clear();
@@ -54,7 +54,7 @@ WorkingMode StudioDocument::effectiveMode() const {
 }
 
 void StudioDocument::replaceDrawing(Drawing drawing, const QString& fileName,
-                                    const Placement& placement, const DrawingSource& source) {
+                                    const Placement& placement, const job::DrawingSource& source) {
   undo_.push(new ReplaceDrawingCommand(*this, std::move(drawing), fileName, placement, source));
 }
 
@@ -131,7 +131,7 @@ void StudioDocument::setAutoResolvedMode(std::optional<WorkingMode> mode) {
 }
 
 void StudioDocument::applyDrawing(std::shared_ptr<const Drawing> drawing, const QString& fileName,
-                                  const DrawingSource& source) {
+                                  const job::DrawingSource& source) {
   drawing_ = std::move(drawing);
   fileName_ = fileName;
   source_ = source;

@@ -14,7 +14,7 @@
 #include "core/kinematics/modes.hpp"
 #include "core/planning/placement.hpp"
 #include "core/machine/profile.hpp"
-#include "widgets/document/job_source.hpp"
+#include "job/job_source.hpp"
 
 namespace fivebar::widgets {
 
@@ -42,7 +42,7 @@ class StudioDocument : public QObject {
   const Placement& placement() const { return placement_; }
   const MachineProfile& profile() const { return profile_; }
   // The SVG text the drawing was imported from (embedded in a saved project).
-  const DrawingSource& source() const { return source_; }
+  const job::DrawingSource& source() const { return source_; }
   // Total tolerance of the drawn line (mm), shared by flattening, rounding and segmentation.
   double toleranceMm() const { return toleranceMm_; }
   ModeSelection modeSelection() const { return modeSelection_; }
@@ -58,7 +58,7 @@ class StudioDocument : public QObject {
   // (projectPath() empty: Save asks for a name), undone it is the project it was. By value: an
   // import moves its drawing in (hundreds of thousands of paths are not copied on the UI thread).
   void replaceDrawing(Drawing drawing, const QString& fileName, const Placement& placement,
-                      const DrawingSource& source = {});
+                      const job::DrawingSource& source = {});
   // Sets the placement. Calls with the same non-zero `gestureId` merge into one undo step (a
   // drag); see beginGesture().
   void setPlacement(const Placement& placement, int gestureId = 0);
@@ -80,7 +80,7 @@ class StudioDocument : public QObject {
 
   // Not an edit: the document becomes a loaded project (drawing, placement, layers, mode,
   // tolerance, machine); the undo history is cleared and the state counts as saved.
-  void loadProject(Drawing drawing, const DrawingSource& source, const Placement& placement,
+  void loadProject(Drawing drawing, const job::DrawingSource& source, const Placement& placement,
                    ModeSelection mode, double toleranceMm, const MachineProfile& profile,
                    const QString& projectPath);
   // Not an edit: the same drawing flattened more finely (the planner asked for it); keeps the
@@ -95,7 +95,7 @@ class StudioDocument : public QObject {
   bool isModified() const { return !undo_.isClean(); }
 
   // --- raw setters used only by the undo commands ---
-  void applyDrawing(std::shared_ptr<const Drawing> drawing, const QString& fileName, const DrawingSource& source);
+  void applyDrawing(std::shared_ptr<const Drawing> drawing, const QString& fileName, const job::DrawingSource& source);
   void applyPlacement(const Placement& placement);
   void applyProjectPath(const QString& path);
   void applyModeSelection(ModeSelection choice);
@@ -127,7 +127,7 @@ class StudioDocument : public QObject {
   ModeSelection modeSelection_;
   std::optional<WorkingMode> autoResolved_;
   QString fileName_;
-  DrawingSource source_;
+  job::DrawingSource source_;
   double toleranceMm_ = 0.1;
   QString projectPath_;
   QUndoStack undo_;

@@ -10,17 +10,17 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
-#include "widgets/canvas/studio_palette.hpp"
+#include "paint/studio_palette.hpp"
 
 namespace fivebar::widgets {
 namespace {
 
 QColor colourOf(session::ConsoleKind kind) {
   switch (kind) {
-    case session::ConsoleKind::Sent: return palette::drawing();
+    case session::ConsoleKind::Sent: return paint::palette::drawing();
     case session::ConsoleKind::Received: return QColor(0x1f, 0x29, 0x37);
-    case session::ConsoleKind::Info: return palette::gridLabel();
-    case session::ConsoleKind::Problem: return palette::problem();
+    case session::ConsoleKind::Info: return paint::palette::gridLabel();
+    case session::ConsoleKind::Problem: return paint::palette::problem();
   }
   return Qt::black;
 }

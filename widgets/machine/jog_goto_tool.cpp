@@ -3,7 +3,7 @@
 #include <QLocale>
 #include <QPainterPath>
 
-#include "widgets/canvas/studio_palette.hpp"
+#include "paint/studio_palette.hpp"
 
 namespace fivebar::widgets {
 
@@ -52,31 +52,31 @@ void GoToTool::cancel() {
   }
 }
 
-bool GoToTool::mousePress(QMouseEvent* event, const ViewTransform& view) {
+bool GoToTool::mousePress(QMouseEvent* event, const paint::ViewTransform& view) {
   if (event->button() != Qt::LeftButton) return false;
   pick(view.machineFromWidget(event->position()));
   return true;
 }
 
-bool GoToTool::mouseMove(QMouseEvent* event, const ViewTransform& view) {
+bool GoToTool::mouseMove(QMouseEvent* event, const paint::ViewTransform& view) {
   hoverMm_ = view.machineFromWidget(event->position());
   return !target_.has_value();  // the hover line follows the cursor until a target is picked
 }
 
-bool GoToTool::mouseRelease(QMouseEvent*, const ViewTransform&) { return false; }
+bool GoToTool::mouseRelease(QMouseEvent*, const paint::ViewTransform&) { return false; }
 
-void GoToTool::paintOverlay(QPainter& painter, const ViewTransform& view) {
+void GoToTool::paintOverlay(QPainter& painter, const paint::ViewTransform& view) {
   painter.save();
   painter.setRenderHint(QPainter::Antialiasing);
   const auto pen = view_.penMm();
   if (!target_ && hoverMm_ && pen) {  // a light hint line from the pen to the cursor
-    painter.setPen(QPen(palette::travel(), 1.0, Qt::DotLine));
+    painter.setPen(QPen(paint::palette::travel(), 1.0, Qt::DotLine));
     painter.drawLine(view.widgetFromMachine(QPointF(pen->x(), pen->y())),
                      view.widgetFromMachine(*hoverMm_));
   }
   if (target_) {
     const bool ok = pending_ && pending_->ok();
-    const QColor colour = ok ? palette::selection() : palette::problem();
+    const QColor colour = ok ? paint::palette::selection() : paint::palette::problem();
     if (pending_ && pendingPathMm_.size() > 1) {
       QPainterPath path;
       path.moveTo(view.widgetFromMachine(QPointF(pendingPathMm_[0].x(), pendingPathMm_[0].y())));
@@ -94,6 +94,6 @@ void GoToTool::paintOverlay(QPainter& painter, const ViewTransform& view) {
   painter.restore();
 }
 
-QCursor GoToTool::cursorAt(QPointF, const ViewTransform&) const { return QCursor(Qt::CrossCursor); }
+QCursor GoToTool::cursorAt(QPointF, const paint::ViewTransform&) const { return QCursor(Qt::CrossCursor); }
 
 }  // namespace fivebar::widgets

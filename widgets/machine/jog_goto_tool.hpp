@@ -25,11 +25,11 @@ class GoToTool : public QObject, public CanvasTool {
   const std::optional<jog::JogPlan>& pending() const { return pending_; }
   std::optional<QPointF> target() const { return target_; }
 
-  bool mousePress(QMouseEvent* event, const ViewTransform& view) override;
-  bool mouseMove(QMouseEvent* event, const ViewTransform& view) override;
-  bool mouseRelease(QMouseEvent* event, const ViewTransform& view) override;
-  void paintOverlay(QPainter& painter, const ViewTransform& view) override;
-  QCursor cursorAt(QPointF widgetPx, const ViewTransform& view) const override;
+  bool mousePress(QMouseEvent* event, const paint::ViewTransform& view) override;
+  bool mouseMove(QMouseEvent* event, const paint::ViewTransform& view) override;
+  bool mouseRelease(QMouseEvent* event, const paint::ViewTransform& view) override;
+  void paintOverlay(QPainter& painter, const paint::ViewTransform& view) override;
+  QCursor cursorAt(QPointF widgetPx, const paint::ViewTransform& view) const override;
 
  public slots:
   // Sends the pending move; false when there is none or the machine refuses it.

@@ -46,7 +46,7 @@ std::size_t RunLayer::doneSegments() const {
   return std::size_t(it - segments_.begin());
 }
 
-void RunLayer::paint(QPainter& painter, const ViewTransform& view) {
+void RunLayer::paint(QPainter& painter, const paint::ViewTransform& view) {
   painter.save();
   const std::size_t done = doneSegments();
   if (done > 0) {

@@ -21,7 +21,7 @@ class RunLayer : public QObject, public CanvasLayer {
  public:
   RunLayer(const session::RunController& run, const session::MachineView& view, QObject* parent = nullptr);
 
-  void paint(QPainter& painter, const ViewTransform& view) override;
+  void paint(QPainter& painter, const paint::ViewTransform& view) override;
   // Pen-down segments (machine frame, mm) executed so far.
   std::size_t doneSegments() const;
   std::size_t totalSegments() const { return segments_.size(); }

@@ -12,7 +12,7 @@
 
 #include "core/kinematics/units.hpp"
 #include "widgets/document/import_controller.hpp"
-#include "widgets/document/job_source.hpp"
+#include "job/job_source.hpp"
 #include "widgets/document/studio_document.hpp"
 
 namespace fivebar::widgets {
@@ -91,7 +91,7 @@ void FillOptionsBox::push() {
 // Only a drawing is imported again (an undoable edit). A project opened again would drop its
 // unsaved edits without a question, and its layers keep their own fills (the Layers panel).
 bool FillOptionsBox::canImportAgain() const {
-  return QFileInfo(doc_.fileName()).isFile() && !isProjectPath(doc_.fileName());
+  return QFileInfo(doc_.fileName()).isFile() && !job::isProjectPath(doc_.fileName());
 }
 
 void FillOptionsBox::updateEnabled() {

@@ -53,24 +53,20 @@ std::size_t drawingPointCount(const Drawing& drawing) {
   return n;
 }
 
-bool acceptPointBudget(QWidget* parent, const Drawing& drawing, const QString& fileName,
-                       bool interactive, QString& refusal) {
+QString pointBudgetExcess(const Drawing& drawing, const QString& fileName) {
   const std::size_t points = drawingPointCount(drawing);
-  if (points <= kImportPointBudget) return true;
+  if (points <= kImportPointBudget) return {};
   const QString count = QLocale().toString(static_cast<qulonglong>(points));
   const QString budget = QLocale().toString(static_cast<qulonglong>(kImportPointBudget));
-  refusal = QCoreApplication::translate("ImportWarningsPanel",
-                                        "%1 has %2 points after flattening, more than the budget "
-                                        "of %3 (a runaway file?).")
-                .arg(QFileInfo(fileName).fileName(), count, budget);
-  if (!interactive) return false;
-  const auto answer = QMessageBox::question(
-      parent, QCoreApplication::translate("ImportWarningsPanel", "Very large drawing"),
-      refusal + QStringLiteral("\n\n") +
-          QCoreApplication::translate("ImportWarningsPanel",
-                                      "Planning and plotting it may take very long. Import it anyway?"),
-      QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
-  return answer == QMessageBox::Yes;
+  return QCoreApplication::translate("ImportWarningsPanel",
+                                     "%1 has %2 points after flattening, more than the budget "
+                                     "of %3 (a runaway file?).")
+      .arg(QFileInfo(fileName).fileName(), count, budget);
+}
+
+bool askBeyondPointBudget(QWidget* parent, const QString& title, const QString& question) {
+  return QMessageBox::question(parent, title, question, QMessageBox::Yes | QMessageBox::No,
+                               QMessageBox::No) == QMessageBox::Yes;
 }
 
 }  // namespace fivebar::widgets

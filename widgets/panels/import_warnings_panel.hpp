@@ -27,7 +27,7 @@ class ImportWarningsPanel : public QWidget {
 
  public slots:
   // Shows the warnings of an import of `fileName` (empty: "no warnings"), already in the UI
-  // language (the importer's messages are core Messages: widgets/document/core_message.hpp).
+  // language (the importer's messages are core Messages: i18n/translated.hpp).
   void showWarnings(const QString& fileName, const QStringList& warnings);
 
  signals:
@@ -44,9 +44,11 @@ std::size_t drawingPointCount(const Drawing& drawing);
 
 inline constexpr std::size_t kImportPointBudget = kDefaultMaxPoints;  // drawing.hpp
 
-// true when the drawing is within the budget, or the user chose to import it anyway
-// (interactive); false otherwise, with `refusal` set to the message to show.
-bool acceptPointBudget(QWidget* parent, const Drawing& drawing, const QString& fileName,
-                       bool interactive, QString& refusal);
+// Empty when the drawing is within the budget; otherwise what is wrong, naming the file and the
+// counts (the import controller asks its budget question with it, or refuses with it).
+QString pointBudgetExcess(const Drawing& drawing, const QString& fileName);
+
+// The studio's budget question (ImportController::BudgetQuestion): a Yes/No box over `parent`.
+bool askBeyondPointBudget(QWidget* parent, const QString& title, const QString& question);
 
 }  // namespace fivebar::widgets

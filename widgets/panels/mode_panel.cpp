@@ -62,10 +62,10 @@ ModePanel::ModePanel(StudioDocument& doc, WorkspaceLayer& layer,
   rectangleBox_ = new QCheckBox(tr("Largest singularity-free rectangle"), overlayBox);
   legendBox_ = new QCheckBox(tr("Workspace legend"), overlayBox);
   map_ = new QComboBox(overlayBox);
-  map_->addItem(tr("None"), static_cast<int>(MapKind::None));
-  map_->addItem(tr("Transmission angle"), static_cast<int>(MapKind::Transmission));
-  map_->addItem(tr("Conditioning"), static_cast<int>(MapKind::Conditioning));
-  map_->addItem(tr("Resolution (mm per step)"), static_cast<int>(MapKind::Resolution));
+  map_->addItem(tr("None"), static_cast<int>(paint::MapKind::None));
+  map_->addItem(tr("Transmission angle"), static_cast<int>(paint::MapKind::Transmission));
+  map_->addItem(tr("Conditioning"), static_cast<int>(paint::MapKind::Conditioning));
+  map_->addItem(tr("Resolution (mm per step)"), static_cast<int>(paint::MapKind::Resolution));
   form->addRow(region_);
   form->addRow(typeII_);
   form->addRow(rectangleBox_);
@@ -84,7 +84,7 @@ ModePanel::ModePanel(StudioDocument& doc, WorkspaceLayer& layer,
     o.typeII = typeII_->isChecked();
     o.rectangle = rectangleBox_->isChecked();
     o.legend = legendBox_->isChecked();
-    o.map = static_cast<MapKind>(map_->currentData().toInt());
+    o.map = static_cast<paint::MapKind>(map_->currentData().toInt());
     layer_.setOverlays(o);
   };
   for (QCheckBox* box : {region_, typeII_, rectangleBox_, legendBox_}) {

@@ -18,7 +18,7 @@
 #include "widgets/canvas/job_layer.hpp"
 #include "widgets/canvas/path_scene.hpp"
 #include "widgets/document/preview_controller.hpp"
-#include "widgets/canvas/studio_palette.hpp"
+#include "paint/studio_palette.hpp"
 
 namespace fivebar::widgets {
 
@@ -54,7 +54,7 @@ void SpeedLegend::paintEvent(QPaintEvent*) {
   QLinearGradient g(bar.topLeft(), bar.topRight());
   for (int k = 0; k <= 8; ++k) g.setColorAt(k / 8.0, PathScene::speedColour(k / 8.0));
   p.fillRect(bar, g);
-  p.setPen(palette::gridLabel());
+  p.setPen(paint::palette::gridLabel());
   QFont f = font();
   f.setPointSizeF(8.0);
   p.setFont(f);
@@ -173,7 +173,7 @@ void PreviewPanel::showResult() {
   problems_->clear();
   if (!machineProblem_.isEmpty()) {
     auto* item = new QListWidgetItem(machineProblem_, problems_);
-    item->setForeground(palette::problem());
+    item->setForeground(paint::palette::problem());
     item->setToolTip(machineProblem_);
     item->setData(Qt::UserRole, QStringLiteral("board"));
   }
@@ -181,7 +181,7 @@ void PreviewPanel::showResult() {
     QString text = p.text;
     if (!p.fixes.isEmpty()) text += QStringLiteral("\n") + tr("What to do: %1").arg(p.fixes.join(tr("; ")));
     auto* item = new QListWidgetItem(text, problems_);
-    item->setForeground(palette::problem());
+    item->setForeground(paint::palette::problem());
     item->setToolTip(text);
   }
   if (r.problems.empty() && machineProblem_.isEmpty() && r.status == PreviewStatus::Planned) {

@@ -20,7 +20,7 @@
 
 #include "core/machine/profile.hpp"
 #include "core/machine/profile_fields.hpp"
-#include "widgets/document/core_message.hpp"
+#include "i18n/translated.hpp"
 #include "core/kinematics/units.hpp"
 
 namespace fivebar::widgets {

@@ -9,7 +9,7 @@
 
 #include "core/workspace/workspace.hpp"
 
-namespace fivebar::widgets {
+namespace fivebar::paint {
 
 enum class MapKind { None, Transmission, Conditioning, Resolution };
 
@@ -37,4 +37,4 @@ void paintMapImage(QPainter& painter, const QTransform& widgetFromMachine,
 // A colour bar with its title and tick values inside `rectPx` (a white card).
 void paintColourBar(QPainter& painter, const QRectF& rectPx, const MapScale& scale);
 
-}  // namespace fivebar::widgets
+}  // namespace fivebar::paint

@@ -1,4 +1,4 @@
-#include "widgets/canvas/workspace_painter.hpp"
+#include "paint/workspace_painter.hpp"
 
 #include <QCoreApplication>
 #include <QFontMetricsF>
@@ -9,9 +9,9 @@
 #include <QPolygonF>
 #include <cmath>
 
-#include "widgets/canvas/studio_palette.hpp"
+#include "paint/studio_palette.hpp"
 
-namespace fivebar::widgets {
+namespace fivebar::paint {
 namespace {
 
 // Overlay colours (the palette's problem red and trace teal, plus region tints).
@@ -207,4 +207,4 @@ void paintScaleBar(QPainter& painter, const QTransform& widgetFromMachine, QPoin
   painter.restore();
 }
 
-}  // namespace fivebar::widgets
+}  // namespace fivebar::paint

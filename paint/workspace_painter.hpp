@@ -9,7 +9,7 @@
 
 #include "core/workspace/workspace.hpp"
 
-namespace fivebar::widgets {
+namespace fivebar::paint {
 
 struct WorkspacePaintOptions {
   bool fillRegions = true;     // singularity-free region and the margin band, as tinted areas
@@ -35,4 +35,4 @@ double paintWorkspaceLegend(QPainter& painter, QPointF topLeftPx, const Workspac
 void paintScaleBar(QPainter& painter, const QTransform& widgetFromMachine, QPointF leftPx,
                    double targetPx = 120.0);
 
-}  // namespace fivebar::widgets
+}  // namespace fivebar::paint

@@ -1,8 +1,8 @@
-#include "widgets/canvas/view_transform.hpp"
+#include "paint/view_transform.hpp"
 
 #include <algorithm>
 
-namespace fivebar::widgets {
+namespace fivebar::paint {
 
 ViewTransform::ViewTransform(QPointF centerMm, double pxPerMm, QSizeF viewportPx)
     : centerMm_(centerMm),
@@ -57,4 +57,4 @@ void ViewTransform::fit(const QRectF& machineRectMm, double marginPx) {
   centerMm_ = machineRectMm.center();
 }
 
-}  // namespace fivebar::widgets
+}  // namespace fivebar::paint

@@ -7,7 +7,7 @@
 #include <QSizeF>
 #include <QTransform>
 
-namespace fivebar::widgets {
+namespace fivebar::paint {
 
 class ViewTransform {
  public:
@@ -43,4 +43,4 @@ class ViewTransform {
   QSizeF viewportPx_{800.0, 600.0};
 };
 
-}  // namespace fivebar::widgets
+}  // namespace fivebar::paint

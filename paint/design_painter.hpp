@@ -10,9 +10,9 @@
 
 #include "core/design/search.hpp"
 #include "core/workspace/workspace.hpp"
-#include "widgets/canvas/map_painter.hpp"
+#include "paint/map_painter.hpp"
 
-namespace fivebar::widgets {
+namespace fivebar::paint {
 
 struct DesignMaps {
   WorkspaceMap map;            // the design's working mode, its brief's margins
@@ -45,4 +45,4 @@ QImage designAtlas(const design::Design& d, const DesignMaps& maps, const QStrin
 // Text lines describing the design's measures (translated).
 QStringList designMeasureLines(const design::Design& d);
 
-}  // namespace fivebar::widgets
+}  // namespace fivebar::paint

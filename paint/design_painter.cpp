@@ -1,4 +1,4 @@
-#include "widgets/design/design_painter.hpp"
+#include "paint/design_painter.hpp"
 
 #include <QCoreApplication>
 #include <QLocale>
@@ -6,12 +6,12 @@
 #include <cmath>
 
 #include "core/kinematics/kinematics.hpp"
-#include "widgets/canvas/machine_painter.hpp"
-#include "widgets/canvas/studio_palette.hpp"
-#include "widgets/canvas/view_transform.hpp"
-#include "widgets/canvas/workspace_painter.hpp"
+#include "paint/machine_painter.hpp"
+#include "paint/studio_palette.hpp"
+#include "paint/view_transform.hpp"
+#include "paint/workspace_painter.hpp"
 
-namespace fivebar::widgets {
+namespace fivebar::paint {
 namespace {
 
 QString trD(const char* text) { return QCoreApplication::translate("DesignPainter", text); }
@@ -169,4 +169,4 @@ QImage designAtlas(const design::Design& d, const DesignMaps& maps, const QStrin
   return image;
 }
 
-}  // namespace fivebar::widgets
+}  // namespace fivebar::paint

@@ -1,4 +1,4 @@
-#include "widgets/canvas/machine_painter.hpp"
+#include "paint/machine_painter.hpp"
 
 #include <QCoreApplication>
 #include <QFontMetricsF>
@@ -8,9 +8,9 @@
 #include <array>
 #include <cmath>
 
-#include "widgets/canvas/studio_palette.hpp"
+#include "paint/studio_palette.hpp"
 
-namespace fivebar::widgets {
+namespace fivebar::paint {
 namespace {
 
 constexpr double kMinMinorSpacingPx = 8.0;
@@ -168,4 +168,4 @@ void paintUnknownPose(QPainter& painter, const QTransform& widgetFromMachine, co
   painter.restore();
 }
 
-}  // namespace fivebar::widgets
+}  // namespace fivebar::paint

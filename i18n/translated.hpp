@@ -1,11 +1,11 @@
-// The core's messages (core/support/message.hpp) in the user's language: the template
+// One message mechanism for every Qt front end: the core's messages (core/support/message.hpp)
+// in the user's language: the template
 // translated with QCoreApplication::translate(context, template) from translations/*.ts, real
 // numbers written by QLocale (1,5 in German, French and Spanish), nested messages translated
 // on their own; verbatim messages are shown as they are. The markers are substituted as
 // QString::arg(a1, a2, ...) does (core substituteArgs), so the CLI's English and the studio's
-// text differ only by the translation and the number format. Qt Core only: the session layer
-// translates the motion check's and the jog's refusals with it, the widgets everything else
-// (widgets/document/core_message.hpp).
+// text differ only by the translation and the number format. Qt Core only (library
+// fivebar::i18n): the job library, the session layer and the widgets all word core's codes with it.
 #pragma once
 
 #include <QLocale>
@@ -15,9 +15,9 @@
 
 #include "core/support/message.hpp"
 
-namespace fivebar::session {
+namespace fivebar {
 
 QString translated(const Message& message, const QLocale& locale = QLocale());
 QStringList translated(const std::vector<Message>& messages, const QLocale& locale = QLocale());
 
-}  // namespace fivebar::session
+}  // namespace fivebar

@@ -1,11 +1,14 @@
-// Where a job's drawing comes from, the same for the studio (window and --export-gcode) and for
-// `fivebar plan`: an SVG file or a .fivebar project, imported through the SVG worker from its
-// bytes (a temporary file), placed by core's autoPlacement when no placement is given, and
-// planned by core's planJob, imported again more finely when the planner asks for it. Two
-// callers that use these functions get byte-identical G-code for the same input.
+// The job library's door (fivebar::job, Qt Core + the SVG import, no Gui widgets): where a job's
+// drawing comes from, the same for the studio (window and --export-gcode) and for `fivebar plan`:
+// an SVG file or a .fivebar project, imported through the SVG worker (the file itself while it is
+// unchanged since it was read, else its bytes through a temporary copy), placed by core's
+// autoPlacement when no placement is given, and planned by core's planJob, imported again more
+// finely when the planner asks for it. Two callers that use these functions get byte-identical
+// G-code for the same input.
 #pragma once
 
 #include <QByteArray>
+#include <QDateTime>
 #include <QString>
 #include <atomic>
 #include <optional>
@@ -15,9 +18,10 @@
 #include "core/planning/auto_placement.hpp"
 #include "core/planning/hatch.hpp"
 #include "core/planning/planner.hpp"
+#include "core/import/svg_import.hpp"
 #include "core/project/project.hpp"
 
-namespace fivebar::widgets {
+namespace fivebar::job {
 
 struct DrawingSource {
   QByteArray svg;  // the SVG text
@@ -31,10 +35,22 @@ struct DrawingSource {
   // the source, the finer re-import too). kDefaultMaxPoints (drawing.hpp) is the usual budget.
   std::size_t maxPoints = 0;
   bool solidDashes = false;  // dashed strokes drawn whole (svg::DashMode::Solid)
+  // The file `svg` was read from, with its size and modification time then ("" for text made in
+  // memory: the demo, a project's embedded drawing). While the file is unchanged the import hands
+  // this path to the worker; otherwise the bytes go through a temporary copy.
+  QString path;
+  qint64 fileSize = -1;
+  QDateTime fileModified;
 };
 
-// True when `error` came from an import stopped by DrawingSource::maxPoints.
-bool isPointBudgetError(const std::string& error);
+// Why loading or planning a job failed: the words (naming the file) and, for an import, its
+// status as a value (svg::ImportStatus::TooManyPoints when DrawingSource::maxPoints stopped it).
+struct JobError {
+  std::string text;  // empty = no error
+  svg::ImportStatus importStatus = svg::ImportStatus::Ok;
+  bool empty() const { return text.empty(); }
+  bool pointBudgetExceeded() const { return importStatus == svg::ImportStatus::TooManyPoints; }
+};
 
 // Imports SVG text flattened within toleranceMm (work mm); the result carries that tolerance
 // (Drawing::flatteningToleranceMm) and `name` as its source. On failure returns nullopt and
@@ -42,7 +58,7 @@ bool isPointBudgetError(const std::string& error);
 // The importer's warnings (truncated path data, dropped images, unsupported features) are
 // appended to `warnings` when given.
 std::optional<Drawing> importSvgText(const DrawingSource& source, double toleranceMm,
-                                     std::string& error,
+                                     JobError& error,
                                      const std::atomic<bool>* cancel = nullptr,
                                      std::vector<Message>* warnings = nullptr);
 
@@ -51,12 +67,12 @@ std::optional<Drawing> importSvgText(const DrawingSource& source, double toleran
 // the finer one). Needs a fixed placement in `options` for the result not to depend on the
 // flattening.
 PlanResult planRefining(Drawing& drawing, const DrawingSource& source, const MachineProfile& profile,
-                        const PlanOptions& options, std::string& error);
+                        const PlanOptions& options, JobError& error);
 // The same without touching `drawing`: `refined` is set to the finer import when one was
 // planned (the studio plans its document's drawing without copying it).
 PlanResult planRefining(const Drawing& drawing, const DrawingSource& source,
                         const MachineProfile& profile, const PlanOptions& options,
-                        std::optional<Drawing>& refined, std::string& error);
+                        std::optional<Drawing>& refined, JobError& error);
 
 // A job read from DRAWING.svg or PROJECT.fivebar, ready for planRefining.
 struct LoadedJob {
@@ -79,16 +95,16 @@ bool isProjectPath(const QString& path);
 // `fill`/`hatch` apply to a drawing (a project keeps outline fills); `maxPoints` to both (the
 // import stops past it, DrawingSource::maxPoints).
 std::optional<LoadedJob> loadJob(const QString& path, const std::optional<MachineProfile>& profile,
-                                 PlanOptions options, std::string& error,
+                                 PlanOptions options, JobError& error,
                                  FillMode fill = FillMode::Outline, const HatchSettings& hatch = {},
                                  std::size_t maxPoints = 0, bool solidDashes = false);
 
 // The same for SVG text already in memory (the built-in demo).
 std::optional<LoadedJob> loadDrawing(const DrawingSource& source, const MachineProfile& profile,
-                                     PlanOptions options, std::string& error);
+                                     PlanOptions options, JobError& error);
 
 // The Project of a loaded drawing with its current layers, placement and settings.
 Project projectOf(const DrawingSource& source, const Drawing& drawing, const Placement& placement,
                   std::optional<WorkingMode> mode, double toleranceMm, const MachineProfile& profile);
 
-}  // namespace fivebar::widgets
+}  // namespace fivebar::job

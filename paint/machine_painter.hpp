@@ -7,9 +7,9 @@
 #include <optional>
 
 #include "core/kinematics/kinematics.hpp"
-#include "widgets/canvas/view_transform.hpp"
+#include "paint/view_transform.hpp"
 
-namespace fivebar::widgets {
+namespace fivebar::paint {
 
 // Background colour and the millimetre grid of the visible region, spacing adapted to the zoom
 // (minor lines at least ~8 px apart, a major line every 5 or 10 minor ones, labelled in mm).
@@ -27,4 +27,4 @@ void paintMachine(QPainter& painter, const QTransform& widgetFromMachine, const 
 // is not known, so no linkage is drawn (never the reported pose through the base).
 void paintUnknownPose(QPainter& painter, const QTransform& widgetFromMachine, const Geometry& g);
 
-}  // namespace fivebar::widgets
+}  // namespace fivebar::paint

@@ -4,7 +4,7 @@
 
 #include <QColor>
 
-namespace fivebar::widgets::palette {
+namespace fivebar::paint::palette {
 
 inline QColor background() { return QColor(0xfa, 0xfa, 0xf7); }
 inline QColor gridMinor() { return QColor(0xe9, 0xea, 0xe6); }
@@ -22,4 +22,4 @@ inline QColor problem() { return QColor(0xdc, 0x26, 0x26); }
 inline QColor trace() { return QColor(0x0f, 0x76, 0x6e); }
 inline QColor selection() { return QColor(0xf5, 0x9e, 0x0b); }
 
-}  // namespace fivebar::widgets::palette
+}  // namespace fivebar::paint::palette

@@ -1,9 +1,9 @@
-// Core messages in the user's language. Contract: core_message.hpp.
-#include "session/core_message.hpp"
+// Core messages in the user's language. Contract: translated.hpp.
+#include "i18n/translated.hpp"
 
 #include <QCoreApplication>
 
-namespace fivebar::session {
+namespace fivebar {
 
 QString translated(const Message& message, const QLocale& locale) {
   if (const Message* studio = message.studioWording()) return translated(*studio, locale);
@@ -32,4 +32,4 @@ QStringList translated(const std::vector<Message>& messages, const QLocale& loca
   return out;
 }
 
-}  // namespace fivebar::session
+}  // namespace fivebar

@@ -1,17 +1,17 @@
 // Job sources shared by the studio and `fivebar plan`. Contract: job_source.hpp.
-#include "widgets/document/job_source.hpp"
+#include "job/job_source.hpp"
 
 #include <utility>
 
 #include <QCoreApplication>
+#include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QTemporaryFile>
 
-#include "core/import/svg_import.hpp"
-#include "widgets/document/core_message.hpp"
+#include "i18n/translated.hpp"
 
-namespace fivebar::widgets {
+namespace fivebar::job {
 
 namespace {
 // The studio's own sentences about a source, in the user's language (context "JobPipeline").
@@ -22,29 +22,46 @@ bool isProjectPath(const QString& path) {
   return path.endsWith(QStringLiteral(".fivebar"), Qt::CaseInsensitive);
 }
 
+namespace {
+
+// The source's own file while it is what was read (same size and time), else none.
+bool fileUnchanged(const DrawingSource& source) {
+  if (source.path.isEmpty()) return false;
+  const QFileInfo info(source.path);
+  return info.isFile() && info.size() == source.fileSize && info.lastModified() == source.fileModified;
+}
+
+}  // namespace
+
 std::optional<Drawing> importSvgText(const DrawingSource& source, double toleranceMm,
-                                     std::string& error, const std::atomic<bool>* cancel,
+                                     JobError& error, const std::atomic<bool>* cancel,
                                      std::vector<Message>* warnings) {
-  // Through a file, so that the import runs in the isolated worker process.
-  QTemporaryFile file(QStringLiteral("fivebar-import-XXXXXX.svg"));
-  if (!file.open() || file.write(source.svg) != source.svg.size() || !file.flush()) {
-    error = trSource(QT_TRANSLATE_NOOP("JobPipeline", "%1: cannot write a temporary copy to import"))
-                .arg(source.name).toStdString();
-    return std::nullopt;
-  }
-  file.close();
   svg::ImportOptions options;
   options.toleranceMm = toleranceMm;
   options.cancel = cancel;
   options.maxPoints = source.maxPoints;
   options.dashes = source.solidDashes ? svg::DashMode::Solid : svg::DashMode::Dashed;
-  svg::ImportResult r = svg::importSvgFile(file.fileName(), options);
+  // Through a file, so that the import runs in the isolated worker process: the source's own
+  // when it is unchanged, else a temporary copy of the bytes.
+  QTemporaryFile copy(QDir::temp().filePath(QStringLiteral("fivebar-import-XXXXXX.svg")));
+  QString importPath = source.path;
+  if (!fileUnchanged(source)) {
+    if (!copy.open() || copy.write(source.svg) != source.svg.size() || !copy.flush()) {
+      error.text = trSource(QT_TRANSLATE_NOOP("JobPipeline", "%1: cannot write a temporary copy to import"))
+                       .arg(source.name).toStdString();
+      return std::nullopt;
+    }
+    copy.close();
+    importPath = copy.fileName();
+  }
+  svg::ImportResult r = svg::importSvgFile(importPath, options);
   if (!r.ok()) {
-    // In the user's language, naming the drawing, not the temporary copy.
-    const QString message = translated(r.message).replace(file.fileName(), source.name);
-    error = message.isEmpty()
-                ? trSource(QT_TRANSLATE_NOOP("JobPipeline", "%1: cannot be imported")).arg(source.name).toStdString()
-                : message.toStdString();
+    // In the user's language, naming the drawing, not the file it was read through.
+    const QString message = translated(r.message).replace(importPath, source.name);
+    error.importStatus = r.status;
+    error.text = message.isEmpty()
+                     ? trSource(QT_TRANSLATE_NOOP("JobPipeline", "%1: cannot be imported")).arg(source.name).toStdString()
+                     : message.toStdString();
     return std::nullopt;
   }
   if (warnings) warnings->insert(warnings->end(), r.warnings.begin(), r.warnings.end());
@@ -58,13 +75,9 @@ std::optional<Drawing> importSvgText(const DrawingSource& source, double toleran
   return std::move(r.drawing);
 }
 
-bool isPointBudgetError(const std::string& error) {
-  return error.find("(the points budget)") != std::string::npos;
-}
-
 PlanResult planRefining(const Drawing& drawing, const DrawingSource& source,
                         const MachineProfile& profile, const PlanOptions& options,
-                        std::optional<Drawing>& refined, std::string& error) {
+                        std::optional<Drawing>& refined, JobError& error) {
   refined.reset();
   PlanResult r = planJob(drawing, profile, options);
   // One finer import is enough with a fixed placement; a second guards a moved bounding box.
@@ -80,7 +93,7 @@ PlanResult planRefining(const Drawing& drawing, const DrawingSource& source,
 }
 
 PlanResult planRefining(Drawing& drawing, const DrawingSource& source, const MachineProfile& profile,
-                        const PlanOptions& options, std::string& error) {
+                        const PlanOptions& options, JobError& error) {
   std::optional<Drawing> refined;
   PlanResult r = planRefining(std::as_const(drawing), source, profile, options, refined, error);
   if (refined) drawing = std::move(*refined);
@@ -89,10 +102,10 @@ PlanResult planRefining(Drawing& drawing, const DrawingSource& source, const Mac
 
 namespace {
 
-bool readFile(const QString& path, QByteArray& out, std::string& error) {
+bool readFile(const QString& path, QByteArray& out, JobError& error) {
   QFile f(path);
   if (!f.open(QIODevice::ReadOnly)) {
-    error = trSource(QT_TRANSLATE_NOOP("JobPipeline", "%1: cannot read (%2)")).arg(path, f.errorString()).toStdString();
+    error.text = trSource(QT_TRANSLATE_NOOP("JobPipeline", "%1: cannot read (%2)")).arg(path, f.errorString()).toStdString();
     return false;
   }
   out = f.readAll();
@@ -100,15 +113,15 @@ bool readFile(const QString& path, QByteArray& out, std::string& error) {
 }
 
 std::optional<LoadedJob> loadProject(const QString& path, const std::optional<MachineProfile>& profile,
-                                     std::string& error, std::size_t maxPoints) {
+                                     JobError& error, std::size_t maxPoints) {
   QByteArray text;
   if (!readFile(path, text, error)) return std::nullopt;
   ProjectLoad load = projectFromJson(text.toStdString(), path.toStdString());
   if (!load.project) {
-    error.clear();
+    error = JobError{};
     for (const ValidationIssue& issue : load.issues)
-      error += (error.empty() ? QString() : QStringLiteral("\n")).toStdString() +
-               QStringLiteral("%1: %2").arg(path, translated(issue.message)).toStdString();
+      error.text += (error.empty() ? QString() : QStringLiteral("\n")).toStdString() +
+                    QStringLiteral("%1: %2").arg(path, translated(issue.message)).toStdString();
     return std::nullopt;
   }
   LoadedJob job;
@@ -133,7 +146,7 @@ std::optional<LoadedJob> loadProject(const QString& path, const std::optional<Ma
 }  // namespace
 
 std::optional<LoadedJob> loadDrawing(const DrawingSource& source, const MachineProfile& profile,
-                                     PlanOptions options, std::string& error) {
+                                     PlanOptions options, JobError& error) {
   LoadedJob job;
   job.profile = profile;
   job.source = source;
@@ -157,11 +170,11 @@ std::optional<LoadedJob> loadDrawing(const DrawingSource& source, const MachineP
 }
 
 std::optional<LoadedJob> loadJob(const QString& path, const std::optional<MachineProfile>& profile,
-                                 PlanOptions options, std::string& error, FillMode fill,
+                                 PlanOptions options, JobError& error, FillMode fill,
                                  const HatchSettings& hatch, std::size_t maxPoints, bool solidDashes) {
   if (isProjectPath(path)) return loadProject(path, profile, error, maxPoints);
   if (!profile) {
-    error = trSource(QT_TRANSLATE_NOOP("JobPipeline", "no machine profile given")).toStdString();
+    error.text = trSource(QT_TRANSLATE_NOOP("JobPipeline", "no machine profile given")).toStdString();
     return std::nullopt;
   }
   DrawingSource source;
@@ -171,6 +184,12 @@ std::optional<LoadedJob> loadJob(const QString& path, const std::optional<Machin
   source.maxPoints = maxPoints;
   source.solidDashes = solidDashes;
   if (!readFile(path, source.svg, error)) return std::nullopt;
+  // The worker reads the file itself while it stays as read (no temporary copy of its bytes).
+  const QFileInfo info(path);
+  source.path = info.absoluteFilePath();
+  source.fileSize = info.size();
+  source.fileModified = info.lastModified();
+  if (source.fileSize != source.svg.size()) source.path.clear();  // changed while read
   return loadDrawing(source, *profile, std::move(options), error);
 }
 
@@ -189,4 +208,4 @@ Project projectOf(const DrawingSource& source, const Drawing& drawing, const Pla
   return p;
 }
 
-}  // namespace fivebar::widgets
+}  // namespace fivebar::job

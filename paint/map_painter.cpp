@@ -1,4 +1,4 @@
-#include "widgets/canvas/map_painter.hpp"
+#include "paint/map_painter.hpp"
 
 #include <QCoreApplication>
 #include <QLinearGradient>
@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "core/kinematics/units.hpp"
-#include "widgets/canvas/studio_palette.hpp"
+#include "paint/studio_palette.hpp"
 
-namespace fivebar::widgets {
+namespace fivebar::paint {
 namespace {
 
 QString trMap(const char* text) { return QCoreApplication::translate("MapPainter", text); }
@@ -157,4 +157,4 @@ void paintColourBar(QPainter& painter, const QRectF& rectPx, const MapScale& sca
   painter.restore();
 }
 
-}  // namespace fivebar::widgets
+}  // namespace fivebar::paint
