@@ -1,8 +1,8 @@
 #include "session/board_preflight.hpp"
 
 #include "core/output/gcode.hpp"
-#include "drivers/gcode_job.hpp"
-#include "drivers/soft_limits.hpp"
+#include "drivers/stream/gcode_job.hpp"
+#include "drivers/check/soft_limits.hpp"
 #include "i18n/translated.hpp"
 
 namespace fivebar::session {
@@ -12,8 +12,8 @@ QString boardLimitProblem(const MachineSession& session, const MachineProfile& p
   const auto& board = session.boardSettings();
   const auto wco = session.workOffsetDeg();
   if (!board || !wco || !setup::softLimitsOn(*board)) return {};
-  job::GcodeJob parsed = job::parseJob(gcode, job::rulesFor(profile));
-  std::erase_if(parsed.lines, [afterLine](const job::JobLine& l) { return l.fileLine <= afterLine; });
+  stream::GcodeJob parsed = stream::parseJob(gcode, stream::rulesFor(profile));
+  std::erase_if(parsed.lines, [afterLine](const stream::JobLine& l) { return l.fileLine <= afterLine; });
   const auto hit = setup::firstSoftLimitHit(parsed, *board, *wco);
   if (!hit) return {};
   return softLimitAdvice(*hit);

@@ -1,7 +1,7 @@
 // BoardPreflight: the planned job against the connected board itself, kept current for the
 // studio's pre-flight problem list. With the board's soft limits on ($20=1, its $$ read on
 // connect), every target of the job is checked in MACHINE coordinates (work + the reported WCO)
-// against the travel $130/$131, as GRBL checks it (drivers/soft_limits.hpp, the board part of the
+// against the travel $130/$131, as GRBL checks it (drivers/check/soft_limits.hpp, the board part of the
 // one motion check): a job the board would stop part-way with ALARM:2 is named before Start.
 // Recomputed when the plan, the board's settings, its work offset or the connection change.
 #pragma once
@@ -12,7 +12,7 @@
 #include <optional>
 #include <string>
 
-#include "drivers/soft_limits.hpp"
+#include "drivers/check/soft_limits.hpp"
 #include "session/machine_session.hpp"
 #include "session/studio_inputs.hpp"
 

@@ -9,7 +9,7 @@
 #include <QTimer>
 #include <optional>
 
-#include "drivers/jog.hpp"
+#include "drivers/jog/jog.hpp"
 #include "session/machine_session.hpp"
 
 namespace fivebar::session {

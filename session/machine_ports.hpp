@@ -16,9 +16,9 @@
 #include <optional>
 
 #include "core/kinematics/kinematics.hpp"
-#include "drivers/jog.hpp"
-#include "drivers/machine_setup.hpp"
-#include "drivers/sim_machine.hpp"
+#include "drivers/jog/jog.hpp"
+#include "drivers/check/machine_setup.hpp"
+#include "drivers/sim/sim_machine.hpp"
 
 namespace fivebar::session {
 

@@ -4,14 +4,14 @@
 #include <cctype>
 
 #include "core/kinematics/units.hpp"
-#include "drivers/gcode_job.hpp"
-#include "drivers/grbl_codes.hpp"
-#include "drivers/jog.hpp"
-#include "drivers/pen_state.hpp"
-#include "drivers/motion_check.hpp"
-#include "drivers/open_transport.hpp"
-#include "drivers/serial_transport.hpp"
-#include "drivers/simulated_transport.hpp"
+#include "drivers/stream/gcode_job.hpp"
+#include "drivers/protocol/grbl_codes.hpp"
+#include "drivers/jog/jog.hpp"
+#include "drivers/protocol/pen_state.hpp"
+#include "drivers/check/motion_check.hpp"
+#include "drivers/transport/open_transport.hpp"
+#include "drivers/transport/serial_transport.hpp"
+#include "drivers/transport/simulated_transport.hpp"
 #include "i18n/translated.hpp"
 
 namespace fivebar::session {

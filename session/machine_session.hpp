@@ -14,12 +14,12 @@
 #include <vector>
 
 #include "core/kinematics/kinematics.hpp"
-#include "drivers/grbl_protocol.hpp"
-#include "drivers/jog_settle.hpp"
-#include "drivers/machine_link.hpp"
-#include "drivers/machine_setup.hpp"
-#include "drivers/sim_machine.hpp"
-#include "drivers/jog.hpp"
+#include "drivers/protocol/grbl_protocol.hpp"
+#include "drivers/jog/jog_settle.hpp"
+#include "drivers/protocol/machine_link.hpp"
+#include "drivers/check/machine_setup.hpp"
+#include "drivers/sim/sim_machine.hpp"
+#include "drivers/jog/jog.hpp"
 #include "session/machine_ports.hpp"
 #include "session/studio_inputs.hpp"
 
@@ -92,7 +92,7 @@ class MachineSession : public QObject,
   // up reports its last reference pose wherever the arms stand.
   std::optional<JointAngles> motorAngles() const;
   std::optional<Vec2> penMm() const;             // FK of motorAngles, machine frame
-  // Whether the studio knows where the arms are (drivers/pose_trust.hpp): known after the
+  // Whether the studio knows where the arms are (drivers/protocol/pose_trust.hpp): known after the
   // reference pose is set, homing, or a board found where this computer last saw it stand.
   bool poseKnown() const;
   grbl::PoseDoubt poseDoubt() const;
@@ -108,7 +108,7 @@ class MachineSession : public QObject,
   bool jogSettled() const { return settle_.settled(); }
   // True when jogging and console commands may be sent now (connected, no job, not in alarm).
   bool canJog() const override;
-  // The pen as the board reports it (drivers/pen_state.hpp: its spindle state or Z), not as the
+  // The pen as the board reports it (drivers/protocol/pen_state.hpp: its spindle state or Z), not as the
   // last line sent.
   PenState penState() const { return pen_; }
 
@@ -125,7 +125,7 @@ class MachineSession : public QObject,
   // The board's settings that differ from what the profile expects (empty while unknown).
   std::vector<setup::SettingDiff> settingDifferences() const;
   // The board's settings (as last read) differ from the profile where it changes how the
-  // machine moves (drivers/stream_session.hpp movingSettingDiffs): no jog until written.
+  // machine moves (drivers/stream/stream_session.hpp movingSettingDiffs): no jog until written.
   bool settingsStopMoves() const;
   // The expert's override for jogs, go-to and console moves: the differences are warned about
   // but do not refuse them (off again at disconnect). Start has its own ("Start anyway").

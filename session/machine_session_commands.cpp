@@ -5,11 +5,11 @@
 
 
 #include "core/kinematics/units.hpp"
-#include "drivers/gcode_job.hpp"
-#include "drivers/grbl_codes.hpp"
-#include "drivers/jog.hpp"
-#include "drivers/motion_check.hpp"
-#include "drivers/stream_session.hpp"
+#include "drivers/stream/gcode_job.hpp"
+#include "drivers/protocol/grbl_codes.hpp"
+#include "drivers/jog/jog.hpp"
+#include "drivers/check/motion_check.hpp"
+#include "drivers/stream/stream_session.hpp"
 #include "i18n/translated.hpp"
 
 namespace fivebar::session {
@@ -309,10 +309,10 @@ void MachineSession::cycleStart() {
   emit consoleLine(tr("[cycle start]"), ConsoleKind::Sent);
 }
 
-bool MachineSession::penUp() { return sendPen(job::penUpCommands(inputs_.profile().tool)); }
+bool MachineSession::penUp() { return sendPen(stream::penUpCommands(inputs_.profile().tool)); }
 
 bool MachineSession::penDown() {
-  return sendPen(job::penDownCommands(inputs_.profile().tool));
+  return sendPen(stream::penDownCommands(inputs_.profile().tool));
 }
 
 bool MachineSession::sendPen(const std::vector<std::string>& lines) {

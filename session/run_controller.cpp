@@ -61,7 +61,7 @@ void RunController::clearPreviousRun() {
   job_.reset();
   timeline_ = {};
   snapshot_ = {};
-  lastState_ = job::RunState::Ready;
+  lastState_ = stream::RunState::Ready;
   lastMessage_.clear();
   emit progressChanged();
   emit runChanged();
@@ -93,7 +93,7 @@ std::shared_ptr<const std::string> RunController::plannedGcode() const {
   if (job != hashedPlan_ || !plannedGcode_) {
     hashedPlan_ = job;
     plannedGcode_ = std::make_shared<const std::string>(writeGcode(*job, inputs_.profile()));
-    planHash_ = QString::fromStdString(job::sha256Hex(*plannedGcode_));
+    planHash_ = QString::fromStdString(stream::sha256Hex(*plannedGcode_));
   }
   return plannedGcode_;
 }
@@ -185,15 +185,15 @@ bool RunController::canResume() const {
          planMatchesSaved();
 }
 
-std::optional<job::JobProgress> RunController::savedProgress() const {
+std::optional<stream::JobProgress> RunController::savedProgress() const {
   const std::string path = jobPath().toStdString();
-  if (!QFile::exists(QString::fromStdString(job::progressPathFor(path))) || !QFile::exists(jobPath()))
+  if (!QFile::exists(QString::fromStdString(stream::progressPathFor(path))) || !QFile::exists(jobPath()))
     return std::nullopt;
   std::string error;
-  return job::loadProgress(job::progressPathFor(path), &error);
+  return stream::loadProgress(stream::progressPathFor(path), &error);
 }
 
-job::RunState RunController::state() const {
+stream::RunState RunController::state() const {
   if (stream_ && stream_->runner() && !finished_) return stream_->runner()->state();
   return lastState_;
 }
@@ -212,7 +212,7 @@ bool RunController::start(QString* error) {
     const auto gcode = plannedGcode();
     why = writeAtomically(jobPath(), *gcode);
     if (why.isEmpty()) {
-      QFile::remove(QString::fromStdString(job::progressPathFor(jobPath().toStdString())));
+      QFile::remove(QString::fromStdString(stream::progressPathFor(jobPath().toStdString())));
       if (launch(false, gcode, &why)) return true;
     }
   }
@@ -266,8 +266,8 @@ bool RunController::launch(bool resume, std::shared_ptr<const std::string> gcode
     stream_.reset();
     return false;
   }
-  job_ = std::make_shared<const job::GcodeJob>(stream_->job());
-  timeline_ = job::timelineOf(*job_, inputs_.profile());
+  job_ = std::make_shared<const stream::GcodeJob>(stream_->job());
+  timeline_ = stream::timelineOf(*job_, inputs_.profile());
   snapshot_ = {};
   snapshot_.totalLines = job_->lines.size();
   snapshot_.etaS = timeline_.totalS();
@@ -302,7 +302,7 @@ void RunController::refresh() {
   snapshot_ = stream_->runner()->snapshot();
   // The time left by the plan's time line of the last executed line (unchanged while held).
   snapshot_.etaS = timeline_.lineEndS.empty() ? -1.0 : timeline_.remainingS(snapshot_.lastCompleted);
-  const job::RunState s = stream_->runner()->state();
+  const stream::RunState s = stream_->runner()->state();
   const bool changed = s != lastState_;
   lastState_ = s;
   emit progressChanged();
@@ -316,7 +316,7 @@ void RunController::onFinished(bool ok, const QString& message) {
   refresh_.stop();
   lastMessage_ = stopMessage(ok, message);
   if (ok) {
-    lastState_ = job::RunState::Finished;
+    lastState_ = stream::RunState::Finished;
     snapshot_.lastCompleted = job_ && !job_->lines.empty()
                                   ? std::optional<std::size_t>(job_->lines.size() - 1)
                                   : std::nullopt;

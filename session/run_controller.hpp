@@ -12,10 +12,10 @@
 #include <memory>
 #include <optional>
 
-#include "drivers/job_progress.hpp"
-#include "drivers/job_runner.hpp"
-#include "drivers/job_timeline.hpp"
-#include "drivers/stream_session.hpp"
+#include "drivers/stream/job_progress.hpp"
+#include "drivers/stream/job_runner.hpp"
+#include "drivers/stream/job_timeline.hpp"
+#include "drivers/stream/stream_session.hpp"
 #include "session/machine_session.hpp"
 #include "session/studio_inputs.hpp"
 
@@ -49,13 +49,13 @@ class RunController : public QObject {
   // The planned job Start would stream (the preview's), nullptr when there is none.
   const PlannedJob* plannedJob() const;
   // The saved progress beside the job file, when there is one that can be read.
-  std::optional<job::JobProgress> savedProgress() const;
+  std::optional<stream::JobProgress> savedProgress() const;
 
-  job::RunState state() const;
-  const job::RunSnapshot& snapshot() const { return snapshot_; }
+  stream::RunState state() const;
+  const stream::RunSnapshot& snapshot() const { return snapshot_; }
   // The job being (or last) run; nullptr before the first start and after the previous run
   // was cleared (the job, placement or profile changed since it ended).
-  const job::GcodeJob* job() const { return job_.get(); }
+  const stream::GcodeJob* job() const { return job_.get(); }
   QString lastMessage() const { return lastMessage_; }
   // The drawing Start and Resume work on ("flower" for .../jobs/flower.gcode).
   QString drawingName() const;
@@ -96,10 +96,10 @@ class RunController : public QObject {
   MachineSession& session_;
   QString jobDir_;
   std::unique_ptr<StreamSession> stream_;
-  std::shared_ptr<const job::GcodeJob> job_;
-  job::JobTimeline timeline_;
-  job::RunSnapshot snapshot_;
-  job::RunState lastState_ = job::RunState::Ready;
+  std::shared_ptr<const stream::GcodeJob> job_;
+  stream::JobTimeline timeline_;
+  stream::RunSnapshot snapshot_;
+  stream::RunState lastState_ = stream::RunState::Ready;
   bool finished_ = true;
   bool ignoreSettings_ = false;
   mutable const PlannedJob* hashedPlan_ = nullptr;

@@ -7,7 +7,7 @@
 #include <QString>
 #include <vector>
 
-#include "drivers/machine_setup.hpp"
+#include "drivers/check/machine_setup.hpp"
 
 namespace fivebar::session {
 

@@ -10,11 +10,11 @@
 #include <optional>
 
 #include "commands.hpp"
-#include "drivers/grbl_codes.hpp"
-#include "drivers/machine_link.hpp"
-#include "drivers/machine_setup.hpp"
-#include "drivers/serial_transport.hpp"
-#include "drivers/stream_session.hpp"
+#include "drivers/protocol/grbl_codes.hpp"
+#include "drivers/protocol/machine_link.hpp"
+#include "drivers/check/machine_setup.hpp"
+#include "drivers/transport/serial_transport.hpp"
+#include "drivers/stream/stream_session.hpp"
 #include "machine_arg.hpp"
 #include "machine_cli.hpp"
 #include "options.hpp"
@@ -66,7 +66,7 @@ std::optional<MachineProfile> streamMachine(const Options& o, const std::string&
   name = o.value("--machine").value_or("");
   if (name.empty() && o.flag("--resume")) {
     std::string ignored;
-    if (auto p = job::loadProgress(job::progressPathFor(jobPath), &ignored)) name = p->machine;
+    if (auto p = stream::loadProgress(stream::progressPathFor(jobPath), &ignored)) name = p->machine;
   }
   if (name.empty()) return std::nullopt;
   auto profile = loadMachine(name, "stream", std::cerr);

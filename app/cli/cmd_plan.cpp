@@ -11,6 +11,7 @@
 #include "core/planning/planner.hpp"
 #include "machine_arg.hpp"
 #include "options.hpp"
+#include "plan_words.hpp"
 #include "plan_import_options.hpp"
 
 #ifdef FIVEBAR_HAVE_IMPORT
@@ -111,7 +112,7 @@ void printProblems(const std::string& file, const PlanResult& r) {
     std::cerr << "  " << problems[i].path << ": " << problems[i].why << "\n";
   if (problems.size() > 5) std::cerr << "  ... " << problems.size() - 5 << " more in the report\n";
   if (!problems.empty())
-    for (const Message& fix : problems.front().fixes) std::cerr << "  fix: " << fix << "\n";
+    for (const PlanFix& fix : problems.front().fixes) std::cerr << "  fix: " << fixWords(fix) << "\n";
 }
 
 bool endsWith(const std::string& s, const std::string& tail) {
@@ -172,7 +173,7 @@ int plan(const Options& o) {
     std::cerr << "fivebar plan: " << error.text << "\n";
     return 1;
   }
-  if (const auto report = o.value("--report"); report && !writeFile(*report, reportToJson(r.report)))
+  if (const auto report = o.value("--report"); report && !writeFile(*report, reportToJson(r.report, fixText)))
     return 1;
   if (!r.ok()) {
     printProblems(file, r);

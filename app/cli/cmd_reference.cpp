@@ -9,13 +9,13 @@
 #include "commands.hpp"
 #include "core/kinematics/units.hpp"
 #include "core/planning/safety.hpp"
-#include "drivers/gcode_job.hpp"
-#include "drivers/grbl_codes.hpp"
-#include "drivers/jog.hpp"
-#include "drivers/machine_link.hpp"
-#include "drivers/motion_check.hpp"
-#include "drivers/pose_sync.hpp"
-#include "drivers/serial_transport.hpp"
+#include "drivers/stream/gcode_job.hpp"
+#include "drivers/protocol/grbl_codes.hpp"
+#include "drivers/jog/jog.hpp"
+#include "drivers/protocol/machine_link.hpp"
+#include "drivers/check/motion_check.hpp"
+#include "drivers/protocol/pose_sync.hpp"
+#include "drivers/transport/serial_transport.hpp"
 #include "machine_arg.hpp"
 #include "machine_cli.hpp"
 
@@ -265,10 +265,10 @@ int runHome(const Args& args) {
       return std::nullopt;
     }
     std::vector<std::string> lines{"G90"};
-    for (const std::string& s : job::penUpCommands(profile->tool)) lines.push_back(s);
+    for (const std::string& s : stream::penUpCommands(profile->tool)) lines.push_back(s);
     motion::BoardPose at = pose;
     for (const JointAngles& q : *travel) {
-      const std::string line = job::moveTo({degFromRad(q.theta1), degFromRad(q.theta2)}, true);
+      const std::string line = stream::moveTo({degFromRad(q.theta1), degFromRad(q.theta2)}, true);
       const motion::LineCheck c = motion::checkLine(*profile, line, at);  // the one motion check
       if (!c.ok()) {
         std::cerr << "fivebar home: refused '" << line << "': " << c.reason << "\n";

@@ -1,17 +1,17 @@
 // fivebar send: one-off lines to a GRBL board, every line that can move the machine checked
-// first (drivers/motion_check.hpp) from the board's real pose (drivers/pose_sync.hpp).
+// first (drivers/check/motion_check.hpp) from the board's real pose (drivers/protocol/pose_sync.hpp).
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <optional>
 
 #include "commands.hpp"
-#include "drivers/gcode_words.hpp"
-#include "drivers/grbl_codes.hpp"
-#include "drivers/machine_link.hpp"
-#include "drivers/motion_check.hpp"
-#include "drivers/pose_sync.hpp"
-#include "drivers/serial_transport.hpp"
+#include "drivers/protocol/gcode_words.hpp"
+#include "drivers/protocol/grbl_codes.hpp"
+#include "drivers/protocol/machine_link.hpp"
+#include "drivers/check/motion_check.hpp"
+#include "drivers/protocol/pose_sync.hpp"
+#include "drivers/transport/serial_transport.hpp"
 #include "machine_arg.hpp"
 #include "machine_cli.hpp"
 
@@ -76,7 +76,7 @@ class Sender : public grbl::ProtocolListener {
     if (next_ == lines_.size()) {
       if (!moved_) return finish();
       // A move was sent: wait until the board reports it at rest, so that this computer
-      // remembers where it stands (drivers/pose_trust.hpp) and the next command may trust it.
+      // remembers where it stands (drivers/protocol/pose_trust.hpp) and the next command may trust it.
       if (restDeadlineS_ == 0.0) {
         restDeadlineS_ = nowS + std::max(timeoutS_, 30.0);
         reportsAtEnd_ = link_.protocol().statusReportsSeen();

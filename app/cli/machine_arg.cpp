@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #ifdef FIVEBAR_HAVE_DRIVERS
-#include "drivers/open_transport.hpp"
+#include "drivers/transport/open_transport.hpp"
 #include "machine_cli.hpp"
 #endif
 

@@ -12,7 +12,7 @@
 #include "core/machine/profile.hpp"
 
 #ifdef FIVEBAR_HAVE_DRIVERS
-#include "drivers/transport.hpp"
+#include "drivers/transport/transport.hpp"
 #include "options.hpp"
 #endif
 
@@ -20,7 +20,7 @@ namespace fivebar::cli {
 
 #ifdef FIVEBAR_HAVE_DRIVERS
 // The transport for --port (required) at --baud (default 115200), not yet opened: a serial
-// device or pseudo-terminal, or a network port "tcp:HOST:PORT" (drivers/open_transport.hpp).
+// device or pseudo-terminal, or a network port "tcp:HOST:PORT" (drivers/transport/open_transport.hpp).
 // Throws UsageError for a missing --port or a bad --baud.
 std::unique_ptr<Transport> portTransport(const Options& o);
 #endif

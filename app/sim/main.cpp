@@ -30,7 +30,7 @@
 #include "pty.hpp"
 #include "wire.hpp"
 #include "record.hpp"
-#include "drivers/sim_machine.hpp"
+#include "drivers/sim/sim_machine.hpp"
 
 namespace {
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "drivers/sim_machine.hpp"
+#include "drivers/sim/sim_machine.hpp"
 
 namespace fivebar::simapp {
 

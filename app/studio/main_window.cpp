@@ -18,7 +18,8 @@
 
 #include "app/studio/file_actions.hpp"
 #include "app/studio/language_menu.hpp"
-#include "core/kinematics/kinematics.hpp"
+#include "core/workspace/view_box.hpp"
+#include "widgets/calibration/calibration_install.hpp"
 #include "widgets/calibration/calibration_wizard.hpp"
 #include "widgets/calibration/simulated_machine.hpp"
 #include "widgets/canvas/canvas_view.hpp"
@@ -73,27 +74,21 @@ MainWindow::MainWindow(const MachineProfile& profile, QWidget* parent) : QMainWi
   createCanvas();
   createDocks();
   createMenus();
+  // Every feature installs itself through the one shell (widgets/shell/studio_shell.hpp).
+  const StudioShell shell = makeShell();
   // The machine side: the session layer (session/machine_side.hpp) over the document and its
   // plan, and its panels (widgets/machine/machine_panels.hpp).
   inputs_ = new DocumentInputs(*doc_, preview_, this);
   machine_ = new session::MachineSide(*inputs_, this);
   machinePanels_ = new MachinePanels(*machine_, *doc_, *canvas_, *machineLayer_, this);
-  machinePanels_->addPanels([this](QWidget* panel, const QString& title, const QString& name,
-                                   Qt::DockWidgetArea area) { return addMachinePanel(panel, title, name, area); });
+  machinePanels_->install(shell);
   // The board's soft limits in the pre-flight list while connected to a board with $20=1.
   connect(&machine_->boardPreflight(), &session::BoardPreflight::changed, previewPanel_,
           &PreviewPanel::setMachineProblem);
-  machineMenu_->addSeparator();
-  machineMenu_->addAction(machinePanels_->settingsAction());
-  machineMenu_->addAction(DesignDialog::createAction(*doc_, *canvas_, this));
-  // The simulated machine's true (imperfect) build, shared by the wizard and its own menu entry,
-  // status badge and canvas trace.
-  simulatedTruth_ = new widgets::calibration::SimulatedTruth(*doc_, machine_->session());
-  calibrateAction_ = widgets::calibration::CalibrationWizard::createAction(
-      *doc_, &machine_->session(), simulatedTruth_, canvas_, this, calibrationWizard_);
-  machineMenu_->addAction(calibrateAction_);
-  widgets::calibration::installSimulatedMachine(*simulatedTruth_, machine_->session(), *canvas_, *machineMenu_,
-                                                *statusBar(), this);
+  DesignDialog::install(shell);
+  const auto calibration = widgets::calibration::installCalibration(shell, machine_->session(), calibrationWizard_);
+  simulatedTruth_ = calibration.simulatedTruth;
+  calibrateAction_ = calibration.calibrateAction;
   cursorLabel_ = new QLabel(this);
   statusBar()->addPermanentWidget(cursorLabel_);
   connect(canvas_, &CanvasView::cursorMoved, this, [this](QPointF mm) {
@@ -177,16 +172,34 @@ QDockWidget* MainWindow::addDock(QWidget* panel, const QString& title, const QSt
   return dock;
 }
 
-QDockWidget* MainWindow::addMachinePanel(QWidget* panel, const QString& title,
-                                         const QString& objectName, Qt::DockWidgetArea area) {
+QDockWidget* MainWindow::addPanel(QWidget* panel, const QString& title, const QString& objectName,
+                                  Qt::DockWidgetArea area, QMenu* toggleMenu) {
   QDockWidget* dock = addDock(panel, title, objectName, area);
-  machineMenu_->addAction(dock->toggleViewAction());
-  // Default layout: machine panels join the studio's tab groups on their side (the remembered
-  // layout, restored at the end of construction, overrides this).
+  if (toggleMenu != nullptr) toggleMenu->addAction(dock->toggleViewAction());
+  // Default layout: a feature's side panels join the studio's tab groups on their side (the
+  // remembered layout, restored at the end of construction, overrides this).
   if (area == Qt::RightDockWidgetArea && rightTabs_ != nullptr) tabifyDockWidget(rightTabs_, dock);
   if (area == Qt::LeftDockWidgetArea && leftTabs_ != nullptr) tabifyDockWidget(leftTabs_, dock);
   if (area == Qt::BottomDockWidgetArea) resizeDocks({dock}, {kBottomDockHeightPx}, Qt::Vertical);
   return dock;
+}
+
+StudioShell MainWindow::makeShell() {
+  StudioShell shell;
+  shell.window = this;
+  shell.doc = doc_;
+  shell.canvas = canvas_;
+  shell.statusBar = statusBar();
+  shell.fileMenu = fileMenu_;
+  shell.editMenu = editMenu_;
+  shell.viewMenu = viewMenu_;
+  shell.machineMenu = machineMenu_;
+  shell.helpMenu = helpMenu_;
+  shell.addPanel = [this](QWidget* panel, const QString& title, const QString& objectName,
+                          Qt::DockWidgetArea area, QMenu* toggleMenu) {
+    return addPanel(panel, title, objectName, area, toggleMenu);
+  };
+  return shell;
 }
 
 void MainWindow::createDocks() {
@@ -224,7 +237,7 @@ void MainWindow::createDocks() {
 }
 
 void MainWindow::createMenus() {
-  QMenu* file = menuBar()->addMenu(tr("&File"));
+  QMenu* file = fileMenu_ = menuBar()->addMenu(tr("&File"));
   QAction* open = file->addAction(tr("&Open drawing or project..."), files_, &FileActions::open);
   open->setShortcut(QKeySequence::Open);
   recentMenu_ = file->addMenu(tr("Open &recent"));
@@ -245,7 +258,7 @@ void MainWindow::createMenus() {
   QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
   quit->setShortcut(QKeySequence::Quit);
 
-  QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+  QMenu* edit = editMenu_ = menuBar()->addMenu(tr("&Edit"));
   QAction* undo = doc_->undoStack()->createUndoAction(this, tr("&Undo"));
   undo->setShortcut(QKeySequence::Undo);
   QAction* redo = doc_->undoStack()->createRedoAction(this, tr("&Redo"));
@@ -279,7 +292,7 @@ void MainWindow::createMenus() {
 
   machineMenu_ = menuBar()->addMenu(tr("&Machine"));
 
-  QMenu* help = menuBar()->addMenu(tr("&Help"));
+  QMenu* help = helpMenu_ = menuBar()->addMenu(tr("&Help"));
   help->addAction(tr("&About FiveBar Studio"), this, [this] {
     QMessageBox::about(this, tr("About FiveBar Studio"),
                        tr("<b>FiveBar Studio %1</b><p>Plans and simulates drawings for five-bar "
@@ -320,33 +333,18 @@ void MainWindow::updateTitle() {
 }
 
 void MainWindow::fitView() {
-  if (doc_->hasDrawing()) {
-    if (const auto corners = placementTool_->cornersMm()) {
-      QRectF r;
-      for (const QPointF& c : *corners) r = r.isNull() ? QRectF(c, QSizeF(1e-6, 1e-6)) : r.united(QRectF(c, QSizeF(1e-6, 1e-6)));
-      // Keep the motors in view too, so the drawing is seen in relation to the machine, and the
-      // elbows wherever the pen reaches the drawing's corners and edge midpoints.
-      const Geometry& g = doc_->profile().geometry;
-      r = r.united(QRectF(QPointF(-g.w / 2.0 - 20.0, -20.0), QPointF(g.w / 2.0 + 20.0, 0.0)));
-      const QRectF drawing = r;
-      for (const QPointF& c : {drawing.topLeft(), drawing.topRight(), drawing.bottomLeft(),
-                               drawing.bottomRight(), QPointF(drawing.center().x(), drawing.top()),
-                               QPointF(drawing.center().x(), drawing.bottom()),
-                               QPointF(drawing.left(), drawing.center().y()),
-                               QPointF(drawing.right(), drawing.center().y())}) {
-        const IkResult ik = inverse(g, Vec2(c.x(), c.y()), doc_->effectiveMode());
-        if (!ik.ok()) continue;
-        for (const Vec2& e : {elbow1(g, ik.angles.theta1), elbow2(g, ik.angles.theta2)})
-          r = r.united(QRectF(QPointF(e.x() - 8.0, e.y() - 8.0), QSizeF(16.0, 16.0)));
-      }
-      canvas_->fitRect(r.adjusted(-15.0, -15.0, 15.0, 15.0));
-      return;
-    }
-  }
   const Geometry& g = doc_->profile().geometry;
-  const double reach = std::max(g.a1 + g.b1, g.a2 + g.b2);
-  canvas_->fitRect(QRectF(QPointF(-g.w / 2.0 - reach * 0.8, -30.0),
-                          QPointF(g.w / 2.0 + reach * 0.8, reach + 10.0)));
+  const auto toRect = [](const BoxMm& b) {
+    return QRectF(QPointF(b.min.x(), b.min.y()), QPointF(b.max.x(), b.max.y()));
+  };
+  const auto corners = doc_->hasDrawing() ? placementTool_->cornersMm() : std::nullopt;
+  if (corners) {
+    std::array<Vec2, 4> cornersMm;
+    for (int i = 0; i < 4; ++i) cornersMm[i] = Vec2((*corners)[i].x(), (*corners)[i].y());
+    canvas_->fitRect(toRect(drawingViewBoxMm(g, doc_->effectiveMode(), cornersMm)));
+  } else {
+    canvas_->fitRect(toRect(machineViewBoxMm(g)));
+  }
 }
 
 void MainWindow::restoreLayout() {

@@ -2,10 +2,12 @@
 // the canvas with its layers and tool, and the panels in dock widgets, wires them together, and
 // offers the menus and shortcuts. Dock layout and window geometry are remembered (QSettings).
 // The machine side is two parts composed here: session::MachineSide (session, run and jog
-// controllers; Qt Core only) and widgets::MachinePanels (its panels, docked by addMachinePanel()).
+// controllers; Qt Core only) and widgets::MachinePanels (its panels). Every feature (machine
+// panels, design explorer, calibration, path editor) installs itself through one StudioShell.
 // Everything a test or a screenshot needs has an accessor: nothing is looked up by findChild.
 #pragma once
 
+#include "widgets/shell/studio_shell.hpp"
 #include <QMainWindow>
 #include <QPointer>
 #include <QString>
@@ -79,10 +81,10 @@ class MainWindow : public QMainWindow {
   // The simulated machine's true (imperfect) build, Machine > Simulated machine...
   widgets::calibration::SimulatedTruth& simulatedTruth() { return *simulatedTruth_; }
 
-  // The machine side's place in the window: the panel goes into a dock (restored with the
-  // others), its toggle into the Machine menu.
-  QDockWidget* addMachinePanel(QWidget* panel, const QString& title, const QString& objectName,
-                               Qt::DockWidgetArea area = Qt::RightDockWidgetArea);
+  // A feature's panel in the window (StudioShell::addPanel): a dock restored with the others,
+  // its toggle in `toggleMenu`.
+  QDockWidget* addPanel(QWidget* panel, const QString& title, const QString& objectName,
+                        Qt::DockWidgetArea area = Qt::RightDockWidgetArea, QMenu* toggleMenu = nullptr);
   QMenu* machineMenu() const { return machineMenu_; }
 
   // Fits the view to the machine's reach, or to the drawing when there is one.
@@ -102,6 +104,8 @@ class MainWindow : public QMainWindow {
   QDockWidget* addDock(QWidget* panel, const QString& title, const QString& objectName,
                        Qt::DockWidgetArea area);
   void restoreLayout();
+  // The door every feature installs through (widgets/shell/studio_shell.hpp).
+  widgets::StudioShell makeShell();
 
   widgets::StudioDocument* doc_ = nullptr;
   widgets::WorkspaceCache* workspace_ = nullptr;
@@ -130,6 +134,9 @@ class MainWindow : public QMainWindow {
   QMenu* viewMenu_ = nullptr;
   QMenu* recentMenu_ = nullptr;
   QMenu* machineMenu_ = nullptr;
+  QMenu* fileMenu_ = nullptr;
+  QMenu* editMenu_ = nullptr;
+  QMenu* helpMenu_ = nullptr;
   QLabel* cursorLabel_ = nullptr;
 };
 

@@ -45,12 +45,7 @@ Message layerLabel(const std::vector<Layer>& layers, int layerIndex) {
 }
 
 // The fixes of a stroke the planner cannot draw.
-std::vector<Message> strokeFixes() {
-  return {FB_TR("Planner", "move or shrink the drawing (--at, --scale, --fit)")
-              .inStudio(FB_TR("Planner", "move or shrink the drawing in the Placement panel")),
-          FB_TR("Planner", "try another working mode (--mode)")
-              .inStudio(FB_TR("Planner", "try another working mode in the Workspace panel"))};
-}
+std::vector<PlanFix> strokeFixes() { return {{FixKind::MoveOrShrink}, {FixKind::TryAnotherMode}}; }
 
 class MotionPlanner {
  public:
@@ -125,7 +120,7 @@ class MotionPlanner {
     if (!fk.ok()) {
       problem(FB_TR("Planner", "start pose"), Vec2::Zero(),
               FB_TR("Planner", "the profile's home pose does not close the linkage"),
-              {FB_TR("Planner", "set a reachable home pose in the profile")});
+              {PlanFix{FixKind::ReachableHomePose}});
       return false;
     }
     job_.startXY = penOf(job_.start, fk.p);
@@ -397,11 +392,7 @@ class MotionPlanner {
     if (!t.found) {
       const FkResult fk = forward(g_, target, p_.assembly);
       problem(what(), fk.ok() ? fk.p : atXY_, FB_TR("Planner", "no safe pen-up travel reaches it"),
-              {FB_TR("Planner", "move the drawing away from singular regions (--at)")
-                   .inStudio(FB_TR("Planner", "move the drawing away from singular regions in the "
-                                              "Placement panel")),
-               FB_TR("Planner", "try another --mode")
-                   .inStudio(FB_TR("Planner", "try another working mode in the Workspace panel"))});
+              {PlanFix{FixKind::AwayFromSingular}, PlanFix{FixKind::TryAnotherMode}});
       return false;
     }
     for (size_t i = 0; i < t.feeds.size(); ++i) {
@@ -520,7 +511,7 @@ class MotionPlanner {
     return FB_TR("Planner", "%1 path %2").arg(layerLabel(layers_, s.layerIndex)).arg(s.pathIndex);
   }
 
-  void problem(Message path, const Vec2& where, Message why, std::vector<Message> fixes,
+  void problem(Message path, const Vec2& where, Message why, std::vector<PlanFix> fixes,
                int layerIndex = -1, int pathIndex = -1) {
     out_.report.problems.push_back(
         {std::move(path), where, std::move(why), std::move(fixes), layerIndex, pathIndex});
@@ -610,9 +601,7 @@ PlanResult planStrokes(const std::vector<Stroke>& strokes, const std::vector<Lay
       if (!pass.ok)
         out.report.problems.push_back(
             {FB_TR("Planner", "backlash compensation"), pass.problem.where, pass.message,
-             {FB_TR("Planner", "move the drawing away from the workspace edge (--at)")
-                  .inStudio(FB_TR("Planner", "move the drawing away from the workspace edge in the "
-                                             "Placement panel"))}});
+             {PlanFix{FixKind::AwayFromEdge}}});
       clock.lap("backlash compensation");
     }
   }

@@ -54,34 +54,18 @@ Message layerName(const Drawing& d, int layerIndex) {
   return FB_TR("Planner", "layer '%1'").arg(l.name.empty() ? l.id : l.name);
 }
 
-// What to change, in plain words, with the `fivebar plan` option that does it in brackets (the
-// option's values in the C locale: they are typed on a command line); in the studio, with the
-// names of its controls instead (app/studio: Placement panel, Workspace panel's Working mode).
-std::vector<Message> fixesOf(const Candidate& c, const std::vector<Candidate>& all, bool fitted) {
-  std::vector<Message> fixes;
-  if (c.report.shrinkFactor) {
-    const double scale = c.placement.scale * *c.report.shrinkFactor;
-    fixes.push_back(FB_TR("Planner", "shrink the drawing to %1 % (--scale %2)")
-                        .arg(scale * 100.0, 0).arg(fixedText(scale, 3))
-                        .inStudio(FB_TR("Planner", "set Scale to %1 % in the Placement panel")
-                                      .arg(scale * 100.0, 0)));
-  }
-  if (c.report.suggestedAnchorMm && !fitted) {
-    const double x = c.report.suggestedAnchorMm->x(), y = c.report.suggestedAnchorMm->y();
-    fixes.push_back(FB_TR("Planner", "move the drawing's centre to x %1 mm, y %2 mm (--at %3,%4)")
-                        .arg(x, 1).arg(y, 1).arg(fixedText(x, 1)).arg(fixedText(y, 1))
-                        .inStudio(FB_TR("Planner", "set Centre X to %1 mm and Centre Y to %2 mm in the "
-                                                   "Placement panel")
-                                      .arg(x, 1).arg(y, 1)));
-  }
+// What to change (codes with their numbers; the front ends word them): the shrink factor, the
+// suggested centre, the feasible modes, fitting.
+std::vector<PlanFix> fixesOf(const Candidate& c, const std::vector<Candidate>& all, bool fitted) {
+  std::vector<PlanFix> fixes;
+  if (c.report.shrinkFactor)
+    fixes.push_back({FixKind::Shrink, c.placement.scale * *c.report.shrinkFactor});
+  if (c.report.suggestedAnchorMm && !fitted)
+    fixes.push_back({FixKind::MoveCentre, 1.0, *c.report.suggestedAnchorMm});
   for (const Candidate& other : all)
     if (other.report.feasible && other.mode != c.mode)
-      fixes.push_back(FB_TR("Planner", "use working mode %1 (--mode %1)").arg(toString(other.mode))
-                          .inStudio(FB_TR("Planner", "choose working mode %1 in the Workspace panel")
-                                        .arg(toString(other.mode))));
-  if (!fitted)
-    fixes.push_back(FB_TR("Planner", "fit the drawing into the workspace (--fit)")
-                        .inStudio(FB_TR("Planner", "press Fit to workspace in the Placement panel")));
+      fixes.push_back({FixKind::UseMode, 1.0, Vec2::Zero(), other.mode});
+  if (!fitted) fixes.push_back({FixKind::FitToWorkspace});
   return fixes;
 }
 
@@ -93,7 +77,7 @@ void reportInfeasible(const Drawing& d, const std::vector<Candidate>& cands, boo
   });
   out.report.mode = best->mode;
   out.report.minSingularityMarginDeg = degFromRad(best->report.minTypeIIMarginRad);
-  const std::vector<Message> fixes = fixesOf(*best, cands, fitted);
+  const std::vector<PlanFix> fixes = fixesOf(*best, cands, fitted);
   for (const PreflightProblem& pr : best->report.problems) {
     Message path = pr.strokeIndex < 0 ? FB_TR("Planner", "travel back to the start pose")
                                       : FB_TR("Planner", "%1 path %2")
@@ -207,7 +191,7 @@ PlanResult planJob(const Drawing& drawing, const MachineProfile& profile,
       out.status = PlanStatus::Infeasible;
       out.message = FB_TR("Planner", "no working mode has a singularity-free area to place the drawing in");
       out.report.problems.push_back({FB_TR("Planner", "job"), Vec2::Zero(), out.message,
-                                     {FB_TR("Planner", "check the profile")}});
+                                     {PlanFix{FixKind::CheckProfile}}});
       return out;
     }
     placement = placed->placement;
@@ -277,16 +261,35 @@ PlanResult planJob(const Drawing& drawing, const MachineProfile& profile,
   return out;
 }
 
-std::string reportToJson(const PlanReport& r) {
+const char* toString(FixKind kind) {
+  switch (kind) {
+    case FixKind::MoveOrShrink: return "move_or_shrink";
+    case FixKind::TryAnotherMode: return "try_another_mode";
+    case FixKind::AwayFromSingular: return "away_from_singular";
+    case FixKind::AwayFromEdge: return "away_from_edge";
+    case FixKind::Shrink: return "shrink";
+    case FixKind::MoveCentre: return "move_centre";
+    case FixKind::UseMode: return "use_mode";
+    case FixKind::FitToWorkspace: return "fit";
+    case FixKind::ReachableHomePose: return "reachable_home_pose";
+    case FixKind::CheckProfile: return "check_profile";
+  }
+  return "check_profile";
+}
+
+std::string reportToJson(const PlanReport& r, const FixWords& fixWords) {
   nlohmann::json problems = nlohmann::json::array();
-  for (const PlanProblem& p : r.problems)
-  {
-    std::vector<std::string> fixes;
-    for (const Message& f : p.fixes) fixes.push_back(f.text());
+  for (const PlanProblem& p : r.problems) {
+    std::vector<std::string> fixes, kinds;
+    for (const PlanFix& f : p.fixes) {
+      fixes.push_back(fixWords ? fixWords(f) : std::string(toString(f.kind)));
+      kinds.emplace_back(toString(f.kind));
+    }
     problems.push_back({{"path", p.path.text()},
                         {"where", {{"x_mm", p.whereMm.x()}, {"y_mm", p.whereMm.y()}}},
                         {"why", p.why.text()},
-                        {"fixes", fixes}});
+                        {"fixes", fixes},
+                        {"fix_kinds", kinds}});
   }
   const nlohmann::json j = {
       {"feasible", r.feasible},

@@ -3,12 +3,14 @@
 // commands -> GRBL time estimate -> PlannedJob + PlanReport. Design: docs/planning.md.
 #pragma once
 
+#include <functional>
 #include <atomic>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/planning/drawing.hpp"
+#include "core/planning/plan_fix.hpp"
 #include "core/planning/job.hpp"
 #include "core/planning/placement.hpp"
 #include "core/machine/profile.hpp"
@@ -69,7 +71,7 @@ struct PlanProblem {
   Message path;   // "layer 'ink' path 3", "travel to layer 'ink' path 3", ...
   Vec2 whereMm = Vec2::Zero();
   Message why;
-  std::vector<Message> fixes;
+  std::vector<PlanFix> fixes;  // what to change: codes with their numbers (plan_fix.hpp)
   int layerIndex = -1;  // the offending path (drawing indices); -1 for travels and the job
   int pathIndex = -1;
 };
@@ -146,7 +148,9 @@ double jointDeviationBudgetMm(const MachineProfile& profile, const PlanOptions& 
 double gcodeRoundingBoundMm(const MachineProfile& profile);
 
 // REPORT.json text: mode, estimated_time_s, pen_down_mm, travel_mm, segments, max_deviation_mm,
-// min_singularity_margin (deg), problems [{path, where, why, fixes}], and a few more fields.
-std::string reportToJson(const PlanReport& report);
+// min_singularity_margin (deg), problems [{path, where, why, fixes, fix_kinds}], and a few more
+// fields. `fixWords` words each fix (the CLI's words: app/cli/plan_words.hpp).
+using FixWords = std::function<std::string(const PlanFix&)>;
+std::string reportToJson(const PlanReport& report, const FixWords& fixWords);
 
 }  // namespace fivebar

@@ -77,10 +77,10 @@ class Message {
   // C locale, a nested message by its text()).
   std::string text() const;
 
-  // The same sentence in the studio's words, where this one (the CLI's) names command-line
-  // options or repeats what the studio shows beside it: "shrink the drawing to 55 % (--scale
-  // 0.550)" is "set Scale to 55 % (Placement panel)" in the studio. text() stays this one's;
-  // the studio's translated() shows the studio wording instead.
+  // The same sentence shorter where the studio shows part of it beside the message (a problem
+  // listed under its layer and path names only the point). text() stays this one's; the
+  // studio's translated() shows the shorter wording instead. Core never names the studio's
+  // controls: what to change is a code (core/planning/plan_fix.hpp) each front end words.
   Message& inStudio(Message studioWording) &;
   Message&& inStudio(Message studioWording) && {
     inStudio(std::move(studioWording));

@@ -22,8 +22,8 @@
 
 #include "core/machine/profile.hpp"
 #include "core/kinematics/units.hpp"
-#include "drivers/machine_link.hpp"
-#include "drivers/serial_transport.hpp"
+#include "drivers/protocol/machine_link.hpp"
+#include "drivers/transport/serial_transport.hpp"
 
 namespace {
 

@@ -39,7 +39,7 @@ class MachineCli : public ::testing::Test {
     std::string tmpl = (fs::temp_directory_path() / "fivebar-mcli-XXXXXX").string();
     dir_ = ::mkdtemp(tmpl.data());
     profile_ = *preset("maker-plotter");
-    // Where this computer remembers each board's position (drivers/pose_trust.hpp): the test's own.
+    // Where this computer remembers each board's position (drivers/protocol/pose_trust.hpp): the test's own.
     ::setenv("FIVEBAR_STATE_DIR", (dir_ / "state").c_str(), 1);
   }
   void TearDown() override {

@@ -356,7 +356,7 @@ TEST_F(PlannerTest, ReportJsonCarriesTheFigures) {
   auto rng = test::rng();
   const PlanResult r = planJob(randomDrawing(rng, 6), p, atOptions());
   ASSERT_TRUE(r.ok()) << r.message;
-  const nlohmann::json j = nlohmann::json::parse(reportToJson(r.report));
+  const nlohmann::json j = nlohmann::json::parse(reportToJson(r.report, [](const PlanFix& f) { return std::string(toString(f.kind)); }));
   EXPECT_EQ(j.at("mode").get<std::string>(), std::string(toString(r.report.mode)));
   EXPECT_DOUBLE_EQ(j.at("estimated_time_s").get<double>(), r.report.estimatedTimeS);
   EXPECT_DOUBLE_EQ(j.at("pen_down_mm").get<double>(), r.report.penDownMm);

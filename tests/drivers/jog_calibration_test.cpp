@@ -6,8 +6,8 @@
 #include "core/kinematics/units.hpp"
 #include "core/machine/profile.hpp"
 #include "core/planning/safety.hpp"
-#include "drivers/jog.hpp"
-#include "drivers/motion_check.hpp"
+#include "drivers/jog/jog.hpp"
+#include "drivers/check/motion_check.hpp"
 
 namespace fivebar {
 namespace {

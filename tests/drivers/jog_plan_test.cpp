@@ -1,4 +1,4 @@
-// Jog planning as the studio uses it (drivers/jog.hpp): checked sub-moves along the straight XY
+// Jog planning as the studio uses it (drivers/jog/jog.hpp): checked sub-moves along the straight XY
 // line, clipping at the safe edge, go-to with the pen's path for the canvas preview.
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include "core/planning/safety.hpp"
 #include "core/kinematics/units.hpp"
 #include "core/machine/profile.hpp"
-#include "drivers/jog.hpp"
+#include "drivers/jog/jog.hpp"
 #include "test_support.hpp"
 
 namespace fivebar {

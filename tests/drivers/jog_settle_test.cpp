@@ -1,8 +1,8 @@
 // JogSettle: when the host may trust the reported position again after jogs, cancels and a new
-// reference pose (drivers/jog_settle.hpp).
+// reference pose (drivers/jog/jog_settle.hpp).
 #include <gtest/gtest.h>
 
-#include "drivers/jog_settle.hpp"
+#include "drivers/jog/jog_settle.hpp"
 
 namespace fivebar::test {
 namespace {

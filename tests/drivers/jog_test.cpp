@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 
 #include "core/planning/safety.hpp"
-#include "drivers/jog.hpp"
-#include "drivers/machine_setup.hpp"
+#include "drivers/jog/jog.hpp"
+#include "drivers/check/machine_setup.hpp"
 #include "sim_harness.hpp"
 
 namespace fivebar::test {
@@ -86,8 +86,8 @@ TEST(Frame, TracesTheHullOfTheStrokesWithCheckedMoves) {
   const MachineProfile p = testProfile();
   auto rng = fivebar::test::rng();
   const Strokes strokes = randomStrokes(p, rng, 5, 10, 25.0);
-  const job::JobRules rules = job::rulesFor(p);
-  const job::GcodeJob gj = job::parseJob(jobText(p, strokes, 3000.0), rules);
+  const stream::JobRules rules = stream::rulesFor(p);
+  const stream::GcodeJob gj = stream::parseJob(jobText(p, strokes, 3000.0), rules);
   for (const auto shape : {jog::FrameShape::ConvexHull, jog::FrameShape::BoundingBox}) {
     const jog::JogPlan plan = jog::planFrame(p, p.homeAngles, gj, rules, shape, 40.0);
     ASSERT_EQ(plan.status, jog::JogStatus::Ok) << plan.reason;

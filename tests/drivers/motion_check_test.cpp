@@ -1,9 +1,9 @@
-// The one motion check (drivers/motion_check.hpp): every line that can move the machine read as
+// The one motion check (drivers/check/motion_check.hpp): every line that can move the machine read as
 // GRBL 1.1h reads it and checked from the machine's pose; whole files checked before a byte.
 #include <gtest/gtest.h>
 
 #include "core/planning/safety.hpp"
-#include "drivers/motion_check.hpp"
+#include "drivers/check/motion_check.hpp"
 #include "sim_harness.hpp"
 
 namespace fivebar::test {

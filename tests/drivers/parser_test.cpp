@@ -3,8 +3,8 @@
 
 #include <set>
 
-#include "drivers/grbl_codes.hpp"
-#include "drivers/grbl_parser.hpp"
+#include "drivers/protocol/grbl_codes.hpp"
+#include "drivers/protocol/grbl_parser.hpp"
 
 namespace fivebar::grbl {
 namespace {

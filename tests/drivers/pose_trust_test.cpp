@@ -8,11 +8,11 @@
 #include <cstdlib>
 
 #include "core/machine/profile.hpp"
-#include "drivers/grbl_protocol.hpp"
-#include "drivers/machine_setup.hpp"
-#include "drivers/pen_state.hpp"
-#include "drivers/pose_trust.hpp"
-#include "drivers/stream_session.hpp"
+#include "drivers/protocol/grbl_protocol.hpp"
+#include "drivers/check/machine_setup.hpp"
+#include "drivers/protocol/pen_state.hpp"
+#include "drivers/protocol/pose_trust.hpp"
+#include "drivers/stream/stream_session.hpp"
 
 namespace fivebar::grbl {
 namespace {

@@ -1,23 +1,23 @@
 // Executed progress on a stock board ($10=1: no Bf: in the reports) and the stall watchdog.
 #include <gtest/gtest.h>
 
-#include "drivers/job_runner.hpp"
-#include "drivers/machine_setup.hpp"
+#include "drivers/stream/job_runner.hpp"
+#include "drivers/check/machine_setup.hpp"
 #include "sim_harness.hpp"
 
 namespace fivebar::test {
 namespace {
 
-using job::RunState;
+using stream::RunState;
 
 struct Fixture {
   MachineProfile p = testProfile();
   Strokes strokes;
-  job::GcodeJob job;
+  stream::GcodeJob job;
   Fixture() {
     auto rng = fivebar::test::rng();
     strokes = randomStrokes(p, rng, 6, 15, 30.0);
-    job = job::parseJob(jobText(p, strokes, 3000.0), job::rulesFor(p));
+    job = stream::parseJob(jobText(p, strokes, 3000.0), stream::rulesFor(p));
   }
 };
 
@@ -33,7 +33,7 @@ TEST(StockBoardProgress, ExecutedLinesEtaAndResumePointWithoutBf) {
   SimLink link(f.p);
   link.protocol.enqueue("$10=1");  // the firmware's default: MPos, no Bf:
   ASSERT_TRUE(link.runUntil([&] { return link.protocol.idleLink(); }, 1.0));
-  job::JobRunner r(link.protocol, f.job);
+  stream::JobRunner r(link.protocol, f.job);
   r.start(0, {}, link.nowS);
   bool sawProgressWhileRunning = false, sawEta = false, sawBf = false;
   const double tol = 1.01 / f.p.motors.stepsPerDeg1;
@@ -66,7 +66,7 @@ TEST(StockBoardProgress, SetupWritesAStatusMaskWithTheBuffer) {
 TEST(StallWatchdog, IdleBoardWithUnansweredLinesIsReported) {
   Fixture f;
   SimLink link(f.p);
-  job::JobRunner r(link.protocol, f.job);
+  stream::JobRunner r(link.protocol, f.job);
   r.start(0, {}, link.nowS);
   ASSERT_TRUE(link.runUntil([&] { r.tick(link.nowS); return r.snapshot().linesAcked > 20; }, 60.0));
   bool lose = true;
@@ -90,7 +90,7 @@ TEST(StallWatchdog, IdleBoardWithUnansweredLinesIsReported) {
 TEST(StallWatchdog, SilentBoardIsReported) {
   Fixture f;
   SimLink link(f.p);
-  job::JobRunner r(link.protocol, f.job);
+  stream::JobRunner r(link.protocol, f.job);
   r.start(0, {}, link.nowS);
   ASSERT_TRUE(link.runUntil([&] { r.tick(link.nowS); return r.snapshot().linesAcked > 20; }, 60.0));
   // The board goes silent: nothing reaches it and nothing comes back.
@@ -104,7 +104,7 @@ TEST(StallWatchdog, SilentBoardIsReported) {
   }
   EXPECT_EQ(r.state(), RunState::Paused);
   EXPECT_NE(r.problem().find("stopped answering"), std::string::npos) << r.problem();
-  EXPECT_LT(silentFor, job::JobRunner::kSilentTimeoutS + 1.0);
+  EXPECT_LT(silentFor, stream::JobRunner::kSilentTimeoutS + 1.0);
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 #include <deque>
 #include <random>
 
-#include "drivers/grbl_protocol.hpp"
+#include "drivers/protocol/grbl_protocol.hpp"
 #include "test_support.hpp"
 
 namespace fivebar::grbl {

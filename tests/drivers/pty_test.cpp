@@ -13,9 +13,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "drivers/serial_transport.hpp"
-#include "drivers/simulated_transport.hpp"
-#include "drivers/stream_session.hpp"
+#include "drivers/transport/serial_transport.hpp"
+#include "drivers/transport/simulated_transport.hpp"
+#include "drivers/stream/stream_session.hpp"
 #include "sim_harness.hpp"
 
 namespace fivebar::test {
@@ -141,7 +141,7 @@ TEST(PtyEndToEnd, JobStreamsToCompletion) {
   const Outcome o = runSession(sim.pty(), job.options(false), 60.0);
   ASSERT_TRUE(o.finished);
   EXPECT_TRUE(o.ok) << o.message;
-  EXPECT_FALSE(QFile::exists(QString::fromStdString(job::progressPathFor(job.jobPath))));
+  EXPECT_FALSE(QFile::exists(QString::fromStdString(stream::progressPathFor(job.jobPath))));
   const nlohmann::json record = sim.stop();
   ASSERT_TRUE(record.is_object());
   const auto end = record["workPosition"].get<std::array<double, 3>>();
@@ -170,7 +170,7 @@ TEST_P(PtyEndToEndFault, EndsCleanSavesProgressAndResumeCompletes) {
   EXPECT_NE(first.message.find(GetParam().expectInMessage), std::string::npos) << first.message;
   EXPECT_NE(first.message.find("--resume"), std::string::npos) << first.message;
   std::string err;
-  const auto progress = job::loadProgress(job::progressPathFor(job.jobPath), &err);
+  const auto progress = stream::loadProgress(stream::progressPathFor(job.jobPath), &err);
   ASSERT_TRUE(progress) << err;
   EXPECT_GT(progress->lastAckedLine, 0);
   EXPECT_LE(progress->lastCompletedLine, progress->lastAckedLine);
@@ -272,12 +272,12 @@ TEST(SimulatedTransport, StreamsAJobInProcess) {
 
 TEST(PtyEndToEnd, ResumeRefusesAChangedJob) {
   PtyJob job;
-  job::JobProgress p;
+  stream::JobProgress p;
   p.jobHash = "0000";  // saved for another version of the file...
   p.totalLines = 3;
   p.lastPenDownLine = 12;  // ...whose resume point is not the same in this one
   p.penDownAnglesDeg = {1.0, 2.0};
-  ASSERT_EQ(job::saveProgress(p, job::progressPathFor(job.jobPath)), "");
+  ASSERT_EQ(stream::saveProgress(p, stream::progressPathFor(job.jobPath)), "");
   SimProcess sim(job.dir.path(), {"--instant"});
   ASSERT_TRUE(sim.ready());
   const Outcome o = runSession(sim.pty(), job.options(true), 10.0);

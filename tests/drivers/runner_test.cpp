@@ -2,29 +2,29 @@
 // fault ending in a clean, resumable state whose resume completes the drawing.
 #include <gtest/gtest.h>
 
-#include "drivers/job_runner.hpp"
-#include "drivers/resume.hpp"
+#include "drivers/stream/job_runner.hpp"
+#include "drivers/stream/resume.hpp"
 #include "sim_harness.hpp"
 
 namespace fivebar::test {
 namespace {
 
-using job::RunState;
+using stream::RunState;
 
 struct RunnerFixture {
   MachineProfile p = testProfile();
   Strokes strokes;
-  job::GcodeJob job;
+  stream::GcodeJob job;
   RunnerFixture() {
     auto rng = fivebar::test::rng();
     strokes = randomStrokes(p, rng, 6, 15, 30.0);
-    job = job::parseJob(jobText(p, strokes, 3000.0), job::rulesFor(p));
+    job = stream::parseJob(jobText(p, strokes, 3000.0), stream::rulesFor(p));
     EXPECT_TRUE(job.issues.empty());
   }
   double tol() const { return 1.01 / p.motors.stepsPerDeg1; }
 };
 
-bool runTo(SimLink& link, job::JobRunner& r, std::initializer_list<RunState> states, double maxS) {
+bool runTo(SimLink& link, stream::JobRunner& r, std::initializer_list<RunState> states, double maxS) {
   return link.runUntil([&] {
     r.tick(link.nowS);
     for (RunState s : states)
@@ -34,13 +34,13 @@ bool runTo(SimLink& link, job::JobRunner& r, std::initializer_list<RunState> sta
 }
 
 // Resumes `job` on `link` from the runner's snapshot and runs it to the end.
-void resumeToEnd(SimLink& link, const RunnerFixture& f, const job::RunSnapshot& snap) {
+void resumeToEnd(SimLink& link, const RunnerFixture& f, const stream::RunSnapshot& snap) {
   link.runUntil([&] { return link.protocol.motorAngles().has_value(); }, 1.0);
   const auto here = link.protocol.motorAngles();
   ASSERT_TRUE(here);
-  const job::ResumePlan plan = job::planResume(f.job, snap.lastPenDownPoint, f.p, *here);
+  const stream::ResumePlan plan = stream::planResume(f.job, snap.lastPenDownPoint, f.p, *here);
   ASSERT_TRUE(plan.ok()) << plan.message;
-  job::JobRunner again(link.protocol, f.job);
+  stream::JobRunner again(link.protocol, f.job);
   again.start(plan.continueFrom, plan.preamble, link.nowS);
   ASSERT_TRUE(runTo(link, again, {RunState::Finished, RunState::Paused}, 300.0));
   ASSERT_EQ(again.state(), RunState::Finished) << again.problem();
@@ -49,7 +49,7 @@ void resumeToEnd(SimLink& link, const RunnerFixture& f, const job::RunSnapshot& 
 TEST(JobRunner, StreamsToCompletion) {
   RunnerFixture f;
   SimLink link(f.p);
-  job::JobRunner r(link.protocol, f.job);
+  stream::JobRunner r(link.protocol, f.job);
   r.start(0, {}, 0.0);
   ASSERT_TRUE(runTo(link, r, {RunState::Finished, RunState::Paused}, 300.0));
   ASSERT_EQ(r.state(), RunState::Finished) << r.problem();
@@ -62,7 +62,7 @@ TEST(JobRunner, StreamsToCompletion) {
 TEST(JobRunner, ExecutedProgressTrailsAcknowledgedProgress) {
   RunnerFixture f;
   SimLink link(f.p);
-  job::JobRunner r(link.protocol, f.job);
+  stream::JobRunner r(link.protocol, f.job);
   r.start(0, {}, 0.0);
   bool sawGap = false;
   link.runUntil([&] {
@@ -81,7 +81,7 @@ TEST(JobRunner, ExecutedProgressTrailsAcknowledgedProgress) {
 TEST(JobRunner, HoldAndResume) {
   RunnerFixture f;
   SimLink link(f.p);
-  job::JobRunner r(link.protocol, f.job);
+  stream::JobRunner r(link.protocol, f.job);
   r.start(0, {}, 0.0);
   link.runUntil([] { return false; }, 1.0);
   r.hold();
@@ -101,11 +101,11 @@ TEST(JobRunner, ProgramPauseIsHeldUntilResumed) {
   const size_t middle = text.find("G0", text.size() / 2);
   ASSERT_NE(middle, std::string::npos);
   text.insert(middle, "M0\n");
-  const job::GcodeJob withPause = job::parseJob(text, job::rulesFor(f.p));
+  const stream::GcodeJob withPause = stream::parseJob(text, stream::rulesFor(f.p));
   ASSERT_TRUE(withPause.issues.empty());
   for (const bool resumeAtTheBoard : {false, true}) {
     SimLink link(f.p);
-    job::JobRunner r(link.protocol, withPause);
+    stream::JobRunner r(link.protocol, withPause);
     r.start(0, {}, 0.0);
     ASSERT_TRUE(runTo(link, r, {RunState::Held, RunState::Finished, RunState::Paused}, 300.0));
     ASSERT_EQ(r.state(), RunState::Held) << r.problem();
@@ -124,7 +124,7 @@ TEST(JobRunner, ProgramPauseIsHeldUntilResumed) {
 TEST(JobRunner, StopLeavesACleanMachineAndResumeCompletes) {
   RunnerFixture f;
   SimLink link(f.p);
-  job::JobRunner r(link.protocol, f.job);
+  stream::JobRunner r(link.protocol, f.job);
   r.start(0, {}, 0.0);
   link.runUntil([] { return false; }, 2.0);
   r.stop(link.nowS);
@@ -147,14 +147,14 @@ TEST_P(JobRunnerFault, EndsCleanAndResumeDrawsTheRest) {
   RunnerFixture f;
   const long atLine = long(f.job.lines.size() / 2);
   SimLink link(f.p, {GetParam().kind, atLine});
-  job::JobRunner r(link.protocol, f.job);
+  stream::JobRunner r(link.protocol, f.job);
   r.start(0, {}, 0.0);
   ASSERT_TRUE(runTo(link, r, {RunState::Paused, RunState::Finished}, 300.0));
   ASSERT_EQ(r.state(), RunState::Paused);
   EXPECT_NE(r.problem().find(GetParam().expectInProblem), std::string::npos) << r.problem();
   r.stop(link.nowS);
   ASSERT_TRUE(runTo(link, r, {RunState::Stopped}, 30.0));
-  const job::RunSnapshot snap = r.snapshot();
+  const stream::RunSnapshot snap = r.snapshot();
   ASSERT_LT(snap.linesCompleted, f.job.lines.size());
   Strokes drawn = link.sim.strokes();
   if (GetParam().kind == sim::FaultKind::DropAfter) {

@@ -13,9 +13,9 @@
 #include "core/kinematics/kinematics.hpp"
 #include "core/machine/profile.hpp"
 #include "core/kinematics/units.hpp"
-#include "drivers/gcode_job.hpp"
-#include "drivers/grbl_protocol.hpp"
-#include "drivers/sim_machine.hpp"
+#include "drivers/stream/gcode_job.hpp"
+#include "drivers/protocol/grbl_protocol.hpp"
+#include "drivers/sim/sim_machine.hpp"
 #include "test_support.hpp"
 
 namespace fivebar::test {
@@ -109,15 +109,15 @@ inline std::string fmt(double v) {
 // point of the last stroke.
 inline std::string jobText(const MachineProfile& p, const Strokes& strokes, double feedDegPerMin) {
   std::string g = "; test job\nG21 G90\n";
-  for (const std::string& s : job::penUpCommands(p.tool)) g += s + "\n";
+  for (const std::string& s : stream::penUpCommands(p.tool)) g += s + "\n";
   for (size_t i = 0; i < strokes.size(); ++i) {
     g += "; stroke " + std::to_string(i) + "\n";
     g += "G0 X" + fmt(strokes[i][0][0]) + " Y" + fmt(strokes[i][0][1]) + "\n";
-    for (const std::string& s : job::penDownCommands(p.tool)) g += s + "\n";
+    for (const std::string& s : stream::penDownCommands(p.tool)) g += s + "\n";
     for (size_t k = 1; k < strokes[i].size(); ++k)
       g += "G1 X" + fmt(strokes[i][k][0]) + " Y" + fmt(strokes[i][k][1]) + " F" +
            fmt(feedDegPerMin) + "\n";
-    for (const std::string& s : job::penUpCommands(p.tool)) g += s + "\n";
+    for (const std::string& s : stream::penUpCommands(p.tool)) g += s + "\n";
   }
   return g;
 }

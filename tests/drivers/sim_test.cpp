@@ -1,7 +1,7 @@
 // The simulated machine, driven through GrblProtocol with a stepped clock.
 #include <gtest/gtest.h>
 
-#include "drivers/gcode_job.hpp"
+#include "drivers/stream/gcode_job.hpp"
 #include "sim_harness.hpp"
 
 namespace fivebar::test {
@@ -31,7 +31,7 @@ TEST(SimMachine, StreamsAJobAndDrawsExactlyItsStrokes) {
   auto rng = fivebar::test::rng();
   const Strokes strokes = randomStrokes(p, rng, 4, 12, 30.0);
   const std::string text = jobText(p, strokes, 3000.0);
-  const job::GcodeJob job = job::parseJob(text, job::rulesFor(p));
+  const stream::GcodeJob job = stream::parseJob(text, stream::rulesFor(p));
   ASSERT_TRUE(job.issues.empty());
   SimLink link(p);
   for (const auto& l : job.lines) ASSERT_TRUE(link.protocol.enqueue(l.text).ok());
@@ -42,7 +42,7 @@ TEST(SimMachine, StreamsAJobAndDrawsExactlyItsStrokes) {
   EXPECT_EQ(link.sim.rxOverflowBytes(), 0);
   ASSERT_EQ(link.sim.strokes().size(), strokes.size());
   expectStrokesCover(strokes, link.sim.strokes(), 1.01 * stepDeg(p));
-  expectStrokesCover(job::strokesOf(job, job::rulesFor(p)), link.sim.strokes(), 1.01 * stepDeg(p));
+  expectStrokesCover(stream::strokesOf(job, stream::rulesFor(p)), link.sim.strokes(), 1.01 * stepDeg(p));
 }
 
 TEST(SimMachine, TrapezoidalTimingOfOneMove) {
@@ -340,7 +340,7 @@ TEST(SimMachine, RealSpeedStreamingNeverStarvesThePlannerInAStroke) {
     fine.push_back({a[0] + t * (b[0] - a[0]) + 0.3 * std::sin(i * 0.7), a[1] + t * (b[1] - a[1])});
   }
   const std::string text = jobText(p, {fine}, 2400.0);
-  const job::GcodeJob job = job::parseJob(text, job::rulesFor(p));
+  const stream::GcodeJob job = stream::parseJob(text, stream::rulesFor(p));
   SimLink link(p);
   size_t next = 0;
   // Host side as a real sender behaves: keep the protocol's queue topped up.

@@ -1,21 +1,21 @@
-// Pre-flight against the board's soft limits (drivers/soft_limits.hpp): targets in machine
+// Pre-flight against the board's soft limits (drivers/check/soft_limits.hpp): targets in machine
 // coordinates (work + WCO) inside -$13x..0, exactly where the simulated GRBL raises ALARM:2.
 #include <gtest/gtest.h>
 
 #include <map>
 #include <random>
 
-#include "drivers/motion_check.hpp"
-#include "drivers/soft_limits.hpp"
+#include "drivers/check/motion_check.hpp"
+#include "drivers/check/soft_limits.hpp"
 #include "sim_harness.hpp"
 
 namespace fivebar::test {
 namespace {
 
-job::GcodeJob parse(const std::string& text) {
-  job::JobRules rules;
+stream::GcodeJob parse(const std::string& text) {
+  stream::JobRules rules;
   rules.stepsPerDeg1 = rules.stepsPerDeg2 = 10.0;
-  return job::parseJob(text, rules);
+  return stream::parseJob(text, rules);
 }
 
 const setup::Settings kBoard{{20, 1.0}, {130, 100.0}, {131, 80.0}};

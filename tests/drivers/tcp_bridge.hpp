@@ -8,7 +8,7 @@
 #include <QTcpServer>
 #include <QTcpSocket>
 
-#include "drivers/simulated_transport.hpp"
+#include "drivers/transport/simulated_transport.hpp"
 
 namespace fivebar::test {
 

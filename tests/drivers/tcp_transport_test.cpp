@@ -13,11 +13,11 @@
 #include <vector>
 
 #include "core/machine/profile.hpp"
-#include "drivers/machine_link.hpp"
-#include "drivers/open_transport.hpp"
-#include "drivers/serial_transport.hpp"
-#include "drivers/simulated_transport.hpp"
-#include "drivers/tcp_transport.hpp"
+#include "drivers/protocol/machine_link.hpp"
+#include "drivers/transport/open_transport.hpp"
+#include "drivers/transport/serial_transport.hpp"
+#include "drivers/transport/simulated_transport.hpp"
+#include "drivers/transport/tcp_transport.hpp"
 #include "tests/widgets/event_wait.hpp"
 
 namespace fivebar {

@@ -11,7 +11,7 @@
 int main(int argc, char** argv) {
   qputenv("QT_QPA_PLATFORM", "offscreen");
   QCoreApplication app(argc, argv);
-  // Where the host remembers each board's position (drivers/pose_trust.hpp): this run's own.
+  // Where the host remembers each board's position (drivers/protocol/pose_trust.hpp): this run's own.
   QTemporaryDir state;
   qputenv("FIVEBAR_STATE_DIR", state.path().toUtf8());
   ::testing::InitGoogleTest(&argc, argv);

@@ -20,7 +20,7 @@
 #include "core/machine/profile.hpp"
 #include "core/output/gcode.hpp"
 #include "core/planning/planner.hpp"
-#include "drivers/sim_machine.hpp"
+#include "drivers/sim/sim_machine.hpp"
 
 namespace fivebar::test {
 namespace {

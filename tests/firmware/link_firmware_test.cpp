@@ -157,7 +157,7 @@ class FirmwareLink : public ::testing::Test {
                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
-    // Where this computer remembers the board's position (drivers/pose_trust.hpp): the test's own.
+    // Where this computer remembers the board's position (drivers/protocol/pose_trust.hpp): the test's own.
     ::setenv("FIVEBAR_STATE_DIR", (dir_ / "host").c_str(), 1);
     pty_ = dir_ / "grblpty";
     job_ = dir_ / "job.gcode";

@@ -13,8 +13,8 @@
 
 #include "core/kinematics/units.hpp"
 #include "core/output/gcode.hpp"
-#include "drivers/job_progress.hpp"
-#include "drivers/simulated_transport.hpp"
+#include "drivers/stream/job_progress.hpp"
+#include "drivers/transport/simulated_transport.hpp"
 #include "machine_test_support.hpp"
 #include "widgets/document/preview_controller.hpp"
 #include "session/run_controller.hpp"
@@ -88,20 +88,20 @@ TEST(RunPanel, RunsThePlannedJobToCompletionAndColoursWhatIsDone) {
   EXPECT_TRUE(panel.stopButton()->isEnabled());
   // Hold becomes available once the stream has synchronised and runs.
   EXPECT_TRUE(waitUntil([&] { return panel.holdButton()->isEnabled(); }, 10000));
-  EXPECT_EQ(rig.run.state(), job::RunState::Running);
+  EXPECT_EQ(rig.run.state(), stream::RunState::Running);
   EXPECT_FALSE(panel.startButton()->isEnabled());
   ASSERT_GT(layer.totalSegments(), 0u);
   // Half-way the canvas shows part of the job as done, not all of it.
   ASSERT_TRUE(waitUntil([&] { return layer.doneSegments() > 0; }, 30000));
   ASSERT_TRUE(waitUntil([&] { return finished; }, 45000));
   EXPECT_TRUE(ok) << rig.run.lastMessage().toStdString();
-  EXPECT_EQ(rig.run.state(), job::RunState::Finished);
+  EXPECT_EQ(rig.run.state(), stream::RunState::Finished);
   EXPECT_EQ(panel.progressBar()->value(), panel.progressBar()->maximum());
   EXPECT_EQ(layer.doneSegments(), layer.totalSegments());
   EXPECT_FALSE(rig.session.jobActive());
   // The machine ends at the job's last target, within a step; the job file stays, the progress
   // file is gone.
-  const job::JobLine& last = rig.run.job()->lines.back();
+  const stream::JobLine& last = rig.run.job()->lines.back();
   const JointAngles q = *rig.session.motorAngles();
   EXPECT_NEAR(degFromRad(q.theta1), last.endDeg[0], 1.0 / rig.doc.profile().motors.stepsPerDeg1);
   EXPECT_NEAR(degFromRad(q.theta2), last.endDeg[1], 1.0 / rig.doc.profile().motors.stepsPerDeg2);
@@ -120,7 +120,7 @@ TEST(RunPanel, ResumesAfterTheLinkDropsAlsoAfterARestart) {
   ASSERT_TRUE(rig.waitIdle());
   ASSERT_TRUE(rig.run.start());
   ASSERT_TRUE(waitUntil([&] { return !rig.run.running(); }, 45000));
-  EXPECT_NE(rig.run.state(), job::RunState::Finished);
+  EXPECT_NE(rig.run.state(), stream::RunState::Finished);
   ASSERT_TRUE(waitUntil([&] { return !rig.session.isConnected(); }, 5000));
   const auto saved = rig.run.savedProgress();
   ASSERT_TRUE(saved.has_value());
@@ -140,9 +140,9 @@ TEST(RunPanel, ResumesAfterTheLinkDropsAlsoAfterARestart) {
   panel.resumeButton()->click();
   ASSERT_TRUE(restarted.running()) << restarted.lastMessage().toStdString();
   ASSERT_TRUE(waitUntil([&] { return !restarted.running(); }, 45000));
-  EXPECT_EQ(restarted.state(), job::RunState::Finished) << restarted.lastMessage().toStdString();
+  EXPECT_EQ(restarted.state(), stream::RunState::Finished) << restarted.lastMessage().toStdString();
   EXPECT_FALSE(restarted.savedProgress().has_value());
-  const job::JobLine& last = restarted.job()->lines.back();
+  const stream::JobLine& last = restarted.job()->lines.back();
   const JointAngles q = *rig.session.motorAngles();
   EXPECT_NEAR(degFromRad(q.theta1), last.endDeg[0], 1.0 / rig.doc.profile().motors.stepsPerDeg1);
   EXPECT_NEAR(degFromRad(q.theta2), last.endDeg[1], 1.0 / rig.doc.profile().motors.stepsPerDeg2);
@@ -200,13 +200,13 @@ TEST(RunPanel, StartAsksBeforeItDiscardsTheSavedRun) {
     ASSERT_TRUE(file.open(QIODevice::WriteOnly));
     file.write(gcode.data(), qint64(gcode.size()));
   }
-  job::JobProgress progress;
-  progress.jobHash = job::sha256Hex(gcode);
+  stream::JobProgress progress;
+  progress.jobHash = stream::sha256Hex(gcode);
   progress.totalLines = 10;
   progress.lastAckedLine = progress.lastCompletedLine = 5;
   progress.reason = "stopped by the user";
-  const std::string progressPath = job::progressPathFor(rig.run.jobPath().toStdString());
-  ASSERT_EQ(job::saveProgress(progress, progressPath), "");
+  const std::string progressPath = stream::progressPathFor(rig.run.jobPath().toStdString());
+  ASSERT_EQ(stream::saveProgress(progress, progressPath), "");
   widgets::RunPanel panel(rig.run, rig.view, rig.session);
   EXPECT_FALSE(panel.resumeLabel()->isHidden());
   EXPECT_TRUE(panel.resumeLabel()->text().contains(QStringLiteral("\"square\""))) << panel.resumeLabel()->text().toStdString();
@@ -238,7 +238,7 @@ TEST(RunPanel, EtaFollowsThePlanAndStandsStillOnHold) {
   EXPECT_NEAR(total, planned, 0.1 * planned + 1.0);
   ASSERT_TRUE(waitUntil([&] { return rig.run.snapshot().lastCompleted && *rig.run.snapshot().lastCompleted > 20; }, 30000));
   rig.run.hold();
-  ASSERT_TRUE(waitUntil([&] { return rig.run.state() == job::RunState::Held; }, 10000));
+  ASSERT_TRUE(waitUntil([&] { return rig.run.state() == stream::RunState::Held; }, 10000));
   waitUntil([] { return false; }, 2 * session::RunController::kRefreshMs);  // the held snapshot
   const double held = rig.run.etaS();
   EXPECT_LT(held, total);
@@ -266,7 +266,7 @@ TEST(RunPanel, AlarmThenUnlockThenResumeFinishesAndNewJobsClearTheOldOverlay) {
   widgets::RunLayer layer(rig.run, rig.view);
   ASSERT_TRUE(rig.run.start());
   ASSERT_TRUE(waitUntil([&] { return !rig.run.running(); }, 45000));
-  EXPECT_NE(rig.run.state(), job::RunState::Finished);
+  EXPECT_NE(rig.run.state(), stream::RunState::Finished);
   // The alarm's explanation is in the banner; the run panel says what to do, in GUI words.
   EXPECT_FALSE(rig.run.lastMessage().contains(QStringLiteral("--resume"))) << rig.run.lastMessage().toStdString();
   EXPECT_TRUE(rig.run.lastMessage().contains(QStringLiteral("Resume"))) << rig.run.lastMessage().toStdString();
@@ -287,7 +287,7 @@ TEST(RunPanel, AlarmThenUnlockThenResumeFinishesAndNewJobsClearTheOldOverlay) {
   panel.resumeButton()->click();
   ASSERT_TRUE(rig.run.running()) << rig.run.lastMessage().toStdString();
   ASSERT_TRUE(waitUntil([&] { return !rig.run.running(); }, 45000));
-  EXPECT_EQ(rig.run.state(), job::RunState::Finished) << rig.run.lastMessage().toStdString();
+  EXPECT_EQ(rig.run.state(), stream::RunState::Finished) << rig.run.lastMessage().toStdString();
   EXPECT_EQ(layer.doneSegments(), layer.totalSegments());
   // A new placement: the finished run's overlay and status go.
   Placement moved = rig.doc.placement();
@@ -346,12 +346,12 @@ TEST(RunPanel, StartRefusesAJobTheBoardsSoftLimitsWouldStop) {
     ASSERT_TRUE(file.open(QIODevice::WriteOnly));
     file.write(gcode.data(), qint64(gcode.size()));
     file.close();
-    job::JobProgress progress;
-    progress.jobHash = job::sha256Hex(gcode);
+    stream::JobProgress progress;
+    progress.jobHash = stream::sha256Hex(gcode);
     progress.totalLines = 10;
     progress.lastAckedLine = progress.lastCompletedLine = 1;
     progress.reason = "stopped by the user";
-    ASSERT_EQ(job::saveProgress(progress, job::progressPathFor(rig.run.jobPath().toStdString())), "");
+    ASSERT_EQ(stream::saveProgress(progress, stream::progressPathFor(rig.run.jobPath().toStdString())), "");
     ASSERT_TRUE(rig.run.canResume());
     rig.run.ignoreSettingsOnce();
     const QString resumeWhy = refusal(true);

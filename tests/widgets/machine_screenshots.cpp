@@ -14,7 +14,7 @@
 #include <QApplication>
 #include <QMessageBox>
 #include <QTimer>
-#include "drivers/job_progress.hpp"
+#include "drivers/stream/job_progress.hpp"
 #include "widgets/machine/machine_dialogs.hpp"
 #include "widgets/machine/run_panel.hpp"
 #include <QPushButton>
@@ -132,7 +132,7 @@ int main(int argc, char** argv) {
   // 2a. The reference pose is asked for; the board's settings differ from the profile.
   grabNextBox(QStringLiteral("referencePoseQuestion"), outDir + QStringLiteral("/machine-reference-question.png"));
   widgets::requestReferencePose(&window, session.profile(), session);
-  QFile::remove(QString::fromStdString(job::progressPathFor(machine->run().jobPath().toStdString())));
+  QFile::remove(QString::fromStdString(stream::progressPathFor(machine->run().jobPath().toStdString())));
   session.sendLine(QStringLiteral("$100=10"));
   waitUntil([&] { return session.state() == grbl::MachineState::Idle; }, 5000);
   settle(300);

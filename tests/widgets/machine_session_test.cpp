@@ -11,7 +11,7 @@
 #include <QPushButton>
 
 #include "core/kinematics/units.hpp"
-#include "drivers/grbl_codes.hpp"
+#include "drivers/protocol/grbl_codes.hpp"
 #include "machine_test_support.hpp"
 #include "widgets/machine/console_panel.hpp"
 #include "widgets/machine/machine_banner.hpp"

@@ -10,7 +10,7 @@
 #include <QTemporaryDir>
 #include <set>
 
-#include "drivers/machine_setup.hpp"
+#include "drivers/check/machine_setup.hpp"
 #include "machine_test_support.hpp"
 #include "widgets/machine/machine_settings_dialog.hpp"
 

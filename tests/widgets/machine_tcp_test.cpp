@@ -8,7 +8,7 @@
 #include <QTcpServer>
 #include <QTcpSocket>
 
-#include "drivers/simulated_transport.hpp"
+#include "drivers/transport/simulated_transport.hpp"
 #include "machine_test_support.hpp"
 #include "tests/drivers/tcp_bridge.hpp"
 #include "widgets/machine/machine_panel.hpp"

@@ -17,7 +17,7 @@
 #include "app/studio/file_actions.hpp"
 #include "app/studio/main_window.hpp"
 #include "app/studio/startup.hpp"
-#include "drivers/jog.hpp"
+#include "drivers/jog/jog.hpp"
 #include "machine_test_support.hpp"
 #include "session/machine_side.hpp"
 #include "widgets/canvas/machine_layer.hpp"

@@ -58,7 +58,7 @@
 #include "widgets/canvas/job_layer.hpp"
 #include "session/run_controller.hpp"
 #include "widgets/machine/run_panel.hpp"
-#include "drivers/motion_check.hpp"
+#include "drivers/check/motion_check.hpp"
 #include "session/board_preflight.hpp"
 #include "widgets/panels/simulation_panel.hpp"
 #include "widgets/document/studio_document.hpp"

@@ -11,7 +11,7 @@
 #include "core/calibration/rigid_fit.hpp"
 #include "core/kinematics/kinematics.hpp"
 #include "core/output/gcode.hpp"
-#include "drivers/sim_machine.hpp"
+#include "drivers/sim/sim_machine.hpp"
 
 namespace fivebar::widgets::calibration {
 

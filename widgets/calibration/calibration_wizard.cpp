@@ -11,7 +11,7 @@
 #include <QSaveFile>
 
 #include "core/output/gcode.hpp"
-#include "drivers/stream_session.hpp"
+#include "drivers/stream/stream_session.hpp"
 #include "widgets/calibration/sheet_layer.hpp"
 #include "widgets/calibration/simulated_machine.hpp"
 #include "widgets/calibration/wizard_pages.hpp"

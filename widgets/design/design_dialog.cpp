@@ -1,6 +1,7 @@
 #include "widgets/design/design_dialog.hpp"
 
 #include <QAction>
+#include <QMenu>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -78,6 +79,10 @@ QAction* DesignDialog::createAction(StudioDocument& doc, CanvasView& canvas, QWi
     (*dialog)->raise();
   });
   return action;
+}
+
+void DesignDialog::install(const StudioShell& shell) {
+  shell.machineMenu->addAction(createAction(*shell.doc, *shell.canvas, shell.window));
 }
 
 QWidget* DesignDialog::makeBriefPanel() {

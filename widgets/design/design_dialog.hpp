@@ -5,6 +5,8 @@
 // document's profile (undoable), "Export..." writes it as a profile file.
 #pragma once
 
+#include "widgets/shell/studio_shell.hpp"
+
 #include <QDialog>
 #include <QFutureWatcher>
 #include <atomic>
@@ -37,6 +39,8 @@ class DesignDialog : public QDialog {
 
   // The Machine menu's "Design..." action; the dialog is made on first use.
   static QAction* createAction(StudioDocument& doc, CanvasView& canvas, QWidget* parent);
+  // The design explorer's place in the studio: that action in the shell's Machine menu.
+  static void install(const StudioShell& shell);
 
   design::DesignBrief brief() const;
   void setSearchOptions(const design::SearchOptions& options) { options_ = options; }

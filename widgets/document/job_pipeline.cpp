@@ -6,6 +6,7 @@
 
 #include "core/kinematics/units.hpp"
 #include "i18n/translated.hpp"
+#include "widgets/document/plan_words.hpp"
 
 namespace fivebar::widgets {
 namespace {
@@ -78,7 +79,7 @@ PreviewResult runPipeline(const PipelineInput& input) {
   for (const PlanProblem& p : plan.report.problems) {
     PreviewProblem q;
     q.text = trPipe(QT_TRANSLATE_NOOP("JobPipeline", "%1: %2")).arg(translated(p.path), translated(p.why));
-    q.fixes = translated(p.fixes);
+    q.fixes = fixWords(p.fixes);
     q.whereMm = toQ(p.whereMm);
     q.layerIndex = p.layerIndex;
     q.pathIndex = p.pathIndex;

@@ -13,7 +13,7 @@
 #include <QVBoxLayout>
 
 #include "core/kinematics/units.hpp"
-#include "drivers/open_transport.hpp"
+#include "drivers/transport/open_transport.hpp"
 #include "widgets/machine/machine_banner.hpp"
 #include "widgets/machine/port_box.hpp"
 #include "session/settings_advice.hpp"

@@ -3,6 +3,7 @@
 #include <QAction>
 #include <QDir>
 #include <QDockWidget>
+#include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QStandardPaths>
@@ -40,7 +41,7 @@ MachinePanels::MachinePanels(session::MachineSide& machine, StudioDocument& doc,
   });
 }
 
-void MachinePanels::addPanels(const AddDock& addDock) {
+void MachinePanels::install(const StudioShell& shell) {
   // Each panel gets the session's read-only view and only the ports it needs.
   session::MachineView& view = machine_.view();
   machinePanel_ = new MachinePanel(view, machine_.connection(), machine_.recovery(), window_);
@@ -49,16 +50,18 @@ void MachinePanels::addPanels(const AddDock& addDock) {
   runPanel_ = new RunPanel(machine_.run(), view, machine_.boardSettings(), window_);
   console_ = new ConsolePanel(machine_.console(), window_);
   profile_ = new ProfileEditor(doc_, window_);
-  addDock(machinePanel_, tr("Machine"), QStringLiteral("dockMachine"), Qt::RightDockWidgetArea);
-  addDock(runPanel_, tr("Run"), QStringLiteral("dockRun"), Qt::RightDockWidgetArea);
-  addDock(jog_, tr("Jog"), QStringLiteral("dockJog"), Qt::RightDockWidgetArea);
-  addDock(console_, tr("Console"), QStringLiteral("dockConsole"), Qt::BottomDockWidgetArea);
-  addDock(profile_, tr("Machine profile"), QStringLiteral("dockProfile"), Qt::LeftDockWidgetArea);
+  shell.addPanel(machinePanel_, tr("Machine"), QStringLiteral("dockMachine"), Qt::RightDockWidgetArea, shell.machineMenu);
+  shell.addPanel(runPanel_, tr("Run"), QStringLiteral("dockRun"), Qt::RightDockWidgetArea, shell.machineMenu);
+  shell.addPanel(jog_, tr("Jog"), QStringLiteral("dockJog"), Qt::RightDockWidgetArea, shell.machineMenu);
+  shell.addPanel(console_, tr("Console"), QStringLiteral("dockConsole"), Qt::BottomDockWidgetArea, shell.machineMenu);
+  shell.addPanel(profile_, tr("Machine profile"), QStringLiteral("dockProfile"), Qt::LeftDockWidgetArea, shell.machineMenu);
   machinePanel_->setOpenSettings([this] { openSettingsDialog(); });
   runPanel_->setOpenSettings([this] { openSettingsDialog(); });
   settingsAction_ = new QAction(tr("Machine &settings..."), this);
   settingsAction_->setObjectName(QStringLiteral("actionMachineSettings"));
   connect(settingsAction_, &QAction::triggered, this, [this] { openSettingsDialog(); });
+  shell.machineMenu->addSeparator();
+  shell.machineMenu->addAction(settingsAction_);
 }
 
 // Shows the (single) settings dialog and reads the board when connected. Backups go to the

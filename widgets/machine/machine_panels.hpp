@@ -9,6 +9,7 @@
 #include <functional>
 
 #include "session/machine_side.hpp"
+#include "widgets/shell/studio_shell.hpp"
 
 class QAction;
 class QDockWidget;
@@ -29,14 +30,12 @@ class StudioDocument;
 class MachinePanels : public QObject {
   Q_OBJECT
  public:
-  // Docks a panel in the window: (panel, title, objectName, area) -> the dock.
-  using AddDock = std::function<QDockWidget*(QWidget*, const QString&, const QString&, Qt::DockWidgetArea)>;
-
   MachinePanels(session::MachineSide& machine, StudioDocument& doc, CanvasView& canvas,
                 MachineLayer& machineLayer, QWidget* window);
 
-  // Creates the panels and hands them to addDock.
-  void addPanels(const AddDock& addDock);
+  // Creates the panels and installs them through the shell (widgets/shell/studio_shell.hpp):
+  // docks with their toggles in the Machine menu, then "Machine settings...".
+  void install(const StudioShell& shell);
 
   JogPanel* jogPanel() const { return jog_; }
   RunPanel* runPanel() const { return runPanel_; }
@@ -44,7 +43,7 @@ class MachinePanels : public QObject {
   ConsolePanel* consolePanel() const { return console_; }
   ProfileEditor* profileEditor() const { return profile_; }
   // "Machine settings...": opens the dialog comparing the board's $$ with the profile (created
-  // by addPanels; the window puts it in its Machine menu).
+  // by install and put in the Machine menu).
   QAction* settingsAction() const { return settingsAction_; }
   MachineSettingsDialog* openSettingsDialog();
 

@@ -1,5 +1,5 @@
 // Machine settings dialog: reads the board's GRBL settings ($$), shows them next to what the
-// machine profile expects (drivers/machine_setup.hpp: steps/deg, rates, accelerations, soft
+// machine profile expects (drivers/check/machine_setup.hpp: steps/deg, rates, accelerations, soft
 // limits...), and on confirmation saves a backup of the board's values to a file and writes the
 // differences one at a time. All machine traffic goes through a SettingsSync the session hands
 // out (BoardSettingsPort); the dialog sees the rest of the session only through MachineView.
@@ -10,7 +10,7 @@
 #include <memory>
 #include <vector>
 
-#include "drivers/machine_setup.hpp"
+#include "drivers/check/machine_setup.hpp"
 
 class QLabel;
 class QPushButton;

@@ -8,8 +8,8 @@
 #include <QLineEdit>
 #include <QSettings>
 
-#include "drivers/serial_transport.hpp"
-#include "drivers/tcp_transport.hpp"
+#include "drivers/transport/serial_transport.hpp"
+#include "drivers/transport/tcp_transport.hpp"
 
 namespace fivebar::widgets {
 namespace {

@@ -17,7 +17,7 @@ RunLayer::RunLayer(const session::RunController& run, const session::MachineView
 }
 
 void RunLayer::rebuild() {
-  const job::GcodeJob* job = run_.job();
+  const stream::GcodeJob* job = run_.job();
   if (job == builtFor_) return;
   builtFor_ = job;
   segments_.clear();
@@ -25,7 +25,7 @@ void RunLayer::rebuild() {
   const MachineProfile& profile = view_.profile();
   std::optional<QPointF> previous;
   for (std::size_t i = 0; i < job->lines.size(); ++i) {
-    const job::JobLine& line = job->lines[i];
+    const stream::JobLine& line = job->lines[i];
     // G-code angles are commanded; the kinematics takes commanded + zero offset.
     const JointAngles q =
         kinematicFromCommanded(profile.calibration, {radFromDeg(line.endDeg[0]), radFromDeg(line.endDeg[1])});

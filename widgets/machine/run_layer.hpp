@@ -38,7 +38,7 @@ class RunLayer : public QObject, public CanvasLayer {
   };
   const session::RunController& run_;
   const session::MachineView& view_;
-  const job::GcodeJob* builtFor_ = nullptr;
+  const stream::GcodeJob* builtFor_ = nullptr;
   std::vector<Segment> segments_;  // in line order
 };
 

@@ -18,16 +18,16 @@
 namespace fivebar::widgets {
 namespace {
 
-QString runStateName(job::RunState s) {
+QString runStateName(stream::RunState s) {
   switch (s) {
-    case job::RunState::Ready: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Ready");
-    case job::RunState::Running: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Running");
-    case job::RunState::Holding: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Holding…");
-    case job::RunState::Held: return QCoreApplication::translate("fivebar::widgets::RunPanel", "On hold");
-    case job::RunState::Paused: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Paused by a problem");
-    case job::RunState::Stopping: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Stopping…");
-    case job::RunState::Stopped: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Stopped");
-    case job::RunState::Finished: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Finished");
+    case stream::RunState::Ready: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Ready");
+    case stream::RunState::Running: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Running");
+    case stream::RunState::Holding: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Holding…");
+    case stream::RunState::Held: return QCoreApplication::translate("fivebar::widgets::RunPanel", "On hold");
+    case stream::RunState::Paused: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Paused by a problem");
+    case stream::RunState::Stopping: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Stopping…");
+    case stream::RunState::Stopped: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Stopped");
+    case stream::RunState::Finished: return QCoreApplication::translate("fivebar::widgets::RunPanel", "Finished");
   }
   return {};
 }
@@ -168,12 +168,12 @@ void RunPanel::resumeClicked() {
 }
 
 void RunPanel::refresh() {
-  const job::RunState s = run_.state();
+  const stream::RunState s = run_.state();
   const bool running = run_.running();
   start_->setEnabled(run_.canStart());
-  hold_->setEnabled(running && s == job::RunState::Running);
-  continue_->setEnabled(running && (s == job::RunState::Held || s == job::RunState::Holding));
-  stop_->setEnabled(running && s != job::RunState::Stopping);
+  hold_->setEnabled(running && s == stream::RunState::Running);
+  continue_->setEnabled(running && (s == stream::RunState::Held || s == stream::RunState::Holding));
+  stop_->setEnabled(running && s != stream::RunState::Stopping);
   const auto saved = running ? std::nullopt : run_.savedProgress();
   resume_->setVisible(saved.has_value());
   resumeInfo_->setVisible(saved.has_value());
@@ -181,25 +181,25 @@ void RunPanel::refresh() {
   if (saved) resumeInfo_->setText(run_.resumeOffer());
   state_->setText(run_.job() ? runStateName(s) : tr("No job sent yet"));
   message_->setText(run_.lastMessage());
-  message_->setStyleSheet(s == job::RunState::Stopped || s == job::RunState::Paused
+  message_->setStyleSheet(s == stream::RunState::Stopped || s == stream::RunState::Paused
                               ? QStringLiteral("color: #dc2626")
                               : QString());
   refreshProgress();
 }
 
 void RunPanel::refreshProgress() {
-  const job::RunSnapshot& snap = run_.snapshot();
+  const stream::RunSnapshot& snap = run_.snapshot();
   const std::size_t done = snap.lastCompleted ? *snap.lastCompleted + 1 : 0;
   const double fraction = snap.totalLines > 0 ? double(done) / double(snap.totalLines) : 0.0;
   progress_->setValue(int(std::lround(std::clamp(fraction, 0.0, 1.0) * 1000.0)));
   progress_->setFormat(run_.job() ? tr("%1 % (%2)").arg(int(std::floor(fraction * 100.0))).arg(run_.progressText())
                                   : QString());
-  const job::RunState rs = run_.state();
-  const bool held = rs == job::RunState::Held || rs == job::RunState::Holding;
+  const stream::RunState rs = run_.state();
+  const bool held = rs == stream::RunState::Held || rs == stream::RunState::Holding;
   eta_->setText(!run_.running() ? QString()
                 : held         ? tr("%1 left (on hold)").arg(formatTimeLeft(run_.etaS()))
                                : tr("%1 left").arg(formatTimeLeft(run_.etaS())));
-  const job::RunState s = run_.state();
+  const stream::RunState s = run_.state();
   if (run_.job()) state_->setText(runStateName(s));
 }
 
