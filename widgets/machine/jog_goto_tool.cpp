@@ -1,5 +1,7 @@
 #include "widgets/machine/jog_goto_tool.hpp"
 
+#include "session/go_to.hpp"
+
 #include <QLocale>
 #include <QPainterPath>
 
@@ -22,8 +24,8 @@ void GoToTool::pick(QPointF machineMm) {
     emit repaintNeeded();
     return;
   }
-  pending_ = jog_.boardChecked(jog::planGoTo(view_.profile(), *start, Vec2(machineMm.x(), machineMm.y())), false);
-  pendingPathMm_ = jog::penPathMm(view_.profile(), *start, *pending_);
+  pending_ = session::planGoTo(jog_, view_.profile(), *start, Vec2(machineMm.x(), machineMm.y()));
+  pendingPathMm_ = session::goToPenPathMm(view_.profile(), *start, *pending_);
   if (pending_->ok()) {
     emit picked(true, tr("Go to %1, %2 mm? The dashed path is the pen's travel (%3 checked moves).")
                           .arg(QLocale().toString(machineMm.x(), 'f', 1))

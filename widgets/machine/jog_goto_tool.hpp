@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "widgets/canvas/canvas_layer.hpp"
-#include "drivers/jog/jog.hpp"
+#include "session/machine_ports.hpp"
 #include "session/machine_ports.hpp"
 #include "session/machine_view.hpp"
 

@@ -13,9 +13,9 @@
 #include <QVBoxLayout>
 
 #include "core/kinematics/units.hpp"
-#include "drivers/transport/open_transport.hpp"
 #include "widgets/machine/machine_banner.hpp"
 #include "widgets/machine/port_box.hpp"
+#include "session/port_names.hpp"
 #include "session/settings_advice.hpp"
 
 namespace fivebar::widgets {
@@ -225,7 +225,7 @@ void MachinePanel::connectTo(const QString& port, std::optional<int> baudRate) {
 void MachinePanel::refreshConnection() {
   const bool connected = view_.isConnected();
   const QString port = ports_->chosenPort();
-  const bool hasBaud = port != PortBox::kSimulated && portHasBaudRate(port);
+  const bool hasBaud = port != PortBox::kSimulated && session::portHasBaudRate(port);
   refresh_->setEnabled(!connected);
   baud_->setEnabled(!connected && hasBaud);
   const bool connecting = view_.isConnecting();

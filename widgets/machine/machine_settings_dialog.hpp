@@ -10,7 +10,7 @@
 #include <memory>
 #include <vector>
 
-#include "drivers/check/machine_setup.hpp"
+#include "session/machine_ports.hpp"
 
 class QLabel;
 class QPushButton;

@@ -8,8 +8,7 @@
 #include <QLineEdit>
 #include <QSettings>
 
-#include "drivers/transport/serial_transport.hpp"
-#include "drivers/transport/tcp_transport.hpp"
+#include "session/port_names.hpp"
 
 namespace fivebar::widgets {
 namespace {
@@ -51,8 +50,8 @@ void PortBox::refresh() {
   const QString chosen = count() > 0 ? chosenPort() : QString();
   clear();
   addItem(tr("Simulated machine (built in)"), kSimulated);
-  std::vector<SerialPortInfo> found = SerialTransport::availablePorts();
-  const auto labelOf = [](const SerialPortInfo& port) {
+  std::vector<session::PortInfo> found = session::availableSerialPorts();
+  const auto labelOf = [](const session::PortInfo& port) {
     return port.description.isEmpty() ? port.systemPath
                                       : QStringLiteral("%1 (%2)").arg(port.systemPath, port.description);
   };
@@ -63,13 +62,13 @@ void PortBox::refresh() {
   for (const QString& port : recentPorts()) {
     if (port == kSimulated) continue;
     QString label = port;
-    for (const SerialPortInfo& f : found)
+    for (const session::PortInfo& f : found)
       if (f.systemPath == port) label = labelOf(f);
     addItem(label, port);
     setItemData(count() - 1, tr("Connected to recently"), Qt::ToolTipRole);
   }
   separate();
-  for (const SerialPortInfo& port : found)
+  for (const session::PortInfo& port : found)
     if (findData(port.systemPath) < 0) addItem(labelOf(port), port.systemPath);
   if (itemText(count() - 1).isEmpty()) removeItem(count() - 1);  // no trailing separator
   if (!chosen.isEmpty()) choose(chosen);
@@ -115,8 +114,8 @@ QString portProblem(const QString& port) {
     return PortBox::tr("Choose a port or type its name, for example /dev/ttyUSB0, a pseudo-terminal "
                        "such as /tmp/grblpty, or a network port tcp:HOST:PORT.");
   if (port == PortBox::kSimulated) return {};
-  if (isTcpPortName(port)) {
-    if (parseTcpPortName(port)) return {};
+  if (session::isNetworkPortName(port)) {
+    if (session::isValidNetworkPortName(port)) return {};
     return PortBox::tr("%1 is not a network port: write it as tcp:HOST:PORT, for example "
                        "tcp:192.168.1.20:23.")
         .arg(port);
