@@ -57,14 +57,16 @@ inline std::vector<Sample> readTrace(const fs::path& file) {
 
 // A powered board: the firmware on a pty at `pty`, its EEPROM in `stateDir` (kept across
 // restarts, as a board's), its step trace written to `trace`; `extra` options of grbl_sim.exe
-// after those (e.g. {"-L", FILE}: every byte received and sent). The destructor pulls the cable.
+// after those (e.g. {"-L", FILE}: every byte received and sent). `speedup` > 1 runs the machine
+// that many times faster than the wall clock (README: for tests where timing is not what they
+// check). The destructor pulls the cable.
 class Board {
  public:
   Board(const fs::path& pty, const fs::path& stateDir, const fs::path& trace,
-        const std::vector<std::string>& extra = {})
+        const std::vector<std::string>& extra = {}, int speedup = 1)
       : pty_(pty) {
     fs::remove(pty);
-    std::vector<std::string> args = {"sh",          startScript().string(), pty.string(), "1",
+    std::vector<std::string> args = {"sh",          startScript().string(), pty.string(), std::to_string(speedup),
                                      stateDir.string(), "-s", trace.string(), "-r", "0.001"};
     args.insert(args.end(), extra.begin(), extra.end());
     std::vector<char*> argv;
