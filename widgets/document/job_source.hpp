@@ -31,6 +31,9 @@ struct DrawingSource {
   // the source, the finer re-import too). kDefaultMaxPoints (drawing.hpp) is the usual budget.
   std::size_t maxPoints = 0;
   bool solidDashes = false;  // dashed strokes drawn whole (svg::DashMode::Solid)
+  // SVG <text> redrawn in this Hershey single-stroke font (svg::ImportOptions::textFont;
+  // docs/text.md); empty: the outlines of the text's own font.
+  std::string textFont;
 };
 
 // True when `error` came from an import stopped by DrawingSource::maxPoints.
@@ -81,7 +84,8 @@ bool isProjectPath(const QString& path);
 std::optional<LoadedJob> loadJob(const QString& path, const std::optional<MachineProfile>& profile,
                                  PlanOptions options, std::string& error,
                                  FillMode fill = FillMode::Outline, const HatchSettings& hatch = {},
-                                 std::size_t maxPoints = 0, bool solidDashes = false);
+                                 std::size_t maxPoints = 0, bool solidDashes = false,
+                                 const std::string& textFont = {});
 
 // The same for SVG text already in memory (the built-in demo).
 std::optional<LoadedJob> loadDrawing(const DrawingSource& source, const MachineProfile& profile,
