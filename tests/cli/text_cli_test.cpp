@@ -130,6 +130,34 @@ TEST_F(TextCli, PlanDrawsTheTextAtTrueSizeWithItsStrokesPenDownLength) {
     EXPECT_NEAR(penDownMm, layoutMm, 0.01 * layoutMm) << font << ": " << p.out;
   }
 }
+
+// SVG <text> redrawn with `plan --text-font`: the pen-down length of the font's strokes at a cap
+// height of 0.7 x the font size (docs/svg-import.md).
+TEST_F(TextCli, PlanTextFontRedrawsSvgTextInTheSingleStrokeFont) {
+  REQUIRE_FONTS();
+  std::ofstream(path("label.svg")) << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"80mm\" height=\"30mm\" "
+                                      "viewBox=\"0 0 80 30\"><text x=\"40\" y=\"20\" font-size=\"10\" "
+                                      "text-anchor=\"middle\">HELLO</text></svg>\n";
+  const CliResult p = run({"plan", path("label.svg"), "--machine", "maker-plotter", "--text-font", "futural",
+                           "--report", path("r.json"), "-o", path("job.gcode")});
+  ASSERT_EQ(p.exitCode, 0) << p.err;
+  const text::FontLoad load = text::loadFont("futural", text::kDefaultFontDirectory);
+  ASSERT_TRUE(load.font);
+  text::TextStyle style;
+  style.heightMm = 7.0;
+  const double layoutMm = text::strokeLengthMm(text::layoutText(*load.font, "HELLO", style).strokes);
+  const double penDownMm = nlohmann::json::parse(slurp(path("r.json"))).at("pen_down_mm").get<double>();
+  EXPECT_NEAR(penDownMm, layoutMm, 0.01 * layoutMm) << p.out;
+  const CliResult outlines = run({"plan", path("label.svg"), "--machine", "maker-plotter", "--report", path("o.json"),
+                                  "-o", path("job.gcode")});
+  ASSERT_EQ(outlines.exitCode, 0) << outlines.err;
+  EXPECT_GT(std::abs(nlohmann::json::parse(slurp(path("o.json"))).at("pen_down_mm").get<double>() - penDownMm),
+            0.05 * layoutMm);  // outlines are another drawing
+  const CliResult unknown = run({"plan", path("label.svg"), "--machine", "maker-plotter", "--text-font", "futurax",
+                                 "-o", path("job.gcode")});
+  EXPECT_EQ(unknown.exitCode, 2);
+  EXPECT_NE(unknown.err.find("--text-font: futurax"), std::string::npos) << unknown.err;
+}
 #endif
 
 TEST_F(TextCli, AMissingGlyphIsNamedAndSkippedOrRefusedWithStrict) {
