@@ -23,7 +23,8 @@ set(CPACK_DEBIAN_PACKAGE_SECTION "graphics")
 set(CPACK_DEBIAN_PACKAGE_PRIORITY "optional")
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # Qt loads its platform plugins at run time, so shlibdeps cannot see them (Qt Svg, whose
-# icon engine the icons need, is a link dependency and found by shlibdeps).
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "qt6-qpa-plugins")
+# icon engine the icons need, is a link dependency and found by shlibdeps). The Hershey fonts of
+# `fivebar text` and the studio's text are data files read at run time (docs/text.md).
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "qt6-qpa-plugins, hershey-fonts-data")
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "qt6-translations-l10n")
 include(CPack)

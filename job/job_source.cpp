@@ -41,6 +41,7 @@ std::optional<Drawing> importSvgText(const DrawingSource& source, double toleran
   options.cancel = cancel;
   options.maxPoints = source.maxPoints;
   options.dashes = source.solidDashes ? svg::DashMode::Solid : svg::DashMode::Dashed;
+  options.textFont = source.textFont;
   // Through a file, so that the import runs in the isolated worker process: the source's own
   // when it is unchanged, else a temporary copy of the bytes.
   QTemporaryFile copy(QDir::temp().filePath(QStringLiteral("fivebar-import-XXXXXX.svg")));
@@ -133,6 +134,7 @@ std::optional<LoadedJob> loadProject(const QString& path, const std::optional<Ma
   if (job.source.name.isEmpty()) job.source.name = QFileInfo(path).fileName();
   job.source.maxPoints = maxPoints;
   job.source.solidDashes = p.solidDashes;
+  job.source.textFont = p.textFont;
   auto drawing = importSvgText(job.source, p.flatteningToleranceMm, error, nullptr, &job.warnings);
   if (!drawing) return std::nullopt;
   applyLayerStates(*drawing, p.layers);
@@ -171,7 +173,8 @@ std::optional<LoadedJob> loadDrawing(const DrawingSource& source, const MachineP
 
 std::optional<LoadedJob> loadJob(const QString& path, const std::optional<MachineProfile>& profile,
                                  PlanOptions options, JobError& error, FillMode fill,
-                                 const HatchSettings& hatch, std::size_t maxPoints, bool solidDashes) {
+                                 const HatchSettings& hatch, std::size_t maxPoints, bool solidDashes,
+                                 const std::string& textFont) {
   if (isProjectPath(path)) return loadProject(path, profile, error, maxPoints);
   if (!profile) {
     error.text = trSource(QT_TRANSLATE_NOOP("JobPipeline", "no machine profile given")).toStdString();
@@ -183,6 +186,7 @@ std::optional<LoadedJob> loadJob(const QString& path, const std::optional<Machin
   source.hatch = hatch;
   source.maxPoints = maxPoints;
   source.solidDashes = solidDashes;
+  source.textFont = textFont;
   if (!readFile(path, source.svg, error)) return std::nullopt;
   // The worker reads the file itself while it stays as read (no temporary copy of its bytes).
   const QFileInfo info(path);
@@ -200,6 +204,7 @@ Project projectOf(const DrawingSource& source, const Drawing& drawing, const Pla
   p.drawingSvg = source.svg.toStdString();
   p.flatteningToleranceMm = drawing.flatteningToleranceMm;
   p.solidDashes = source.solidDashes;
+  p.textFont = source.textFont;
   p.placement = placement;
   p.layers = layerStatesOf(drawing);
   p.mode = mode;

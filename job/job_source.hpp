@@ -35,6 +35,9 @@ struct DrawingSource {
   // the source, the finer re-import too). kDefaultMaxPoints (drawing.hpp) is the usual budget.
   std::size_t maxPoints = 0;
   bool solidDashes = false;  // dashed strokes drawn whole (svg::DashMode::Solid)
+  // SVG <text> redrawn in this Hershey single-stroke font (svg::ImportOptions::textFont;
+  // docs/text.md); empty: the outlines of the text's own font.
+  std::string textFont;
   // The file `svg` was read from, with its size and modification time then ("" for text made in
   // memory: the demo, a project's embedded drawing). While the file is unchanged the import hands
   // this path to the worker; otherwise the bytes go through a temporary copy.
@@ -97,7 +100,8 @@ bool isProjectPath(const QString& path);
 std::optional<LoadedJob> loadJob(const QString& path, const std::optional<MachineProfile>& profile,
                                  PlanOptions options, JobError& error,
                                  FillMode fill = FillMode::Outline, const HatchSettings& hatch = {},
-                                 std::size_t maxPoints = 0, bool solidDashes = false);
+                                 std::size_t maxPoints = 0, bool solidDashes = false,
+                                 const std::string& textFont = {});
 
 // The same for SVG text already in memory (the built-in demo).
 std::optional<LoadedJob> loadDrawing(const DrawingSource& source, const MachineProfile& profile,

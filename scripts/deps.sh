@@ -8,6 +8,7 @@ packages=(
   qt6-base-dev qt6-svg-dev qt6-serialport-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
   qt6-translations-l10n
   libgl-dev libgtest-dev libgmock-dev libbenchmark-dev
+  hershey-fonts-data
   xvfb xauth
   dpkg-dev desktop-file-utils appstream man-db
 )

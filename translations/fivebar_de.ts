@@ -243,6 +243,18 @@
 <context>
     <name>ImportWarning</name>
     <message>
+        <source>text in a single-stroke font: per-glyph x/y/dx/dy lists are not followed, only their first value</source>
+        <translation>Text in einer Einstrich-Schrift: Listen von x/y/dx/dy je Zeichen werden nicht befolgt, nur ihr erster Wert</translation>
+    </message>
+    <message>
+        <source>text in a single-stroke font: text on a path (&lt;textPath&gt;) is not drawn</source>
+        <translation>Text in einer Einstrich-Schrift: Text auf einem Pfad (&lt;textPath&gt;) wird nicht gezeichnet</translation>
+    </message>
+    <message>
+        <source>text in a single-stroke font: only UTF-8 documents, this one is %1: its text is drawn as outlines</source>
+        <translation>Text in einer Einstrich-Schrift: nur UTF-8-Dokumente, dieses ist %1: sein Text wird als Umrisse gezeichnet</translation>
+    </message>
+    <message>
         <source>clip-path set in a style sheet is not applied: those shapes are drawn unclipped</source>
         <translation>clip-path in einem Stylesheet wird nicht angewandt: diese Formen werden unbeschnitten gezeichnet</translation>
     </message>

@@ -243,6 +243,18 @@
 <context>
     <name>ImportWarning</name>
     <message>
+        <source>text in a single-stroke font: per-glyph x/y/dx/dy lists are not followed, only their first value</source>
+        <translation>texto en una fuente de trazo simple: las listas x/y/dx/dy por glifo no se siguen, solo su primer valor</translation>
+    </message>
+    <message>
+        <source>text in a single-stroke font: text on a path (&lt;textPath&gt;) is not drawn</source>
+        <translation>texto en una fuente de trazo simple: el texto sobre un trazado (&lt;textPath&gt;) no se dibuja</translation>
+    </message>
+    <message>
+        <source>text in a single-stroke font: only UTF-8 documents, this one is %1: its text is drawn as outlines</source>
+        <translation>texto en una fuente de trazo simple: solo documentos UTF-8, este es %1: su texto se dibuja como contornos</translation>
+    </message>
+    <message>
         <source>clip-path set in a style sheet is not applied: those shapes are drawn unclipped</source>
         <translation>clip-path definido en una hoja de estilo no se aplica: esas formas se dibujan sin recortar</translation>
     </message>

@@ -243,6 +243,18 @@
 <context>
     <name>ImportWarning</name>
     <message>
+        <source>text in a single-stroke font: per-glyph x/y/dx/dy lists are not followed, only their first value</source>
+        <translation>texte en police à trait simple : les listes x/y/dx/dy par glyphe ne sont pas suivies, seule leur première valeur</translation>
+    </message>
+    <message>
+        <source>text in a single-stroke font: text on a path (&lt;textPath&gt;) is not drawn</source>
+        <translation>texte en police à trait simple : le texte sur un chemin (&lt;textPath&gt;) n&apos;est pas dessiné</translation>
+    </message>
+    <message>
+        <source>text in a single-stroke font: only UTF-8 documents, this one is %1: its text is drawn as outlines</source>
+        <translation>texte en police à trait simple : documents UTF-8 seulement, celui-ci est en %1 : son texte est dessiné en contours</translation>
+    </message>
+    <message>
         <source>clip-path set in a style sheet is not applied: those shapes are drawn unclipped</source>
         <translation>clip-path défini dans une feuille de style n’est pas appliqué : ces formes sont dessinées sans découpe</translation>
     </message>

@@ -130,7 +130,7 @@ int plan(const Options& o) {
     if (!machine) return 1;
   }
   if (project)
-    for (const char* option : {"--mode", "--at", "--scale", "--rotate", "--tolerance"})
+    for (const char* option : {"--mode", "--at", "--scale", "--rotate", "--tolerance", "--text-font"})
       if (o.value(option)) throw UsageError(std::string(option) + " does not apply to a project (it has its own)");
   if (project && o.flag("--fit")) throw UsageError("--fit does not apply to a project (it has its own placement)");
   PlanOptions opt = planOptionsFrom(o);
@@ -151,7 +151,8 @@ int plan(const Options& o) {
   // The points budget stops the import itself as soon as it is passed (a runaway file is never
   // flattened whole); withinPointBudget checks it again after hatching.
   auto loaded = job::loadJob(QString::fromStdString(file), machine, opt, error, importSettings.fill,
-                              importSettings.hatch, importSettings.maxPoints, importSettings.solidDashes);
+                              importSettings.hatch, importSettings.maxPoints, importSettings.solidDashes,
+                              importSettings.textFont);
   if (!loaded && error.pointBudgetExceeded()) {
     std::cerr << "fivebar plan: " << error.text << "; nothing planned. Raise it with --max-points N if the "
                  "drawing is meant to be this big\n";

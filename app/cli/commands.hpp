@@ -16,6 +16,7 @@ int runDesign(const Args& args);         // cmd_design.cpp
 int runProfile(const Args& args);        // cmd_profile.cpp
 int runPlan(const Args& args);           // cmd_plan.cpp
 int runGrblSettings(const Args& args);   // cmd_plan.cpp
+int runText(const Args& args);           // cmd_text.cpp
 int runStream(const Args& args);         // cmd_machine.cpp (Qt builds only)
 int runSend(const Args& args);           // cmd_send.cpp (Qt builds only)
 int runSetup(const Args& args);          // cmd_machine.cpp (Qt builds only)

@@ -25,6 +25,7 @@ constexpr Command kCommands[] = {
     {"design", "link lengths for a paper size: search, trade-off, profile", fivebar::cli::runDesign},
     {"profile", "machine profiles: check FILE", fivebar::cli::runProfile},
     {"plan", "SVG drawing -> GRBL G-code job and report", fivebar::cli::runPlan},
+    {"text", "text in a single-stroke Hershey font -> SVG of paths in mm; --list-fonts", fivebar::cli::runText},
     {"grbl-settings", "the GRBL $ settings a machine profile expects", fivebar::cli::runGrblSettings},
     {"calibrate", "calibration: pattern (G-code, MARKS.csv), scan (MEASURED.csv), fit -> calibrated profile", fivebar::cli::runCalibrate},
 #ifdef FIVEBAR_HAVE_DRIVERS

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "core/kinematics/units.hpp"
+#include "core/text/hershey_font.hpp"
 
 
 namespace fivebar::cli {
@@ -22,10 +23,12 @@ const char* const kPlanImportHelp =
     "  --no-hatch-outline        hatch fill-only shapes without drawing their outline\n"
     "  --dashes dashed|solid     dashed strokes: their dashes, pen up between (default), or\n"
     "                            drawn whole\n"
+    "  --text-font NAME          redraw SVG <text> in this single-stroke Hershey font (see\n"
+    "                            'fivebar text --list-fonts') instead of its outlines\n"
     "  Import warnings (dropped images, unsupported features, path data errors) go to stderr.\n";
 
 std::set<std::string> withImportValuedOptions(std::set<std::string> valued) {
-  valued.insert({"--max-points", "--fill", "--hatch-spacing", "--hatch-angle", "--dashes"});
+  valued.insert({"--max-points", "--fill", "--hatch-spacing", "--hatch-angle", "--dashes", "--text-font"});
   return valued;
 }
 
@@ -68,6 +71,11 @@ PlanImportSettings planImportSettingsFrom(const Options& o) {
     if (*dashes != "dashed" && *dashes != "solid")
       throw UsageError("--dashes must be dashed or solid, got '" + *dashes + "'");
     s.solidDashes = *dashes == "solid";
+  }
+  if (const auto font = o.value("--text-font")) {
+    const text::FontLoad load = text::loadFont(*font);
+    if (!load.font) throw UsageError("--text-font: " + text::toString(load.error));
+    s.textFont = *font;
   }
   s.hatch.spacingMm = numberOption(o, "--hatch-spacing", 0.5);
   s.hatch.angleRad = radFromDeg(numberOption(o, "--hatch-angle", 45.0));  // as the studio converts

@@ -1,6 +1,6 @@
 // The import side of `fivebar plan`: import warnings on stderr, the point budget (--max-points)
 // and fills (--fill outline|hatch|none, --hatch-spacing, --hatch-angle, --crosshatch,
-// --no-hatch-outline) and dashes (--dashes dashed|solid). Kept apart from cmd_plan.cpp, which calls these few functions.
+// --no-hatch-outline), dashes (--dashes dashed|solid) and text (--text-font NAME). Kept apart from cmd_plan.cpp, which calls these few functions.
 #pragma once
 
 #include <cstddef>
@@ -19,6 +19,7 @@ struct PlanImportSettings {
   FillMode fill = FillMode::Outline;
   HatchSettings hatch;       // spacing 0.5 mm, angle 45 deg unless given
   bool solidDashes = false;  // --dashes solid: dashed strokes drawn whole
+  std::string textFont;      // --text-font NAME: <text> redrawn in that Hershey font
 };
 
 extern const char* const kPlanImportHelp;

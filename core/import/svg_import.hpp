@@ -57,6 +57,10 @@ struct ImportOptions {
   // Points after flattening the import may produce; 0 = no limit. Reading stops as soon as the
   // count passes it (status TooManyPoints), before the rest of the file is flattened.
   std::size_t maxPoints = 0;
+  // Non-empty: SVG <text> is redrawn in this Hershey single-stroke font (core/text: a font
+  // name such as "futural", or a .jhf path) instead of the outlines of its own font. Empty:
+  // the outlines, as Qt SVG draws them (docs/svg-import.md).
+  std::string textFont;
 
   // Process isolation (importSvgFile only).
   Isolation isolation = Isolation::WorkerProcess;

@@ -5,6 +5,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QPainter>
+#include <QRegularExpression>
 #include <QSvgRenderer>
 #include <QXmlStreamReader>
 
@@ -13,6 +14,7 @@
 #include <limits>
 
 #include "capture_engine.hpp"
+#include "core/text/hershey_font.hpp"
 #include "clip.hpp"
 #include "fast_import.hpp"
 #include "import_pipeline.hpp"
@@ -21,6 +23,7 @@
 #include "svg_sanitize.hpp"
 #include "svg_units.hpp"
 #include "svgz.hpp"
+#include "svg_text_redraw.hpp"
 
 namespace fivebar::svg {
 
@@ -59,6 +62,9 @@ std::string validateOptions(const ImportOptions& o) {
   if (!std::isfinite(o.forcedWidthMm) || o.forcedWidthMm < 0.0) return "forcedWidthMm must be >= 0";
   if (!std::isfinite(o.forcedHeightMm) || o.forcedHeightMm < 0.0) return "forcedHeightMm must be >= 0";
   if (!positive(o.maxCoordinateMm)) return "maxCoordinateMm must be a positive number";
+  if (!o.textFont.empty())
+    if (const text::FontLoad load = text::loadFont(o.textFont); !load.font)
+      return "text font: " + text::toString(load.error);
   return {};
 }
 
@@ -254,6 +260,27 @@ Capture captureGeneral(QIODevice& input, const QString& source, const ImportOpti
   return capture;
 }
 
+ImportOptions withoutTextFont(ImportOptions o) {
+  o.textFont.clear();
+  return o;
+}
+
+// The document with its <text> redrawn in o.textFont (svg_text_redraw.hpp). Documents in UTF-8
+// (or ASCII) only: another declared encoding keeps its text as outlines, with a warning.
+QByteArray redrawText(const QByteArray& data, const ImportOptions& o, std::vector<Message>& warnings) {
+  static const QRegularExpression declaredEncoding(QStringLiteral("^\\s*<\\?xml[^>]*encoding\\s*=\\s*[\"']([^\"']+)"));
+  const QRegularExpressionMatch m = declaredEncoding.match(QString::fromLatin1(data.left(200)));
+  if (m.hasMatch() && m.captured(1).compare(QStringLiteral("utf-8"), Qt::CaseInsensitive) != 0 &&
+      m.captured(1).compare(QStringLiteral("us-ascii"), Qt::CaseInsensitive) != 0) {
+    warnings.push_back(FB_TR("ImportWarning", "text in a single-stroke font: only UTF-8 documents, this one is "
+                                              "%1: its text is drawn as outlines").arg(m.captured(1).toStdString()));
+    return data;
+  }
+  text::FontLoad load = text::loadFont(o.textFont);
+  if (!load.font) return data;  // validateOptions refused it already
+  return redrawTextInFont(QString::fromUtf8(data), *load.font, o.dpi, warnings).toUtf8();
+}
+
 // The direct reader when the document is in its subset, else the general path.
 Capture captureBytes(const QByteArray& data, const QString& source, const ImportOptions& o,
                      const ProgressFn& progress, bool allowDirect, const RunSink& sink) {
@@ -265,6 +292,14 @@ Capture captureBytes(const QByteArray& data, const QString& source, const Import
       return failed(ImportStatus::FileError, source, FB_TR("ImportError", "compressed SVG (gzip): %1").arg(bad));
     if (plain.isEmpty()) return failed(ImportStatus::FileError, source, FB_TR("ImportError", "the compressed file is empty"));
     return captureBytes(plain, source, o, progress, allowDirect, sink);
+  }
+  if (!o.textFont.empty() && data.contains("<text")) {
+    // <text> redrawn in the single-stroke font before anything else reads the document.
+    std::vector<Message> textWarnings;
+    QByteArray redrawn = redrawText(data, o, textWarnings);
+    Capture capture = captureBytes(redrawn, source, withoutTextFont(o), progress, allowDirect, sink);
+    capture.warnings.insert(capture.warnings.begin(), textWarnings.begin(), textWarnings.end());
+    return capture;
   }
   if (allowDirect) {
     DirectCapture direct;

@@ -407,6 +407,7 @@ QStringList workerArguments(const QString& path, const ImportOptions& o) {
           QStringLiteral("--outline-fills"), o.outlineFills ? QStringLiteral("1") : QStringLiteral("0"),
           QStringLiteral("--dashes"), o.dashes == DashMode::Solid ? QStringLiteral("solid") : QStringLiteral("dashed"),
           QStringLiteral("--layers"), QString::fromLatin1(mode),
+          QStringLiteral("--text-font"), QString::fromStdString(o.textFont),
           QStringLiteral("--"), path};
 }
 
@@ -433,6 +434,7 @@ QString parseWorkerArguments(const QStringList& arguments, QString& path, Import
       else if (value == u"solid") o.dashes = DashMode::Solid;
       else ok = false;
     }
+    else if (key == u"--text-font") o.textFont = value.toStdString();
     else if (key == u"--max-points") o.maxPoints = static_cast<std::size_t>(value.toULongLong(&ok));
     else if (key == QLatin1StringView(kResultFdOption) && resultFd) {
       *resultFd = value.toInt(&ok);

@@ -121,7 +121,7 @@ std::string projectToJson(const Project& p) {
   for (const ProjectLayer& l : p.layers)
     layers.push_back({{"id", l.id}, {"name", l.name}, {"visible", l.visible}, {"tool", toolJson(l.tool)},
                       {"fill", fillJson(l)}});
-  const json doc = {
+  json doc = {
       {"format", kProjectFormatName},
       {"version", kProjectFormatVersion},
       {"drawing", {{"name", p.drawingName},
@@ -138,6 +138,7 @@ std::string projectToJson(const Project& p) {
       {"tolerance_mm", p.toleranceMm},
       {"machine", json::parse(toJson(p.profile))},
   };
+  if (!p.textFont.empty()) doc["drawing"]["text_font"] = p.textFont;  // absent: outlines
   return doc.dump(2) + "\n";
 }
 
@@ -181,6 +182,7 @@ ProjectLoad projectFromJson(const std::string& text, const std::string& sourceNa
     d.string("svg", p.drawingSvg, true);
     std::string dashes = "dashed";
     d.string("dashes", dashes);
+    d.string("text_font", p.textFont);
     d.finish();
     if (dashes != "dashed" && dashes != "solid")
       out.issues.push_back({"drawing.dashes", "drawing.dashes must be \"dashed\" or \"solid\", not \"" + dashes + "\""});

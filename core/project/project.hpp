@@ -35,6 +35,7 @@ struct Project {
   std::string drawingSvg;              // its SVG text
   double flatteningToleranceMm = 0.0;  // the import tolerance the drawing was flattened with
   bool solidDashes = false;            // dashed strokes drawn whole ("dashes": "solid"; default dashed)
+  std::string textFont;                // <text> redrawn in this Hershey font ("text_font"); empty: outlines
   Placement placement;
   std::vector<ProjectLayer> layers;    // in plotting order
   std::optional<WorkingMode> mode;     // nullopt: Auto

@@ -275,6 +275,20 @@ TEST(OneTruth, AProjectWithoutDashesDrawsThemDashed) {
   EXPECT_FALSE(load.project->solidDashes);
 }
 
+// The single-stroke font SVG text is redrawn in (docs/text.md) is the project's; absent, the
+// text keeps its outlines, and a project without one writes no "text_font".
+TEST(OneTruth, AProjectKeepsTheFontItsTextIsRedrawnIn) {
+  Project p = sampleProject();
+  EXPECT_EQ(projectToJson(p).find("text_font"), std::string::npos);
+  const ProjectLoad plain = projectFromJson(projectToJson(p), "plain.fivebar");
+  ASSERT_TRUE(plain.project);
+  EXPECT_EQ(plain.project->textFont, "");
+  p.textFont = "scripts";
+  const ProjectLoad load = projectFromJson(projectToJson(p), "text.fivebar");
+  ASSERT_TRUE(load.project) << load.issues.front().message;
+  EXPECT_EQ(load.project->textFont, "scripts");
+}
+
 // A layer's fill is applied where the drawing is placed: hatch lines for that layer only.
 TEST(OneTruth, EachLayerIsPlacedWithItsOwnFill) {
   Drawing d;

@@ -167,6 +167,7 @@ TEST(WireFormat, WorkerArgumentsRoundTrip) {
   in.outlineFills = false;
   in.layerMode = LayerMode::ByColor;
   in.maxPoints = 12345;
+  in.textFont = "/fonts/my font.jhf";
   QString path;
   ImportOptions out;
   EXPECT_EQ(parseWorkerArguments(workerArguments(QStringLiteral("x y.svg"), in), path, out), QString());
@@ -177,6 +178,7 @@ TEST(WireFormat, WorkerArgumentsRoundTrip) {
   EXPECT_FALSE(out.outlineFills);
   EXPECT_EQ(out.layerMode, LayerMode::ByColor);
   EXPECT_EQ(out.maxPoints, 12345u);
+  EXPECT_EQ(out.textFont, "/fonts/my font.jhf");
   EXPECT_FALSE(parseWorkerArguments({QStringLiteral("--bogus"), QStringLiteral("1")}, path, out).isEmpty());
   int fd = -1;
   const QStringList withFd = QStringList{QString::fromLatin1(kResultFdOption), QStringLiteral("7")} +

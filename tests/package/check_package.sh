@@ -25,7 +25,7 @@ echo "built $(basename "$deb") ($(du -k "$deb" | cut -f1) kB)"
 [ "$(dpkg-deb -f "$deb" Package)" = fivebar-studio ] || fail "Package field"
 [ "$(dpkg-deb -f "$deb" Version)" = "$version" ] || fail "Version field: $(dpkg-deb -f "$deb" Version)"
 depends=$(dpkg-deb -f "$deb" Depends)
-for lib in libc6 libstdc++6 libqt6widgets6 libqt6svg6 libqt6serialport6 libnlopt0 qt6-qpa-plugins; do
+for lib in libc6 libstdc++6 libqt6widgets6 libqt6svg6 libqt6serialport6 libnlopt0 qt6-qpa-plugins hershey-fonts-data; do
   grep -q "\b$lib\b" <<<"$depends" || fail "Depends lacks $lib: $depends"
 done
 

@@ -99,7 +99,7 @@ void ImportController::openData(const QByteArray& svg, const QString& name) {
           ImportOutcome out;
           PlanOptions o = options;
           o.cancel = cancel;
-          out.job = job::loadDrawing(job::DrawingSource{svg, name, fill, hatch, maxPoints, solid}, profile, o, out.error);
+          out.job = job::loadDrawing(job::DrawingSource{svg, name, fill, hatch, maxPoints, solid, {}}, profile, o, out.error);
           if (out.job) out.job->options.cancel = nullptr;
           return out;
         },
