@@ -172,8 +172,9 @@ QString RunController::jobPath() const {
 bool RunController::running() const { return stream_ != nullptr && !finished_; }
 
 bool RunController::canStart() const {
-  return session_.isConnected() && !running() && session_.state() == grbl::MachineState::Idle &&
-         inputs_.plannedJob() != nullptr;
+  // Not while another controller's job (the calibration pattern's, or the document's) runs.
+  return session_.isConnected() && !running() && !session_.jobActive() &&
+         session_.state() == grbl::MachineState::Idle && inputs_.plannedJob() != nullptr;
 }
 
 const PlannedJob* RunController::plannedJob() const {

@@ -2557,80 +2557,16 @@ Anhalten, stoppen und beenden: Die Maschine hält sauber an und der Fortschritt 
         <translation> s</translation>
     </message>
     <message>
-        <source>Driving link a1</source>
-        <translation>Antriebsglied a1</translation>
-    </message>
-    <message>
-        <source>Floating link b1</source>
-        <translation>Koppelglied b1</translation>
-    </message>
-    <message>
-        <source>Driving link a2</source>
-        <translation>Antriebsglied a2</translation>
-    </message>
-    <message>
-        <source>Floating link b2</source>
-        <translation>Koppelglied b2</translation>
-    </message>
-    <message>
-        <source>Motor distance w</source>
-        <translation>Motorabstand w</translation>
-    </message>
-    <message>
         <source>Limit the motor angles</source>
         <translation>Motorwinkel begrenzen</translation>
-    </message>
-    <message>
-        <source>θ1 minimum</source>
-        <translation>θ1 Minimum</translation>
-    </message>
-    <message>
-        <source>θ1 maximum</source>
-        <translation>θ1 Maximum</translation>
-    </message>
-    <message>
-        <source>θ2 minimum</source>
-        <translation>θ2 Minimum</translation>
-    </message>
-    <message>
-        <source>θ2 maximum</source>
-        <translation>θ2 Maximum</translation>
-    </message>
-    <message>
-        <source>Motor 1 steps per degree</source>
-        <translation>Motor 1 Schritte pro Grad</translation>
-    </message>
-    <message>
-        <source>Motor 2 steps per degree</source>
-        <translation>Motor 2 Schritte pro Grad</translation>
-    </message>
-    <message>
-        <source>Motor 1 maximum speed</source>
-        <translation>Motor 1 Höchstgeschwindigkeit</translation>
     </message>
     <message>
         <source> °/min</source>
         <translation> °/min</translation>
     </message>
     <message>
-        <source>Motor 2 maximum speed</source>
-        <translation>Motor 2 Höchstgeschwindigkeit</translation>
-    </message>
-    <message>
-        <source>Motor 1 acceleration</source>
-        <translation>Motor 1 Beschleunigung</translation>
-    </message>
-    <message>
         <source> °/s²</source>
         <translation> °/s²</translation>
-    </message>
-    <message>
-        <source>Motor 2 acceleration</source>
-        <translation>Motor 2 Beschleunigung</translation>
-    </message>
-    <message>
-        <source>Junction deviation</source>
-        <translation>Eckenabweichung</translation>
     </message>
     <message>
         <source>Pen servo (M3 S / M5)</source>
@@ -2645,40 +2581,8 @@ Anhalten, stoppen und beenden: Die Maschine hält sauber an und der Fortschritt 
         <translation>Laser (M4 S / M5)</translation>
     </message>
     <message>
-        <source>Pen up S value</source>
-        <translation>S-Wert Stift hoch</translation>
-    </message>
-    <message>
-        <source>Pen down S value</source>
-        <translation>S-Wert Stift ab</translation>
-    </message>
-    <message>
-        <source>Pen up delay</source>
-        <translation>Wartezeit Stift hoch</translation>
-    </message>
-    <message>
-        <source>Pen down delay</source>
-        <translation>Wartezeit Stift ab</translation>
-    </message>
-    <message>
-        <source>Z up</source>
-        <translation>Z oben</translation>
-    </message>
-    <message>
-        <source>Z down</source>
-        <translation>Z unten</translation>
-    </message>
-    <message>
-        <source>Z feed</source>
-        <translation>Z-Vorschub</translation>
-    </message>
-    <message>
         <source> mm/min</source>
         <translation> mm/min</translation>
-    </message>
-    <message>
-        <source>Laser power S value</source>
-        <translation>S-Wert Laserleistung</translation>
     </message>
     <message>
         <source>Working mode (built)</source>
@@ -2689,40 +2593,12 @@ Anhalten, stoppen und beenden: Die Maschine hält sauber an und der Fortschritt 
         <translation>Montagemodus</translation>
     </message>
     <message>
-        <source>Drawing speed</source>
-        <translation>Zeichengeschwindigkeit</translation>
-    </message>
-    <message>
         <source> mm/s</source>
         <translation> mm/s</translation>
     </message>
     <message>
-        <source>Travel speed</source>
-        <translation>Verfahrgeschwindigkeit</translation>
-    </message>
-    <message>
-        <source>Type II singularity margin</source>
-        <translation>Abstand zur Typ-II-Singularität</translation>
-    </message>
-    <message>
-        <source>Type I singularity margin</source>
-        <translation>Abstand zur Typ-I-Singularität</translation>
-    </message>
-    <message>
-        <source>Baud rate</source>
-        <translation>Baudrate</translation>
-    </message>
-    <message>
         <source>The machine has homing switches ($H)</source>
         <translation>Die Maschine hat Referenzschalter ($H)</translation>
-    </message>
-    <message>
-        <source>Home θ1</source>
-        <translation>Ausgangspose θ1</translation>
-    </message>
-    <message>
-        <source>Home θ2</source>
-        <translation>Ausgangspose θ2</translation>
     </message>
     <message>
         <source>The profile is not applied until these problems are fixed.</source>
@@ -2767,6 +2643,182 @@ Anhalten, stoppen und beenden: Die Maschine hält sauber an und der Fortschritt 
         <translation> Baud</translation>
     </message>
 </context>
+<context>
+    <name>ProfileField</name>
+    <message>
+        <source>Driving link a1</source>
+        <translation>Antriebsglied a1</translation>
+    </message>
+    <message>
+        <source>Floating link b1</source>
+        <translation>Koppelglied b1</translation>
+    </message>
+    <message>
+        <source>Driving link a2</source>
+        <translation>Antriebsglied a2</translation>
+    </message>
+    <message>
+        <source>Floating link b2</source>
+        <translation>Koppelglied b2</translation>
+    </message>
+    <message>
+        <source>Motor distance w</source>
+        <translation>Motorabstand w</translation>
+    </message>
+    <message>
+        <source>θ1 minimum</source>
+        <translation>θ1 Minimum</translation>
+    </message>
+    <message>
+        <source>θ1 maximum</source>
+        <translation>θ1 Maximum</translation>
+    </message>
+    <message>
+        <source>θ2 minimum</source>
+        <translation>θ2 Minimum</translation>
+    </message>
+    <message>
+        <source>θ2 maximum</source>
+        <translation>θ2 Maximum</translation>
+    </message>
+    <message>
+        <source>Motor 1 steps per degree</source>
+        <translation>Motor 1 Schritte pro Grad</translation>
+    </message>
+    <message>
+        <source>Motor 2 steps per degree</source>
+        <translation>Motor 2 Schritte pro Grad</translation>
+    </message>
+    <message>
+        <source>Motor 1 maximum speed</source>
+        <translation>Motor 1 Höchstgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Motor 2 maximum speed</source>
+        <translation>Motor 2 Höchstgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Motor 1 acceleration</source>
+        <translation>Motor 1 Beschleunigung</translation>
+    </message>
+    <message>
+        <source>Motor 2 acceleration</source>
+        <translation>Motor 2 Beschleunigung</translation>
+    </message>
+    <message>
+        <source>Junction deviation</source>
+        <translation>Eckenabweichung</translation>
+    </message>
+    <message>
+        <source>Pen up S value</source>
+        <translation>S-Wert Stift hoch</translation>
+    </message>
+    <message>
+        <source>Pen down S value</source>
+        <translation>S-Wert Stift ab</translation>
+    </message>
+    <message>
+        <source>Pen up delay</source>
+        <translation>Wartezeit Stift hoch</translation>
+    </message>
+    <message>
+        <source>Pen down delay</source>
+        <translation>Wartezeit Stift ab</translation>
+    </message>
+    <message>
+        <source>Z up</source>
+        <translation>Z oben</translation>
+    </message>
+    <message>
+        <source>Z down</source>
+        <translation>Z unten</translation>
+    </message>
+    <message>
+        <source>Z feed</source>
+        <translation>Z-Vorschub</translation>
+    </message>
+    <message>
+        <source>Laser power S value</source>
+        <translation>S-Wert Laserleistung</translation>
+    </message>
+    <message>
+        <source>Drawing speed</source>
+        <translation>Zeichengeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Travel speed</source>
+        <translation>Verfahrgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Type II singularity margin</source>
+        <translation>Abstand zur Typ-II-Singularität</translation>
+    </message>
+    <message>
+        <source>Type I singularity margin</source>
+        <translation>Abstand zur Typ-I-Singularität</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>Baudrate</translation>
+    </message>
+    <message>
+        <source>Home θ1</source>
+        <translation>Ausgangspose θ1</translation>
+    </message>
+    <message>
+        <source>Home θ2</source>
+        <translation>Ausgangspose θ2</translation>
+    </message>
+    <message>
+        <source>Calibration format version</source>
+        <translation>Version des Kalibrierformats</translation>
+    </message>
+    <message>
+        <source>Held-out marks</source>
+        <translation>Zurückgehaltene Marken</translation>
+    </message>
+    <message>
+        <source>Largest residual of the fit</source>
+        <translation>Größtes Residuum der Anpassung</translation>
+    </message>
+    <message>
+        <source>Marks used by the fit</source>
+        <translation>Von der Anpassung genutzte Marken</translation>
+    </message>
+    <message>
+        <source>Motor 1 backlash</source>
+        <translation>Spiel Motor 1</translation>
+    </message>
+    <message>
+        <source>Motor 1 zero offset</source>
+        <translation>Nullpunktversatz Motor 1</translation>
+    </message>
+    <message>
+        <source>Motor 2 backlash</source>
+        <translation>Spiel Motor 2</translation>
+    </message>
+    <message>
+        <source>Motor 2 zero offset</source>
+        <translation>Nullpunktversatz Motor 2</translation>
+    </message>
+    <message>
+        <source>Pen offset across b1</source>
+        <translation>Stiftversatz quer zu b1</translation>
+    </message>
+    <message>
+        <source>Pen offset along b1</source>
+        <translation>Stiftversatz entlang b1</translation>
+    </message>
+    <message>
+        <source>RMS error on held-out marks</source>
+        <translation>RMS-Fehler der zurückgehaltenen Marken</translation>
+    </message>
+    <message>
+        <source>RMS residual of the fit</source>
+        <translation>RMS-Residuum der Anpassung</translation>
+    </message>
+</context>
+
 <context>
     <name>fivebar::session::RunController</name>
     <message>
@@ -3396,6 +3448,14 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
 <context>
     <name>fivebar::widgets::calibration::CalibrationWizard</name>
     <message>
+        <source>The pattern is already being drawn.</source>
+        <translation>Das Muster wird bereits gezeichnet.</translation>
+    </message>
+    <message>
+        <source>Connect a machine (or the simulated machine) in the Machine panel first, and let any running job finish.</source>
+        <translation>Verbinden Sie zuerst eine Maschine (oder die simulierte Maschine) in der Maschinen-Leiste, und lassen Sie einen laufenden Auftrag zu Ende laufen.</translation>
+    </message>
+    <message>
         <source>Calibrate the machine</source>
         <translation>Die Maschine kalibrieren</translation>
     </message>
@@ -3873,25 +3933,6 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
     <message>
         <source>No machine is built exactly as drawn: a link cut half a millimetre long or a motor zero set by eye bends every drawing. The studio draws a &lt;b&gt;pattern&lt;/b&gt; of numbered marks, you measure where they really landed, and a fit finds the machine's true link lengths and motor zeros.&lt;br&gt;&lt;br&gt;&lt;b&gt;Calibration marks&lt;/b&gt;: numbered dots in rings spread over the whole working area, plus rows that show the slack (backlash) of each motor. Use these to calibrate.&lt;br&gt;&lt;b&gt;Accuracy pattern&lt;/b&gt; (Hoang): ten parallel lines, 40 mm long and 10 mm apart, to judge straightness and length before and after: you measure each line's length and straightness with a ruler in the wizard's last step.</source>
         <translation>Keine Maschine ist genau so gebaut wie gezeichnet: ein Glied einen halben Millimeter zu lang oder ein Motor-Nullpunkt nach Augenmaß verbiegt jede Zeichnung. Das Studio zeichnet ein &lt;b&gt;Muster&lt;/b&gt; aus nummerierten Marken, Sie messen, wo sie wirklich gelandet sind, und ein Fit findet die wahren Gliederlängen und Motor-Nullpunkte der Maschine.&lt;br&gt;&lt;br&gt;&lt;b&gt;Kalibriermarken&lt;/b&gt;: nummerierte Punkte in Ringen über den ganzen Arbeitsbereich verteilt, dazu Reihen, die das Spiel jedes Motors zeigen. Damit kalibrieren Sie.&lt;br&gt;&lt;b&gt;Genauigkeitsmuster&lt;/b&gt; (Hoang): zehn parallele Linien, 40 mm lang und 10 mm auseinander, um Geradheit und Länge vorher und nachher zu beurteilen: Sie messen Länge und Geradheit jeder Linie mit einem Lineal im letzten Schritt des Assistenten.</translation>
-    </message>
-</context>
-<context>
-    <name>fivebar::widgets::calibration::PatternSender</name>
-    <message>
-        <source>The machine was disconnected while drawing the pattern.</source>
-        <translation>Die Maschine wurde getrennt, während das Muster gezeichnet wurde.</translation>
-    </message>
-    <message>
-        <source>The pattern is already being drawn.</source>
-        <translation>Das Muster wird bereits gezeichnet.</translation>
-    </message>
-    <message>
-        <source>Connect a machine (or the simulated machine) in the Machine panel first, and let any running job finish.</source>
-        <translation>Verbinden Sie zuerst eine Maschine (oder die simulierte Maschine) in der Maschinen-Leiste, und lassen Sie einen laufenden Auftrag zu Ende laufen.</translation>
-    </message>
-    <message>
-        <source>Cannot write %1: %2</source>
-        <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
 </context>
 <context>

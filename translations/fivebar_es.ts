@@ -2557,80 +2557,16 @@ Pausar, detener y salir: la máquina se detiene limpiamente y el progreso se gua
         <translation> s</translation>
     </message>
     <message>
-        <source>Driving link a1</source>
-        <translation>Brazo motor a1</translation>
-    </message>
-    <message>
-        <source>Floating link b1</source>
-        <translation>Brazo libre b1</translation>
-    </message>
-    <message>
-        <source>Driving link a2</source>
-        <translation>Brazo motor a2</translation>
-    </message>
-    <message>
-        <source>Floating link b2</source>
-        <translation>Brazo libre b2</translation>
-    </message>
-    <message>
-        <source>Motor distance w</source>
-        <translation>Distancia entre motores w</translation>
-    </message>
-    <message>
         <source>Limit the motor angles</source>
         <translation>Limitar los ángulos de los motores</translation>
-    </message>
-    <message>
-        <source>θ1 minimum</source>
-        <translation>θ1 mínimo</translation>
-    </message>
-    <message>
-        <source>θ1 maximum</source>
-        <translation>θ1 máximo</translation>
-    </message>
-    <message>
-        <source>θ2 minimum</source>
-        <translation>θ2 mínimo</translation>
-    </message>
-    <message>
-        <source>θ2 maximum</source>
-        <translation>θ2 máximo</translation>
-    </message>
-    <message>
-        <source>Motor 1 steps per degree</source>
-        <translation>Motor 1: pasos por grado</translation>
-    </message>
-    <message>
-        <source>Motor 2 steps per degree</source>
-        <translation>Motor 2: pasos por grado</translation>
-    </message>
-    <message>
-        <source>Motor 1 maximum speed</source>
-        <translation>Motor 1: velocidad máxima</translation>
     </message>
     <message>
         <source> °/min</source>
         <translation> °/min</translation>
     </message>
     <message>
-        <source>Motor 2 maximum speed</source>
-        <translation>Motor 2: velocidad máxima</translation>
-    </message>
-    <message>
-        <source>Motor 1 acceleration</source>
-        <translation>Motor 1: aceleración</translation>
-    </message>
-    <message>
         <source> °/s²</source>
         <translation> °/s²</translation>
-    </message>
-    <message>
-        <source>Motor 2 acceleration</source>
-        <translation>Motor 2: aceleración</translation>
-    </message>
-    <message>
-        <source>Junction deviation</source>
-        <translation>Desviación de unión</translation>
     </message>
     <message>
         <source>Pen servo (M3 S / M5)</source>
@@ -2645,40 +2581,8 @@ Pausar, detener y salir: la máquina se detiene limpiamente y el progreso se gua
         <translation>Láser (M4 S / M5)</translation>
     </message>
     <message>
-        <source>Pen up S value</source>
-        <translation>Valor S pluma subida</translation>
-    </message>
-    <message>
-        <source>Pen down S value</source>
-        <translation>Valor S pluma bajada</translation>
-    </message>
-    <message>
-        <source>Pen up delay</source>
-        <translation>Espera pluma subida</translation>
-    </message>
-    <message>
-        <source>Pen down delay</source>
-        <translation>Espera pluma bajada</translation>
-    </message>
-    <message>
-        <source>Z up</source>
-        <translation>Z arriba</translation>
-    </message>
-    <message>
-        <source>Z down</source>
-        <translation>Z abajo</translation>
-    </message>
-    <message>
-        <source>Z feed</source>
-        <translation>Avance Z</translation>
-    </message>
-    <message>
         <source> mm/min</source>
         <translation> mm/min</translation>
-    </message>
-    <message>
-        <source>Laser power S value</source>
-        <translation>Valor S de potencia láser</translation>
     </message>
     <message>
         <source>Working mode (built)</source>
@@ -2689,40 +2593,12 @@ Pausar, detener y salir: la máquina se detiene limpiamente y el progreso se gua
         <translation>Modo de ensamblaje</translation>
     </message>
     <message>
-        <source>Drawing speed</source>
-        <translation>Velocidad de dibujo</translation>
-    </message>
-    <message>
         <source> mm/s</source>
         <translation> mm/s</translation>
     </message>
     <message>
-        <source>Travel speed</source>
-        <translation>Velocidad de desplazamiento</translation>
-    </message>
-    <message>
-        <source>Type II singularity margin</source>
-        <translation>Margen de singularidad de tipo II</translation>
-    </message>
-    <message>
-        <source>Type I singularity margin</source>
-        <translation>Margen de singularidad de tipo I</translation>
-    </message>
-    <message>
-        <source>Baud rate</source>
-        <translation>Velocidad en baudios</translation>
-    </message>
-    <message>
         <source>The machine has homing switches ($H)</source>
         <translation>Con finales de carrera de origen ($H)</translation>
-    </message>
-    <message>
-        <source>Home θ1</source>
-        <translation>Origen θ1</translation>
-    </message>
-    <message>
-        <source>Home θ2</source>
-        <translation>Origen θ2</translation>
     </message>
     <message>
         <source>The profile is not applied until these problems are fixed.</source>
@@ -2767,6 +2643,182 @@ Pausar, detener y salir: la máquina se detiene limpiamente y el progreso se gua
         <translation> baudios</translation>
     </message>
 </context>
+<context>
+    <name>ProfileField</name>
+    <message>
+        <source>Driving link a1</source>
+        <translation>Brazo motor a1</translation>
+    </message>
+    <message>
+        <source>Floating link b1</source>
+        <translation>Brazo libre b1</translation>
+    </message>
+    <message>
+        <source>Driving link a2</source>
+        <translation>Brazo motor a2</translation>
+    </message>
+    <message>
+        <source>Floating link b2</source>
+        <translation>Brazo libre b2</translation>
+    </message>
+    <message>
+        <source>Motor distance w</source>
+        <translation>Distancia entre motores w</translation>
+    </message>
+    <message>
+        <source>θ1 minimum</source>
+        <translation>θ1 mínimo</translation>
+    </message>
+    <message>
+        <source>θ1 maximum</source>
+        <translation>θ1 máximo</translation>
+    </message>
+    <message>
+        <source>θ2 minimum</source>
+        <translation>θ2 mínimo</translation>
+    </message>
+    <message>
+        <source>θ2 maximum</source>
+        <translation>θ2 máximo</translation>
+    </message>
+    <message>
+        <source>Motor 1 steps per degree</source>
+        <translation>Motor 1: pasos por grado</translation>
+    </message>
+    <message>
+        <source>Motor 2 steps per degree</source>
+        <translation>Motor 2: pasos por grado</translation>
+    </message>
+    <message>
+        <source>Motor 1 maximum speed</source>
+        <translation>Motor 1: velocidad máxima</translation>
+    </message>
+    <message>
+        <source>Motor 2 maximum speed</source>
+        <translation>Motor 2: velocidad máxima</translation>
+    </message>
+    <message>
+        <source>Motor 1 acceleration</source>
+        <translation>Motor 1: aceleración</translation>
+    </message>
+    <message>
+        <source>Motor 2 acceleration</source>
+        <translation>Motor 2: aceleración</translation>
+    </message>
+    <message>
+        <source>Junction deviation</source>
+        <translation>Desviación de unión</translation>
+    </message>
+    <message>
+        <source>Pen up S value</source>
+        <translation>Valor S pluma subida</translation>
+    </message>
+    <message>
+        <source>Pen down S value</source>
+        <translation>Valor S pluma bajada</translation>
+    </message>
+    <message>
+        <source>Pen up delay</source>
+        <translation>Espera pluma subida</translation>
+    </message>
+    <message>
+        <source>Pen down delay</source>
+        <translation>Espera pluma bajada</translation>
+    </message>
+    <message>
+        <source>Z up</source>
+        <translation>Z arriba</translation>
+    </message>
+    <message>
+        <source>Z down</source>
+        <translation>Z abajo</translation>
+    </message>
+    <message>
+        <source>Z feed</source>
+        <translation>Avance Z</translation>
+    </message>
+    <message>
+        <source>Laser power S value</source>
+        <translation>Valor S de potencia láser</translation>
+    </message>
+    <message>
+        <source>Drawing speed</source>
+        <translation>Velocidad de dibujo</translation>
+    </message>
+    <message>
+        <source>Travel speed</source>
+        <translation>Velocidad de desplazamiento</translation>
+    </message>
+    <message>
+        <source>Type II singularity margin</source>
+        <translation>Margen de singularidad de tipo II</translation>
+    </message>
+    <message>
+        <source>Type I singularity margin</source>
+        <translation>Margen de singularidad de tipo I</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>Velocidad en baudios</translation>
+    </message>
+    <message>
+        <source>Home θ1</source>
+        <translation>Origen θ1</translation>
+    </message>
+    <message>
+        <source>Home θ2</source>
+        <translation>Origen θ2</translation>
+    </message>
+    <message>
+        <source>Calibration format version</source>
+        <translation>Versión del formato de calibración</translation>
+    </message>
+    <message>
+        <source>Held-out marks</source>
+        <translation>Marcas reservadas</translation>
+    </message>
+    <message>
+        <source>Largest residual of the fit</source>
+        <translation>Mayor residuo del ajuste</translation>
+    </message>
+    <message>
+        <source>Marks used by the fit</source>
+        <translation>Marcas usadas por el ajuste</translation>
+    </message>
+    <message>
+        <source>Motor 1 backlash</source>
+        <translation>Holgura del motor 1</translation>
+    </message>
+    <message>
+        <source>Motor 1 zero offset</source>
+        <translation>Desfase del cero del motor 1</translation>
+    </message>
+    <message>
+        <source>Motor 2 backlash</source>
+        <translation>Holgura del motor 2</translation>
+    </message>
+    <message>
+        <source>Motor 2 zero offset</source>
+        <translation>Desfase del cero del motor 2</translation>
+    </message>
+    <message>
+        <source>Pen offset across b1</source>
+        <translation>Desplazamiento del bolígrafo transversal a b1</translation>
+    </message>
+    <message>
+        <source>Pen offset along b1</source>
+        <translation>Desplazamiento del bolígrafo a lo largo de b1</translation>
+    </message>
+    <message>
+        <source>RMS error on held-out marks</source>
+        <translation>Error RMS en las marcas reservadas</translation>
+    </message>
+    <message>
+        <source>RMS residual of the fit</source>
+        <translation>Residuo RMS del ajuste</translation>
+    </message>
+</context>
+
 <context>
     <name>fivebar::session::RunController</name>
     <message>
@@ -3396,6 +3448,14 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
 <context>
     <name>fivebar::widgets::calibration::CalibrationWizard</name>
     <message>
+        <source>The pattern is already being drawn.</source>
+        <translation>El patrón ya se está dibujando.</translation>
+    </message>
+    <message>
+        <source>Connect a machine (or the simulated machine) in the Machine panel first, and let any running job finish.</source>
+        <translation>Conecte primero una máquina (o la máquina simulada) en el panel Máquina y deje que termine cualquier trabajo en curso.</translation>
+    </message>
+    <message>
         <source>Calibrate the machine</source>
         <translation>Calibrar la máquina</translation>
     </message>
@@ -3873,25 +3933,6 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     <message>
         <source>No machine is built exactly as drawn: a link cut half a millimetre long or a motor zero set by eye bends every drawing. The studio draws a &lt;b&gt;pattern&lt;/b&gt; of numbered marks, you measure where they really landed, and a fit finds the machine's true link lengths and motor zeros.&lt;br&gt;&lt;br&gt;&lt;b&gt;Calibration marks&lt;/b&gt;: numbered dots in rings spread over the whole working area, plus rows that show the slack (backlash) of each motor. Use these to calibrate.&lt;br&gt;&lt;b&gt;Accuracy pattern&lt;/b&gt; (Hoang): ten parallel lines, 40 mm long and 10 mm apart, to judge straightness and length before and after: you measure each line's length and straightness with a ruler in the wizard's last step.</source>
         <translation>Ninguna máquina se construye exactamente como se dibujó: un eslabón cortado medio milímetro largo o un cero de motor ajustado a ojo deforma cada dibujo. El estudio dibuja un &lt;b&gt;patrón&lt;/b&gt; de marcas numeradas, usted mide dónde cayeron de verdad y un ajuste encuentra las longitudes reales de los eslabones y los ceros de los motores.&lt;br&gt;&lt;br&gt;&lt;b&gt;Marcas de calibración&lt;/b&gt;: puntos numerados en anillos repartidos por toda el área de trabajo, más filas que muestran la holgura de cada motor. Úselas para calibrar.&lt;br&gt;&lt;b&gt;Patrón de precisión&lt;/b&gt; (Hoang): diez líneas paralelas, de 40 mm de largo y a 10 mm entre sí, para juzgar la rectitud y la longitud antes y después: usted mide la longitud y la rectitud de cada línea con una regla en el último paso del asistente.</translation>
-    </message>
-</context>
-<context>
-    <name>fivebar::widgets::calibration::PatternSender</name>
-    <message>
-        <source>The machine was disconnected while drawing the pattern.</source>
-        <translation>La máquina se desconectó mientras dibujaba el patrón.</translation>
-    </message>
-    <message>
-        <source>The pattern is already being drawn.</source>
-        <translation>El patrón ya se está dibujando.</translation>
-    </message>
-    <message>
-        <source>Connect a machine (or the simulated machine) in the Machine panel first, and let any running job finish.</source>
-        <translation>Conecte primero una máquina (o la máquina simulada) en el panel Máquina y deje que termine cualquier trabajo en curso.</translation>
-    </message>
-    <message>
-        <source>Cannot write %1: %2</source>
-        <translation>No se puede escribir %1: %2</translation>
     </message>
 </context>
 <context>

@@ -2557,80 +2557,16 @@ Pause, arrêter et quitter : la machine s'arrête proprement et la progression e
         <translation> s</translation>
     </message>
     <message>
-        <source>Driving link a1</source>
-        <translation>Bras moteur a1</translation>
-    </message>
-    <message>
-        <source>Floating link b1</source>
-        <translation>Bras libre b1</translation>
-    </message>
-    <message>
-        <source>Driving link a2</source>
-        <translation>Bras moteur a2</translation>
-    </message>
-    <message>
-        <source>Floating link b2</source>
-        <translation>Bras libre b2</translation>
-    </message>
-    <message>
-        <source>Motor distance w</source>
-        <translation>Entraxe des moteurs w</translation>
-    </message>
-    <message>
         <source>Limit the motor angles</source>
         <translation>Limiter les angles des moteurs</translation>
-    </message>
-    <message>
-        <source>θ1 minimum</source>
-        <translation>θ1 minimum</translation>
-    </message>
-    <message>
-        <source>θ1 maximum</source>
-        <translation>θ1 maximum</translation>
-    </message>
-    <message>
-        <source>θ2 minimum</source>
-        <translation>θ2 minimum</translation>
-    </message>
-    <message>
-        <source>θ2 maximum</source>
-        <translation>θ2 maximum</translation>
-    </message>
-    <message>
-        <source>Motor 1 steps per degree</source>
-        <translation>Moteur 1 : pas par degré</translation>
-    </message>
-    <message>
-        <source>Motor 2 steps per degree</source>
-        <translation>Moteur 2 : pas par degré</translation>
-    </message>
-    <message>
-        <source>Motor 1 maximum speed</source>
-        <translation>Moteur 1 : vitesse maximale</translation>
     </message>
     <message>
         <source> °/min</source>
         <translation> °/min</translation>
     </message>
     <message>
-        <source>Motor 2 maximum speed</source>
-        <translation>Moteur 2 : vitesse maximale</translation>
-    </message>
-    <message>
-        <source>Motor 1 acceleration</source>
-        <translation>Moteur 1 : accélération</translation>
-    </message>
-    <message>
         <source> °/s²</source>
         <translation> °/s²</translation>
-    </message>
-    <message>
-        <source>Motor 2 acceleration</source>
-        <translation>Moteur 2 : accélération</translation>
-    </message>
-    <message>
-        <source>Junction deviation</source>
-        <translation>Déviation de jonction</translation>
     </message>
     <message>
         <source>Pen servo (M3 S / M5)</source>
@@ -2645,40 +2581,8 @@ Pause, arrêter et quitter : la machine s'arrête proprement et la progression e
         <translation>Laser (M4 S / M5)</translation>
     </message>
     <message>
-        <source>Pen up S value</source>
-        <translation>Valeur S stylo levé</translation>
-    </message>
-    <message>
-        <source>Pen down S value</source>
-        <translation>Valeur S stylo baissé</translation>
-    </message>
-    <message>
-        <source>Pen up delay</source>
-        <translation>Délai stylo levé</translation>
-    </message>
-    <message>
-        <source>Pen down delay</source>
-        <translation>Délai stylo baissé</translation>
-    </message>
-    <message>
-        <source>Z up</source>
-        <translation>Z haut</translation>
-    </message>
-    <message>
-        <source>Z down</source>
-        <translation>Z bas</translation>
-    </message>
-    <message>
-        <source>Z feed</source>
-        <translation>Avance Z</translation>
-    </message>
-    <message>
         <source> mm/min</source>
         <translation> mm/min</translation>
-    </message>
-    <message>
-        <source>Laser power S value</source>
-        <translation>Valeur S de puissance laser</translation>
     </message>
     <message>
         <source>Working mode (built)</source>
@@ -2689,40 +2593,12 @@ Pause, arrêter et quitter : la machine s'arrête proprement et la progression e
         <translation>Mode d'assemblage</translation>
     </message>
     <message>
-        <source>Drawing speed</source>
-        <translation>Vitesse de tracé</translation>
-    </message>
-    <message>
         <source> mm/s</source>
         <translation> mm/s</translation>
     </message>
     <message>
-        <source>Travel speed</source>
-        <translation>Vitesse de déplacement</translation>
-    </message>
-    <message>
-        <source>Type II singularity margin</source>
-        <translation>Marge de singularité de type II</translation>
-    </message>
-    <message>
-        <source>Type I singularity margin</source>
-        <translation>Marge de singularité de type I</translation>
-    </message>
-    <message>
-        <source>Baud rate</source>
-        <translation>Débit en bauds</translation>
-    </message>
-    <message>
         <source>The machine has homing switches ($H)</source>
         <translation>La machine a des capteurs d'origine ($H)</translation>
-    </message>
-    <message>
-        <source>Home θ1</source>
-        <translation>Origine θ1</translation>
-    </message>
-    <message>
-        <source>Home θ2</source>
-        <translation>Origine θ2</translation>
     </message>
     <message>
         <source>The profile is not applied until these problems are fixed.</source>
@@ -2767,6 +2643,182 @@ Pause, arrêter et quitter : la machine s'arrête proprement et la progression e
         <translation> bauds</translation>
     </message>
 </context>
+<context>
+    <name>ProfileField</name>
+    <message>
+        <source>Driving link a1</source>
+        <translation>Bras moteur a1</translation>
+    </message>
+    <message>
+        <source>Floating link b1</source>
+        <translation>Bras libre b1</translation>
+    </message>
+    <message>
+        <source>Driving link a2</source>
+        <translation>Bras moteur a2</translation>
+    </message>
+    <message>
+        <source>Floating link b2</source>
+        <translation>Bras libre b2</translation>
+    </message>
+    <message>
+        <source>Motor distance w</source>
+        <translation>Entraxe des moteurs w</translation>
+    </message>
+    <message>
+        <source>θ1 minimum</source>
+        <translation>θ1 minimum</translation>
+    </message>
+    <message>
+        <source>θ1 maximum</source>
+        <translation>θ1 maximum</translation>
+    </message>
+    <message>
+        <source>θ2 minimum</source>
+        <translation>θ2 minimum</translation>
+    </message>
+    <message>
+        <source>θ2 maximum</source>
+        <translation>θ2 maximum</translation>
+    </message>
+    <message>
+        <source>Motor 1 steps per degree</source>
+        <translation>Moteur 1 : pas par degré</translation>
+    </message>
+    <message>
+        <source>Motor 2 steps per degree</source>
+        <translation>Moteur 2 : pas par degré</translation>
+    </message>
+    <message>
+        <source>Motor 1 maximum speed</source>
+        <translation>Moteur 1 : vitesse maximale</translation>
+    </message>
+    <message>
+        <source>Motor 2 maximum speed</source>
+        <translation>Moteur 2 : vitesse maximale</translation>
+    </message>
+    <message>
+        <source>Motor 1 acceleration</source>
+        <translation>Moteur 1 : accélération</translation>
+    </message>
+    <message>
+        <source>Motor 2 acceleration</source>
+        <translation>Moteur 2 : accélération</translation>
+    </message>
+    <message>
+        <source>Junction deviation</source>
+        <translation>Déviation de jonction</translation>
+    </message>
+    <message>
+        <source>Pen up S value</source>
+        <translation>Valeur S stylo levé</translation>
+    </message>
+    <message>
+        <source>Pen down S value</source>
+        <translation>Valeur S stylo baissé</translation>
+    </message>
+    <message>
+        <source>Pen up delay</source>
+        <translation>Délai stylo levé</translation>
+    </message>
+    <message>
+        <source>Pen down delay</source>
+        <translation>Délai stylo baissé</translation>
+    </message>
+    <message>
+        <source>Z up</source>
+        <translation>Z haut</translation>
+    </message>
+    <message>
+        <source>Z down</source>
+        <translation>Z bas</translation>
+    </message>
+    <message>
+        <source>Z feed</source>
+        <translation>Avance Z</translation>
+    </message>
+    <message>
+        <source>Laser power S value</source>
+        <translation>Valeur S de puissance laser</translation>
+    </message>
+    <message>
+        <source>Drawing speed</source>
+        <translation>Vitesse de tracé</translation>
+    </message>
+    <message>
+        <source>Travel speed</source>
+        <translation>Vitesse de déplacement</translation>
+    </message>
+    <message>
+        <source>Type II singularity margin</source>
+        <translation>Marge de singularité de type II</translation>
+    </message>
+    <message>
+        <source>Type I singularity margin</source>
+        <translation>Marge de singularité de type I</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>Débit en bauds</translation>
+    </message>
+    <message>
+        <source>Home θ1</source>
+        <translation>Origine θ1</translation>
+    </message>
+    <message>
+        <source>Home θ2</source>
+        <translation>Origine θ2</translation>
+    </message>
+    <message>
+        <source>Calibration format version</source>
+        <translation>Version du format d'étalonnage</translation>
+    </message>
+    <message>
+        <source>Held-out marks</source>
+        <translation>Marques mises de côté</translation>
+    </message>
+    <message>
+        <source>Largest residual of the fit</source>
+        <translation>Plus grand résidu de l'ajustement</translation>
+    </message>
+    <message>
+        <source>Marks used by the fit</source>
+        <translation>Marques utilisées par l'ajustement</translation>
+    </message>
+    <message>
+        <source>Motor 1 backlash</source>
+        <translation>Jeu du moteur 1</translation>
+    </message>
+    <message>
+        <source>Motor 1 zero offset</source>
+        <translation>Décalage du zéro du moteur 1</translation>
+    </message>
+    <message>
+        <source>Motor 2 backlash</source>
+        <translation>Jeu du moteur 2</translation>
+    </message>
+    <message>
+        <source>Motor 2 zero offset</source>
+        <translation>Décalage du zéro du moteur 2</translation>
+    </message>
+    <message>
+        <source>Pen offset across b1</source>
+        <translation>Décalage du stylo en travers de b1</translation>
+    </message>
+    <message>
+        <source>Pen offset along b1</source>
+        <translation>Décalage du stylo le long de b1</translation>
+    </message>
+    <message>
+        <source>RMS error on held-out marks</source>
+        <translation>Erreur RMS sur les marques mises de côté</translation>
+    </message>
+    <message>
+        <source>RMS residual of the fit</source>
+        <translation>Résidu RMS de l'ajustement</translation>
+    </message>
+</context>
+
 <context>
     <name>fivebar::session::RunController</name>
     <message>
@@ -3396,6 +3448,14 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
 <context>
     <name>fivebar::widgets::calibration::CalibrationWizard</name>
     <message>
+        <source>The pattern is already being drawn.</source>
+        <translation>Le motif est déjà en cours de tracé.</translation>
+    </message>
+    <message>
+        <source>Connect a machine (or the simulated machine) in the Machine panel first, and let any running job finish.</source>
+        <translation>Connectez d'abord une machine (ou la machine simulée) dans le panneau Machine, et laissez finir toute tâche en cours.</translation>
+    </message>
+    <message>
         <source>Calibrate the machine</source>
         <translation>Étalonner la machine</translation>
     </message>
@@ -3873,25 +3933,6 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     <message>
         <source>No machine is built exactly as drawn: a link cut half a millimetre long or a motor zero set by eye bends every drawing. The studio draws a &lt;b&gt;pattern&lt;/b&gt; of numbered marks, you measure where they really landed, and a fit finds the machine's true link lengths and motor zeros.&lt;br&gt;&lt;br&gt;&lt;b&gt;Calibration marks&lt;/b&gt;: numbered dots in rings spread over the whole working area, plus rows that show the slack (backlash) of each motor. Use these to calibrate.&lt;br&gt;&lt;b&gt;Accuracy pattern&lt;/b&gt; (Hoang): ten parallel lines, 40 mm long and 10 mm apart, to judge straightness and length before and after: you measure each line's length and straightness with a ruler in the wizard's last step.</source>
         <translation>Aucune machine n'est construite exactement comme dessinée : un bras coupé un demi-millimètre trop long ou un zéro moteur réglé à l'œil déforme chaque dessin. Le studio trace un &lt;b&gt;motif&lt;/b&gt; de repères numérotés, vous mesurez où ils sont vraiment tombés, et un ajustement trouve les vraies longueurs des bras et les zéros des moteurs.&lt;br&gt;&lt;br&gt;&lt;b&gt;Repères d'étalonnage&lt;/b&gt; : des points numérotés dans des anneaux répartis sur toute la zone de travail, plus des rangées qui montrent le jeu de chaque moteur. À utiliser pour étalonner.&lt;br&gt;&lt;b&gt;Motif de précision&lt;/b&gt; (Hoang) : dix lignes parallèles, longues de 40 mm et espacées de 10 mm, pour juger la rectitude et la longueur avant et après : vous mesurez la longueur et la rectitude de chaque ligne avec une règle à la dernière étape de l'assistant.</translation>
-    </message>
-</context>
-<context>
-    <name>fivebar::widgets::calibration::PatternSender</name>
-    <message>
-        <source>The machine was disconnected while drawing the pattern.</source>
-        <translation>La machine a été déconnectée pendant le tracé du motif.</translation>
-    </message>
-    <message>
-        <source>The pattern is already being drawn.</source>
-        <translation>Le motif est déjà en cours de tracé.</translation>
-    </message>
-    <message>
-        <source>Connect a machine (or the simulated machine) in the Machine panel first, and let any running job finish.</source>
-        <translation>Connectez d'abord une machine (ou la machine simulée) dans le panneau Machine, et laissez finir toute tâche en cours.</translation>
-    </message>
-    <message>
-        <source>Cannot write %1: %2</source>
-        <translation>Impossible d'écrire %1 : %2</translation>
     </message>
 </context>
 <context>

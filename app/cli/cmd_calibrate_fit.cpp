@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "core/calibration/backlash.hpp"
+#include "core/calibration/calibrate.hpp"
 #include "core/calibration/fit.hpp"
 #include "core/calibration/marks_csv.hpp"
 #include "core/calibration/measurements.hpp"
@@ -123,28 +124,29 @@ void printSummary(const CalibrationFit& f) {
                              << " +- " << e.stdDev << " " << e.unit << "\n";
 }
 
-// The play per motor from MEASURED.csv + REVERSED.csv and the full MARKS.csv; an error message
-// naming the file when something is missing or unreadable.
-std::optional<BacklashEstimate> backlashOf(const std::string& marksPath, const std::string& measuredPath,
-                                           const std::string& measuredText, const std::string& reversedPath,
-                                           std::string& error) {
+// The backlash rows of MEASURED.csv + REVERSED.csv and the full MARKS.csv into `input` (the door
+// estimates the play); false with an error message naming the file when something is missing or
+// unreadable.
+bool backlashRowsOf(const std::string& marksPath, const std::string& measuredPath,
+                    const std::string& measuredText, const std::string& reversedPath,
+                    CalibrationInput& input, std::string& error) {
   std::string marksText, reversedText;
   Message why;
   if (!readTextFile(marksPath, marksText, why) || !readTextFile(reversedPath, reversedText, why)) {
     error = why.text();
-    return std::nullopt;
+    return false;
   }
   const MarksLoad marks = parseMarksCsv(marksText, marksPath);
   if (!marks.ok()) {
     error = marks.error.text() + " (--reversed needs the full MARKS.csv of `fivebar calibrate pattern`)";
-    return {};
+    return false;
   }
   std::map<int, Vec2> measuredById;
   for (const auto& [path, text] : {std::pair{measuredPath, measuredText}, std::pair{reversedPath, reversedText}}) {
     const MeasuredLoad m = parseMeasuredCsv(text, path);
     if (!m.ok()) {
       error = m.error.text();
-      return {};
+      return false;
     }
     for (const MeasuredMark& x : m.marks) measuredById[x.id] = x.measuredMm;
   }
@@ -158,14 +160,11 @@ std::optional<BacklashEstimate> backlashOf(const std::string& marksPath, const s
     error = reversedPath + ": incomplete backlash rows: mark";
     for (std::size_t i = 0; i < missing.size(); ++i) error += (i ? ", " : " ") + std::to_string(missing[i]);
     error += " of " + marksPath + " not measured in " + measuredPath + " or " + reversedPath;
-    return {};
+    return false;
   }
-  BacklashEstimate b = estimateBacklash(pattern, measuredById);
-  if (!b.ok()) {
-    error = reversedPath + ": " + b.error.text();
-    return {};
-  }
-  return b;
+  input.patternMarks = std::move(pattern);
+  input.measuredById = std::move(measuredById);
+  return true;
 }
 
 int fit(const Options& o) {
@@ -180,17 +179,18 @@ int fit(const Options& o) {
   if (Message why; !readTextFile(measuredPath, text, why)) return fail(why.text());
   const MeasurementRead read = readMeasurements(text, measuredPath);
   if (!read.ok()) return fail(read.error.text());
-  std::optional<BacklashEstimate> backlash;
-  if (const auto reversedPath = o.value("--reversed")) {
+  CalibrationInput input;
+  input.nominal = *nominal;
+  input.options.fitPenOffset = o.flag("--fit-pen-offset");
+  input.dateIso = nowIso();
+  const auto reversedPath = o.value("--reversed");
+  if (reversedPath) {
     const auto marksPath = o.value("--marks");
     if (!marksPath) return fail("--reversed " + *reversedPath + " needs the pattern's marks: give --marks MARKS.csv");
     if (read.form != MeasurementForm::Marks) return fail("--reversed needs marks measured on the sheet, but " + measuredPath + " holds distances");
-    backlash = backlashOf(*marksPath, measuredPath, text, *reversedPath, error);
-    if (!backlash) return fail(error + "; no profile written");
+    if (!backlashRowsOf(*marksPath, measuredPath, text, *reversedPath, input, error))
+      return fail(error + "; no profile written");
   }
-  FitOptions options;
-  options.fitPenOffset = o.flag("--fit-pen-offset");
-  CalibrationFit result;
   const bool distances = read.form == MeasurementForm::Distances;
   if (distances) {
     const auto marksPath = o.value("--marks");
@@ -199,20 +199,26 @@ int fit(const Options& o) {
     if (Message why; !readTextFile(*marksPath, marksText, why)) return fail(why.text());
     const MarkPosesRead marks = readMarkPoses(marksText, *marksPath);
     if (!marks.ok()) return fail(marks.error.text());
-    result = fitDistances(*nominal, marks.marks, read.distances, options);
-    if (result.status == FitStatus::BadInput && result.reason.text().rfind("line ", 0) == 0)
-      return fail(measuredPath + ":" + result.reason.text().substr(5));
+    input.poses = marks.marks;
+    input.distances = read.distances;
   } else {
-    result = fitMarks(*nominal, read.marks, options);
+    input.marks = read.marks;
   }
-  if (!result.ok()) return fail(measuredPath + ": no profile written: " + result.reason.text());
-  MachineProfile calibrated = calibratedProfile(*nominal, result, nowIso());
-  if (backlash && calibrated.calibration) {
-    calibrated.calibration->backlashRad1 = std::max(0.0, backlash->play.motor1Rad);
-    calibrated.calibration->backlashRad2 = std::max(0.0, backlash->play.motor2Rad);
+  const CalibrationOutcome outcome = calibrate(input, /*backlashRequired=*/true);
+  const CalibrationFit& result = outcome.fit;
+  const std::optional<BacklashEstimate>& backlash = outcome.backlash;
+  switch (outcome.stage) {
+    case CalibrationStage::Backlash:
+      return fail(*reversedPath + ": " + outcome.error.text() + "; no profile written");
+    case CalibrationStage::Fit:
+      if (distances && result.status == FitStatus::BadInput && result.reason.text().rfind("line ", 0) == 0)
+        return fail(measuredPath + ":" + result.reason.text().substr(5));
+      return fail(measuredPath + ": no profile written: " + result.reason.text());
+    case CalibrationStage::Validation:
+      return fail("the fitted profile is not valid (" + outcome.error.text() + "); no profile written");
+    case CalibrationStage::Calibrated: break;
   }
-  const std::vector<ValidationIssue> issues = validate(calibrated);
-  if (!issues.empty()) return fail("the fitted profile is not valid (" + issues[0].message.text() + "); no profile written");
+  const MachineProfile& calibrated = *outcome.profile;
   if (const auto reportPath = o.value("--report")) {
     std::ofstream report(*reportPath, std::ios::binary);
     if (!(report << reportOf(result, *nominal, measuredPath, distances, backlash).dump(2) << "\n"))

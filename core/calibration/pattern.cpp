@@ -474,4 +474,18 @@ std::string patternSvg(const CalibrationPattern& pattern, double penWidthMm) {
   return out.str();
 }
 
+std::optional<CalibrationPattern> accuracyOnlyPattern(const MachineProfile& profile) {
+  const auto lines = placeAccuracyPattern(profile);
+  if (!lines) return std::nullopt;
+  CalibrationPattern pattern;
+  pattern.accuracy = lines;
+  pattern.mode = profile.defaultMode;
+  for (const AccuracyLine& line : lines->lines) {
+    Stroke s;
+    s.points = {line.startMm, line.endMm};
+    pattern.strokes.push_back(s);
+  }
+  return pattern;
+}
+
 }  // namespace fivebar

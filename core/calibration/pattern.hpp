@@ -69,6 +69,10 @@ inline constexpr int kMinPatternMarks = 8;
 PatternResult makeCalibrationPattern(const MachineProfile& profile,
                                      const PatternOptions& options = {});
 
+// Hoang's accuracy lines alone as a pattern (no marks): placeAccuracyPattern's lines, one stroke
+// each, in the profile's default mode; nullopt when they do not fit in its safe area.
+std::optional<CalibrationPattern> accuracyOnlyPattern(const MachineProfile& profile);
+
 // The pattern planned by the one planner (planStrokes, in order, with the profile's calibration
 // left out: no zero offsets, no backlash compensation; the pattern measures the raw machine), with each dot's approach inserted before it lowers the pen:
 // a pen-up move away by approachRad against each motor's approach direction and back, both

@@ -4,6 +4,8 @@
 // restoring it, and bad table input named.
 #include <gtest/gtest.h>
 
+#include "session/run_controller.hpp"
+
 #include <algorithm>
 
 #include <QCheckBox>
@@ -63,6 +65,11 @@ TEST(CalibrationWizard, WalksThroughOnTheSimulatedMachineAndTheFitReducesTheErro
   ASSERT_TRUE(waitUntil([&] { return rig.session.jobActive(); }, 5000)) << draw->status()->text().toStdString();
   ASSERT_TRUE(waitUntil([&] { return !rig.session.jobActive(); }, 90000));
   EXPECT_TRUE(draw->status()->text().contains(QStringLiteral("drawn"))) << draw->status()->text().toStdString();
+  // The pattern ran through a RunController, as a job does: every line acknowledged.
+  ASSERT_NE(w.patternRun(), nullptr);
+  EXPECT_EQ(w.patternRun()->state(), stream::RunState::Finished);
+  EXPECT_EQ(w.patternRun()->snapshot().linesCompleted, w.patternRun()->snapshot().totalLines);
+  EXPECT_GT(w.patternRun()->snapshot().totalLines, 100u);
 
   w.next();
   ASSERT_EQ(w.currentId(), CalibrationWizard::kMeasurePage);

@@ -90,7 +90,7 @@ std::set<QString> runtimeContexts() {
         &calibration::PatternPage::staticMetaObject, &calibration::DrawPage::staticMetaObject,
         &calibration::MeasurePage::staticMetaObject, &calibration::FitPage::staticMetaObject,
         &calibration::ApplyPage::staticMetaObject, &calibration::VerifyPage::staticMetaObject,
-        &calibration::PatternSender::staticMetaObject, &calibration::CalibrationPreview::staticMetaObject,
+        &calibration::CalibrationPreview::staticMetaObject,
         &calibration::SheetLayer::staticMetaObject, &calibration::AccuracyPage::staticMetaObject,
         &calibration::DistancesBox::staticMetaObject, &calibration::SimTraceLayer::staticMetaObject,
         &calibration::SimulatedMachineDialog::staticMetaObject, &calibration::SimulatedTruth::staticMetaObject,
@@ -100,7 +100,7 @@ std::set<QString> runtimeContexts() {
   for (const char* c : {"QObject", "main", "DocumentCommands", "JobPipeline", "MapPainter",
                         "WorkspaceLegend", "ImportWarningsPanel", "DesignPainter", "ImportWarning",
                         "fivebar::widgets::MachineDialogs", "fivebar::session::SettingsAdvice",
-                        "CalibrationWizard",
+                        "CalibrationWizard", "ProfileField",
                         // the core's messages (core/support/message.hpp, widgets::translated)
                         "Placement", "Planner", "Preflight", "Safety", "Profile", "CalibrationFit",
                         "CalibrationPattern", "CalibrationScan", "CalibrationFile", "Design", "ImportError",

@@ -1,6 +1,6 @@
-// What the calibration wizard (Machine > Calibrate...) carries from step to step, and the
-// simulated sheet: what a "true machine" (geometry, zero offsets and backlash that differ from the
-// profile) really draws when it runs the pattern, so the whole loop can be tried without hardware.
+// What the calibration wizard (Machine > Calibrate...) carries from step to step: the pattern it
+// draws and the accuracy lines' figures. The simulated sheet (what a true machine draws, measured)
+// is the session's (session/simulated_sheet.hpp), beside the simulated board.
 // Machine frame, mm and rad inside; degrees only in the widgets.
 #pragma once
 
@@ -13,77 +13,30 @@
 #include "core/machine/profile.hpp"
 #include "core/planning/backlash_compensation.hpp"
 #include "core/planning/job.hpp"
+#include "session/simulated_sheet.hpp"
 
 namespace fivebar::widgets::calibration {
 
-// A machine as it really is: `builtFrom` (the profile's geometry when the wizard opened; it stays
-// the same when a calibration is applied, as the real machine does) changed by these amounts,
-// true motor angle = commanded + zero offset, and play in each drive.
-struct TrueMachine {
-  Geometry builtFrom;
-  double da1Mm = 0.0, db1Mm = 0.0, da2Mm = 0.0, db2Mm = 0.0, dwMm = 0.0;
-  double zeroOffsetRad1 = 0.0, zeroOffsetRad2 = 0.0;
-  MotorPlay play;
-  Geometry geometry() const;
-  bool perfect() const;
-};
-
-// The true machine as a profile for the simulated machine (sim::SimConfig::trueMachine):
-// `nominal` with truth.geometry() and a calibration section holding only the true zero offsets
-// and backlash (no pen offset).
-MachineProfile trueMachineProfile(const MachineProfile& nominal, const TrueMachine& truth);
+// The simulated sheet and the true machine, as the wizard's pages name them.
+using fivebar::TrueMachine;
+using fivebar::trueMachineProfile;
+using session::DistanceRow;
+using session::markShapeError;
+using session::measureSimulatedDistances;
+using session::measureSimulatedSheet;
+using session::ShapeFigures;
+using session::simulatedAccuracy;
+using session::simulatedTrace;
+using session::TableMark;
+using session::trueMarkCentre;
 
 // The pattern kinds the wizard offers.
 enum class PatternKind { Marks, AccuracyOnly };
-
-// One measured mark as typed into the table (paper frame, any origin, mirrored or not).
-struct TableMark {
-  int id = 0;
-  JointAngles commanded;
-  std::optional<Vec2> paperMm;  // empty cell: not measured
-};
 
 // The pattern for `profile`: marks (with Hoang's lines where they fit), or the accuracy lines
 // alone. Empty pattern with *error when nothing fits.
 std::optional<CalibrationPattern> makePattern(const MachineProfile& profile, PatternKind kind,
                                               int gridMarks, QString* error);
-
-// What the true machine draws when it runs `gcode` (written for `profile`): the G-code run on
-// the simulator itself (drivers/sim_machine: instant, set up and referenced, SimConfig::trueMachine
-// = trueMachineProfile(profile, truth)), so the play, zero offsets and geometry act exactly as on
-// the studio's simulated machine (drivers/pen_trace on core's PlayState). One polyline per pen-down
-// run, machine frame, points at least kTracePreviewStepMm apart (and every run's ends).
-inline constexpr double kTracePreviewStepMm = 0.05;
-std::vector<std::vector<Vec2>> simulatedTrace(const std::string& gcode, const MachineProfile& profile,
-                                              const TrueMachine& truth);
-
-// Where the true machine puts each mark's dot (after its approach, so backlash shows), machine
-// frame, by core's play model (PlayState, as the simulator's pen trace); nullopt for a pose the
-// true machine cannot reach.
-std::optional<Vec2> trueMarkCentre(const PatternMark& mark, const MachineProfile& profile,
-                                   const TrueMachine& truth);
-
-// The simulated sheet measured with a ruler from its lower-left corner: the true mark centres
-// shifted so the sheet corner is the origin, plus Gaussian noise (seeded: the same seed gives the
-// same table).
-std::vector<TableMark> measureSimulatedSheet(const CalibrationPattern& pattern,
-                                             const MachineProfile& profile,
-                                             const TrueMachine& truth, double noiseMm,
-                                             unsigned seed);
-
-// A ruler's distance between two marks, as typed into the distances table.
-struct DistanceRow {
-  int idA = 0, idB = 0;
-  double distanceMm = 0.0;
-};
-
-// The simulated sheet measured with a ruler alone: about four distances per fit mark (to marks
-// 1, 5, 11 and 17 places further in the pattern, pairs counted once), from the true mark centres,
-// plus Gaussian noise (seeded), read to 0.01 mm.
-std::vector<DistanceRow> measureSimulatedDistances(const CalibrationPattern& pattern,
-                                                   const MachineProfile& profile,
-                                                   const TrueMachine& truth, double noiseMm,
-                                                   unsigned seed);
 
 // One accuracy line as measured with a ruler: its length and its straightness (the widest gap
 // between the line and a straight edge), mm; empty when not measured.
@@ -99,22 +52,5 @@ struct AccuracySummary {
   double maxAbsLengthErrorMm = 0.0, rmsLengthErrorMm = 0.0;
 };
 std::optional<AccuracySummary> summariseLines(const std::vector<LineMeasure>& lines);
-
-// Hoang's accuracy lines as the true machine draws them when planned with `profile`: the pattern
-// placed for `profile`, its G-code run on the simulator (simulatedTrace), each drawn line's
-// figures by core's accuracyFigures. *trace gets the drawing (may be null). nullopt with *error
-// when the pattern does not fit or does not come out as kAccuracyLineCount lines.
-std::optional<AccuracyFigures> simulatedAccuracy(const MachineProfile& profile, const TrueMachine& truth,
-                                                 std::vector<std::vector<Vec2>>* trace, QString* error);
-
-// The shape error (RMS and max, mm) of the true machine drawing the pattern's grid marks, after
-// the best rigid placement onto what was meant: the number calibration should make small.
-struct ShapeFigures {
-  double rmsMm = 0.0;
-  double maxMm = 0.0;
-  int marks = 0;
-};
-ShapeFigures markShapeError(const CalibrationPattern& pattern, const MachineProfile& profile,
-                            const TrueMachine& truth);
 
 }  // namespace fivebar::widgets::calibration

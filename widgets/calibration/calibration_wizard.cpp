@@ -11,13 +11,15 @@
 #include <QSaveFile>
 
 #include "core/output/gcode.hpp"
-#include "drivers/stream/stream_session.hpp"
 #include "widgets/calibration/sheet_layer.hpp"
 #include "widgets/calibration/simulated_machine.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
 #include "i18n/translated.hpp"
 #include "widgets/canvas/canvas_view.hpp"
+#include "session/fixed_job_inputs.hpp"
 #include "session/machine_session.hpp"
+#include "session/run_controller.hpp"
+#include <QStandardPaths>
 
 namespace fivebar::widgets::calibration {
 
@@ -124,58 +126,30 @@ bool CalibrationWizard::planPattern(const MachineProfile& profile, QString* erro
   return true;
 }
 
-PatternSender::PatternSender(session::MachineSession& session, QObject* parent)
-    : QObject(parent), session_(session) {
-  // The stream holds the link: drop it before the link goes.
-  connect(&session_, &session::MachineSession::aboutToDisconnect, this, [this] {
-    const bool was = running_;
-    running_ = false;
-    stream_.reset();
-    if (was) emit finished(false, tr("The machine was disconnected while drawing the pattern."));
-  });
-}
-
-PatternSender::~PatternSender() {
-  if (running_) session_.setJobActive(false);
-}
-
-bool PatternSender::send(const std::string& gcode, const MachineProfile& profile,
-                         const QString& path, QString* error) {
-  if (running_) {
-    *error = tr("The pattern is already being drawn.");
-    return false;
-  }
-  if (!session_.link() || session_.jobActive()) {
+bool CalibrationWizard::runPattern(const PlannedJob& job, const MachineProfile& profile, const QString& name,
+                                   std::function<void(bool, const QString&)> done, QString* error) {
+  if (!session_) {
     *error = tr("Connect a machine (or the simulated machine) in the Machine panel first, and let "
                 "any running job finish.");
     return false;
   }
-  QDir().mkpath(QFileInfo(path).absolutePath());
-  QSaveFile file(path);
-  if (!file.open(QIODevice::WriteOnly) ||
-      file.write(gcode.data(), static_cast<qint64>(gcode.size())) != static_cast<qint64>(gcode.size()) ||
-      !file.commit()) {
-    *error = tr("Cannot write %1: %2").arg(path, file.errorString());
+  if (!patternRun_) {
+    patternInputs_ = new session::FixedJobInputs(this);
+    patternRun_ = new session::RunController(*patternInputs_, *session_, this);
+    patternRun_->setJobDirectory(QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
+                                     .filePath(QStringLiteral("calibration")));
+  }
+  if (patternRun_->running()) {
+    *error = tr("The pattern is already being drawn.");
     return false;
   }
-  StreamOptions options;
-  options.jobPath = path.toStdString();
-  options.profile = profile;
-  options.machineName = profile.name;
-  stream_ = std::make_unique<StreamSession>(*session_.link(), options);
-  connect(stream_.get(), &StreamSession::finished, this, [this](bool ok, const QString& message) {
-    running_ = false;
-    session_.setJobActive(false);
-    emit finished(ok, message);
-  });
-  std::string why;
-  if (!stream_->begin(&why)) {
-    *error = QString::fromStdString(why);
-    stream_.reset();
+  patternInputs_->set(profile, name + QStringLiteral(".svg"), job);
+  QString why;
+  if (!patternRun_->start(&why)) {
+    *error = why;
     return false;
   }
-  running_ = true;
-  session_.setJobActive(true);
+  connect(patternRun_, &session::RunController::finished, this, std::move(done), Qt::SingleShotConnection);
   return true;
 }
 

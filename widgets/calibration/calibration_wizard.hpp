@@ -6,6 +6,8 @@
 // The fit is core's (core/calibration/fit.hpp); this only shows it and carries the data.
 #pragma once
 
+#include <functional>
+
 #include <QPointer>
 #include <QWizard>
 #include <memory>
@@ -20,11 +22,12 @@
 class QAction;
 
 namespace fivebar {
-class StreamSession;
 }
 
 namespace fivebar::session {
+class FixedJobInputs;
 class MachineSession;
+class RunController;
 }
 
 namespace fivebar::widgets {
@@ -90,6 +93,15 @@ class CalibrationWizard : public QWizard {
   // Plans `pattern` with `profile` into job and gcode; false with *error.
   bool planPattern(const MachineProfile& profile, QString* error);
 
+  // Draws `job` (planned for `profile`) on the connected machine through a RunController, as the
+  // Run panel runs a job: the same pose and settings checks, progress, hold, stop and resume; its
+  // files are <app data>/calibration/<name>.gcode. `done` is called once when the run ends.
+  // False with *error when it cannot start (no machine, a job running, the pose unknown, ...).
+  bool runPattern(const PlannedJob& job, const MachineProfile& profile, const QString& name,
+                  std::function<void(bool ok, const QString& message)> done, QString* error);
+  // The controller of the patterns' runs; null before the first runPattern.
+  session::RunController* patternRun() const { return patternRun_; }
+
   PatternPage* patternPage() const { return patternPage_; }
   DrawPage* drawPage() const { return drawPage_; }
   MeasurePage* measurePage() const { return measurePage_; }
@@ -110,25 +122,8 @@ class CalibrationWizard : public QWizard {
   VerifyPage* verifyPage_ = nullptr;
   AccuracyPage* accuracyPage_ = nullptr;
   SheetLayer* sheetLayer_ = nullptr;
-};
-
-// Sends a planned pattern to the connected machine through the drivers' checked stream (the same
-// path as the run panel's Start): written to a G-code file, checked move by move, streamed.
-class PatternSender : public QObject {
-  Q_OBJECT
- public:
-  PatternSender(session::MachineSession& session, QObject* parent = nullptr);
-  ~PatternSender() override;
-  bool send(const std::string& gcode, const MachineProfile& profile, const QString& path,
-            QString* error);
-  bool running() const { return running_; }
- signals:
-  void finished(bool ok, const QString& message);
-
- private:
-  session::MachineSession& session_;
-  std::unique_ptr<StreamSession> stream_;
-  bool running_ = false;
+  session::FixedJobInputs* patternInputs_ = nullptr;
+  session::RunController* patternRun_ = nullptr;
 };
 
 }  // namespace fivebar::widgets::calibration

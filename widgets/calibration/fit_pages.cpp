@@ -13,6 +13,7 @@
 #include <QVBoxLayout>
 #include <map>
 
+#include "core/calibration/calibrate.hpp"
 #include "core/calibration/rigid_fit.hpp"
 #include "core/output/gcode.hpp"
 #include "core/kinematics/units.hpp"
@@ -85,41 +86,43 @@ void FitPage::initializePage() {
     nominal.push_back(m.nominalMm);
     patternIndex.push_back(static_cast<int>(i));
   }
-  fivebar::calibration::CalibrationFit fit;
+  fivebar::calibration::CalibrationInput input;
+  input.nominal = w_.nominal;
+  input.dateIso = QDateTime::currentDateTimeUtc().toString(Qt::ISODate).toStdString();
   if (w_.useDistances) {
-    std::vector<fivebar::calibration::MarkPose> poses;
     for (const PatternMark& m : w_.pattern->marks)
-      if (m.kind == MarkKind::Grid) poses.push_back({std::to_string(m.id), m.q, 0});
-    std::vector<fivebar::calibration::DistanceMeasurement> distances;
+      if (m.kind == MarkKind::Grid) input.poses.push_back({std::to_string(m.id), m.q, 0});
     for (std::size_t k = 0; k < w_.distances.size(); ++k) {
       const DistanceRow& d = w_.distances[k];
-      distances.push_back({std::to_string(d.idA), std::to_string(d.idB), d.distanceMm, static_cast<int>(k) + 1});
+      input.distances.push_back({std::to_string(d.idA), std::to_string(d.idB), d.distanceMm, static_cast<int>(k) + 1});
     }
-    fit = fivebar::calibration::fitDistances(w_.nominal, poses, distances);
   } else {
-    fit = fivebar::calibration::fitMarks(w_.nominal, marks);
+    input.marks = marks;
+    if (w_.pattern) {
+      input.patternMarks = w_.pattern->marks;
+      input.measuredById = byId;
+    }
   }
-  if (!fit.ok()) {
+  const fivebar::calibration::CalibrationOutcome outcome = fivebar::calibration::calibrate(input);
+  const fivebar::calibration::CalibrationFit& fit = outcome.fit;
+  if (!outcome.ok()) {
     summary_->setText(tr("<span style='color:#b00000'><b>The fit failed:</b> %1</span><br>Go back, "
                          "check the table, or measure more marks.")
-                          .arg(translated(fit.reason)));
+                          .arg(translated(outcome.error)));
     parameters_->setRowCount(0);
     preview_->setArrows({});
     emit completeChanged();
     return;
   }
   w_.fit = fit;
-  MachineProfile calibrated = fivebar::calibration::calibratedProfile(
-      w_.nominal, fit, QDateTime::currentDateTimeUtc().toString(Qt::ISODate).toStdString());
+  const MachineProfile& calibrated = *outcome.profile;
   QString backlashText;
   if (w_.useDistances) {
     backlashText = tr("Backlash is not measured from distances (it needs the positions of the "
                       "backlash rows' marks); the profile's backlash is kept.");
-  } else if (w_.pattern) {
-    BacklashEstimate b = estimateBacklash(w_.pattern->marks, byId);
+  } else if (outcome.backlash) {
+    const BacklashEstimate& b = *outcome.backlash;
     if (b.ok()) {
-      calibrated.calibration->backlashRad1 = std::max(0.0, b.play.motor1Rad);
-      calibrated.calibration->backlashRad2 = std::max(0.0, b.play.motor2Rad);
       backlashText = tr("Backlash from %1 + %2 rows: motor 1 %3\u00b0, motor 2 %4\u00b0.")
                          .arg(b.rowsMotor1).arg(b.rowsMotor2)
                          .arg(degFromRad(b.play.motor1Rad), 0, 'f', 2)
@@ -286,16 +289,11 @@ VerifyPage::VerifyPage(CalibrationWizard& wizard) : w_(wizard) {
   layout->addWidget(preview_, 3);
   connect(send_, &QPushButton::clicked, this, [this] {
     if (!w_.session()) return;
-    if (!sender_) {
-      sender_ = new PatternSender(*w_.session(), this);
-      connect(sender_, &PatternSender::finished, this, [this](bool ok, const QString& message) {
-        status_->setText(ok ? tr("The verification pattern is drawn.") : message);
-      });
-    }
     QString error;
-    const QString path = QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
-                             .filePath(QStringLiteral("calibration/verification.gcode"));
-    status_->setText(sender_->send(gcode_, w_.document().profile(), path, &error)
+    const auto done = [this](bool ok, const QString& message) {
+      status_->setText(ok ? tr("The verification pattern is drawn.") : message);
+    };
+    status_->setText(w_.runPattern(job_, w_.document().profile(), QStringLiteral("verification"), done, &error)
                          ? tr("Drawing the verification pattern...") : error);
   });
   connect(exportButton, &QPushButton::clicked, this, [this] {

@@ -172,17 +172,12 @@ DrawPage::DrawPage(CalibrationWizard& wizard) : w_(wizard) {
   connect(simulate_, &QCheckBox::toggled, this, [this] { refresh(); });
   connect(send_, &QPushButton::clicked, this, [this] {
     if (!w_.session()) return;
-    if (!sender_) {
-      sender_ = new PatternSender(*w_.session(), this);
-      connect(sender_, &PatternSender::finished, this, [this](bool ok, const QString& message) {
-        status_->setText(ok ? tr("The pattern is drawn. Take the sheet off and measure it.") : message);
-        send_->setEnabled(true);
-      });
-    }
     QString error;
-    const QString path = QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
-                             .filePath(QStringLiteral("calibration/pattern.gcode"));
-    if (sender_->send(w_.gcode, w_.nominal, path, &error)) {
+    const auto done = [this](bool ok, const QString& message) {
+      status_->setText(ok ? tr("The pattern is drawn. Take the sheet off and measure it.") : message);
+      send_->setEnabled(true);
+    };
+    if (w_.runPattern(w_.job, w_.nominal, QStringLiteral("pattern"), done, &error)) {
       status_->setText(tr("Drawing the pattern (%1 lines of G-code)...").arg(std::count(w_.gcode.begin(), w_.gcode.end(), '\n')));
       send_->setEnabled(false);
     } else {

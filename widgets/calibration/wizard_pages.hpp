@@ -77,7 +77,6 @@ class DrawPage : public QWizardPage {
   QPushButton* send_ = nullptr;
   QLabel* status_ = nullptr;
   CalibrationPreview* preview_ = nullptr;
-  PatternSender* sender_ = nullptr;
 };
 
 class MeasurePage : public QWizardPage {
@@ -172,7 +171,6 @@ class VerifyPage : public QWizardPage {
   QPushButton* send_ = nullptr;
   QLabel* status_ = nullptr;
   CalibrationPreview* preview_ = nullptr;
-  PatternSender* sender_ = nullptr;
   std::optional<CalibrationPattern> pattern_;
   PlannedJob job_;
   std::string gcode_;

@@ -35,44 +35,22 @@ bool unlimited(const JointLimits& l) {
 using Get = std::function<double(const MachineProfile&)>;
 using Set = std::function<void(MachineProfile&, double)>;
 
-// The table's labels and units (core/machine/profile_fields.cpp), for lupdate: translated in
-// the ProfileEditor's context (ProfileEditor::tr).
-[[maybe_unused]] const char* const kFieldTexts[] = {
-    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Driving link a1"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Floating link b1"),
-    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Driving link a2"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Floating link b2"),
-    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Motor distance w"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "θ1 minimum"),
-    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "θ1 maximum"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "θ2 minimum"),
-    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "θ2 maximum"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Motor 1 steps per degree"),
-    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Motor 2 steps per degree"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Motor 1 maximum speed"),
-    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Motor 2 maximum speed"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Motor 1 acceleration"),
-    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Motor 2 acceleration"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Junction deviation"),
-    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Pen up S value"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Pen down S value"),
-    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Pen up delay"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Pen down delay"),
-    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Z up"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Z down"),
-    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Z feed"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Laser power S value"),
-    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Drawing speed"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Travel speed"),
-    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Type II singularity margin"),
-    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Type I singularity margin"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Baud rate"),
-    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Home θ1"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", "Home θ2"),
-    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " mm"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " °"),
-    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " s"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " °/min"),
-    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " °/s²"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " mm/min"),
-    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " mm/s"), QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " steps/°"),
-    QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " baud"),
-};
 
 }  // namespace
 
 QString profileFieldLabel(const ProfileField& f) {
-  return ProfileEditor::tr(f.label);
+  // Marked for lupdate where the table writes it (core/machine/profile_fields.cpp).
+  return QCoreApplication::translate("ProfileField", f.label);
 }
 
 QString profileUnitSuffix(const ProfileField& f) {
   // The file's unit names (deg, deg/min, ...) as a maker reads them, translated.
   static const std::map<std::string, const char*> shown = {
-      {"mm", " mm"},         {"deg", " °"},          {"s", " s"},           {"deg/min", " °/min"},
-      {"deg/s²", " °/s²"},   {"mm/min", " mm/min"},  {"mm/s", " mm/s"},     {"steps/deg", " steps/°"},
-      {"baud", " baud"}};
+      {"mm", QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " mm")},         {"deg", QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " °")},
+      {"s", QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " s")},           {"deg/min", QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " °/min")},
+      {"deg/s²", QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " °/s²")},   {"mm/min", QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " mm/min")},
+      {"mm/s", QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " mm/s")},     {"steps/deg", QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " steps/°")},
+      {"baud", QT_TRANSLATE_NOOP("fivebar::widgets::ProfileEditor", " baud")}};
   const auto it = shown.find(f.unit);
   if (it != shown.end()) return ProfileEditor::tr(it->second);
   return *f.unit ? QStringLiteral(" ") + QString::fromUtf8(f.unit) : QString();
