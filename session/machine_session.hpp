@@ -135,7 +135,7 @@ class MachineSession : public QObject,
   QString moveRefusal() const;
 
   // --- the console's safety switch ---
-  // Off (default): every console line goes through the motion check (drivers/motion_check)
+  // Off (default): every console line goes through the motion check (drivers/check/motion_check)
   // from the board's reported pose; a refused line is not sent and lineRefused says why.
   // On: lines are sent unchecked (an expert's choice; the console shows a warning while on).
   void setUncheckedConsole(bool on);

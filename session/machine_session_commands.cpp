@@ -1,6 +1,6 @@
 // MachineSession's commands: console lines (checked unless the expert switch is on), checked
 // jogs and go-to moves, board settings, recovery (unlock, home, reference, reset), feed hold,
-// cycle start and the pen. Every move passes the motion check (drivers/motion_check) first.
+// cycle start and the pen. Every move passes the motion check (drivers/check/motion_check) first.
 #include "session/machine_session.hpp"
 
 
@@ -59,7 +59,7 @@ bool MachineSession::sendLine(const QString& line, QString* refusal) {
   return enqueueUserLine(text, true);
 }
 
-// The one motion check (drivers/motion_check) from the board's reported pose. A motion line
+// The one motion check (drivers/check/motion_check) from the board's reported pose. A motion line
 // needs a machine standing still with nothing of ours in flight, so the pose it starts from is
 // the pose the board reports.
 bool MachineSession::checkConsoleLine(const std::string& line, QString* refusal) {

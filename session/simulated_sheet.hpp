@@ -27,9 +27,9 @@ struct TableMark {
 };
 
 // What the true machine draws when it runs `gcode` (written for `profile`): the G-code run on
-// the simulator itself (drivers/sim_machine: instant, set up and referenced, SimConfig::trueMachine
+// the simulator itself (drivers/sim/sim_machine: instant, set up and referenced, SimConfig::trueMachine
 // = trueMachineProfile(profile, truth)), so the play, zero offsets and geometry act exactly as on
-// the studio's simulated machine (drivers/pen_trace on core's PlayState). One polyline per pen-down
+// the studio's simulated machine (drivers/sim/pen_trace on core's PlayState). One polyline per pen-down
 // run, machine frame, points at least kTracePreviewStepMm apart (and every run's ends).
 inline constexpr double kTracePreviewStepMm = 0.05;
 std::vector<std::vector<Vec2>> simulatedTrace(const std::string& gcode, const MachineProfile& profile,

@@ -1,4 +1,4 @@
-// The network port (drivers/tcp_transport, "tcp:HOST:PORT") against a QTcpServer in the test:
+// The network port (drivers/transport/tcp_transport, "tcp:HOST:PORT") against a QTcpServer in the test:
 // names parsed strictly, bytes both ways, the peer closing reported once as a disconnect (our
 // own close never), refused and malformed ports named in the error, the factory choosing the
 // transport by name, and the GRBL protocol running over it to the simulated machine bridged

@@ -19,7 +19,7 @@
 #include "core/calibration/pattern.hpp"
 #include "core/kinematics/units.hpp"
 #include "machine_test_support.hpp"
-#include "tests/calibration/synthetic_scan.hpp"
+#include "tests/scan/synthetic_scan.hpp"
 #include "test_support.hpp"
 #include "widgets/calibration/calibration_wizard.hpp"
 #include "widgets/calibration/distances_box.hpp"

@@ -18,7 +18,7 @@
 #include "core/kinematics/units.hpp"
 #include "machine_test_support.hpp"
 #include "test_support.hpp"
-#include "tests/calibration/synthetic_scan.hpp"
+#include "tests/scan/synthetic_scan.hpp"
 #include "widgets/calibration/calibration_wizard.hpp"
 #include "widgets/calibration/simulated_machine.hpp"
 #include "widgets/calibration/wizard_pages.hpp"

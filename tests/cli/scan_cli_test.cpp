@@ -9,7 +9,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "../cli/cli_support.hpp"
+#include "cli_support.hpp"
 #include "core/calibration/marks_csv.hpp"
 #include "synthetic_scan.hpp"
 #include "test_support.hpp"

@@ -1,0 +1,16 @@
+// main() of the CLI tests that paint (synthetic scans of a drawn sheet): a Qt Gui application first.
+#include <gtest/gtest.h>
+
+#include <QGuiApplication>
+#include <cstdlib>
+#include <iostream>
+
+#include "test_support.hpp"
+
+int main(int argc, char** argv) {
+  qputenv("QT_QPA_PLATFORM", "offscreen");
+  QGuiApplication app(argc, argv);  // fonts and image plugins
+  ::testing::InitGoogleTest(&argc, argv);
+  std::cout << "random seed " << fivebar::test::seed() << " (set FIVEBAR_TEST_SEED to change)\n";
+  return RUN_ALL_TESTS();
+}
