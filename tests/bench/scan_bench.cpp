@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "../calibration/synthetic_scan.hpp"
+#include "../scan/synthetic_scan.hpp"
 #include "core/calibration/marks_csv.hpp"
 #include "core/calibration/scan/scan.hpp"
 #include "core/calibration/scan/scan_blobs.hpp"

@@ -99,7 +99,14 @@ void ImportController::openData(const QByteArray& svg, const QString& name) {
           ImportOutcome out;
           PlanOptions o = options;
           o.cancel = cancel;
-          out.job = job::loadDrawing(job::DrawingSource{svg, name, fill, hatch, maxPoints, solid, {}}, profile, o, out.error);
+          job::DrawingSource source;
+          source.svg = svg;
+          source.name = name;
+          source.fill = fill;
+          source.hatch = hatch;
+          source.maxPoints = maxPoints;
+          source.solidDashes = solid;
+          out.job = job::loadDrawing(source, profile, o, out.error);
           if (out.job) out.job->options.cancel = nullptr;
           return out;
         },

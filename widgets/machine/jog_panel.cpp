@@ -44,7 +44,32 @@ JogPanel::JogPanel(session::MachineView& view, session::JogPort& jog, session::R
                    session::JogController& controller, QWidget* parent)
     : QWidget(parent), view_(view), jog_(jog), recovery_(recovery), controller_(controller), goTo_(view, jog) {
   setObjectName(QStringLiteral("jogPanel"));
-  // XY arrows: row 0 is +Y (the machine frame's y points toward the work area, up on screen).
+  auto* grid = makeArrows();
+  auto* motorRow = makeMotorRow();
+  auto* stepRow = makeStepRow();
+  auto* toolRow = makeToolRow();
+  makeConfirmRow();
+  message_ = new QLabel(this);
+  message_->setWordWrap(true);
+  message_->setStyleSheet(QStringLiteral("color: #b45309"));
+
+  // The go-to question and the messages come first, where they are seen without scrolling.
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(8, 8, 8, 8);
+  layout->addLayout(stepRow);
+  layout->addWidget(confirmRow_);
+  layout->addWidget(message_);
+  layout->addLayout(grid);
+  layout->addLayout(motorRow);
+  layout->addLayout(toolRow);
+  layout->addStretch(1);
+
+  connectControls();
+}
+
+// The XY arrows around the Go to... button (row 0 is +Y: the machine frame's y points toward the
+// work area, up on screen).
+QGridLayout* JogPanel::makeArrows() {
   const QString arrowText[3][3] = {{QStringLiteral("↖"), QStringLiteral("↑"), QStringLiteral("↗")},
                                    {QStringLiteral("←"), QString(), QStringLiteral("→")},
                                    {QStringLiteral("↙"), QStringLiteral("↓"), QStringLiteral("↘")}};
@@ -65,6 +90,11 @@ JogPanel::JogPanel(session::MachineView& view, session::JogPort& jog, session::R
                              "before you confirm."));
   grid->addWidget(goToButton_, 1, 1);
 
+  return grid;
+}
+
+// theta1 -/+ and theta2 -/+ single steps.
+QHBoxLayout* JogPanel::makeMotorRow() {
   auto* motorRow = new QHBoxLayout;
   for (int motor = 1; motor <= 2; ++motor) {
     for (int s = 0; s < 2; ++s) {
@@ -76,7 +106,11 @@ JogPanel::JogPanel(session::MachineView& view, session::JogPort& jog, session::R
       motorRow->addWidget(motors_[motor - 1][s]);
     }
   }
+  return motorRow;
+}
 
+// The step size (mm or degrees) and the XY jog speed.
+QHBoxLayout* JogPanel::makeStepRow() {
   steps_ = new QButtonGroup(this);
   auto* stepRow = new QHBoxLayout;
   stepRow->addWidget(new QLabel(tr("Step"), this));
@@ -96,7 +130,11 @@ JogPanel::JogPanel(session::MachineView& view, session::JogPort& jog, session::R
   speed_->setValue(kDefaultSpeedMmPerS);
   speed_->setToolTip(tr("Speed of XY jogs"));
   stepRow->addWidget(speed_);
+  return stepRow;
+}
 
+// Home, Go to home pose, Pen up, Pen down.
+QHBoxLayout* JogPanel::makeToolRow() {
   home_ = new QPushButton(this);
   goHome_ = new QPushButton(tr("Go to home pose"), this);
   goHome_->setObjectName(QStringLiteral("goHomeButton"));
@@ -111,7 +149,11 @@ JogPanel::JogPanel(session::MachineView& view, session::JogPort& jog, session::R
   toolRow->addWidget(goHome_);
   toolRow->addWidget(penUp_);
   toolRow->addWidget(penDown_);
+  return toolRow;
+}
 
+// The go-to question: where the pen would go, Go / Cancel (hidden until a point is picked).
+void JogPanel::makeConfirmRow() {
   confirmRow_ = new QWidget(this);
   confirmText_ = new QLabel(confirmRow_);
   confirmText_->setWordWrap(true);
@@ -123,22 +165,9 @@ JogPanel::JogPanel(session::MachineView& view, session::JogPort& jog, session::R
   confirmLayout->addWidget(confirm_, 1, 0);
   confirmLayout->addWidget(cancel_, 1, 1);
   confirmRow_->hide();
+}
 
-  message_ = new QLabel(this);
-  message_->setWordWrap(true);
-  message_->setStyleSheet(QStringLiteral("color: #b45309"));
-
-  // The go-to question and the messages come first, where they are seen without scrolling.
-  auto* layout = new QVBoxLayout(this);
-  layout->setContentsMargins(8, 8, 8, 8);
-  layout->addLayout(stepRow);
-  layout->addWidget(confirmRow_);
-  layout->addWidget(message_);
-  layout->addLayout(grid);
-  layout->addLayout(motorRow);
-  layout->addLayout(toolRow);
-  layout->addStretch(1);
-
+void JogPanel::connectControls() {
   moveWidgets_.insert(moveWidgets_.end(), {goToButton_, home_, goHome_, penUp_, penDown_, speed_});
   connect(steps_, &QButtonGroup::idClicked, this, [this](int id) { controller_.setStep(kSteps[id]); });
   controller_.setStep(kSteps[1]);

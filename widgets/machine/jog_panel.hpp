@@ -6,6 +6,9 @@
 #pragma once
 
 #include <QWidget>
+
+class QGridLayout;
+class QHBoxLayout;
 #include <vector>
 
 #include "session/jog_controller.hpp"
@@ -52,6 +55,13 @@ class JogPanel : public QWidget {
 
  private:
   QPushButton* makeJogButton(const QString& text, const QString& tip, const session::JogDirection& dir);
+  // The constructor's parts.
+  QGridLayout* makeArrows();
+  QHBoxLayout* makeMotorRow();
+  QHBoxLayout* makeStepRow();
+  QHBoxLayout* makeToolRow();
+  void makeConfirmRow();
+  void connectControls();
   void setGoToActive(bool active);
   void refreshEnabled();
   void onPicked(bool ok, const QString& text);

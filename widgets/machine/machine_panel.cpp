@@ -60,6 +60,26 @@ MachinePanel::MachinePanel(session::MachineView& view, session::ConnectionPort& 
                            session::RecoveryPort& recovery, QWidget* parent)
     : QWidget(parent), view_(view), connection_(link) {
   setObjectName(QStringLiteral("machinePanel"));
+  QGroupBox* connection = makeConnectionBox();
+  banner_ = new MachineBanner(view_, recovery, this);
+  QGroupBox* status = makeStatusBox();
+  makeSettingsWarning();
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(4, 4, 4, 4);
+  layout->addWidget(banner_);  // first: a problem is the first thing to see
+  layout->addWidget(settingsWarning_);
+  layout->addWidget(connection);
+  layout->addWidget(status);
+  layout->addStretch(1);
+
+  connectControls();
+  refreshConnection();
+  refreshStatus();
+  refreshSettings();
+}
+
+// Port, baud rate, Connect / Disconnect and what the link is.
+QGroupBox* MachinePanel::makeConnectionBox() {
   ports_ = new PortBox(this);
   refresh_ = new QPushButton(tr("Refresh"), this);
   refresh_->setToolTip(tr("List the serial ports again"));
@@ -86,9 +106,11 @@ MachinePanel::MachinePanel(session::MachineView& view, session::ConnectionPort& 
   connectionLayout->addLayout(baudRow);
   connectionLayout->addLayout(buttonRow);
   connectionLayout->addWidget(link_);
+  return connection;
+}
 
-  banner_ = new MachineBanner(view_, recovery, this);
-
+// The board's state, pen, position, motor angles and buffers.
+QGroupBox* MachinePanel::makeStatusBox() {
   state_ = new QLabel(this);
   state_->setObjectName(QStringLiteral("machineState"));
   QFont big = state_->font();
@@ -109,7 +131,11 @@ MachinePanel::MachinePanel(session::MachineView& view, session::ConnectionPort& 
   form->addRow(tr("Pen (X, Y)"), xy_);
   form->addRow(tr("Motors (θ1, θ2)"), angles_);
   form->addRow(tr("Buffers"), buffers_);
+  return status;
+}
 
+// "The board's settings differ from the profile": shown while they do, with Review and write...
+void MachinePanel::makeSettingsWarning() {
   settingsWarning_ = new QFrame(this);
   settingsWarning_->setObjectName(QStringLiteral("settingsWarning"));
   settingsWarning_->setStyleSheet(QStringLiteral(
@@ -127,15 +153,9 @@ MachinePanel::MachinePanel(session::MachineView& view, session::ConnectionPort& 
   connect(settingsButton_, &QPushButton::clicked, this, [this] {
     if (openSettings_) openSettings_();
   });
+}
 
-  auto* layout = new QVBoxLayout(this);
-  layout->setContentsMargins(4, 4, 4, 4);
-  layout->addWidget(banner_);  // first: a problem is the first thing to see
-  layout->addWidget(settingsWarning_);
-  layout->addWidget(connection);
-  layout->addWidget(status);
-  layout->addStretch(1);
-
+void MachinePanel::connectControls() {
   connect(refresh_, &QPushButton::clicked, this, &MachinePanel::refreshPorts);
   connect(connect_, &QPushButton::clicked, this, &MachinePanel::connectSelected);
   connect(disconnect_, &QPushButton::clicked, this, [this] { connection_.disconnectMachine(); });
@@ -150,9 +170,6 @@ MachinePanel::MachinePanel(session::MachineView& view, session::ConnectionPort& 
   connect(&view_, &session::MachineView::penStateChanged, this, &MachinePanel::refreshStatus);
   connect(&view_, &session::MachineView::boardSettingsChanged, this, &MachinePanel::refreshSettings);
   connect(&view_, &session::MachineView::connectFailed, this, &MachinePanel::onConnectFailed);
-  refreshConnection();
-  refreshStatus();
-  refreshSettings();
 }
 
 void MachinePanel::onConnectionChanged() {

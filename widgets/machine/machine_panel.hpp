@@ -9,6 +9,8 @@
 
 #include <QWidget>
 
+class QGroupBox;
+
 #include "session/machine_ports.hpp"
 #include "session/machine_view.hpp"
 
@@ -61,6 +63,11 @@ class MachinePanel : public QWidget {
   void refreshStatus();
 
  private:
+  // The constructor's parts.
+  QGroupBox* makeConnectionBox();
+  QGroupBox* makeStatusBox();
+  void makeSettingsWarning();
+  void connectControls();
   void refreshConnection();
   void refreshSettings();
   void onConnectFailed(const QString& message);
