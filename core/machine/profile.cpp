@@ -236,16 +236,13 @@ bool readHeader(ObjectReader& root, std::vector<ValidationIssue>& issues) {
 ProfileLoad profileFromJson(const std::string& text, const std::string& sourceName) {
   ProfileLoad result;
   json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::parse_error& e) {
-    const auto pos = detail::positionOf(text, e.byte > 0 ? e.byte - 1 : 0);
-    std::string what = e.what();
+  if (const auto error = detail::parseJsonText(text, doc)) {
+    std::string what = error->what;
     if (auto colon = what.find(": "); colon != std::string::npos) what = what.substr(colon + 2);
     result.issues.push_back({"json", FB_TR("Profile", "%1:%2:%3: invalid JSON: %4")
                                          .arg(sourceName)
-                                         .arg(pos.line)
-                                         .arg(pos.column)
+                                         .arg(error->position.line)
+                                         .arg(error->position.column)
                                          .arg(what)});
     return result;
   }

@@ -60,8 +60,10 @@ void ObjectReader::integer(const char* key, int& out, bool required) {
   const nlohmann::json* v = member(key, required);
   if (!v) return;
   if (!v->is_number_integer()) return typeError(key, FB_TR("Profile", "an integer"), *v);
-  const auto value = v->get<long long>();
-  if (value < -2147483647LL || value > 2147483647LL) {
+  // An unsigned beyond long long's range would wrap to a negative value: out of range too.
+  const bool tooLarge = v->is_number_unsigned() && v->get<unsigned long long>() > 2147483647ULL;
+  const auto value = tooLarge ? 0LL : v->get<long long>();
+  if (tooLarge || value < -2147483647LL || value > 2147483647LL) {
     issues_.push_back({pathOf(key), FB_TR("Profile", "%1 is out of the integer range").arg(pathOf(key))});
     return;
   }
@@ -117,6 +119,33 @@ void ObjectReader::finish() {
     if (known_.count(it.key())) continue;
     const std::string path = pathOf(it.key().c_str());
     issues_.push_back({path, FB_TR("Profile", "%1 is not a known field (expected one of: %2)").arg(path).arg(expected)});
+  }
+}
+
+namespace {
+std::string withoutPrefix(std::string what) {
+  if (auto colon = what.find("] "); colon != std::string::npos) what = what.substr(colon + 2);
+  return what;
+}
+}  // namespace
+
+std::optional<JsonSyntaxError> parseJsonText(const std::string& text, nlohmann::json& out) {
+  try {
+    out = nlohmann::json::parse(text);
+    return std::nullopt;
+  } catch (const nlohmann::json::parse_error& e) {
+    return JsonSyntaxError{positionOf(text, e.byte > 0 ? e.byte - 1 : 0), withoutPrefix(e.what())};
+  } catch (const nlohmann::json::exception& e) {
+    // "number overflow parsing '35E5556'": point at that number's text.
+    std::string what = withoutPrefix(e.what());
+    std::size_t at = 0;
+    const std::size_t open = what.find('\'');
+    const std::size_t close = open == std::string::npos ? open : what.find('\'', open + 1);
+    if (close != std::string::npos && close > open + 1) {
+      const std::size_t found = text.find(what.substr(open + 1, close - open - 1));
+      if (found != std::string::npos) at = found;
+    }
+    return JsonSyntaxError{positionOf(text, at), std::move(what)};
   }
 }
 

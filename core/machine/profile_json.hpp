@@ -3,6 +3,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -60,5 +61,15 @@ struct TextPosition {
   std::size_t column = 1;
 };
 TextPosition positionOf(const std::string& text, std::size_t byteOffset);
+
+// Why a JSON text could not be read: where (line and column) and the library's words.
+struct JsonSyntaxError {
+  TextPosition position;
+  std::string what;  // nlohmann's message without its "[json.exception...]" prefix
+};
+// Parses `text` into `out`; the error when it is not JSON. Every exception of the library is
+// taken (a syntax error, and a number too large for a double, "1e999", which nlohmann reports
+// as out_of_range without a position: the position is then that of the number's text).
+std::optional<JsonSyntaxError> parseJsonText(const std::string& text, nlohmann::json& out);
 
 }  // namespace fivebar::detail

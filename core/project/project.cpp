@@ -145,10 +145,8 @@ std::string projectToJson(const Project& p) {
 ProjectLoad projectFromJson(const std::string& text, const std::string& sourceName) {
   ProjectLoad out;
   json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::parse_error& e) {
-    const auto pos = detail::positionOf(text, e.byte > 0 ? e.byte - 1 : 0);
+  if (const auto error = detail::parseJsonText(text, doc)) {
+    const detail::TextPosition pos = error->position;
     out.issues.push_back({"json", sourceName + ":" + std::to_string(pos.line) + ":" +
                                       std::to_string(pos.column) + ": not a project file (invalid JSON)"});
     return out;

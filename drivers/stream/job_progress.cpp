@@ -5,6 +5,8 @@
 #include <QSaveFile>
 #include <nlohmann/json.hpp>
 
+#include <stdexcept>
+
 namespace fivebar::stream {
 
 std::string progressPathFor(const std::string& jobPath) { return jobPath + ".progress"; }
@@ -37,20 +39,37 @@ std::optional<JobProgress> progressFromJson(const std::string& text, const std::
   };
   const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
   if (j.is_discarded() || !j.is_object()) return fail("not valid JSON");
-  if (j.value("version", 0) != JobProgress::kVersion)
-    return fail("unsupported progress version (expected " + std::to_string(JobProgress::kVersion) + ")");
+  // A count or line number: an integer of int's range (nlohmann's get<int> of 1e300 or of a
+  // float would convert without a check).
+  const auto lineNumber = [&](const char* key, bool required) -> int {
+    if (!j.contains(key)) {
+      if (required) throw std::invalid_argument(std::string(key) + " is missing");
+      return 0;
+    }
+    const nlohmann::json& v = j.at(key);
+    const bool inRange = v.is_number_unsigned() ? v.get<unsigned long long>() <= 2147483647ULL
+                         : v.is_number_integer() ? v.get<long long>() >= 0 && v.get<long long>() <= 2147483647LL
+                                                 : false;
+    if (!inRange) throw std::invalid_argument(std::string(key) + " must be a whole number from 0");
+    return static_cast<int>(v.get<long long>());
+  };
   try {
+    if (!j.contains("version") || !j.at("version").is_number_integer() ||
+        j.at("version").get<long long>() != JobProgress::kVersion)
+      return fail("unsupported progress version (expected " + std::to_string(JobProgress::kVersion) + ")");
     JobProgress p;
     p.jobHash = j.at("jobHash").get<std::string>();
     p.machine = j.value("machine", std::string());
-    p.totalLines = j.at("totalLines").get<int>();
-    p.lastAckedLine = j.at("lastAckedLine").get<int>();
-    p.lastCompletedLine = j.at("lastCompletedLine").get<int>();
-    p.lastPenDownLine = j.at("lastPenDownLine").get<int>();
+    p.totalLines = lineNumber("totalLines", true);
+    p.lastAckedLine = lineNumber("lastAckedLine", true);
+    p.lastCompletedLine = lineNumber("lastCompletedLine", true);
+    p.lastPenDownLine = lineNumber("lastPenDownLine", true);
     p.penDownAnglesDeg = j.at("penDownAnglesDeg").get<std::array<double, 2>>();
-    p.linesDone = j.value("linesDone", 0);  // absent in files of earlier versions
+    p.linesDone = lineNumber("linesDone", false);  // absent in files of earlier versions
     p.reason = j.value("reason", std::string());
     return p;
+  } catch (const std::invalid_argument& e) {
+    return fail(e.what());
   } catch (const nlohmann::json::exception& e) {
     return fail(std::string("field missing or of the wrong type: ") + e.what());
   }

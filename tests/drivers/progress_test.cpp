@@ -3,6 +3,7 @@
 
 #include "drivers/stream/job_runner.hpp"
 #include "drivers/check/machine_setup.hpp"
+#include "drivers/stream/job_progress.hpp"
 #include "sim_harness.hpp"
 
 namespace fivebar::test {
@@ -109,3 +110,34 @@ TEST(StallWatchdog, SilentBoardIsReported) {
 
 }  // namespace
 }  // namespace fivebar::test
+
+// The progress file a resume reads (fuzz/job_progress_fuzz.cpp found these): a version or a count
+// of the wrong type or range is refused, naming the file, instead of an exception out of the
+// reader (a string version) or an unchecked conversion (1e300 lines).
+namespace fivebar::stream {
+namespace {
+
+std::string progressText(const std::string& version, const std::string& totalLines) {
+  return "{\"version\": " + version + ", \"jobHash\": \"ab\", \"totalLines\": " + totalLines +
+         ", \"lastAckedLine\": 3, \"lastCompletedLine\": 2, \"lastPenDownLine\": 1,"
+         " \"penDownAnglesDeg\": [1.5, 2.5], \"linesDone\": 2}";
+}
+
+TEST(ProgressFile, ReadsAWellFormedRecordAndRefusesBadFieldsNamingTheFile) {
+  std::string error;
+  const auto good = progressFromJson(progressText("1", "10"), "job.progress", &error);
+  ASSERT_TRUE(good.has_value()) << error;
+  EXPECT_EQ(good->totalLines, 10);
+  EXPECT_EQ(good->linesDone, 2);
+  for (const auto& [version, total] : {std::pair<std::string, std::string>{"\"1\"", "10"},
+                                       {"1", "1e300"}, {"1", "-4"}, {"1", "2.5"}, {"1", "\"ten\""},
+                                       {"1", "18446744073709551615"}}) {
+    error.clear();
+    EXPECT_FALSE(progressFromJson(progressText(version, total), "job.progress", &error).has_value())
+        << version << " " << total;
+    EXPECT_EQ(error.rfind("job.progress: ", 0), 0u) << error;
+  }
+}
+
+}  // namespace
+}  // namespace fivebar::stream
