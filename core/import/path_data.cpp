@@ -235,6 +235,12 @@ void appendArcAsCubics(double x0, double y0, const PathCommand& arc, std::vector
   const double theta1 = std::atan2((y1p - cyp) / ry, (x1p - cxp) / rx);
   const double theta2 = std::atan2((-y1p - cyp) / ry, (-x1p - cxp) / rx);
   double delta = theta2 - theta1;
+  if (!std::isfinite(delta) || !std::isfinite(cx) || !std::isfinite(cy) || !std::isfinite(rx * ry)) {
+    // Numbers so large that the centre overflows (1e308): the chord, as for a zero radius; the
+    // import refuses such coordinates anyway (ImportOptions::maxCoordinateMm).
+    out.push_back({'L', {x, y}});
+    return;
+  }
   const double twoPi = 2.0 * std::numbers::pi;
   if (!sweep && delta > 0.0) delta -= twoPi;
   else if (sweep && delta < 0.0) delta += twoPi;

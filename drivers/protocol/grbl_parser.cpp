@@ -1,6 +1,7 @@
 #include "grbl_parser.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <vector>
 
 namespace fivebar::grbl {
@@ -57,6 +58,7 @@ bool applyField(StatusReport& r, std::string_view name, std::string_view value) 
     if (parts.size() != 2) return false;
     r.plannerBlocksFree = parseInt(parts[0]);
     r.rxBytesFree = parseInt(parts[1]);
+    if (r.plannerBlocksFree < 0 || r.rxBytesFree < 0) r.plannerBlocksFree = r.rxBytesFree = std::nullopt;
     return r.plannerBlocksFree && r.rxBytesFree;
   }
   if (name == "FS" || name == "F") {
@@ -69,7 +71,7 @@ bool applyField(StatusReport& r, std::string_view name, std::string_view value) 
     std::array<int, 3> ov{};
     for (int i = 0; i < 3; ++i) {
       const auto v = parseInt(parts[size_t(i)]);
-      if (!v) return false;
+      if (!v || *v < 0 || *v > 255) return false;  // GRBL keeps each override in a byte
       ov[size_t(i)] = *v;
     }
     r.overrides = ov;
@@ -106,6 +108,7 @@ std::optional<double> parseNumber(std::string_view s) {
   double v = 0.0;
   auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
   if (s.empty() || ec != std::errc() || ptr != s.data() + s.size()) return std::nullopt;
+  if (!std::isfinite(v)) return std::nullopt;  // from_chars reads "inf" and "nan"; GRBL never sends them
   return v;
 }
 

@@ -133,5 +133,22 @@ TEST(GrblParser, AccessoryAndLineNumberFields) {
     EXPECT_EQ(parseLine(bad).kind, LineKind::Unknown) << bad;
 }
 
+// Found by fuzz/grbl_response_fuzz.cpp (fuzz/regressions/grbl_response): numbers GRBL never sends
+// (nan, inf, a negative override or buffer count) make the field malformed, as any other garbage
+// does, instead of a position or an override the host would act on.
+TEST(GrblParser, NumbersGrblNeverSendsAreNotAStatus) {
+  EXPECT_FALSE(parseNumber("nan").has_value());
+  EXPECT_FALSE(parseNumber("inf").has_value());
+  EXPECT_FALSE(parseNumber("-infinity").has_value());
+  EXPECT_DOUBLE_EQ(parseNumber("-12.5").value(), -12.5);
+  EXPECT_FALSE(parseStatus("Idle|MPos:nan,0.000,0.000|FS:0,0").has_value());
+  EXPECT_FALSE(parseStatus("Run|MPos:1,2,0|FS:0,0|Ov:120,-50,100").has_value());
+  EXPECT_FALSE(parseStatus("Run|MPos:1,2,0|FS:0,0|Ov:120,256,100").has_value());
+  EXPECT_FALSE(parseStatus("Idle|MPos:1,2,0|Bf:-1,128").has_value());
+  const auto ok = parseStatus("Run|MPos:1,2,0|FS:0,0|Ov:200,25,10");
+  ASSERT_TRUE(ok.has_value());
+  EXPECT_EQ((*ok->overrides)[1], 25);
+}
+
 }  // namespace
 }  // namespace fivebar::grbl

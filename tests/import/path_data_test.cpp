@@ -96,5 +96,21 @@ TEST(PathData, SplittingKeepsEveryDrawnPointAndTheElementBudget) {
   EXPECT_EQ(drawnEnds(joined), drawnEnds(original.commands));
 }
 
+// Found by fuzz/path_data_fuzz.cpp (fuzz/regressions/path_data): an arc whose end point is near
+// the largest double overflowed its centre to NaN, and the NaN sweep was converted to a piece
+// count (undefined behaviour). Such an arc is its chord now.
+TEST(PathData, AnArcWhoseCentreOverflowsIsItsChord) {
+  const ParsedPath p = parsePathData(u"M0 4a25 25 1 0 0 5 0 01e301e308");
+  ASSERT_FALSE(p.commands.empty());
+  const std::vector<PathCommand> cubics = arcsAsCubics(p.commands);
+  for (const PathCommand& c : cubics) EXPECT_NE(c.op, 'A');
+  std::vector<PathCommand> out;
+  PathCommand arc{'A', {25.0, 25.0, 0.0, 0.0, 1.0, 1e301, 1e308}};
+  appendArcAsCubics(0.0, 4.0, arc, out);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].op, 'L');
+  EXPECT_EQ(out[0].v[1], 1e308);
+}
+
 }  // namespace
 }  // namespace fivebar::svg
