@@ -24,6 +24,7 @@ import subprocess
 import sys
 import time
 
+sys.dont_write_bytecode = True
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from wire import Wire  # noqa: E402
 import check  # noqa: E402
@@ -33,15 +34,15 @@ STEPS_PER_DEG = 35.5556
 
 
 def hatch_svg(path, cols, rows):
-    """cols x rows zig-zag strokes (4 segments, 3.2 mm wide, 2.4 mm tall) on a 4 x 3.2 mm grid:
-    no two strokes touch, so every pass of the pen belongs to one stroke."""
-    w, h = cols * 4.0, rows * 3.2
+    """cols x rows zig-zag strokes (12 legs of 0.5 x 1.2 mm: 6 x 1.2 mm) on a 7 x 2.2 mm grid: no
+    two strokes touch (1 mm apart), so every pass of the pen belongs to one stroke."""
+    w, h = cols * 7.0, rows * 2.2
     out = ['<svg xmlns="http://www.w3.org/2000/svg" width="%gmm" height="%gmm" viewBox="0 0 %g %g">'
            % (w, h, w, h)]
     for r in range(rows):
         for c in range(cols):
-            x, y = c * 4.0 + 0.4, r * 3.2 + 0.4
-            pts = ['%.2f,%.2f' % (x + 0.8 * k, y + (2.4 if k % 2 else 0.0)) for k in range(5)]
+            x, y = c * 7.0 + 0.5, r * 2.2 + 0.5
+            pts = ['%.2f,%.2f' % (x + 0.5 * k, y + (1.2 if k % 2 else 0.0)) for k in range(13)]
             out.append('<polyline fill="none" stroke="black" points="%s"/>' % ' '.join(pts))
     out.append('</svg>')
     with open(path, 'w') as f:
@@ -107,11 +108,11 @@ class Soak:
 
     # -- the job --------------------------------------------------------------------------
     def plan(self):
-        cols, rows = 40, max(2, int(round(50 * self.a.lines / 20000.0)))  # 40 x 50: 20,030 lines
+        cols, rows = 26, max(2, int(round(43 * self.a.lines / 20000.0)))  # 26 x 43: 20,150 lines
         for _ in range(3):
             svg = os.path.join(self.dir, 'hatch.svg')
             hatch_svg(svg, cols, rows)
-            rc, out = self.cli('plan', svg, '--machine', 'maker-plotter', '--fit', '-o', self.job, timeout=600)
+            rc, out = self.cli('plan', svg, '--machine', 'maker-plotter', '-o', self.job, timeout=600)
             if rc != 0:
                 raise SystemExit('fivebar plan failed:\n' + out)
             lines = sum(1 for _ in open(self.job))

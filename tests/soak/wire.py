@@ -12,7 +12,7 @@ A power cut (grbl-sim killed) reads as EIO on the board side: the host side is c
 the proxy waits for the firmware's pty to come back.
 
 Accounting: every line forwarded to the board is queued; each ok/error:N the host receives answers
-the oldest queued line (GRBL answers in order); a banner or a power cut drops the
+the oldest queued line (GRBL answers in order); an ALARM:N, a banner or a power cut drops the
 queue (GRBL drops the lines still in its receive buffer; answers sent before the banner are for
 lines it had read). `sent` and `answers` list what crossed the wire.
 Python 3 standard library only.
@@ -48,6 +48,7 @@ class Wire:
         self.master = None          # host side (pty master), None while unplugged
         self.board = None           # board side (firmware's pty slave), None while powered off
         self.frozen = False
+        self.void = False            # after ALARM:N until the banner: answers stand for no line
         self.corrupt_prefixes = None  # tuple of line prefixes, armed by corrupt_next
         self.corrupted = None        # the line corrupted, once done
         self.pending_in = b''        # host -> board bytes of the line being received
@@ -223,9 +224,15 @@ class Wire:
         text = raw.decode('latin-1').strip()
         if text.startswith('Grbl '):
             self._flush('banner')
+            self.void = False
+        elif text.startswith('ALARM:'):
+            # Nothing read before the alarm runs any more; GRBL may still answer the line it was
+            # waiting to plan (an ok after ALARM:3, for a line it never executed).
+            self._flush('alarm')
+            self.void = True
         delivered = not self.frozen and self._host_open()
         if text == 'ok' or text.startswith('error:'):
-            line = self.queue.pop(0) if self.queue else None
+            line = self.queue.pop(0) if self.queue and not self.void else None
             if delivered:
                 self.answers.append((line, text))
         if delivered:
