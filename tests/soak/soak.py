@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Soak test (issue 28): a long job on the REAL GRBL 1.1h firmware (grbl-sim) with faults.
 
-Plans a hatching of many short zig-zag strokes (>= --lines G-code lines) for maker-plotter,
+Plans a grid of many small circles (>= --lines G-code lines) for maker-plotter,
 streams it with `fivebar stream` through a pty proxy (wire.py) to grbl-sim at --speedup, and
 injects faults at seeded random times: unplug (port vanishes, board runs on), host-kill (the
 stream process SIGKILLed), power (grbl-sim killed and restarted: MPos 0,0), reset (0x18 mid-job),
@@ -33,17 +33,15 @@ KINDS = ['unplug', 'host-kill', 'power', 'reset', 'error', 'stall']
 STEPS_PER_DEG = 35.5556
 
 
-def hatch_svg(path, cols, rows):
-    """cols x rows zig-zag strokes (12 legs of 0.5 x 1.2 mm: 6 x 1.2 mm) on a 7 x 2.2 mm grid: no
-    two strokes touch (1 mm apart), so every pass of the pen belongs to one stroke."""
-    w, h = cols * 7.0, rows * 2.2
+def rings_svg(path, cols, rows):
+    """cols x rows circles of 2.5 mm radius on a 6 mm grid (1 mm apart: no two strokes touch, so
+    every pass of the pen belongs to one stroke); each is planned as ~18 chords at 0.1 mm."""
+    w, h = cols * 6.0, rows * 6.0
     out = ['<svg xmlns="http://www.w3.org/2000/svg" width="%gmm" height="%gmm" viewBox="0 0 %g %g">'
            % (w, h, w, h)]
     for r in range(rows):
         for c in range(cols):
-            x, y = c * 7.0 + 0.5, r * 2.2 + 0.5
-            pts = ['%.2f,%.2f' % (x + 0.5 * k, y + (1.2 if k % 2 else 0.0)) for k in range(13)]
-            out.append('<polyline fill="none" stroke="black" points="%s"/>' % ' '.join(pts))
+            out.append('<circle cx="%.1f" cy="%.1f" r="2.5" fill="none" stroke="black"/>' % (c * 6 + 3, r * 6 + 3))
     out.append('</svg>')
     with open(path, 'w') as f:
         f.write('\n'.join(out) + '\n')
@@ -58,7 +56,7 @@ class Soak:
             path = os.path.join(self.dir, name)
             if name in ('host', 'state'):
                 shutil.rmtree(path)
-            elif re.match(r'(steps\d+\.txt|bytes\d+\.log|cli\d+-.*\.log|job\.gcode.*|wire\.log|hatch\.svg|backup\.txt)$', name):
+            elif re.match(r'(steps\d+\.txt|bytes\d+\.log|cli\d+-.*\.log|job\.gcode.*|wire\.log|rings\.svg|backup\.txt)$', name):
                 os.remove(path)
         self.rng = random.Random(a.seed)
         self.job = os.path.join(self.dir, 'job.gcode')
@@ -108,10 +106,10 @@ class Soak:
 
     # -- the job --------------------------------------------------------------------------
     def plan(self):
-        cols, rows = 26, max(2, int(round(43 * self.a.lines / 20000.0)))  # 26 x 43: 20,150 lines
+        cols, rows = 35, max(1, int(round(24 * self.a.lines / 20000.0)))  # 35 x 24: 20,2xx lines
         for _ in range(3):
-            svg = os.path.join(self.dir, 'hatch.svg')
-            hatch_svg(svg, cols, rows)
+            svg = os.path.join(self.dir, 'rings.svg')
+            rings_svg(svg, cols, rows)
             rc, out = self.cli('plan', svg, '--machine', 'maker-plotter', '-o', self.job, timeout=600)
             if rc != 0:
                 raise SystemExit('fivebar plan failed:\n' + out)
@@ -193,7 +191,11 @@ class Soak:
                     last = self.sendable[i][0]
                     break
             return last
-        oks = [line for line, ans in self.wire.answers[ans0:] if ans == 'ok']
+        oks = []
+        for line, ans in self.wire.answers[ans0:]:
+            if ans != 'ok':
+                break  # after an error:N the run stops; what follows is no progress of the job
+            oks.append(line)
         return {'host_acked': walk(oks), 'sent': walk(self.wire.sent[sent0:])}
 
     def read_progress(self):
@@ -289,10 +291,15 @@ class Soak:
                                  (r['duplicated_segments'], r['duplicated_lines']))
         if r['stray_samples']:
             self.failures.append('%d pen-down sample(s) off the drawing' % r['stray_samples'])
-        print('\n== soak report (seed %d, speed-up %dx, %.0f s wall) ==' % (self.a.seed, self.a.speedup,
-                                                                          time.time() - self.t0))
+        ratio = ''
+        try:
+            ratio = re.findall(r'\(x([0-9.]+)\)', open(os.path.join(self.dir, 'state', 'grbl_sim.log')).read())[-1]
+        except (OSError, IndexError):
+            pass
+        print('\n== soak report (seed %d, speed-up %dx asked, x%s reached, %.0f s wall) ==' %
+              (self.a.seed, self.a.speedup, ratio or '?', time.time() - self.t0))
         print('job: %d G-code lines, %d strokes, %d pen-down segments' % (lines, r['strokes'], r['segments']))
-        print('faults: %d (%s)' % (len(self.faults), ', '.join('%s %d' % (k, self.counts[k]) for k in KINDS)))
+        print('faults: %d of %d planned (%s)' % (len(self.faults), self.a.faults, ', '.join('%s %d' % (k, self.counts[k]) for k in KINDS)))
         print('recoveries: %d resumes ran (each finished the job or met the next fault); %d refused (position '
               'not known) -> %d references; %d power-ups' % (self.recoveries, self.refused, self.references,
                                                              len(self.traces)))
@@ -319,9 +326,10 @@ def main():
     ap.add_argument('--out', required=True, help='work folder (job, traces, logs)')
     ap.add_argument('--lines', type=int, default=20000)
     ap.add_argument('--speedup', type=int, default=6)
-    ap.add_argument('--faults', type=int, default=12)
-    ap.add_argument('--min-gap', type=float, default=4.0, help='seconds of streaming before a fault, min')
-    ap.add_argument('--max-gap', type=float, default=18.0, help='... max')
+    ap.add_argument('--faults', type=int, default=18, help='faults planned (each kind equally often)')
+    ap.add_argument('--min-gap', type=float, default=8.0, help='seconds of streaming before a fault, min')
+    ap.add_argument('--max-gap', type=float, default=40.0, help='... max (the defaults spread 18 faults '
+                    'over the whole job at the speed grbl-sim reaches on a loaded 2-core machine)')
     ap.add_argument('--hang-s', type=int, default=60, help='a stream that has not ended this long after a fault hangs')
     a = ap.parse_args()
     s = Soak(a)

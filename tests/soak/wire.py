@@ -168,6 +168,7 @@ class Wire:
                     self.log.write('%.3f CORRUPT %s\n' % (time.time(), line))
                 self.queue.append(line)
                 self.sent.append(line)
+                self.log.write('S %s\n' % line)
                 out += wire.encode('latin-1') + bytes([b])
             else:
                 self.pending_in += bytes([b])
@@ -235,6 +236,7 @@ class Wire:
             line = self.queue.pop(0) if self.queue and not self.void else None
             if delivered:
                 self.answers.append((line, text))
+                self.log.write('A %s %s\n' % (line, text))
         if delivered:
             try:
                 os.write(self.master, raw)
