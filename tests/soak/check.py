@@ -163,3 +163,25 @@ def check(job_path, trace_paths, home, steps_per_deg, seams):
         'redrawn_in_seams': in_seams, 'redrawn_per_seam': per_seam, 'stray_samples': stray,
         'missing_lines': missing[:10], 'duplicated_lines': duplicated[:10],
     }
+
+
+def wire_intact(sent, byte_logs):
+    """Every line the proxy forwarded reached the firmware, in order (grbl-sim's -L logs, RX):
+    -> (lines forwarded, lines the firmware received, forwarded lines missing there)."""
+    import codecs
+    rx = []
+    for path in byte_logs:
+        chunk = ''
+        with open(path) as f:
+            for record in f:
+                parts = record.split(' ', 3)
+                if len(parts) == 4 and parts[3].startswith('RX '):
+                    chunk += codecs.decode(parts[3][3:].rstrip('\n'), 'unicode_escape')
+        chunk = re.sub('[?!~\x18\x80-\xff]', '', chunk).replace('\r', '\n')
+        rx += [x for x in chunk.split('\n') if x]
+    sent = [x for x in sent if x]
+    i = 0
+    for line in rx:
+        if i < len(sent) and (line == sent[i] or (line.startswith('*') and line[1:] == sent[i][1:])):
+            i += 1
+    return len(sent), len(rx), len(sent) - i

@@ -66,7 +66,7 @@ class Soak:
         self.env = dict(os.environ, FIVEBAR_STATE_DIR=os.path.join(self.dir, 'host'))
         self.traces, self.sim, self.runs = [], None, 0
         self.faults = []          # one dict per fault injected
-        self.counts = {k: 0 for k in KINDS}
+        self.counts = {k: 0 for k in KINDS + ['unplanned']}
         self.recoveries = self.references = self.refused = 0
         self.failures = []
 
@@ -170,6 +170,8 @@ class Soak:
         if kind == 'error' and fired is not None and self.wire.corrupted is None:
             self.wire.corrupt_next([])  # the run ended before a matching line: disarmed
         out = open(log).read()
+        if fault is None and proc.returncode != 0 and 'position is not known' not in out:
+            fault = {'kind': 'unplanned', 'at_s': round(time.time() - self.t0, 1)}  # a stop of its own
         if fault is not None:
             fault.update(self.acks(sent0, ans0))
             fault['rc'] = proc.returncode
@@ -230,8 +232,9 @@ class Soak:
         resume, after_power, done, attempts = False, False, False, 0
         while not done and attempts < 4 * self.a.faults + 10:
             attempts += 1
-            kind = plan[len(self.faults)] if len(self.faults) < len(plan) else None
-            rc, out, fault = self.stream(resume, kind, delays[len(self.faults)] if kind else 0)
+            n = sum(1 for f in self.faults if f['kind'] != 'unplanned')
+            kind = plan[n] if n < len(plan) else None
+            rc, out, fault = self.stream(resume, kind, delays[n] if kind else 0)
             if after_power and 'position is not known' not in out:
                 self.failures.append('a resume after a power cut was not refused (the position is unknown)')
             if resume and 'position is not known' not in out:
@@ -248,6 +251,13 @@ class Soak:
                       'resume after line %d (sent up to %d)' %
                       (fault['kind'], fault['at_s'], fault['rc'], fault['host_acked'], fault['progress_acked'],
                        fault['resume_after'], fault['sent']), flush=True)
+                if fault['kind'] == 'unplanned':
+                    # The one seen: grbl-sim on a loaded host lets GRBL's segment buffer run dry
+                    # mid-block (Idle with a block planned, the next M3 waiting for it for ever);
+                    # the stall watchdog catches it. Any other stop of its own is a failure.
+                    print('soak: unplanned stop: ' + fault['said'], flush=True)
+                    if 'stays Idle' not in out and 'stopped answering' not in out:
+                        self.failures.append('the stream stopped by itself: ' + fault['said'])
                 if fault['lost_acks'] and fault['kind'] != 'host-kill':
                     self.failures.append('%s: the progress lost %d acknowledged line(s)' %
                                          (fault['kind'], fault['lost_acks']))
@@ -270,6 +280,7 @@ class Soak:
                 continue
             self.failures.append('stream ended without a fault (rc %s): %s' % (rc, out.strip()[-300:]))
             resume = self.read_progress() is not None
+            self.wait_idle()
         if not done:
             self.failures.append('the job never finished')
         if os.path.exists(self.progress):
@@ -289,6 +300,10 @@ class Soak:
         if r['duplicated_segments']:
             self.failures.append('%d segment(s) drawn twice outside a fault seam, lines %s' %
                                  (r['duplicated_segments'], r['duplicated_lines']))
+        sent, received, lost = check.wire_intact(self.wire.sent, [t.replace('steps', 'bytes').replace('.txt', '.log')
+                                                                for t in self.traces])
+        if lost:
+            self.failures.append('the proxy lost %d line(s) on the way to the firmware' % lost)
         if r['stray_samples']:
             self.failures.append('%d pen-down sample(s) off the drawing' % r['stray_samples'])
         ratio = ''
@@ -299,7 +314,9 @@ class Soak:
         print('\n== soak report (seed %d, speed-up %dx asked, x%s reached, %.0f s wall) ==' %
               (self.a.seed, self.a.speedup, ratio or '?', time.time() - self.t0))
         print('job: %d G-code lines, %d strokes, %d pen-down segments' % (lines, r['strokes'], r['segments']))
-        print('faults: %d of %d planned (%s)' % (len(self.faults), self.a.faults, ', '.join('%s %d' % (k, self.counts[k]) for k in KINDS)))
+        print('faults: %d of %d planned (%s); unplanned stops (the board stuck, caught by the stall '
+              'watchdog): %d' % (len(self.faults) - self.counts['unplanned'], self.a.faults,
+                                 ', '.join('%s %d' % (k, self.counts[k]) for k in KINDS), self.counts['unplanned']))
         print('recoveries: %d resumes ran (each finished the job or met the next fault); %d refused (position '
               'not known) -> %d references; %d power-ups' % (self.recoveries, self.refused, self.references,
                                                              len(self.traces)))
@@ -312,6 +329,8 @@ class Soak:
               ', '.join('%s %d' % (f['kind'], n) for f, n in zip(self.faults, r['redrawn_per_seam'])))
         print('acknowledged lines lost by the progress file: max %d (unplug/power/reset/error/stall); '
               'max %d after a host kill (saved every second, by design)' % (other_lost, kill_lost))
+        print('wire: %d lines forwarded by the proxy, %d received by the firmware, %d missing there' %
+              (sent, received, lost))
         print('result: %s' % ('PASS' if not self.failures else 'FAIL'))
         for f in self.failures:
             print('  FAIL: ' + f)
@@ -325,7 +344,7 @@ def main():
     ap.add_argument('--grbl-start', required=True, help='grbl-sim start.sh')
     ap.add_argument('--out', required=True, help='work folder (job, traces, logs)')
     ap.add_argument('--lines', type=int, default=20000)
-    ap.add_argument('--speedup', type=int, default=6)
+    ap.add_argument('--speedup', type=int, default=8, help='grbl-sim SPEEDUP (it reaches what the CPU allows)')
     ap.add_argument('--faults', type=int, default=18, help='faults planned (each kind equally often)')
     ap.add_argument('--min-gap', type=float, default=8.0, help='seconds of streaming before a fault, min')
     ap.add_argument('--max-gap', type=float, default=40.0, help='... max (the defaults spread 18 faults '

@@ -13,8 +13,9 @@ the proxy waits for the firmware's pty to come back.
 
 Accounting: every line forwarded to the board is queued; each ok/error:N the host receives answers
 the oldest queued line (GRBL answers in order); an ALARM:N, a banner or a power cut drops the
-queue (GRBL drops the lines still in its receive buffer; answers sent before the banner are for
-lines it had read). `sent` and `answers` list what crossed the wire.
+queue (GRBL drops the lines still in its receive buffer), and an answer between a reset byte or
+an ALARM:N and the banner stands for no line (GRBL answers the line it was in when the abort came,
+without executing it). `sent` and `answers` list what crossed the wire.
 Python 3 standard library only.
 """
 import os
@@ -91,6 +92,8 @@ class Wire:
         with self.lock:
             if self.board is not None:
                 os.write(self.board, data)
+                if 0x18 in data:
+                    self.void = True
 
     def host_connected(self):
         with self.lock:
@@ -157,6 +160,7 @@ class Wire:
                 out.append(b)
                 if b == 0x18:
                     self.pending_in = b''
+                    self.void = True
             elif b in (0x0A, 0x0D):
                 line = self.pending_in.decode('latin-1')
                 self.pending_in = b''
@@ -228,7 +232,8 @@ class Wire:
             self.void = False
         elif text.startswith('ALARM:'):
             # Nothing read before the alarm runs any more; GRBL may still answer the line it was
-            # waiting to plan (an ok after ALARM:3, for a line it never executed).
+            # waiting to plan (an ok after ALARM:3, for a line it never executed). Likewise after
+            # a reset byte (self.void set where it is sent), until the banner.
             self._flush('alarm')
             self.void = True
         delivered = not self.frozen and self._host_open()
