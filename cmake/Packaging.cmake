@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The Debian package (CPack DEB): scripts/package.sh writes
 # build/package/fivebar-studio_VERSION_ARCH.deb from the release build. Everything the install
 # rules put under the prefix goes in; the dependencies are computed by dpkg-shlibdeps from the

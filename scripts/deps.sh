@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Installs the Debian 12 packages FiveBar Studio needs, only those that are missing.
 # Quiet when nothing is missing. Needs root (or sudo) when something is.
 set -euo pipefail

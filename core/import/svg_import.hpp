@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SVG import: an SVG file -> fivebar::Drawing (docs/svg-import.md).
 //
 // Output frame: the work frame, millimetres, y UP, origin at the bottom-left corner of the page

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // importSvgFile: runs fivebar-svg-worker under a time and memory limit and maps every way it can
 // end (result, crash, timeout, cancel, garbage output) to an ImportResult naming the file. The
 // result comes back on a pipe of its own and is decoded while the worker still writes it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `fivebar calibrate fit` end to end: the simulated maker-plotter's marks -> a calibrated profile
 // and report; outliers named; the distance form; bad input named by file and line, nothing written.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fivebar CLI end to end: runs the built binary with stdin/stdout/stderr in temporary files.
 #include <gtest/gtest.h>
 #include <sys/wait.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `fivebar design` end to end: the brief, the JSON and profile files, an impossible
 // brief, usage errors and --machine evaluation.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The machine commands end to end against fivebar-sim on a pseudo-terminal: send / stream refuse
 // what the motion check refuses (nothing reaches the board), reference and home.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `fivebar text` end to end (app/cli/cmd_text.cpp): the SVG it writes (mm, one path per stroke,
 // the H at the asked height), its errors, --list-fonts, and the check that `fivebar plan`
 // draws the text at true size with the pen-down length of the glyphs' strokes within 1 %.

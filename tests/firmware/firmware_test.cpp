@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The real GRBL 1.1h firmware (../shared/tools/grbl-sim, every motor step each millisecond) runs
 // a planned A5 page (a 200 x 138 mm frame, a 60 mm circle, the two diagonals) for maker-plotter
 // at tolerance 0.05 mm, streamed by `fivebar stream` (issue 16). From the firmware's step trace:

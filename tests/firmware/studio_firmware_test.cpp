@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studio at the REAL GRBL 1.1h firmware (../shared/tools/grbl-sim), issue 23's check:
 // `fivebar-studio --port PTY --machine hoang2015` (offscreen, settings of its own) connects at
 // start as its Connect button does; within 15 s the firmware has received the studio's status

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # check_package.sh BUILD_DIR VERSION SOURCE_DIR: builds the .deb with CPack from BUILD_DIR (already
 # built) into a temporary directory and checks it: file name and control fields (dependencies
 # computed by dpkg-shlibdeps), the installed files, the desktop entry (desktop-file-validate),

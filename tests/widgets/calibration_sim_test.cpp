@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studio's simulated imperfect machine and the wizard's measuring forms (issue 13), offscreen:
 // the simulated-machine setting applies at once to an open simulated machine, is saved where the
 // maker sets it and is not left behind by the wizard; the wizard's preview trace is what the
