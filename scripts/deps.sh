@@ -11,7 +11,7 @@ packages=(
   libgl-dev libgtest-dev libgmock-dev libbenchmark-dev
   hershey-fonts-data
   xvfb xauth
-  dpkg-dev desktop-file-utils appstream man-db
+  dpkg-dev desktop-file-utils appstream man-db lintian
 )
 missing=()
 for p in "${packages[@]}"; do
