@@ -50,7 +50,7 @@ class Cli : public ::testing::Test {
   CliRun run(const std::vector<std::string>& args, const std::string& input = "") {
     std::ofstream(dir_ / "stdin") << input;
     std::string cmd = quote(FIVEBAR_CLI);
-    for (const std::string& a : args) cmd += " " + quote(a);
+    for (const std::string& a : args) cmd.append(" ").append(quote(a));
     cmd += " <" + quote((dir_ / "stdin").string()) + " >" + quote((dir_ / "stdout").string()) +
            " 2>" + quote((dir_ / "stderr").string());
     const int status = std::system(cmd.c_str());

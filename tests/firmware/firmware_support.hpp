@@ -75,7 +75,7 @@ class Board {
     argv.push_back(nullptr);
     pid_ = fork();
     if (pid_ == 0) {
-      std::freopen("/dev/null", "w", stdout);
+      if (!std::freopen("/dev/null", "w", stdout)) _exit(127);
       execv("/bin/sh", argv.data());
       _exit(127);
     }

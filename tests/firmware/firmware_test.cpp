@@ -96,7 +96,7 @@ std::vector<Sample> runOnFirmware(const fs::path& dir, const fs::path& profile,
   if (pid == 0) {
     const std::string script = kStartScript.string(), link = pty.string(),
                       state = (dir / "state").string(), trace = steps.string();
-    std::freopen("/dev/null", "w", stdout);
+    if (!std::freopen("/dev/null", "w", stdout)) _exit(127);
     execl("/bin/sh", "sh", script.c_str(), link.c_str(), "1", state.c_str(), "-s", trace.c_str(),
           "-r", "0.001", static_cast<char*>(nullptr));
     _exit(127);

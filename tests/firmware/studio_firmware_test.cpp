@@ -38,8 +38,8 @@ class StudioRun {
     if (pid_ == 0) {
       setenv("QT_QPA_PLATFORM", "offscreen", 1);
       setenv("XDG_CONFIG_HOME", config.c_str(), 1);  // no remembered profile, port or layout
-      std::freopen(out.c_str(), "w", stdout);
-      std::freopen(out.c_str(), "a", stderr);
+      if (!std::freopen(out.c_str(), "w", stdout) || !std::freopen(out.c_str(), "a", stderr))
+        _exit(127);
       execv(argv[0], argv.data());
       _exit(127);
     }

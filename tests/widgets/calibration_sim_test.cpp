@@ -87,7 +87,7 @@ TEST(SimulatedMachine, ATrueMachineSetWhileConnectedAppliesAtOnce) {
   rig.truth().setTruth(t, false);  // the machine is open: no reconnect
   ASSERT_TRUE(rig.session.simulatedTrueMachine().has_value());
   EXPECT_NEAR(rig.session.simulatedTrueMachine()->geometry.b1, rig.doc.profile().geometry.b1 + 0.5, 1e-12);
-  Vec2 end;
+  Vec2 end = Vec2::Zero();
   JointAngles q;
   ASSERT_TRUE(drawStroke(rig, &end, &q));
   Geometry real = rig.doc.profile().geometry;
