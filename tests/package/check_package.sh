@@ -83,14 +83,15 @@ grep -qF '/usr/share/common-licenses/GPL-3' "$copyright" || fail "copyright: no 
 changelog_version=$(zcat "$share/doc/fivebar-studio/changelog.gz" | dpkg-parsechangelog -l - -S Version 2>&1)
 [ "$changelog_version" = "$version" ] || fail "changelog version: $changelog_version"
 
-# lintian (Debian package lintian, scripts/deps.sh): no error; the warnings are printed
+# lintian (Debian package lintian, scripts/deps.sh): no error; warnings and infos are printed
 # (docs/packaging.md says which ones are kept and why).
 if command -v lintian >/dev/null; then
-  lintian --no-tag-display-limit "$deb" >"$tmp/lintian.log" 2>&1
+  lintian --fail-on error --tag-display-limit 0 --display-info "$deb" >"$tmp/lintian.log" 2>&1
+  lintian_rc=$?
   grep -vE '^E: ' "$tmp/lintian.log" | sed 's/^/lintian: /'
-  if grep -qE '^E: ' "$tmp/lintian.log"; then
+  if [ "$lintian_rc" -ne 0 ] || grep -qE '^E: ' "$tmp/lintian.log"; then
     grep -E '^E: ' "$tmp/lintian.log"
-    fail "lintian: $(grep -cE '^E: ' "$tmp/lintian.log") errors"
+    fail "lintian (exit $lintian_rc): $(grep -cE '^E: ' "$tmp/lintian.log") errors"
   fi
   echo "lintian: $(grep -cE '^E: ' "$tmp/lintian.log") errors, $(grep -cE '^W: ' "$tmp/lintian.log") warnings"
 else
