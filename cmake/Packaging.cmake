@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The Debian package (CPack DEB): scripts/package.sh writes
 # build/package/fivebar-studio_VERSION_ARCH.deb from the release build. Everything the install
 # rules put under the prefix goes in; the dependencies are computed by dpkg-shlibdeps from the
@@ -6,14 +7,22 @@ set(CPACK_GENERATOR "DEB")
 set(CPACK_PACKAGE_NAME "fivebar-studio")
 set(CPACK_PACKAGE_VERSION "${PROJECT_VERSION}")
 set(CPACK_PACKAGE_VENDOR "The FiveBar Studio developers")
-set(CPACK_PACKAGE_CONTACT "The FiveBar Studio developers <maintainers@users.noreply.github.com>")
+set(CPACK_PACKAGE_CONTACT "${FIVEBAR_MAINTAINER}")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "${PROJECT_DESCRIPTION}")
-set(CPACK_PACKAGE_DESCRIPTION
-    "FiveBar Studio makes a five-bar linkage robot (two motors on a base, two driving links, two\n"
-    "floating links meeting at the pen) as easy to use as an x-y gantry: load an SVG, see it placed\n"
-    "on the machine's real workspace with its singularities drawn, preview and simulate the job,\n"
-    "and stream motor angles to a stock GRBL 1.1 board. Includes the command-line tool fivebar and\n"
-    "the simulated GRBL machine fivebar-sim.")
+# The extended Description: one string of lines of at most 79 characters (CPack prefixes each
+# with the space Debian's format wants). string(CONCAT), not set() with several strings: set()
+# makes a list, and CMake joins a list with ';', which `apt show` then printed at the start of
+# every line. tests/package/check_package.sh checks the field's lines.
+string(CONCAT CPACK_PACKAGE_DESCRIPTION
+    "FiveBar Studio makes a five-bar linkage robot (two motors on a base, two\n"
+    "driving links, two floating links meeting at the pen) as easy to use as an\n"
+    "x-y gantry: load an SVG, see it placed on the machine's real workspace with\n"
+    "its singularities drawn, preview and simulate the job, and stream motor\n"
+    "angles to a stock GRBL 1.1 board.\n"
+    "\n"
+    "Includes the command-line tool fivebar and the simulated GRBL machine\n"
+    "fivebar-sim.")
+set(CPACK_PACKAGE_HOMEPAGE_URL "https://github.com/fivebar/studio")
 set(CPACK_PACKAGING_INSTALL_PREFIX "/usr")
 set(CPACK_PACKAGE_DIRECTORY "${CMAKE_SOURCE_DIR}/build/package")
 set(CPACK_STRIP_FILES ON)

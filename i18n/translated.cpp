@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Core messages in the user's language. Contract: translated.hpp.
 #include "i18n/translated.hpp"
 

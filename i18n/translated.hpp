@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One message mechanism for every Qt front end: the core's messages (core/support/message.hpp)
 // in the user's language: the template
 // translated with QCoreApplication::translate(context, template) from translations/*.ts, real

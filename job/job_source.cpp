@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Job sources shared by the studio and `fivebar plan`. Contract: job_source.hpp.
 #include "job/job_source.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The job library's door (fivebar::job, Qt Core + the SVG import, no Gui widgets): where a job's
 // drawing comes from, the same for the studio (window and --export-gcode) and for `fivebar plan`:
 // an SVG file or a .fivebar project, imported through the SVG worker (the file itself while it is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Painting of a design (core/design): its workspace, singularity curves and placed rectangle
 // over one of the measure maps (conditioning, transmission, resolution), into any QPainter.
 // The studio's Design dialog preview, the canvas overlay and `fivebar design --png` share it.

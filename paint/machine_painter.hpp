@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Painting functions for the canvas background and the machine, each taking a QPainter& so the
 // studio, tests and benchmarks paint the same pixels into widgets or QImages. They only draw
 // what core computed (a Pose); no kinematics here.

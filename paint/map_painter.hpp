@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Scalar workspace maps as canvas overlays: transmission angle, conditioning and mm-per-step
 // resolution of one working mode, each as a colour image over the reachable cells with a
 // colour-bar legend giving the values. Painting functions take a QPainter&.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studio's colours, in one place so canvas, legends, screenshots and the CLI's PNGs agree.
 // A light theme: paper-white background, slate machine, blue drawing, red problems.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The canvas view: the one place where the machine frame (mm, y up) meets the widget frame
 // (px, y down). widgetFromMachine() is the transform every painter takes.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Painting of a workspace analysis (core/workspace.hpp) for one working mode, into any QPainter:
 // the studio's overlay, the CLI's `workspace --png` image and tests share these functions.
 // They draw what core computed; nothing here evaluates kinematics.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Configures (once) and builds the release preset. Quiet unless something fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Installs the Debian 12 packages FiveBar Studio needs, only those that are missing.
 # Quiet when nothing is missing. Needs root (or sudo) when something is.
 set -euo pipefail
@@ -10,7 +11,7 @@ packages=(
   libgl-dev libgtest-dev libgmock-dev libbenchmark-dev
   hershey-fonts-data
   xvfb xauth
-  dpkg-dev desktop-file-utils appstream man-db
+  dpkg-dev desktop-file-utils appstream man-db lintian
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Installs what is missing, builds the release, and writes the Debian package
 # build/package/fivebar-studio_VERSION_ARCH.deb (CPack; dependencies by dpkg-shlibdeps).
 # Install it with: sudo apt install ./build/package/fivebar-studio_*.deb

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Installs what is missing, builds, and starts FiveBar Studio connected to the built-in
 # simulated machine with the demo drawing loaded. Extra arguments go to the studio.
 set -euo pipefail

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Rewrites tests/slow_tests.txt from the test costs ctest measured in the last runs
 # (build/release/Testing/Temporary/CTestCostData.txt): every test of the fast-tier binaries that
 # took 0.5 s or more on average (the tier runs in well under a minute on 2 cores). The rest of those binaries is the fast tier, `ctest -L fast`.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Refreshes every translations/fivebar_LANG.ts from the sources (lupdate, through the build's
 # update_translations target: new strings are added as unfinished, strings gone from the sources
 # are dropped) and lists what is left to translate, per language. Exit 1 while anything is.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // BoardPreflight: the planned job against the connected board itself, kept current for the
 // studio's pre-flight problem list. With the board's soft limits on ($20=1, its $$ read on
 // connect), every target of the job is checked in MACHINE coordinates (work + the reported WCO)

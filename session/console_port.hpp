@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // ConsolePort: the console panel's narrow view of the machine session: send a (checked) line,
 // the expert switch for unchecked lines, whether lines can be sent now, and the console's lines.
 // The panel sees nothing else of the session (no jog, run, settings or transport).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // StudioInputs for a job of the studio's own beside the document's: the calibration wizard's
 // pattern and verification pattern. A fixed profile, name and planned job, so that such a job runs
 // through a RunController like any other (the same pose and settings checks before a byte, the

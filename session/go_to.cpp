@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The go-to planned. Contract: go_to.hpp.
 #include "session/go_to.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The canvas's click-to-go-to as the session plans it: the jog planner's checked joint-space
 // path from where a new jog starts to the clicked point, cut by the board's part of the one
 // motion check, and the pen's path along it for the canvas to draw.

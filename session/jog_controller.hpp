@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Jog logic behind the jog panel and the keyboard, without widgets: a tap is one step, holding
 // starts a continuous jog streamed as short checked "$J=" moves (a few planner blocks ahead, so
 // the machine never runs far past the release), and releasing cancels it with 0x85. Every move is

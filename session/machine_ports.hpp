@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The narrow doors of the machine session, one per kind of panel (the house of issue 11): a panel
 // is handed only the ports it needs by the composition root (widgets/machine/machine_panels.cpp
 // over session::MachineSide), so it cannot reach the rest of the MachineSession (transport, link,

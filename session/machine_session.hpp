@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // MachineSession: the studio's only door to the machine. It owns the transport (the built-in
 // simulated machine or a serial port), the MachineLink (protocol + clock) and answers the
 // panels: connection, status, console, alarm/error banner, jog and tool commands. A job run is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // MachineSession's commands: console lines (checked unless the expert switch is on), checked
 // jogs and go-to moves, board settings, recovery (unlock, home, reference, reset), feed hold,
 // cycle start and the pen. Every move passes the motion check (drivers/check/motion_check) first.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // MachineSide: the machine side of the studio composed in one place, without widgets: the
 // MachineSession (the only door to the machine), the RunController streaming jobs through it and
 // the JogController behind the jog panel and the keyboard, and the ConsolePort (the console's view). The studio creates one next to its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // MachineView: the read-only view of the machine session every machine panel gets: connection,
 // the board's reported state, the pen, the problem for the banner, the board's settings against
 // the profile, with a signal for each change. It has no command: commands go through the ports

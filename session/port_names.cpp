@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The machine's ports. Contract: port_names.hpp.
 #include "session/port_names.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The machine's ports as the studio offers them (the session is the widgets' only door to the
 // drivers): the serial ports found on this computer, and network ports written tcp:HOST:PORT.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // RunController: runs the planned job on the connected machine. Start writes the job's G-code
 // beside the others in the job directory (atomically) and streams it with the drivers'
 // StreamSession (character counting, progress saved beside the job every second and whenever

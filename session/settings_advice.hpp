@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a difference between the board's GRBL $ settings and the profile's means for a maker:
 // one sentence per differing setting, and whether it would stop (or spoil) a job, so the machine
 // panel can warn on connect and Start can explain a mismatch before the machine moves.

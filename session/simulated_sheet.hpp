@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The simulated sheet, beside the simulated board: what a "true machine" (true_machine.hpp: geometry,
 // zero offsets and backlash that differ from the profile) really draws when it runs the calibration
 // pattern, and the sheet measured as a maker would (marks from a corner, distances with a ruler,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // StudioInputs: what the machine side needs from the studio's document, and nothing more: the
 // machine profile, the drawing's file name (job files are named after it) and the job the preview
 // planned, with a signal for each change. The session layer knows no document, undo stack or

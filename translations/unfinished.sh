@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # translations/unfinished.sh FILE.ts...: prints one "LANG: CONTEXT: SOURCE" line per message
 # that is not translated (type="unfinished" or empty), and exits 1 when there is any.
 # Used by scripts/update-translations.sh and the Translations.* ctest tests.

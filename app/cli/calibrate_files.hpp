@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Output files of the calibrate commands: written to FILE.part then renamed, and only once every
 // output of a command is ready (bad input writes nothing).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar calibrate: the calibration commands (issue 13). A tiny dispatcher:
 //   calibrate pattern ...  cmd_calibrate_pattern.cpp (docs/calibration-pattern.md)
 //   calibrate scan ...     cmd_calibrate_scan.cpp (Qt builds only)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar calibrate fit: measured marks -> a calibrated profile and a report (docs/calibration.md).
 #include <algorithm>
 #include <ctime>

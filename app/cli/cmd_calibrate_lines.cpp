@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar calibrate lines --image SCAN.png --dpi 600 [-o LINES.csv]: Hoang's accuracy lines measured
 // in a scan of the drawn sheet (core/calibration/scan/scan_lines.hpp).
 #include <QGuiApplication>

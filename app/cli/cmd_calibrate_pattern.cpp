@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar calibrate pattern --machine PRESET|FILE -o PATTERN.gcode --marks MARKS.csv [--svg FILE]
 #include <iostream>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar calibrate scan --marks MARKS.csv --image SCAN.png --dpi 600 -o MEASURED.csv
 #include <QGuiApplication>
 #include <cmath>

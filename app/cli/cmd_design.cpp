@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar design: link lengths and motor spacing for a target rectangle (docs/design.md).
 #include <cmath>
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar ik / fk: line-oriented inverse and forward kinematics filters.
 //   ik: "x,y" (mm, machine frame) per stdin line -> "theta1,theta2" (deg, (-180, 180], 9 decimals)
 //   fk: "theta1,theta2" (deg) per stdin line     -> "x,y" (mm, 9 decimals)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar stream / send / setup: the machine commands (GRBL 1.1 over a serial port or the
 // simulator's pseudo-terminal). Protocol rules and resume format: docs/machine-protocol.md.
 #include <QCoreApplication>

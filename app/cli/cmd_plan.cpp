@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar plan: SVG drawing -> GRBL G-code (+ REPORT.json) for a five-bar machine.
 // fivebar grbl-settings: the $ lines a profile expects.
 #include <chrono>

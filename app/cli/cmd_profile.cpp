@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar profile: machine profile utilities.
 //   profile check FILE...       validation report, one "FILE: field: message" line per issue
 //   profile show PRESET|FILE    the profile as JSON (a starting point for your own machine)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar reference / home: declare the current pose the profile's home pose (G10 L20), and
 // bring the machine home ($H with switches, else a checked pen-up move to the home pose).
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar send: one-off lines to a GRBL board, every line that can move the machine checked
 // first (drivers/check/motion_check.hpp) from the board's real pose (drivers/protocol/pose_sync.hpp).
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar text: single-stroke text in a Hershey font -> an SVG of paths in mm (docs/text.md).
 #include <cstdio>
 #include <fstream>

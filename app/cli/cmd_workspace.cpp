@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar workspace: areas, type II curves and the largest singularity-free rectangle of one
 // working mode; optionally a JSON summary and a PNG overlay image.
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fivebar CLI's subcommands. Each takes the arguments after its name, reads stdin and writes
 // stdout/stderr, and returns the process exit code (0 ok, 1 failure, 2 usage error).
 #pragma once

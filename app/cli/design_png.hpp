@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The `fivebar design --png` atlas, painted with widgets/design/design_painter when the CLI is
 // built with Qt. Separate so that the command itself needs only the core.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shared pieces of the kinematics, workspace and profile commands: "--machine PRESET|FILE"
 // resolution with readable errors, strict parsing of "a,b" number pairs from text lines, and
 // (in a build with the drivers) the link a machine command's "--port NAME [--baud N]" names.

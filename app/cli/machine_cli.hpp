@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shared pieces of the machine commands (stream, send, setup, reference, home): the Qt event
 // loop, --baud parsing, and the warning --unchecked prints.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar: the command-line tool on the FiveBar Studio core.
 #include <cstring>
 #ifdef FIVEBAR_HAVE_QT

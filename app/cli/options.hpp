@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Minimal, strict option parsing for the CLI: "--name value" and "--flag" forms, every unknown
 // option is an error that names it.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The import side of `fivebar plan`: import warnings on stderr, the point budget (--max-points)
 // and fills (--fill outline|hatch|none, --hatch-spacing, --hatch-angle, --crosshatch,
 // --no-hatch-outline), dashes (--dashes dashed|solid) and text (--text-font NAME). Kept apart from cmd_plan.cpp, which calls these few functions.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The CLI's words for plan fixes. Contract: plan_words.hpp.
 #include "plan_words.hpp"
 

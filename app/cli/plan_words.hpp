@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The CLI's words for what to change when a job cannot be planned (core/planning/plan_fix.hpp):
 // plain English naming the `fivebar plan` option that does it, numbers in the C locale (they are
 // typed on a command line).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // StopSignals: Ctrl+C (SIGINT) and SIGTERM as a request to stop, delivered on the Qt event loop
 // (a self-pipe read by a QSocketNotifier: the handler itself only writes one byte). Installed
 // with sigaction, so it also works for a command started with '&' from a non-interactive shell

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The `fivebar workspace --png` image, painted with widgets/workspace_painter when the CLI is
 // built with Qt (FIVEBAR_BUILD_GUI=ON). Separate so that the command itself needs only the core.
 #pragma once

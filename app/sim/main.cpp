@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar-sim: the simulated GRBL 1.1 five-bar controller on a pseudo-terminal, so that
 // QSerialPort (the studio, `fivebar stream`) or any other sender opens it like a real board.
 //

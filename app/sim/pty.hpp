@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A pseudo-terminal for fivebar-sim: the master side is the simulated board, the slave side
 // (raw mode, reached through a symlink) is what a sender opens as a serial port.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "record.hpp"
 
 #include <QSaveFile>
@@ -64,7 +65,8 @@ std::string drawnText(const sim::SimMachine& m, bool svg) {
         "frame in mm, y flipped (y_svg = -y) -->\n<g fill=\"none\" stroke=\"black\" stroke-width=\"0.3\">\n";
   for (const auto& s : strokes) {
     out += "<polyline points=\"";
-    for (size_t i = 0; i < s.size(); ++i) out += (i ? " " : "") + num(s[i].x()) + "," + num(-s[i].y());
+    for (size_t i = 0; i < s.size(); ++i)
+      out.append(i ? " " : "").append(num(s[i].x())).append(",").append(num(-s[i].y()));
     out += "\"/>\n";
   }
   return out + "</g>\n</svg>\n";

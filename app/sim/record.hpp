@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The simulated machine's record file (JSON): what it drew and how the stream went, for tests
 // and benchmarks. Format in docs/machine-protocol.md.
 #pragma once

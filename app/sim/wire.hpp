@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Serial wire emulation for fivebar-sim: bytes cross at most baud/10 per second in each
 // direction (8 data bits, no parity, 1 stop bit), like a real UART link. baud <= 0: no limit.
 // Times are seconds on one monotonic clock.

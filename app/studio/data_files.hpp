@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Where fivebar-studio finds its data files (demo drawing, compiled translations, presets) and
 // which user interface language it starts in.
 //

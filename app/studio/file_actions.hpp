@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studio's File menu work: Save / Save As / Open project (.fivebar, atomic via QSaveFile;
 // Save writes the document's projectPath(), and is Save As while there is none: a drawing just
 // opened, even over an open project, is a new untitled project),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar-studio DRAWING.svg|PROJECT.fivebar [--machine PRESET|FILE] --export-gcode OUT.gcode:
 // plans the input exactly as the studio window does (job/job_source.hpp, the document's
 // default mode and tolerance, the placement chosen on import or saved in the project) and writes

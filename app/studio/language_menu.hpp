@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // View > Language: the user interface language, remembered in QSettings ("view/language": "",
 // "en", "de", "es" or "fr"; "" follows the system). The choice applies at the next start (the
 // menu says so); --lang overrides it for one run (app/studio/data_files.hpp startupLocale).

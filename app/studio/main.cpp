@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar-studio: the desktop application. Composition and start-up only:
 //   fivebar-studio --help | --version     (no display needed)
 //   fivebar-studio [--demo] [--machine PRESET|FILE] [--port PORT [--baud N]] [--lang LANG]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studio's main window: a composition root only. It creates the document, the controllers,
 // the canvas with its layers and tool, and the panels in dock widgets, wires them together, and
 // offers the menus and shortcuts. Dock layout and window geometry are remembered (QSettings).

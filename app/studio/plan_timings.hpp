@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar-studio --timings: how long the studio takes from opening a drawing to its planned
 // preview, and each stage's wall and CPU time, printed to stderr in the form of
 // `fivebar plan --timings`, so that the two can be compared on the same file

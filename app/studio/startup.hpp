@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Start-up helpers of fivebar-studio: resolving the machine profile argument, connecting a port
 // named on the command line, and the --screenshot mode (wait until the window shows a planned
 // job, grab it, quit).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hoang's accuracy pattern (Hoang et al. 2015): 10 parallel lines, 40 mm long, 10 mm apart, drawn
 // to show a machine's straightness and length errors before and after calibration; and the
 // figures computed from points measured along the drawn lines (in any paper frame).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Backlash (play) of the motors: a simulated machine with play (the model of
 // core/planning/backlash_compensation.hpp) to test the compensation, and the estimate of each
 // motor's play from the calibration pattern's backlash rows. docs/calibration-pattern.md.

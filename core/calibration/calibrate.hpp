@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The calibration door: measurements of the drawn pattern in, a calibrated profile out. One
 // sequence for every front end (`fivebar calibrate fit`, the studio's calibration wizard): the
 // backlash rows' play (estimateBacklash), the fit of the marks or of the ruler's distances

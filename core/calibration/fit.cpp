@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The calibration fit's procedure (docs/calibration.md): split off held-out measurements, try both
 // paper mirror hypotheses, reject mis-measured marks one at a time by a robust rule, refit, then
 // report conditioning, standard deviations and before/after errors.

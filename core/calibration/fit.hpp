@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fitting the calibration model to measured marks (issue 13, docs/calibration.md): nonlinear least
 // squares with Eigen's LevenbergMarquardt module, robust to mis-measured marks (flagged, named,
 // left out, refitted), with parameter standard deviations, the problem's conditioning and an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Numbering found marks by matching them to the pattern: the sheet may be turned, shifted and
 // mirrored (a rigid placement, no scale: the scan's dpi is known), and the drawn marks lie up to a
 // few mm from their nominal places (that is what calibration measures). Hypotheses from pairs of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // MARKS.csv (what `fivebar calibrate pattern` writes: the marks as commanded) and MEASURED.csv
 // (where they were found on the sheet; what `fivebar calibrate fit` reads). Formats:
 // docs/calibration-pattern.md. Angles in degrees as sent in the G-code, lengths in mm.

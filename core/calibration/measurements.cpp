@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // CSV measurement files of the calibration (docs/calibration.md). Deliberately plain CSV: fields
 // separated by commas, no quoting (ids and numbers never need it).
 #include "core/calibration/measurements.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading the calibration's measurement files (docs/calibration.md): CSV with a header line.
 //   MEASURED.csv   id,theta1_deg,theta2_deg,x_mm,y_mm   (a mark's commanded angles and its
 //                  measured position in any paper frame, mirrored or not)

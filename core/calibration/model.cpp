@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The calibration model: docs/calibration.md. Symbols as in docs/kinematics.md.
 #include "core/calibration/model.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The calibration model (issue 13, docs/calibration.md): what the fit estimates about a real
 // five-bar, and where such a machine puts its pen for commanded motor angles. Machine frame,
 // millimetres and radians; "commanded" angles are the ones sent in G-code.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // makeCalibrationPattern: candidate points over the safe area, backlash rows at fixed asymmetric
 // places, grid marks by farthest-point sampling (edge first); planCalibrationPattern: the one
 // planner plus the checked approach moves. Design: docs/calibration-pattern.md.

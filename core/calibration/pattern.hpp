@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The calibration pattern (docs/calibration-pattern.md): numbered marks at motor poses spread over
 // the safe working area, edge included; rows of three marks whose middle one is approached with
 // one motor reversed, to measure that motor's backlash; and Hoang's accuracy pattern

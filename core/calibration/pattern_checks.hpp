@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shared checks of the pattern builders: a machine-frame point as a commanded pose that passes
 // the safety rule (core/planning/safety.hpp), and a disc of such points.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Least-squares rigid placement of measured points (paper frame) onto nominal points (machine
 // frame): rotation and translation, mirrored or not (a sheet measured with y down, or scanned face
 // down). Kabsch's method on 2-D points.

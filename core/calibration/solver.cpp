@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Least squares for the calibration fit (docs/calibration.md): Eigen's LevenbergMarquardt (the
 // MINPACK lmder port in unsupported/Eigen/NonLinearOptimization) with a central-difference Jacobian.
 #include "core/calibration/solver.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Internal to core/calibration: one least-squares problem (points or distances, one mirror
 // hypothesis, a subset of the measurements) solved with Eigen's LevenbergMarquardt module.
 #pragma once

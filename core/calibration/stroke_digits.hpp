@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Simple stroke digits for the numbers a calibration pattern draws beside its marks: seven-segment
 // shapes a pen draws in one to three strokes each, readable at 3 mm.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Design results as JSON (the `fivebar design --json` file, docs/design.md "Output") and as a
 // machine profile (core/machine/profile.hpp) ready to save.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Design evaluation over a placed rectangle (docs/design.md "Measures").
 #include "core/design/evaluation.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Design evaluation: how well one five-bar geometry, in one working mode, serves a target
 // rectangle placed in the machine frame (docs/design.md). Headless, millimetres and radians.
 //

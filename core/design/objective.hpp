@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a design search minimises, and the penalty that ranks designs that break a rule below
 // every design that keeps them all (docs/design.md "Search").
 #pragma once

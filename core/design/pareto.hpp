@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Non-dominated sets for two objectives, both minimised (docs/design.md "Trade-off").
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Placement: a scan of rectangle centres over the reachable region's bounding box, then a local
 // NLopt search (Subplex, derivative-free: the worst case over samples is not smooth) from the
 // best few, on successively finer samplings.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The best placement of a target rectangle for a given geometry and working mode: the position
 // (and optionally a quarter turn) that minimises the objective while keeping every rule
 // (docs/design.md "Placement").

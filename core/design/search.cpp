@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Design search (docs/design.md "Search"): starts over (working mode, turn, seed), each a global
 // NLopt run (GN_CRS2_LM) on a coarse sampling of the rectangle then a local one (LN_SBPLX) on a
 // finer sampling; every feasible design seen feeds a per-start Pareto archive. Starts are taken

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Design search: the link lengths, motor spacing and rectangle placement that best meet an
 // objective within a maker's bounds, and the trade-off between worst-case condition number and
 // footprint (docs/design.md "Search"). NLopt: a global method (CRS2 with local mutation, seeded)

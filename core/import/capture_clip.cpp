@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The capture engine's clip paths (capture_engine.hpp kClip*): buffers per open clip, the clip
 // region's shapes, and cutting a buffer when its clip is applied (clip.hpp).
 #include <QPainter>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A QPaintDevice/QPaintEngine pair that records what QSvgRenderer paints as polylines instead of
 // pixels: every path, polygon, line, rectangle, ellipse and text outline, mapped by the painter's
 // current transform into the page frame (mm, y down) and flattened within the tolerance.

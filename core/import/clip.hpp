@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Clip paths applied to plotted lines (SVG "Clipping paths"): the clip region is the union of its
 // shapes, each filled with its own clip-rule; what is drawn is the part of each line inside it.
 // Pure geometry in the page frame (mm). Strokes are cut at the region's edges by segment

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Dashed strokes (stroke-dasharray, stroke-dashoffset) cut into the dashes a plotter draws, pen up
 // in between, as SVG 2 "Dash patterns" specifies: lengths in the element's user units along the
 // path, the pattern restarting at each subpath (an odd count of values is repeated to make an even

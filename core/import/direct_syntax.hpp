@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Syntax pieces of the direct reader (fast_import.hpp), on 8-bit text: a strict scanner for the
 // XML subset, and SVG numbers and path data read exactly as Qt SVG 6 reads them. Every function
 // returns false when the text leaves the subset; the caller then declines the document.

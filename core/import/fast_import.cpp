@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The direct reader (fast_import.hpp): XML subset scanning, styles and capture. The path data
 // and number syntax follow Qt SVG's own parser so that the same QPainterPath calls are made; the
 // differential tests (tests/import/direct_reader_test.cpp) hold it to the general path.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The direct reader: a single pass over the bytes of a "plain" SVG, the subset that plotter
 // generators write, producing the same captured runs as the general path (sanitiser, Qt SVG,
 // capture engine) without building an XML rewrite or a Qt SVG document (docs/svg-import.md,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tolerance-bounded flattening of curves into polyline points (no Qt). Coordinates and the
 // tolerance share one unit (mm in practice). Guarantee: every point of the true curve lies
 // within toleranceMm of the emitted polyline.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The import in two halves, so that the worker can stream what it captures while the caller
 // builds the Drawing (worker_client.cpp, worker_main.cpp):
 //   capture: file -> page-frame polylines (direct reader or sanitiser + Qt SVG),

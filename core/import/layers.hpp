@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Grouping of captured polylines into Drawing layers (docs/svg-import.md, "Layers").
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The page-frame transform Qt SVG applies to the top-level content of a document (root
 // viewBox, preserveAspectRatio, size, and the render mapping of svg_render.cpp), taken from Qt
 // itself by rendering a one-path document with the same root attributes. Used by the direct

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SVG path data ("d" attribute) parsing into absolute commands, and splitting of very long paths
 // into several shorter "d" strings that draw the same geometry. Needed because Qt SVG 6.4 silently
 // truncates a path after 32,767 QPainterPath elements.

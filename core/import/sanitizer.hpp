@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The sanitiser's state machine (svg_sanitize.cpp: the streaming rewrite; svg_sanitize_rewrite.cpp:
 // the rewrites that make Qt SVG draw what a browser draws). Private to core/import.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SVG import: an SVG file -> fivebar::Drawing (docs/svg-import.md).
 //
 // Output frame: the work frame, millimetres, y UP, origin at the bottom-left corner of the page
@@ -111,7 +112,9 @@ ImportResult importSvgData(const QByteArray& data, const QString& sourceName,
                            const ImportOptions& options = {}, const ProgressFn& progress = {});
 
 // The worker executable importSvgFile would use, or empty when none is found. Search order:
-// options.workerPath, $FIVEBAR_SVG_WORKER, the running executable's directory, the build location.
+// options.workerPath, $FIVEBAR_SVG_WORKER, the running executable's directory, the installed
+// location beside it (PREFIX/bin/../libexec/fivebar-studio, as the package installs it), the
+// build location.
 QString findSvgWorker(const ImportOptions& options = {});
 
 }  // namespace fivebar::svg

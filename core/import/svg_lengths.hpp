@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One length resolver for every SVG attribute that takes a length (shapes, use, nested svg,
 // symbol/marker viewports, text): CSS units at `dpi` user units per inch (96: 1in = 96, 1cm =
 // 96/2.54, 1mm = 96/25.4, 1Q = 96/101.6, 1pt = 4/3, 1pc = 16, px and no unit = 1), em and ex from

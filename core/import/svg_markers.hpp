@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Markers (marker-start/mid/end) drawn as SVG 1.1 specifies (painting.html#Markers): the
 // sanitiser writes each <marker> as a <g> inside <defs> and appends, after a path, line, polyline
 // or polygon that references markers, a <g transform="the element's transform"> holding one

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // In-process import: the direct reader for plain documents (fast_import.hpp); otherwise sanitise
 // and render through Qt SVG into the capture engine. Then group into layers, size, check and flip
 // into the work frame (y up).

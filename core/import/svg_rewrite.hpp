@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Rewrites the sanitiser applies so that Qt SVG 6.4 draws what a browser draws (svg_sanitize.cpp
 // calls these; docs/svg-import.md lists them):
 //  - <symbol> instanced by <use>: the symbol becomes a <g> inside <defs> (never drawn by itself),

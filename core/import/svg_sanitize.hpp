@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // First pass over an SVG file: a streaming XML rewrite (QXmlStreamReader -> QXmlStreamWriter)
 // that makes the document safe and complete for Qt SVG, and collects what the later passes need.
 //  - drops: DTD and entity declarations (entities are expanded by the reader, within its limit),

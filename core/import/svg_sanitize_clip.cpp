@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Sanitizer's clip paths (capture_engine.hpp kClip*): a <clipPath id> becomes a <g id> inside
 // <defs> whose shapes are painted plainly (filled black, no stroke, their clip-rule as fill rule:
 // the engine takes their geometry only); an element with clip-path="url(#id)" is written between

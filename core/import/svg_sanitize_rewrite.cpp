@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Sanitizer's rewrites for browser fidelity (symbols, lengths, transform-origin, path data
 // errors, unsupported features) and the number checks; see svg_rewrite.hpp.
 #include <QRectF>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Sanitizer's writers: layer sentinels, namespaces, a nested <svg> as a <g>, path data with
 // arcs or beyond Qt SVG's element limit, rounded rectangles as the path SVG defines for them
 // (see svg_sanitize.hpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SVG <text> redrawn in a Hershey single-stroke font (ImportOptions::textFont; docs/text.md,
 // docs/svg-import.md): a pass over the document before the sanitiser that replaces each <text>
 // element, in place, by a <g> holding <path>s of the text's strokes in the text's own user

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Lengths, viewBox and preserveAspectRatio of an SVG root element, and the page set-up derived
 // from them: how big the page is in mm and where the viewBox lands on it (page frame: mm, y down,
 // origin top-left; the flip to the y-up work frame happens later, in svg_render.cpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // .svgz: gzip-compressed SVG (what Inkscape saves as "Compressed Inkscape SVG"). Decompressed
 // in memory with zlib, bounded so that a small file cannot expand into gigabytes.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Binary forms between fivebar-svg-worker and importSvgFile (little-endian).
 // An ImportResult (tools and tests):
 //   magic "FBSVG3\n", u32 status, msg message, u32 n + n msg warnings,

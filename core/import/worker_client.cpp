@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // importSvgFile: runs fivebar-svg-worker under a time and memory limit and maps every way it can
 // end (result, crash, timeout, cancel, garbage output) to an ImportResult naming the file. The
 // result comes back on a pipe of its own and is decoded while the worker still writes it.
@@ -82,7 +83,11 @@ QString findSvgWorker(const ImportOptions& options) {
   if (!options.workerPath.isEmpty()) return isExecutable(options.workerPath) ? options.workerPath : QString();
   if (const QString env = qEnvironmentVariable("FIVEBAR_SVG_WORKER"); !env.isEmpty())
     candidates << env;
-  candidates << QDir(runningExecutableDir()).filePath(QString::fromLatin1(kWorkerName));
+  const QDir exeDir(runningExecutableDir());
+  candidates << exeDir.filePath(QString::fromLatin1(kWorkerName));
+  // Installed (the Debian package, cmake --install): a helper, not a command, so not in bin/.
+  candidates << exeDir.filePath(QStringLiteral("../libexec/fivebar-studio/") +
+                                QString::fromLatin1(kWorkerName));
 #ifdef FIVEBAR_SVG_WORKER_BUILD_PATH
   candidates << QStringLiteral(FIVEBAR_SVG_WORKER_BUILD_PATH);
 #endif

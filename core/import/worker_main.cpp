@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar-svg-worker: imports one SVG in its own process so that a crash or hang of Qt SVG on a
 // hostile file cannot take the caller down (svg_import.hpp, importSvgFile).
 // Usage: fivebar-svg-worker [--result-fd N] [options] -- FILE   (options: wire_format.cpp)

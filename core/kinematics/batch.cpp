@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Batch kinematics (batch.hpp). Symbols follow docs/kinematics.md: motor Mi at (mx, 0), driving
 // link ai, floating link bi, chord M->P of length d, elbow angle alpha at the motor.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Batch inverse and forward kinematics on structure-of-arrays buffers: the same mathematics as
 // inverse() / forward() in kinematics.hpp (derivation: docs/kinematics.md), written as
 // branch-free loops that the compiler vectorises, with polynomial atan2 / sin / cos instead of

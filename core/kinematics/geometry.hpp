@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The five-bar's fixed architecture (conventions.md): motor 1 at (-w/2, 0), motor 2 at (+w/2, 0),
 // driving links a1, a2, floating links b1, b2, all in millimetres. A cheap immutable value.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exact scalar inverse and forward kinematics of a general (asymmetric) five-bar.
 // Derivation and symbols: docs/kinematics.md. Radians and millimetres, machine frame.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Branch names of the five-bar (conventions.md): working modes ("++", "+-", "-+", "--") are the
 // inverse-kinematics branches, one sign per arm; assembly modes ('+', '-') are the
 // forward-kinematics branches.

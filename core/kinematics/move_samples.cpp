@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // sampleJointMove: the elbows by rotation (a short sequential recurrence), then the loop closure
 // of every sample as one branch-free loop that the compiler vectorises (compiled with -O3 and
 // sqrt without errno, in AVX-512, AVX2 and baseline variants chosen at load time).

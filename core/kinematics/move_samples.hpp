@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Forward kinematics at equally spaced points of a joint-linear move, the inner loop of
 // segmentation and feeds. Same closure formula as forward() in kinematics.cpp, but the motor
 // angles' cosines and sines advance by rotation (one complex multiplication per sample instead of

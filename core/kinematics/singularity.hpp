@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Jacobians (Hoang 2015 eq. 7, A * v = B * thetaDot) and the Gosselin-Angeles singularity
 // classification with continuous distance measures. Derivation: docs/kinematics.md.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Unit conversions. Radians inside the core; degrees only at the edges (CLI, UI, G-code,
 // profiles). This is the one tested place where the two meet.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The calibration a profile carries (issue 13): what a fit of measured marks found out about the
 // real machine beyond its link lengths (which the fit writes into the profile's geometry).
 // Stored as the profile's versioned "calibration" section (docs/profile-schema.md); radians and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The profile's versioned "calibration" section (docs/profile-schema.md): written only when the
 // profile has a calibration, so uncalibrated profiles (and the preset golden files) are unchanged.
 // Numeric members come from the one table (profile_fields.cpp); date and outliers are handled here.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // GRBL's junction deviation ($11) for a five-bar. GRBL plans joint-space blocks (X = theta1 deg,
 // Y = theta2 deg) and takes each junction at the speed at which a virtual arc, tangent to both
 // blocks and passing within $11 of the corner, could be followed at the acceleration limit: the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The pen's kinematics: contract in pen_kinematics.hpp, derivation in docs/calibration.md.
 #include "core/machine/pen_kinematics.hpp"
 

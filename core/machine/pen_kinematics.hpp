@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The pen's kinematics (issue 13): where a profile's pen is for given motor angles, and the motor
 // angles that put it on a point, honouring the calibrated pen offset (calibration.hpp PenOffset:
 // a pen rigidly fixed to floating link b1, not at the distal joint P). Planning, pre-flight, jog

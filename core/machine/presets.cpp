@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Built-in machine presets (conventions.md "Seed machines", plus a default hobby plotter).
 // Each preset is a complete, valid profile; docs/profile-schema.md lists their values.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Machine profile validation and JSON (schema: docs/profile-schema.md). The file holds degrees;
 // the struct holds radians. Files and "--machine" resolution: core/profile_file.cpp.
 #include "core/machine/profile.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A machine profile: everything the studio, the planner and the driver need to know about one
 // physical five-bar. Stored as versioned JSON (schema: docs/profile-schema.md).
 // Inside the core every angle is in radians; the JSON file holds degrees.

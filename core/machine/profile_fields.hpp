@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The one table of a machine profile's numeric fields: for each its JSON path, label, unit,
 // valid range and decimals, with accessors in the file's units (deg, deg/min, deg/s^2, mm, s).
 // Validation (profile.cpp), the JSON reader and writer (profile.cpp) and the studio's profile

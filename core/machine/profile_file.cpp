@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Machine profile files: loading, atomic saving and "--machine PRESET|FILE" resolution.
 #include <fcntl.h>
 #include <sys/stat.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Internal helpers of the profile JSON reader (core/profile.cpp): a strict object reader that
 // records a ValidationIssue for every missing, mistyped or unknown field, naming its path.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A machine as it really is, for the simulated machine and sheet: the geometry it was built from
 // changed by small amounts, zero offsets and play in each drive. Machine frame, mm and rad.
 #pragma once

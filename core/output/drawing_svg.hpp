@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A drawing (core/planning/drawing.hpp) as a plain SVG in millimetres: width and height in mm and
 // a viewBox of the same numbers, so one user unit is one millimetre; one <g> per visible layer
 // with its stroke colour, no fill; one <path> per polyline (the work frame's y up flipped to the

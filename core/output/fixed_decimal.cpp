@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fixed-point decimal text of doubles for G-code, exact and fast. Contract: fixed_decimal.hpp.
 #include "core/output/fixed_decimal.hpp"
 

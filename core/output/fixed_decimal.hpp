@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fixed-point decimal text of doubles, as printf("%.*f") writes it but never "-0.000": the numbers
 // of the G-code. writeFixedDecimal is the allocation-free fast path (exact rounding, ties to even
 // on the exact value, as printf and std::to_chars round); fixedDecimal covers every value.

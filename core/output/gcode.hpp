@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // G-code for stock GRBL 1.1 with host-side kinematics (conventions.md): X = theta1 deg,
 // Y = theta2 deg (continuous), F = joint-space vector rate in deg/min recomputed per move, G90 G94,
 // lines of at most 80 characters, a header naming the profile and the $ settings it expects.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The one placement rule. Contract: auto_placement.hpp.
 #include "core/planning/auto_placement.hpp"
 

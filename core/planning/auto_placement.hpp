@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Where a drawing goes when no position is given: the one rule shared by `fivebar plan` and the
 // studio (import, "Fit to workspace", "Actual size"). The drawing is centred in the largest
 // singularity-free rectangle of its aspect ratio (kFitGridCells map, kFitMarginMm kept free on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Host-side backlash compensation (GRBL 1.1 has none): when a motor reverses, a take-up move
 // turns that motor alone through its play before the reversing move, so the arm leaves the pose
 // it was at in the new direction without lag. Model and derivation: docs/calibration-pattern.md

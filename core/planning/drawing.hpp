@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The drawing model shared by import, planning and the studio: layers of polylines in the work
 // frame (millimetres, y up). Import produces it; placement maps it into the machine frame.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Job preflight and working-mode selection. Contract: feasibility.hpp.
 #include "core/planning/feasibility.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Preflight of a placed job (strokes in the machine frame) against a machine profile in one
 // working mode: reach, continuous joint limits, type I/II margins and assembly mode, for every
 // point and every joint-linear move between consecutive points, travels (home -> first stroke,

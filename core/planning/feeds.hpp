@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Feeds: how fast each joint-linear move may run. GRBL plans what it can know itself: the
 // acceleration along every block, the speed through each junction (junction deviation $11,
 // core/machine/junction_deviation.hpp) and each motor's rate limit along a block. The feeds set only

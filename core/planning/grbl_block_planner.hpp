@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // GRBL 1.1's planner, modelled block by block for the time estimate (time_estimate.hpp): a
 // motion block's length, unit vector and per-axis limits, its junction speed (plan_buffer_line),
 // the streamed 15-block look-ahead and the sink that hands each input its timing. Internal to

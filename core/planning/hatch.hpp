@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fill modes for filled shapes: outline (the shape's geometry, as AxiDraw and vpype draw it),
 // hatch (parallel lines clipped by the shape with its fill rule, optionally crossed), or none.
 // Pure geometry on the work frame (mm); the import marks filled shapes (Polyline::fill,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The planned job: what the planner produces and what G-code, the time estimate, the trajectory
 // (studio animation) and the report are made from. Joint targets are continuous (unwrapped)
 // motor angles in radians; XY targets are machine-frame millimetres; times in seconds.

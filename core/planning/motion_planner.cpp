@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // MotionPlanner (motion_planner.hpp): strokes prepared in parallel chunks and drawn in order.
 #include "core/planning/motion_planner.hpp"
 

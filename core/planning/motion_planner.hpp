@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The motion planner behind planStrokes (plan_motion.cpp): placed strokes, drawn in order, become
 // the job's moves. Internal to core/planning. Its work is split by responsibility:
 // motion_planner.cpp prepares strokes in parallel chunks (segmentation, the safety check, feeds)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // MotionPlanner (motion_planner.hpp): the pen-up travel between strokes and the tool moves.
 #include "core/planning/motion_planner.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stroke optimisation: join, simplify, reorder (greedy nearest neighbour on a joint-space grid,
 // then 2-opt with neighbour lists). Contract: optimise.hpp.
 #include "core/planning/optimise.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stroke optimisation before motion planning: join strokes whose ends meet, simplify within a
 // tolerance (Ramer-Douglas-Peucker), then reorder and reverse strokes to cut pen-up time.
 // Travel cost is motor time in joint space, max_i |dtheta_i| / maxSpeed_i, from the inverse

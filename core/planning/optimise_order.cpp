@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stroke ordering: greedy nearest neighbour and 2-opt. Contract: optimise_order.hpp.
 #include "core/planning/optimise_order.hpp"
 

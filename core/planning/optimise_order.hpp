@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stroke ordering for optimise.cpp: greedy nearest neighbour on a bucket grid, then 2-opt with
 // neighbour lists, on stroke ends given in scaled joint space (motor time, s). Internal to the
 // optimiser; the public API is core/optimise.hpp.

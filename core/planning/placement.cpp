@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Drawing placement in the machine frame. Contract: placement.hpp.
 #include "core/planning/placement.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Placement of a drawing on the machine: the work frame (mm, y up, as imported) is scaled,
 // rotated and translated into the machine frame (mm, conventions.md). The drawing's bounding-box
 // centre (visible layers) lands on Placement::centerMm.

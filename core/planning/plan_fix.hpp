@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What to change when a job cannot be planned, as a code with its numbers: core says what, each
 // front end words it (the CLI with the `fivebar plan` option that does it: app/cli/plan_words.hpp;
 // the studio with its controls' names, in the user's language: widgets/document/plan_words.hpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // planStrokes: placed strokes -> PlannedJob (segmentation, feeds, travel, tool commands, timing);
 // the moves themselves come from MotionPlanner (motion_planner.hpp).
 #include <algorithm>

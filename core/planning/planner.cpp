@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // planJob: placement, working-mode choice and preflight, optimisation, then planStrokes
 // (plan_motion.cpp); reportToJson.
 #include "core/planning/planner.hpp"

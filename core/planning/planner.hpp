@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The job pipeline: Drawing + PlanOptions + MachineProfile -> placement -> optimisation ->
 // working-mode selection and preflight -> adaptive segmentation -> feeds -> travel -> tool
 // commands -> GRBL time estimate -> PlannedJob + PlanReport. Design: docs/planning.md.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Move checks (samples spaced by a Lipschitz bound). Contract: safety.hpp; the travel detour
 // search is in travel_detour.cpp. The sampling step bound is derived next to nextStepRad below.
 #include "core/planning/safety.hpp"

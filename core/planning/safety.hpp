@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The safety rule: no move reaches the machine that leaves the workspace, breaks a joint limit,
 // or passes through or near a type II singularity. Every joint-linear move, travel and jog
 // included, is checked here before a byte goes to the port.

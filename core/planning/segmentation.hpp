@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Adaptive segmentation: a stroke (machine-frame polyline, mm) becomes a sequence of joint-linear
 // moves whose real drawn curve (forward kinematics along each move) stays within a deviation
 // budget of the polyline, with moves as long as the kinematics allow. Design: docs/planning.md.

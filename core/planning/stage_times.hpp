@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Wall-clock and CPU time of each pipeline stage, for `fivebar plan --timings` and the benchmarks.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Strokes: the drawing's polylines placed in the machine frame (mm), in plotting order. The
 // boundary between placement/optimisation (placement.hpp, optimise.hpp) and motion planning
 // (segmentation, feeds, G-code).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/planning/time_estimate.hpp"
 #include "core/planning/grbl_block_planner.hpp"
 

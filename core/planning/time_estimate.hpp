@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What GRBL 1.1 executes, modelled to estimate a job's time: joint-space blocks (X = theta1 deg,
 // Y = theta2 deg, Z mm) with trapezoidal speed profiles, per-axis rate and acceleration limits,
 // junction speeds from the junction deviation ($11), a 15-block look-ahead window (the planner

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The time-optimal reference of a job: how fast the machine could possibly run it, whatever the
 // firmware. Every job time is reported as a ratio to it (docs/performance.md, the studio's job
 // preview). Derivation: docs/planning.md, "Time-optimal reference".

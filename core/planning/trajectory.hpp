@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A planned job sampled by time, for the studio's animation: core computes the timing once
 // (GRBL time model), the GUI asks for the pose at any time. Play, pause, scrub and speed are UI
 // state and do not belong here.

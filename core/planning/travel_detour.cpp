@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // planSafeTravel: a straight joint move when it is safe, else a detour found by A* over a lazily
 // checked joint-space grid, then shortened. Contract: safety.hpp. Every leg passes checkJointMove.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The .fivebar project file. Contract: project.hpp; schema: docs/project-file.md.
 #include "core/project/project.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A saved studio project (.fivebar): versioned JSON holding the drawing itself (the SVG text, so
 // that a project moves between computers), its placement, layer order, visibility and tools, the
 // working mode, the tolerance and the machine profile. Schema: docs/project-file.md. The SVG is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A hint for the large buffers of a planned job (the moves of a 10 MB drawing take some 200 MB):
 // ask the kernel to back them with transparent huge pages, so that first writes take one page
 // fault per 2 MB instead of one per 4 KB (tens of thousands of faults, a third of a second on a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Translatable core messages. Contract: message.hpp.
 #include "core/support/message.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A user-visible sentence of the core, kept translatable: a context and an English template with
 // %1..%n markers (QString::arg conventions) plus its arguments, some of which are numbers the
 // studio formats in the user's locale. The core stays free of Qt: text() gives the English

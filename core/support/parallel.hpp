@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A minimal deterministic parallel loop for the job pipeline: fn(i) runs exactly once for each i
 // in [0, n), on up to `threads` threads (the calling thread included). Results must be written to
 // per-index slots, so the output does not depend on the thread count or scheduling. The first

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hershey single-stroke fonts read from their .jhf files (Debian package hershey-fonts-data,
 // /usr/share/hershey-fonts). Our own reader rather than libhersheyfont: a malformed file is named
 // by file, line and column (libhersheyfont returns NULL and prints to stderr), glyphs past 255

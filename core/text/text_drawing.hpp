@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Text into the planner's drawing model (core/planning/drawing.hpp): what `fivebar text` and the
 // studio's text tool both use, so the two draw the same strokes. docs/text.md.
 #pragma once

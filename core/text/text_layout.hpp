@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Lays out UTF-8 text in a Hershey font (hershey_font.hpp) as single-stroke polylines in
 // millimetres, work frame (x right, y UP). Each stroke of each glyph becomes one polyline, drawn
 // once (a stroke, not an outline). docs/text.md.

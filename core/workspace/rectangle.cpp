@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Largest axis-aligned rectangle in the singularity-free region: maximal rectangle in the binary
 // grid of safe cells (histogram and stack, O(nx ny)), then refined side by side against the exact
 // point evaluation.

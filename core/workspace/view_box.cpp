@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Boxes a view of the machine shows. Contract: view_box.hpp.
 #include "core/workspace/view_box.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a view of the machine should show (machine frame, mm): the drawing with the motors and
 // the elbows wherever the pen reaches the drawing's corners and edge midpoints, or without a
 // drawing the whole reach of the arms. The studio fits its canvas to it ("Zoom to fit").

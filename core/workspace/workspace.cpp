@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Workspace analysis of one map: areas, boundaries, type II loci and the inscribed rectangle.
 #include "core/workspace/workspace.hpp"
 

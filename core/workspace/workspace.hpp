@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Workspace analysis per working mode: sampled maps (reach, singularity margins, transmission
 // angle, conditioning, resolution), region boundaries and type II loci, areas, and the largest
 // axis-aligned rectangle in the singularity-free region (Hoang 2015 design criterion 3).

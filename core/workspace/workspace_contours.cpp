@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Marching squares on cell-centre samples, with the segments joined into polylines.
 #include <algorithm>
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Workspace maps: per-point evaluation and the multi-threaded grid fill. Derivation of the
 // per-arm quantities: docs/kinematics.md (law of cosines at the motor and at the elbow).
 // Each cell computes each arm's chord and elbow angle once and derives all four working modes

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Machine setup: read the board's $$ settings, compare them with what the profile expects
 // (core/gcode.hpp grblSettings: steps/deg $100/$101, rates $110/$111, accelerations
 // $120/$121, soft limits $20/$130/$131, junction deviation $11, ...), back up the board's

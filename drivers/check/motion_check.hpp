@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The one motion check of the machine link: every line that can move the machine (G0/G1 with X
 // or Y, $J=, G28/G30, G53 moves) is read the way GRBL 1.1h reads it and its joint-linear moves
 // are checked from the machine's current pose with core's checkJointMove / checkJointPath

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The board's soft limits seen from the host, so pre-flight agrees with the board: GRBL 1.1
 // (limits.c limits_soft_check, homing direction mask 0, HOMING_FORCE_SET_ORIGIN off) refuses, with
 // $20=1, every motion target outside -$130..0 (X, motor 1) and -$131..0 (Y, motor 2) in MACHINE

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Jogging and the other manual moves, planned host-side (the board only sees joint space):
 //  - Cartesian jog: a straight XY line streamed as short $J= joint moves, each short enough that
 //    the pen stays within maxDeviationMm of the true line, every sub-move checked with

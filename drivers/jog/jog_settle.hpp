@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // JogSettle: when may the host trust the reported position again after a jog, a jog cancel or
 // a new reference pose? GRBL acknowledges a $J= line when it enters the planner, not when the
 // motion ends, and a jog cancel (0x85) empties the planner but not the serial buffer, so the

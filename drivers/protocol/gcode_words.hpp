@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A G-code line as words (letter + number), comments and spaces removed. Shared by the job
 // reader (which needs targets and tool commands) and the simulated machine.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // GRBL 1.1 error and alarm codes as data: each code with a short name, a plain explanation of
 // what happened and what to do. The tables are the single source for every message the
 // drivers, the CLI and the studio show about a rejected line or an alarm.

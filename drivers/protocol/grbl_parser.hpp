@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Parsing of the lines a GRBL 1.1 board sends (one line at a time, without the line end).
 // Pure functions, no I/O. Angles stay in the board's units here (degrees: X = theta1,
 // Y = theta2, conventions.md); conversion to radians happens in GrblProtocol.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // GrblProtocol: the host side of the GRBL 1.1 serial protocol as a pure state machine. No I/O:
 // bytes to send go out through a write function, received bytes come in through receive(), time
 // comes in through tick(nowS). It owns

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // MachineLink: wires a Transport to a GrblProtocol and gives the protocol a clock (a QTimer
 // that polls status and drives time-outs). The composition point for the CLI, the studio and
 // the end-to-end tests; the protocol logic itself stays pure.

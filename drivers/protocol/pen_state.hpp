@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The pen as the board itself reports it: from the status report's spindle speed (FS:, GRBL's
 // running spindle state: 0 after M5 or a reset) for a servo pen or a laser, from the work Z for
 // a Z-axis pen. Not the last line the host sent: a stop, a reset or an M5 typed elsewhere show.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // PoseSync: learns where the board really is before any position is used (F1 of the machine
 // link issue). Polls status until a report arrives; waits for the machine to stand still
 // (Idle or Alarm); when the reports carry MPos without a known work offset, asks "$#" (GRBL

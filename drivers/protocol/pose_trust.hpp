@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // PoseTrust: whether the host KNOWS where the arms are, never assumed (issue 23).
 //
 // GRBL counts steps from power-up and keeps the work offset (G54) in its EEPROM, so a board that

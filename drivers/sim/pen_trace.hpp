@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // PenTrace: what the pen of a real, imperfect five-bar draws (issue 13), for the simulated
 // machine. It follows the motors' commanded angles (degrees, the G-code X/Y frame) and records
 // the pen's true path in the machine (base) frame, millimetres, while the pen is down:

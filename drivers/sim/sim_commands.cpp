@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SimMachine: execution of "$" system commands and G-code lines (see sim_machine.hpp).
 #include <algorithm>
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SimMachine: a simulated GRBL 1.1h board driving a five-bar, pure logic. Bytes in through
 // receive(), bytes out through takeOutput(), machine time through advance(). It answers as the
 // firmware does (gnea/grbl 1.1h: protocol.c, report.c, settings.c, system.c, limits.c; checked

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The simulated machine's motion planner: a GRBL-like look-ahead buffer of joint-space line
 // blocks (15 blocks), trapezoidal acceleration with junction-deviation cornering, executed in
 // machine time. Pure logic; units are the board's: X, Y in degrees (theta1, theta2), Z in mm,

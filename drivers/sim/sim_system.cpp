@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SimMachine: the "$" system commands, as GRBL 1.1h's system.c and settings.c answer them.
 #include <algorithm>
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "gcode_job.hpp"
 
 #include <algorithm>
@@ -182,7 +183,7 @@ std::vector<std::string> penDownCommands(const ToolSettings& t) {
 
 std::string moveTo(const Point2& targetDeg, bool rapid, double feedPerMin) {
   std::string s = std::string(rapid ? "G0" : "G1") + "X" + num(targetDeg[0]) + "Y" + num(targetDeg[1]);
-  if (!rapid && feedPerMin > 0.0) s += "F" + num(feedPerMin);
+  if (!rapid && feedPerMin > 0.0) s.append("F").append(num(feedPerMin));
   return s;
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A G-code job as the machine link sees it: the lines worth sending (comments and spaces
 // removed), and for each line what it does to the pen and where it moves the joints. This is
 // what progress, resume and framing are computed from. Pure; angles in degrees (G-code X =

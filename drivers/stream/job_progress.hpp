@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Resume state of a job, saved beside it as JOB.gcode.progress (JSON, format in
 // docs/machine-protocol.md) atomically with QSaveFile, so that after a stop, an alarm, a
 // disconnect or a crash of the host the job can continue from its last completed pen-down point.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // JobRunner: streams a job through GrblProtocol (character counting) and follows it on the
 // machine: progress by acknowledged line and by executed line (acknowledged motions minus the
 // planner blocks still queued, from the Bf field of status reports, or without Bf: minus the

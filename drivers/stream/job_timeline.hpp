@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The time line of a G-code job: for each job line, the machine time (s) at which it has been
 // executed, from GRBL's own planning model (core/planning/time_estimate: trapezoids, junction
 // speeds, look-ahead, synchronising pen commands and dwells) fed with the job's lines as the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Resuming a job from its last completed pen-down point: pen up, a safe travel (core/safety.hpp
 // planSafeTravel, every leg checked) from where the machine is to that point's joint angles,
 // pen down when the point lies inside a stroke, the job's modal feed, then the rest of the job.

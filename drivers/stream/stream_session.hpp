@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // StreamSession: one run of `fivebar stream` (or the studio's "send job"): load the job (and
 // its resume state with resume = true), check every move of the file before the first byte
 // (motion_check.hpp checkFile; a job planned for another profile is refused unless

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The transport for a port name as a maker types it, the one place that tells the kinds apart:
 // "tcp:HOST:PORT" is a network port (TcpTransport; the baud rate does not apply), anything else
 // a serial device or pseudo-terminal (SerialTransport at baudRate): /dev/ttyUSB0, ttyACM0,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SerialTransport: a QSerialPort (USB serial board or a pseudo-terminal such as fivebar-sim's).
 // The first ReadError / ResourceError / WriteError ends the link: disconnected() is emitted
 // once and the port is closed, however many errors QSerialPort keeps reporting.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SimulatedTransport: the in-process simulated machine behind the transport seam. Time is
 // driven by a QTimer (real time times the speed-up factor) once started, or stepped
 // deterministically with step() in tests.

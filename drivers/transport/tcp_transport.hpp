@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // TcpTransport: a GRBL board behind a network port, "tcp:HOST:PORT" (a ser2net bridge in raw
 // mode, a FluidNC or grblHAL board's telnet/raw TCP server). The bytes are the serial stream's,
 // unframed; there is no baud rate. Like SerialTransport, the first socket error or the peer

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The transport seam under the protocol: something bytes can be written to and that reports
 // bytes received and, once, that it went away. Implementations: SerialTransport (a real or
 // pseudo serial port), TcpTransport (a network port, tcp:HOST:PORT), SimulatedTransport (the

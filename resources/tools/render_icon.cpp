@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar-render-icon SVG PNG SIZE: renders the SVG icon into a SIZE x SIZE PNG with a
 // transparent background (the hicolor PNG sizes of the installed icon). Build tool only.
 #include <QGuiApplication>

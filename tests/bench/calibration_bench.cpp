@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Calibration (issue 13, docs/calibration.md): the goal scenario of tests/core/calibration_fit_test.cpp
 // as a benchmark. Accuracy figures are counters (shape error over the working area before and after,
 // their ratio); speed is the whole fit against the baseline of placing the paper on the nominal model

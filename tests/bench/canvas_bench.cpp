@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Canvas painting of a one-million-segment job (docs/performance/studio.md).
 // Baseline, measured in the same run: every path drawn with QPainter::drawPolyline and a wide
 // antialiased pen, as a naive canvas would. Against it: the level-of-detail PathScene painted

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Design search (core/design) on the goal brief: 110 x 90 mm, links <= 200 mm, motor
 // spacing <= 250 mm, clearance 10 mm, type II margin >= 15 deg, all four working modes.
 // Baselines in the same process: the same search on one thread (parallel speed-up), and a

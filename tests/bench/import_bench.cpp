@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SVG import speed (docs/performance/import.md). Each benchmark reports "vs_baseline": its CPU
 // time per iteration (this process + the worker) divided by a baseline measured in the same
 // process (best of 3):

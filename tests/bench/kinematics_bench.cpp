@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Batch kinematics (core/batch.hpp) against the scalar API in a loop, on 10 million points of
 // the hoang2015 machine. Every benchmark reports ns_per_point (wall clock) and speedup = scalar
 // ns/point divided by its own, the scalar figure being measured in this same process; and the

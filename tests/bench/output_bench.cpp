@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Job output benchmarks (docs/performance/output.md): writeGcode and estimateJobTime on a seeded
 // synthetic PlannedJob of 1.8 million Draw moves, the size of the generated 10 MB SVG job.
 // The job is a joint-space random walk with small steps (0.02 .. 0.3 deg, turning up to 0.3 rad

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Job pipeline benchmarks (docs/performance/planning.md):
 //  - Segments: adaptive segmentation vs the firmware-style baseline (every flattened piece cut to
 //    0.5 mm) at EQUAL maximum deviation from the true curves (circles, measured analytically);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `fivebar plan` end to end, in process: SVG import (worker process), placement scale, re-import
 // when a fit enlarges the drawing, planJob in auto mode (placement, mode screening, optimise,
 // segmentation, safety checks, feeds, travel, GRBL time), G-code streamed to a file. Issue 3

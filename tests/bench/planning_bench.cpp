@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Job planning speed: preflight (core/feasibility.hpp) of a 100k-point job and optimisation
 // (core/optimise.hpp) of 100k strokes, on the dai2022 machine. Baseline measured in the same
 // process: the bare scalar inverse kinematics of the same points (what any per-point check

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The 10 MB plotter SVG of the benchmarks (issue 3 goal), generated in memory: the file
 // `fivebar_bench_pipeline --write-svg` writes, byte for byte.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The scan of a calibration sheet (core/calibration/scan) on an A4 page at 600 dpi (4961 x 7016
 // px): the hoang2015 pattern (37 marks, the accuracy lines) painted by QPainter, turned 93 deg,
 // blurred and noisy. Baselines in the same process: decoding the same page from PNG (what reading

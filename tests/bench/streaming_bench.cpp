@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Streaming through a real pseudo-terminal to fivebar-sim emulating a 115200-baud wire.
 //  - BM_StreamSendResponse: baseline, one line at a time (wait for each ok);
 //  - BM_StreamCharacterCounting: GRBL character counting (128-byte budget), reported as lines/s,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studio plans as fast as the CLI (docs/performance.md, "Studio planning"): on a drawing of
 // 400,000 straight lines (a hatched page), the studio's planning pipeline (runPipeline: core's
 // planJob at the document's placement, then the paint-ready scenes and the timed trajectory, all

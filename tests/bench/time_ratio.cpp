@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // How close a job comes to what the machine can do (issue 16): plans SVG files as
 // `fivebar plan FILE --fit --machine PROFILE --tolerance T` does, and prints per file the GRBL time
 // estimate (which the real firmware matches within 0.1 %, tests/firmware), the time-optimal

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Workspace maps: all four working modes' overlay maps of hoang2015 on a 512 x 512 grid.
 // Baseline (same process): per cell and per mode, the scalar core path (inverse, makePose,
 // singularityMargins, transmissionAngles, inverseCondition and the Jacobian's SVD), one thread.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `fivebar calibrate fit` end to end: the simulated maker-plotter's marks -> a calibrated profile
 // and report; outliers named; the distance form; bad input named by file and line, nothing written.
 #include <gtest/gtest.h>
@@ -43,7 +44,7 @@ class CalibrateCli : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
   CliResult run(const std::vector<std::string>& args) {
     std::string cmd = quote(FIVEBAR_CLI) + " calibrate";
-    for (const std::string& a : args) cmd += " " + quote(a);
+    for (const std::string& a : args) cmd.append(" ").append(quote(a));
     cmd += " </dev/null >" + quote((dir_ / "out").string()) + " 2>" + quote((dir_ / "err").string());
     const int status = std::system(cmd.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir_ / "out"), slurp(dir_ / "err")};
@@ -140,7 +141,7 @@ TEST_F(CalibrateCli, IllConditionedMarksAreRefused) {
   std::vector<calibration::MarkMeasurement> clustered;
   for (int i = 0; i < 12; ++i) {
     calibration::MarkMeasurement m = marks[12];
-    m.id = "c" + std::to_string(i);
+    m.id = std::string(1, 'c').append(std::to_string(i));
     m.commanded.theta1 += 1e-3 * std::cos(i);
     m.commanded.theta2 += 1e-3 * std::sin(2 * i);
     m.paperMm = *calibration::penPosition(test::trueMakerPlotter(), nominal().assembly, m.commanded);

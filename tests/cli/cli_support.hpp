@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Helpers shared by the CLI test executables: shell quoting, reading a file, a run's result.
 #pragma once
 

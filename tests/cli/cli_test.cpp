@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fivebar CLI end to end: runs the built binary with stdin/stdout/stderr in temporary files.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -49,7 +50,7 @@ class Cli : public ::testing::Test {
   CliRun run(const std::vector<std::string>& args, const std::string& input = "") {
     std::ofstream(dir_ / "stdin") << input;
     std::string cmd = quote(FIVEBAR_CLI);
-    for (const std::string& a : args) cmd += " " + quote(a);
+    for (const std::string& a : args) cmd.append(" ").append(quote(a));
     cmd += " <" + quote((dir_ / "stdin").string()) + " >" + quote((dir_ / "stdout").string()) +
            " 2>" + quote((dir_ / "stderr").string());
     const int status = std::system(cmd.c_str());

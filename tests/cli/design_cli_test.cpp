@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `fivebar design` end to end: the brief, the JSON and profile files, an impossible
 // brief, usage errors and --machine evaluation.
 #include <gtest/gtest.h>
@@ -30,7 +31,7 @@ class DesignCli : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
   CliResult run(const std::vector<std::string>& args) {
     std::string cmd = quote(FIVEBAR_CLI) + " design";
-    for (const std::string& a : args) cmd += " " + quote(a);
+    for (const std::string& a : args) cmd.append(" ").append(quote(a));
     cmd += " </dev/null >" + quote((dir_ / "out").string()) + " 2>" + quote((dir_ / "err").string());
     const int status = std::system(cmd.c_str());
     CliResult r;

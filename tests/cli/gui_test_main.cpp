@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // main() of the CLI tests that paint (synthetic scans of a drawn sheet): a Qt Gui application first.
 #include <gtest/gtest.h>
 

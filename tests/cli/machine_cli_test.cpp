@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The machine commands end to end against fivebar-sim on a pseudo-terminal: send / stream refuse
 // what the motion check refuses (nothing reaches the board), reference and home.
 #include <gtest/gtest.h>
@@ -56,7 +57,7 @@ class MachineCli : public ::testing::Test {
       std::vector<char*> argv;
       for (std::string& a : args) argv.push_back(a.data());
       argv.push_back(nullptr);
-      std::freopen("/dev/null", "w", stderr);
+      if (!std::freopen("/dev/null", "w", stderr)) ::_exit(127);
       ::execv(argv[0], argv.data());
       ::_exit(127);
     }
@@ -76,7 +77,7 @@ class MachineCli : public ::testing::Test {
   CliResult run(const std::vector<std::string>& args, const std::string& input = "") {
     std::ofstream(dir_ / "stdin") << input;
     std::string cmd = quote(FIVEBAR_CLI);
-    for (const std::string& a : args) cmd += " " + quote(a);
+    for (const std::string& a : args) cmd.append(" ").append(quote(a));
     cmd += " <" + quote((dir_ / "stdin").string()) + " >" + quote((dir_ / "stdout").string()) + " 2>" +
            quote((dir_ / "stderr").string());
     const int status = std::system(cmd.c_str());

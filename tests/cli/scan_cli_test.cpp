@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `fivebar calibrate pattern` and `fivebar calibrate scan` run as a user would: the pattern's
 // files, a synthetic scan of the drawn sheet read back into MEASURED.csv, bad input named with
 // nothing written.

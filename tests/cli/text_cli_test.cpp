@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `fivebar text` end to end (app/cli/cmd_text.cpp): the SVG it writes (mm, one path per stroke,
 // the H at the asked height), its errors, --list-fonts, and the check that `fivebar plan`
 // draws the text at true size with the pen-down length of the glyphs' strokes within 1 %.
@@ -39,7 +40,7 @@ class TextCli : public ::testing::Test {
   // Runs `fivebar args...`, with `env` ("NAME=value ...") before it.
   CliResult run(const std::vector<std::string>& args, const std::string& env = "") {
     std::string cmd = env + " QT_QPA_PLATFORM=offscreen " + quote(FIVEBAR_CLI);
-    for (const std::string& a : args) cmd += " " + quote(a);
+    for (const std::string& a : args) cmd.append(" ").append(quote(a));
     cmd += " >" + quote((dir_ / "stdout").string()) + " 2>" + quote((dir_ / "stderr").string());
     const int status = std::system(cmd.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir_ / "stdout"), slurp(dir_ / "stderr")};

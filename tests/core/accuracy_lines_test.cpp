@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hoang's accuracy lines before and after calibration on issue 13's goal machine (links off by up to
 // 0.5 mm, zeros by about 1 deg, 25 marks measured with 0.05 mm noise), and on the same machine with
 // play in its drives: the lines planned by the planner (planVerificationPattern: the profile's

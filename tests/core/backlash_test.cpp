@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Backlash: the play model, host compensation (a circle closes, a square's corners meet), and the
 // estimate from the pattern's backlash rows.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Batch kinematics (core/batch.hpp) against the exact scalar API: same reach verdicts, angles
 // within kBatchAngleToleranceRad, positions within kBatchPositionToleranceMm, NaN where not ok,
 // on seeded random points including reach-boundary and out-of-reach ones.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The calibration door (core/calibration/calibrate.hpp): the one sequence the CLI's `calibrate fit`
 // and the studio's wizard both run.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The calibration fit (core/calibration/fit.hpp) on the simulated maker-plotter of issue 13's goal:
 // shape error over the working area before and after, a 60 mm square, outliers named, both paper
 // mirror hypotheses, the distance form, and refusals (too few marks, ill-conditioned).

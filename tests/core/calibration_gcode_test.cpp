@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A calibration in the G-code (issue 13): the plan holds kinematic angles, G-code carries commanded
 // ones (kinematic - zero offset), the home pose is commanded; and the whole chain (fit -> plan ->
 // G-code -> the true machine) draws a 60 mm square within 0.1 mm.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The calibration pattern (core/calibration/pattern.hpp), MARKS.csv / MEASURED.csv, and the
 // accuracy pattern's figures.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The simulated calibration of issue 13's goal, shared by tests/core/calibration_fit_test.cpp and
 // tests/bench/calibration_bench.cpp: a maker-plotter whose links are off by up to 0.5 mm and whose
 // motor zeros are off by about 1 deg, 25 marks over the working area (edges included) measured with

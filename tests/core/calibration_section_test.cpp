@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The profile's versioned "calibration" section (docs/profile-schema.md): written only when the
 // profile has one, degrees in the file, round trip, field-named validation, old profiles unchanged.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // core/design evaluation against independent computations made here: the Jacobian from
 // central finite differences of forward kinematics (not the analytic A^-1 B), the margins from
 // the pose's link directions, and Hoang 2015's own design equations (8)-(10).

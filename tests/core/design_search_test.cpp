@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // core/design search: the goal brief, determinism, impossible briefs, cancel, the
 // trade-off set and the profile of a design.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The error budget told honestly (issue 9): every drawn move measured against the true geometry
 // with its own FK samples, the joining gap taken from the tolerance and charged, and the 8x goal
 // over seeds 1-10 (not one lucky seed).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Job preflight and working-mode selection (core/feasibility.hpp).
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Feeds: per-motor speed limits are never exceeded by the planned feeds, the XY speed never
 // exceeds the asked one (dense FK, independent of the planner's own samples), short moves are
 // slowed to the firmware's minimum duration, F is |dtheta| / duration, and a move's feed does not

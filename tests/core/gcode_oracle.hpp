@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Test oracle: a verbatim copy of the G-code writer as it was before the formatting was made
 // fast (core/gcode.cpp, 2026-11-22), in namespace fivebar::oracle. The optimised writer must
 // give byte-identical text for every job; gcode_test.cpp compares the two on seeded random jobs.

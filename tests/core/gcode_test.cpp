@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // G-code: lines of at most 80 characters that parse back to the planned joint targets and feeds,
 // the header names the profile and the $ settings, tool commands per tool kind, M0 for a pen
 // change, rounding far below a motor step.

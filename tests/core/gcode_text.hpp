@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading G-code text back in tests: its lines, and the words of one line.
 #pragma once
 

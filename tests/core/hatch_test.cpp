@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hatch fills (core/planning/hatch.hpp) checked against an independent point-in-polygon test
 // (winding number by angle summation): every hatch point inside, every hatch line ending on the
 // boundary, the area covered at the spacing, few strokes.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Hershey .jhf reader (core/text/hershey_font.hpp): glyphs, bounds, strokes, metrics, the
 // errors of malformed files (file, line, column), the font directory and its listing.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hershey .jhf text built in the tests (hershey_font_test.cpp, text_layout_test.cpp): glyphs
 // encoded as the format says (docs/text.md), so the tests know every number they check.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Jacobians and singularity measures (core/singularity.hpp): finite-difference checks of A, B
 // and J = A^-1 B at random poses in every branch, singularity classification at constructed
 // type I, II and III poses, continuity of the margins, and the range of inverseCondition.

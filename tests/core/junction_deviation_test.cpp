@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // GRBL's $11 from the profile (core/machine/junction_deviation.hpp): the corner cut |J| * $11
 // stays within the tolerance at every safe point; profiles that hold a $11 keep it, profiles
 // without one get the derived value.

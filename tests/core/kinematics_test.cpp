@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Consistency tests of the exact scalar kinematics: round trips in every branch, branch
 // identification, boundary robustness, asymmetric geometry. Conventions: conventions.md.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Message (core/support/message.hpp): the English text of a translatable core message, and the
 // marker substitution the studio shares with it (QString::arg conventions).
 #include "core/support/message.hpp"

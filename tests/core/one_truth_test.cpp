@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One truth in core: the placement rule (true size, A5 on maker-plotter stays 100 %), the same
 // job whatever the load (no wall-clock budget anywhere), the tolerance spent rather than
 // reserved (at least 8x fewer pen-down moves than firmware-style segmentation on straight lines),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stroke optimisation (core/optimise.hpp): joins, reversal and reordering keep every point,
 // travel time (joint space) goes down, layers keep their order; RDP simplification bounds.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The calibrated pen offset where pen positions meet motor angles outside the planner (issue 13):
 // the stroke optimiser's travel estimate, the time-optimal reference and the workspace maps work
 // on the pen's kinematics (pen_kinematics.hpp) when the profile has a pen offset. Each test

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The calibrated pen offset in the pen's kinematics (core/machine/pen_kinematics.hpp) and in the
 // planner: a pen fixed to link b1 off the distal joint draws the planned points; and the joint
 // limits (on commanded angles) judged in one convention when the calibration has zero offsets.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Placement of drawings in the machine frame (core/placement.hpp).
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The pipeline: every planned draw move measured independently (dense FK) stays within the
 // tolerance, feeds respect the motors, the tool sequence is consistent, travels are safe, the
 // placement puts the drawing where asked, infeasible jobs name the path and the reason.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The profile field table (core/machine/profile_fields.hpp): it drives validation and JSON, the
 // presets still serialise byte for byte as before the table, and messages name the field path.
 #include <gtest/gtest.h>

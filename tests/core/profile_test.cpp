@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Machine profiles: presets, JSON round trip, validation messages, atomic save, resolution.
 #include <gtest/gtest.h>
 #include <unistd.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Move checks and safe travel (core/safety.hpp), verified against dense independent sampling
 // of the forward kinematics and the singularity margins.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The core kinematics (core/kinematics.hpp) against independent re-implementations, inside this
 // file, of every formulation in the seed papers (/work/shared/seeds/), each mapped explicitly
 // onto conventions.md. The core must agree with each in all four working modes and both

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Adaptive segmentation: the real drawn curve (dense FK along every planned joint-linear move,
 // measured here independently) stays within the budget of the stroke, both ways; moves merge
 // many input points; failures name where.

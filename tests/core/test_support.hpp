@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Seeded randomness for tests: the seed is printed, and FIVEBAR_TEST_SEED overrides it.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Text layout in Hershey fonts (core/text/text_layout.hpp), the drawing it makes
 // (text_drawing.hpp) and the SVG of a drawing (core/output/drawing_svg.hpp). The numbers are
 // derived from the test font's own glyphs (hershey_test_font.hpp), not stored.

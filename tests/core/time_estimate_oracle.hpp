@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Test oracle: a verbatim copy of the GRBL time model as it was before it was made fast
 // (core/time_estimate.cpp, 2026-11-22), in namespace fivebar::oracle. The optimised model must
 // give the same per-move durations, start times and totals to 1e-9 relative;

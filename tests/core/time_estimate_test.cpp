@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // GRBL time model against an INDEPENDENT numerical integration: a point driven along the blocks
 // with small time steps, accelerating at each block's limit unless it must brake for a junction
 // or the end of the look-ahead window; junction speeds recomputed here from GRBL's formula.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The time-optimal reference (core/planning/time_optimal.hpp): the phase-plane parameterisation
 // against closed forms (huge limits: length / speed; one motor alone: its rest-to-rest time),
 // its grid convergence, rest at sharp corners, and the job-level split.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Trajectory sampling: continuous in time, speeds within the motor limits between samples, the
 // pose at each move's end time is its target, p is the FK of q, the pen state follows the tool.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Unit conversions (core/kinematics/units.hpp): known values and round trips.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Workspace analysis: maps against the reference kinematics (kinematics.hpp, singularity.hpp),
 // areas against an independent Monte Carlo estimate, type II loci, the inscribed rectangle.
 #include <gtest/gtest.h>

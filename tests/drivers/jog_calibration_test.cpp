@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Jog and go-to with a calibrated profile (issue 13): the current pose and every line are
 // commanded angles, the kinematics uses commanded + zero offset.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Jog planning as the studio uses it (drivers/jog/jog.hpp): checked sub-moves along the straight XY
 // line, clipping at the safe edge, go-to with the pen's path for the canvas preview.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // JogSettle: when the host may trust the reported position again after jogs, cancels and a new
 // reference pose (drivers/jog/jog_settle.hpp).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Jog, go-to, frame and machine setup planning.
 #include <gtest/gtest.h>
 

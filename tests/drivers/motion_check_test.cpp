@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The one motion check (drivers/check/motion_check.hpp): every line that can move the machine read as
 // GRBL 1.1h reads it and checked from the machine's pose; whole files checked before a byte.
 #include <gtest/gtest.h>

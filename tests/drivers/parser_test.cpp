@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // GRBL code tables and the line parser.
 #include <gtest/gtest.h>
 

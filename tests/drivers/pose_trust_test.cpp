@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // PoseTrust (issue 23): a position the host does not know is unknown, never assumed. Driven
 // with the board's own text through GrblProtocol, the record kept in a temporary state
 // directory. Also the board's pen (pen_state.hpp) and the settings that change how it moves.

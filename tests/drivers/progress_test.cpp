@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Executed progress on a stock board ($10=1: no Bf: in the reports) and the stall watchdog.
 #include <gtest/gtest.h>
 

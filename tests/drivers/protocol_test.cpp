@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // GrblProtocol: character counting, one-at-a-time settings, real-time bytes, polling, resets,
 // and recorded transcripts replayed through a fake transport.
 #include <gtest/gtest.h>

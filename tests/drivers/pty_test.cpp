@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // End to end through a real pseudo-terminal: QSerialPort <-> pty <-> the fivebar-sim
 // executable (started as a QProcess), driven by StreamSession as `fivebar stream` does.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The same probe transcript through the REAL GRBL 1.1h firmware (../shared/tools/grbl-sim, a
 // host build of gnea/grbl on a pty) and through fivebar-sim: every answer must be the same.
 // Skipped when ../shared is absent or the firmware cannot be built.

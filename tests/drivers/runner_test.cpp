@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // JobRunner on the in-process simulated machine: completion, hold/resume, and every injected
 // fault ending in a clean, resumable state whose resume completes the drawing.
 #include <gtest/gtest.h>

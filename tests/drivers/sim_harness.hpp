@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Test support for the drivers: a deterministic in-process link (GrblProtocol <-> SimMachine
 // with a stepped clock), job generation inside a preset's workspace, stroke comparison.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The simulated machine, driven through GrblProtocol with a stepped clock.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pre-flight against the board's soft limits (drivers/check/soft_limits.hpp): targets in machine
 // coordinates (work + WCO) inside -$13x..0, exactly where the simulated GRBL raises ALARM:2.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A board on the network for tests: the in-process simulated machine behind a QTcpServer on
 // localhost, bytes passed both ways, as ser2net puts a serial board on the network. One copy for
 // tests/drivers and tests/widgets.

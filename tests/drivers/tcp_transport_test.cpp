@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The network port (drivers/transport/tcp_transport, "tcp:HOST:PORT") against a QTcpServer in the test:
 // names parsed strictly, bytes both ways, the peer closing reported once as a disconnect (our
 // own close never), refused and malformed ports named in the error, the factory choosing the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The simulated machine driving a real, imperfect five-bar (issue 13): SimConfig::trueMachine
 // and SimMachine::drawnTrace (pen_trace.hpp). A planned job is run on the simulated board
 // (instant, set up and referenced) and what the true machine's pen drew is compared with the

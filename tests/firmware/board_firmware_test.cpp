@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The REAL GRBL 1.1h firmware (../shared/tools/grbl-sim) on behaviours the simulated GRBL and the
 // motion check copy from it:
 //  - a feed hold while Idle is a completed hold: the status says Hold:0 at once;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shared by the tests that run the REAL GRBL 1.1h firmware (../shared/tools/grbl-sim, a host
 // build of gnea/grbl on a pseudo-terminal): where the simulator is, starting and stopping it,
 // running the built `fivebar` CLI against it, and reading its motor step trace.
@@ -74,7 +75,7 @@ class Board {
     argv.push_back(nullptr);
     pid_ = fork();
     if (pid_ == 0) {
-      std::freopen("/dev/null", "w", stdout);
+      if (!std::freopen("/dev/null", "w", stdout)) _exit(127);
       execv("/bin/sh", argv.data());
       _exit(127);
     }

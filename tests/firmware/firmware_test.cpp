@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The real GRBL 1.1h firmware (../shared/tools/grbl-sim, every motor step each millisecond) runs
 // a planned A5 page (a 200 x 138 mm frame, a 60 mm circle, the two diagonals) for maker-plotter
 // at tolerance 0.05 mm, streamed by `fivebar stream` (issue 16). From the firmware's step trace:
@@ -95,7 +96,7 @@ std::vector<Sample> runOnFirmware(const fs::path& dir, const fs::path& profile,
   if (pid == 0) {
     const std::string script = kStartScript.string(), link = pty.string(),
                       state = (dir / "state").string(), trace = steps.string();
-    std::freopen("/dev/null", "w", stdout);
+    if (!std::freopen("/dev/null", "w", stdout)) _exit(127);
     execl("/bin/sh", "sh", script.c_str(), link.c_str(), "1", state.c_str(), "-s", trace.c_str(),
           "-r", "0.001", static_cast<char*>(nullptr));
     _exit(127);

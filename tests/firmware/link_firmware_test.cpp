@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The machine link against the REAL GRBL 1.1h firmware (../shared/tools/grbl-sim), driven by the
 // built `fivebar` CLI as a user would (issue 10's checks): a job on a stock board ($10=1: no Bf:
 // field) with executed progress and an ETA; a power cut mid-job, then a resume after a status

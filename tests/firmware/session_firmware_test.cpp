@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studio's machine session (MachineSide: MachineSession + RunController, no widgets) against
 // the REAL GRBL 1.1h firmware (../shared/tools/grbl-sim) on a pseudo-terminal, and the same
 // scenarios against our own simulated machine, which must give the same answers (issue 23):

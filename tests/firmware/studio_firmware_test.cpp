@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studio at the REAL GRBL 1.1h firmware (../shared/tools/grbl-sim), issue 23's check:
 // `fivebar-studio --port PTY --machine hoang2015` (offscreen, settings of its own) connects at
 // start as its Connect button does; within 15 s the firmware has received the studio's status
@@ -37,8 +38,8 @@ class StudioRun {
     if (pid_ == 0) {
       setenv("QT_QPA_PLATFORM", "offscreen", 1);
       setenv("XDG_CONFIG_HOME", config.c_str(), 1);  // no remembered profile, port or layout
-      std::freopen(out.c_str(), "w", stdout);
-      std::freopen(out.c_str(), "a", stderr);
+      if (!std::freopen(out.c_str(), "w", stdout) || !std::freopen(out.c_str(), "a", stderr))
+        _exit(127);
       execv(argv[0], argv.data());
       _exit(127);
     }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Arcs, circles, ellipses and rounded rectangles are drawn within the tolerance of the TRUE curve
 // (issue 9: the reported deviation includes every error source). Qt SVG 6.4 turns an SVG arc or a
 // rounded corner into cubics of up to 90 deg, 2.7e-4 x radius off the curve (0.027 mm on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Clip paths applied to the plotted lines (issue 29). The geometry (clip.hpp) against an
 // independent inside test (winding number by angle summation) on seeded random polylines: every
 // kept point inside, every input point inside the region covered by a kept piece. Then through the

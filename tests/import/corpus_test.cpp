@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Third-party SVGs (/work/shared/corpus/svg): every valid file imports or is refused with a
 // reason; every adversarial file ends within the time limit in an error or a sane import.
 // One test per file, each through the worker, so ctest runs them in parallel.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Dashed strokes drawn as SVG draws them (issue 29): each dash a polyline (pen up in between),
 // dasharray and dashoffset in the element's user units along the path, odd lists repeated, the
 // pattern restarting per subpath and running over a closed shape's closing edge; the pen width

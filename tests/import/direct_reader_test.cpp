@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The direct reader (core/import/fast_import.hpp) against the general path (sanitiser + Qt SVG +
 // capture engine), which is the reference: for random documents inside the reader's subset the
 // two must give the same ImportResult (points to 1e-9 mm, layers, flags, warnings, messages);

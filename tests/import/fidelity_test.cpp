@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a browser draws: symbols through use, zero-size shapes, closing edges of filled paths,
 // markers, text and viewport lengths, transform-origin, invalid path data, .svgz, messages.
 // Geometry is compared with what the SVG specifies (bounding boxes, lengths, distances).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Distances between points, segments and polylines, for tolerance checks.
 #pragma once
 

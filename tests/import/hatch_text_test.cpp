@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hatching what the importer marks as filled: text glyphs (nonzero, with counters as holes), an
 // evenodd path with a hole, and a filled-and-stroked shape; checked against an independent
 // winding number (angle summation) on the imported rings.

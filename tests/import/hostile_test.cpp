@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Process isolation: importSvgFile through the real worker and through fake workers that crash,
 // hang or print garbage. None of these may take the test process down.
 #include <gtest/gtest.h>

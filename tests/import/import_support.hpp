@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Helpers shared by the import tests: in-memory SVG import and drawing queries.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // In-process import of small hand-written documents: units, frame, tolerance, structure.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every length in its unit (issue 29): the resolver unit by unit against hand-computed user
 // units (CSS: 96 px per inch), then true sizes on the page through the whole import: a rect sized
 // in each unit in a document whose user unit is one CSS px (no viewBox), percentages on the axis

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Markers (marker-start/mid/end) drawn as SVG 1.1 specifies: the content at each vertex, oriented
 // (auto, auto-start-reverse, angle; the bisector at inner vertices), scaled (strokeWidth,
 // userSpaceOnUse, viewBox, preserveAspectRatio), placed by refX/refY. Every expected position is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `fivebar plan` with SVG import: warnings on stderr (exit status unchanged), the point budget,
 // and --fill hatch (app/cli/plan_import_options.cpp). Runs the built binary.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The corpus check of issue 29: every file of resvg's shapes/ and structure/ tests drawn as the
 // reference PNG beside it shows (resvg's rendering, 300 px wide). Our plotted lines are laid over
 // the PNG: (1) nothing drawn that the PNG does not show: every point along our lines lies within

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar_import_tests: QGuiApplication on the offscreen platform (Qt SVG text needs fonts), so
 // test discovery and runs work without a display.
 #include <gtest/gtest.h>

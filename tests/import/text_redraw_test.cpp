@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SVG <text> redrawn in a Hershey single-stroke font (ImportOptions::textFont,
 // core/import/svg_text_redraw.hpp): size, position, anchor, tspans, inheritance, transform and
 // colour, against the font's own layout; the rest of the document untouched, line numbers kept.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Nothing drawn that a browser does not show (issue 29): never-rendered elements wherever they
 // stand, foreign namespaces, invisible paint, zero-length butt-capped subpaths, path data in error
 // from its first command; a pattern fill drawn as the outline its warning promises; an element

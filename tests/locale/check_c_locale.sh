@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # check_c_locale.sh FIVEBAR FIVEBAR_STUDIO SOURCE_DIR: files and CLI output keep the decimal point
 # in a German environment. Builds the de_DE.UTF-8 locale into a temporary LOCPATH (localedef,
 # Debian package locales) and compares, byte for byte, what runs under LC_ALL=de_DE.UTF-8 and

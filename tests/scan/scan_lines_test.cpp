@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hoang's accuracy lines measured in a scan (core/calibration/scan/scan_lines.hpp): synthetic sheets
 // painted by QPainter (round pen 0.4 mm) at 300 and 600 dpi, turned, mirrored, blurred and noisy
 // (seeded), with lines drawn longer or shorter and bowed as an imperfect machine draws them; each

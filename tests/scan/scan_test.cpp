@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The scan (core/calibration/scan): synthetic sheets rendered by QPainter at 300 and 600 dpi,
 // turned, mirrored, blurred and noisy (seeded): every mark found within 0.05 mm of where it was
 // drawn and numbered right; bad input named.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Synthetic scans of a calibration pattern for the scan tests and benchmark: the pattern's
 // strokes painted by QPainter (antialiased, round pen) on a white page at a given dpi, the sheet
 // turned, shifted and optionally mirrored, marks optionally displaced (an imperfect machine), then

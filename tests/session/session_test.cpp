@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The session layer without widgets: MachineSide over a StudioInputs that is no document,
 // connected to the in-process simulated machine; the JogController's step moves the machine and
 // the JogSettle tracking lets the next jog start from the reported pose.

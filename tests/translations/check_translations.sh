@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # check_translations.sh LUPDATE PROJECT.cmake GenerateLUpdateProject.cmake SOURCE_DIR ALIASES
 # ALIASES: lupdate's -tr-function-alias value (the core's FB_TR markers), as the build uses it.
 set -uo pipefail

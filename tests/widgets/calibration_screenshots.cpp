@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar_calibration_screenshots OUTDIR [de]: screenshots of Machine > Calibrate... for the docs,
 // from the real main window (not a test; run it under xvfb-run -a -s "-screen 0 1600x1000x24"):
 // calibration-1-pattern.png ... calibration-7-accuracy.png, one per step of the wizard, walked

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studio's simulated imperfect machine and the wizard's measuring forms (issue 13), offscreen:
 // the simulated-machine setting applies at once to an open simulated machine, is saved where the
 // maker sets it and is not left behind by the wizard; the wizard's preview trace is what the
@@ -86,7 +87,7 @@ TEST(SimulatedMachine, ATrueMachineSetWhileConnectedAppliesAtOnce) {
   rig.truth().setTruth(t, false);  // the machine is open: no reconnect
   ASSERT_TRUE(rig.session.simulatedTrueMachine().has_value());
   EXPECT_NEAR(rig.session.simulatedTrueMachine()->geometry.b1, rig.doc.profile().geometry.b1 + 0.5, 1e-12);
-  Vec2 end;
+  Vec2 end = Vec2::Zero();
   JointAngles q;
   ASSERT_TRUE(drawStroke(rig, &end, &q));
   Geometry real = rig.doc.profile().geometry;

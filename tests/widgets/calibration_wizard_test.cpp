@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The calibration wizard (widgets/calibration) walked through offscreen on the in-process
 // simulated machine: a true machine off by known amounts, the pattern streamed, the table filled
 // from the simulated sheet, the fit reducing the error, apply changing the profile and undo

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Design dialog (widgets/design): a search from the brief on worker threads, the table and
 // trade-off plot, the canvas preview of a clicked design, "Use as profile" (undoable), export,
 // cancel, and the atlas painter.

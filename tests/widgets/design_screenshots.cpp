@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar_design_screenshots OUTDIR [de]: screenshots of Machine > Design... for the docs, from
 // the real main window (not a test; run it under xvfb-run -a -s "-screen 0 1600x1000x24"):
 //   design-dialog.png   the dialog after an A5 search (10 mm margin), best design selected

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar_dialog_screenshots OUTDIR LANG: screenshots of the studio's dialogs and panels other than
 // the main window in one language (de, fr, es or en), to look for clipped or untranslated labels.
 // Not a test; run it under xvfb-run -a -s "-screen 0 1600x1000x24". Writes into OUTDIR:

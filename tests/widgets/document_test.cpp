@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // StudioDocument: every edit is undoable, merges by gesture, and signals what changed; the
 // placement tool turns mouse drags into one undoable edit each.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Waiting on Qt's event loop in tests and screenshot tools: waitUntil runs events until a
 // predicate holds or a timeout passes; settle runs them for a while; grab saves a settled widget's
 // picture and says so on stdout. One copy for tests/widgets, tests/session and the screenshot tools.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Numbers in the studio follow the user interface locale (QLocale::setDefault, as the studio's
 // start-up does): "12,5 s" in German, French and Spanish, "12.5 s" in English; the spin boxes
 // take "12,5" in those languages. The French and Spanish translations are found at run time

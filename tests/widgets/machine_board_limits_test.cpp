@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The board's soft limits in the one motion check, on the simulated machine: with $20=1 and a
 // small travel, the console, a jog, go to home pose and go-to are refused before a byte is sent
 // (the simulated GRBL would raise ALARM:2 or answer error:15), the same moves inside the travel

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The jog panel driving the simulated machine (the planning itself: tests/drivers/jog_plan_test).
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studio connects to any port by name (issue 23): the machine panel's port box is editable
 // (a typed pseudo-terminal reaches the fivebar-sim executable), offers the simulated machine,
 // the recent ports (QSettings, most recent first, a handful kept) and the listed ones; Connect

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The machine profile editor: inline validation messages from core validate(), live updates of
 // the document (undoable), presets, and JSON export / import.
 #include <gtest/gtest.h>

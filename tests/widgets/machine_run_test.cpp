@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Running a planned job on the simulated machine through the run panel: to completion with the
 // executed part coloured on the canvas, and resuming after the link drops (also from a fresh
 // controller, as after a restart of the studio).

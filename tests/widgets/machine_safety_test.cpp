@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The machine side's safety on the simulated machine: the console's motion check and its expert
 // switch, the reference pose asked for, go-to-home by a checked move, "connected" only after the
 // board answered, and the canvas linkage following the machine.

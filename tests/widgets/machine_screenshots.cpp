@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar_machine_screenshots OUTDIR: screenshots of the studio's machine panels for the docs,
 // taken from the real main window driving the built-in simulated machine (not a test; run it
 // under xvfb-run -a -s "-screen 0 1600x1000x24"):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The machine session and its panels on the simulated machine: connection and status, the
 // alarm banner and its way out, error answers, and the console's history.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The machine settings dialog on the simulated machine: reading $$, the comparison with the
 // profile, and writing the differences after a backup file.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A network port typed in the machine panel (issue 23): "tcp:127.0.0.1:PORT" reaches the
 // simulated machine behind a TCP bridge in the test (as ser2net puts a board on the network);
 // the board vanishing from the network is a disconnect the panel shows, naming the port.

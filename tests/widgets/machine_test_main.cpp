@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Test main of the machine panels' tests: offscreen Qt (so discovery works without a display),
 // a QApplication for the widgets, settings apart from the user's, and the printed, settable
 // random seed.

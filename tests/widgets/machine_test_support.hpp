@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Helpers for the machine panels' tests: a document on a preset profile, a session connected to
 // the in-process simulated machine, and waiting on the event loop with a deadline.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Painting functions into QImages: the view transform, the machine, the grid, map legends and
 // the placement delta. Pixels are checked where the geometry says they must be.
 #include <gtest/gtest.h>

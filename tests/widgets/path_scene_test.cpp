@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // PathScene and SceneRenderer: level of detail, culling, colour classes, drawing-order limits
 // and the offscreen cache, checked on pixels and counters.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar_port_screenshots OUTDIR: screenshots of the machine panel's port box, taken from the
 // real main window (not a test; run it under xvfb-run -a -s "-screen 0 1600x1000x24": the list
 // is a window of its own, so the pictures are grabs of the screen around the panel):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One truth, end to end: the studio window's G-code (File > Export G-code, what Run streams) is
 // byte-identical to `fivebar plan` and to `fivebar-studio --export-gcode` for corpus drawings;
 // a project saved, reopened and exported gives the same G-code; the unsaved-changes question;

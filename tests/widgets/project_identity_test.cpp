@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One document identity (issue 23): an SVG opened while a project is open makes a new untitled
 // project. The title names what Save writes, Save (Ctrl+S) then asks for a name, the project on
 // disk is never written over with the new drawing, unsaved project changes are asked about

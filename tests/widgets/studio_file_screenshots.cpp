@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar_studio_file_screenshots OUTDIR: screenshots for the docs of the placement panel (a
 // drawing imported at true size, width and height in mm) and of the File menu (save, export),
 // taken from the real main window (not a test; run it under

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studio's flows end to end, offscreen: import a drawing (through the isolated worker),
 // placement fitted into the workspace, mode choice, the planned preview, the simulation running
 // to the end, and the main window painting a planned job.

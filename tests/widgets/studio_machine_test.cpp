@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The machine side inside the whole main window, offscreen: the quit prompt while a job runs,
 // the canvas linkage following the connected machine with the simulation as a ghost, and an
 // import error never covered by the import's progress dialog; --port at start.

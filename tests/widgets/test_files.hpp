@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A file written for a test in its temporary directory (a drawing, a profile).
 #pragma once
 

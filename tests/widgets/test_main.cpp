@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Widget tests run without a display: the offscreen platform is chosen here, before the
 // QApplication exists, so that test discovery works on a headless machine too.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The German translation is complete (every message translated) and is what tr() finds at run
 // time from the embedded .qm (the contexts must be the qualified class names).
 #include <gtest/gtest.h>

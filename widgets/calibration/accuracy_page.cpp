@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The accuracy step of the calibration wizard: Hoang's ten 40 mm lines measured with a ruler
 // (length, straightness), before and after calibration, and the figures that compare them.
 #include <QComboBox>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The calibration feature installed. Contract: calibration_install.hpp.
 #include "widgets/calibration/calibration_install.hpp"
 

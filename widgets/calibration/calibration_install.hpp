@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The calibration feature's place in the studio (installed through the shell, like every feature:
 // widgets/shell/studio_shell.hpp): the simulated machine's true build (its menu entry, status badge
 // and canvas trace) and Machine > Calibrate..., whose wizard is made on first use.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The calibration wizard's picture of the sheet (machine frame, y up): the pattern as planned, what
 // the pen really drew on the simulated machine, the marks with the one being typed highlighted,
 // the measured marks placed onto the pattern, and residual arrows (scaled, with a legend).

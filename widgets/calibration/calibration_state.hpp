@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the calibration wizard (Machine > Calibrate...) carries from step to step: the pattern it
 // draws and the accuracy lines' figures. The simulated sheet (what a true machine draws, measured)
 // is the session's (session/simulated_sheet.hpp), beside the simulated board.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Machine > Calibrate...: the calibration wizard (issue 13, docs/calibration-wizard.md). Steps:
 // choose the pattern -> draw it (connected or simulated machine, or export its G-code) -> measure
 // (type x, y per mark, or fill the table from the simulated sheet) -> fit (before/after errors,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The measure step's second form (docs/calibration.md "Distances"): a ruler alone, no paper frame.
 // A table of pairs of mark numbers and their measured distance in mm, as `fivebar calibrate fit`
 // reads it from `id_a,id_b,distance_mm`; loaded from such a file, or filled from the simulated

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The last steps of the calibration wizard: the fit (core/calibration/fit.hpp) shown with its
 // errors, arrows and uncertainties; applying it to the profile; the verification pattern.
 #include <QDateTime>

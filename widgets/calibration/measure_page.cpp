@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The measure step of the calibration wizard: a table of the marks to type x, y into (any paper
 // frame), the mark being typed highlighted on the picture, or filled from the simulated sheet.
 #include <QDoubleSpinBox>

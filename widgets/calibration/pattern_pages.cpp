@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The first two steps of the calibration wizard: choose the pattern, draw it.
 #include <QCheckBox>
 #include <QDir>

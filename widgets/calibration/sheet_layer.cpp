@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/calibration/sheet_layer.hpp"
 
 #include <QPainterPath>

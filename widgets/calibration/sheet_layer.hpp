@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studio canvas's picture of the calibration sheet while the wizard is open: the pattern as
 // planned and, on the simulated imperfect machine, what its pen really drew, as its own layer with
 // a legend (bottom left). Empty (paints nothing) when the wizard is closed.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The canvas layer of what the simulated machine's pen really drew (MachineSession::
 // simulatedDrawnTrace, machine frame) while the studio's simulated machine is imperfect
 // (SimulatedTruth): beside the plan, so the maker sees how the imperfect machine bends a drawing.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studio's simulated-machine settings (issue 13): the "true machine" the built-in simulated
 // machine really is, when it differs from the profile (links longer or shorter, motor zeros off,
 // play in the drives), so calibration can be tried without hardware.

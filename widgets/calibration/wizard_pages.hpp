@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The calibration wizard's pages (calibration_wizard.hpp). Each explains itself in plain words
 // at the top; the picture of the sheet is a CalibrationPreview.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Extension points of the canvas: a CanvasLayer paints one stratum (workspace overlays, the
 // drawing, the job, the machine, markers) with a QPainter& in the widget frame; a CanvasTool
 // receives the mouse events the view does not use for zoom and pan (placement handles, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The canvas: a QWidget that owns only the view (zoom, pan) and composes painting layers and the
 // active tool. Wheel zooms around the cursor, middle-button or space+left drag pans; every other
 // mouse event goes to the tool. It stores no document state.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Canvas layer showing the drawing and the planned job: the placed drawing (moved live while a
 // placement edit waits for its new plan, offending paths in red), the planned job (pen-down
 // coloured by speed or plain, pen-up in grey, up to the scrubber), or during the simulation the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Scenes of the planning results. Contract: job_scenes.hpp.
 #include "widgets/canvas/job_scenes.hpp"
 

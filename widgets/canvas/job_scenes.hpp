@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The paint-ready scenes of the studio's planning results (canvas/path_scene.hpp): the placed
 // strokes of a drawing with the offending ones flagged, and a planned job's moves. Built off the UI
 // thread by the job pipeline; pure functions of their inputs.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/canvas/machine_layer.hpp"
 
 #include "core/machine/pen_kinematics.hpp"

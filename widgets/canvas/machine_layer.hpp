@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Canvas layer showing the machine to scale at its current pose: the connected machine's
 // reported pose (setExternalAngles) whenever there is one, with the simulation's pose as a
 // faint ghost while the simulation runs or is scrubbed; without a machine the simulation's pose,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/canvas/path_scene.hpp"
 
 #include <QPen>

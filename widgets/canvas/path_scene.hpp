@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A paint-ready, level-of-detail representation of many machine-frame paths (a planned job or a
 // placed drawing) that pans and zooms a million segments within a frame budget:
 //  - per level of detail, polylines are simplified (points within the level's tolerance of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The canvas tool that moves, rotates and scales the drawing with handles: drag inside the
 // drawing's box to move, a corner to scale about the centre, the round handle above the box to
 // rotate (Shift snaps to 15 deg). One mouse gesture is one undo step.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Frame-budget painting of a PathScene: renders it into an offscreen image that covers the
 // viewport plus a margin, then blits. While only the pan changes the image is reused; while the
 // order limit only grows (a running simulation's trace) just the new segments are added. Zoom,

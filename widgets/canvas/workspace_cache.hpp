@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The four working modes' workspace maps and analyses for the document's machine, computed once
 // per geometry (and limits, margins, step angles) off the UI thread and cached, so switching the
 // mode is instant. A result for an outdated profile is dropped.

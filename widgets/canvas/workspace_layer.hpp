@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Canvas layer of the chosen working mode's workspace: the reachable and singularity-free
 // regions with the margin band, type II curves, the largest rectangle (paintWorkspace), an
 // optional scalar map (transmission angle, conditioning, resolution) with its colour bar, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Machine > Design...: choose link lengths for a paper size (issue 14, docs/design.md).
 // The brief (paper, orientation, margin, bounds, rules, objective) on the left; the search runs
 // on worker threads with progress and cancel; the results as a table and a trade-off plot.

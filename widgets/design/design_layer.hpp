@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The canvas preview of a design chosen in the Design dialog: it covers the canvas with the
 // design's workspace, singularity curves, placed rectangle and one measure map, plus a card
 // with its lengths and measures. Paints nothing while no design is shown.

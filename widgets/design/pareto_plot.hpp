@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The trade-off plot of the Design dialog: worst-case condition number (up) against footprint
 // (right), one dot per design; a click selects the nearest dot.
 #pragma once

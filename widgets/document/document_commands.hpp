@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studio document's undo commands: one small QUndoCommand per kind of edit, each storing the
 // value before and after and applying it through StudioDocument's raw setters.
 #pragma once

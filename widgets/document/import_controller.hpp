@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Importing drawings and opening projects into the document: runs the SVG import off the UI
 // thread (the import library parses in its worker process) with a progress dialog and cancel,
 // places a drawing by core's autoPlacement (true size when it fits, centred in the largest

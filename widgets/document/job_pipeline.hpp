@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studio's planning, run off the UI thread whenever the document changes: core's planJob at
 // the document's fixed placement (job/job_source.hpp, the same call `fivebar plan` makes),
 // then the paint-ready scenes and the timed trajectory of its result. Pure function of its

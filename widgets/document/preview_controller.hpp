@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Plans the job off the UI thread whenever the document's job inputs change (debounced), and
 // holds the latest result for the canvas, the preview panel and the simulation. A new request
 // cancels the run in progress (core stops at its next chunk) and starts at once, so an undo never

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The simulation clock: play, pause, step, speed and scrubbing over a planned job's trajectory.
 // Pure UI state; the poses come from core's Trajectory, sampled by time (core computed the
 // motion once). Ticks at 60 Hz while playing.

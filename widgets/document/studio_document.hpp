@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studio's document: the only door to mutation. It owns the drawing, its placement on the
 // machine, the machine profile, the chosen working mode and the layer settings, and the undo
 // stack; every edit is a small QUndoCommand (document_commands.hpp). Widgets show the state and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The machine console: the lines sent to and received from the board (status reports left out,
 // and the job's thousands of "ok"s while a job streams), and an input line with a history
 // walked with the up and down arrow keys. Everything goes through the session's ConsolePort

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/machine/document_inputs.hpp"
 
 #include "widgets/document/preview_controller.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // DocumentInputs: the studio's document and preview controller seen through the session layer's
 // StudioInputs (session/studio_inputs.hpp): the profile, the drawing's name and the planned job,
 // with the document's and preview's signals forwarded.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/machine/jog_goto_tool.hpp"
 
 #include "session/go_to.hpp"

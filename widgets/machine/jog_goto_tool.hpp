@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Canvas tool for "go to": a click on the canvas plans a checked move of the pen to that point
 // (drivers/jog planGoTo: pen up and a safe travel at rapid rate, every leg checked) and draws the path the pen will take;
 // nothing moves until the move is confirmed (confirm(), Enter in the jog panel). A refused target

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The jog panel: XY arrows and diagonals, per-motor buttons (theta1 +/-, theta2 +/-), step sizes
 // (0.1, 1, 10 mm or degrees), a tap jogs one step and holding jogs continuously until release;
 // keyboard jogging on the canvas (arrow keys; Page Up / Page Down lift and lower the pen; Enter

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The alarm / error banner: shown while the session (MachineView) reports a problem, it says what happened
 // and what to do (the drivers' code tables) and offers the way out: Reset (when the board
 // demands one), Unlock ($X), Home ($H) or Set reference pose, and Dismiss for an error answer.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The questions the machine side asks before an action that cannot be undone on the machine:
 // setting the reference pose (the studio then believes the arms stand at the profile's home
 // pose), and the home button that, without homing switches, sets that reference. Each asks

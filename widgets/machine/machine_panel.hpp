@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The machine panel: connection (the built-in simulated machine, or any port by name in the
 // editable PortBox: a serial port found on the system, one typed, a pseudo-terminal, a network
 // port tcp:HOST:PORT; recent ones remembered), the baud rate, the alarm / error banner, and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // MachinePanels: the widgets of the machine side, built over a session::MachineSide (the session,
 // run and jog controllers, app/studio composes both): the panels handed to the window's docks
 // (machine, run, jog, console, profile editor), the canvas layer of the executed job, the canvas

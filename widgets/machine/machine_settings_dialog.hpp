@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Machine settings dialog: reads the board's GRBL settings ($$), shows them next to what the
 // machine profile expects (drivers/check/machine_setup.hpp: steps/deg, rates, accelerations, soft
 // limits...), and on confirmation saves a backup of the board's values to a file and writes the

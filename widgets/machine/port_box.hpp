@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // PortBox: the machine panel's port box. Editable: any name can be typed (a device path, a
 // /dev/serial/by-id link, a pseudo-terminal such as the firmware simulator's, or a network port
 // tcp:HOST:PORT). It offers the built-in simulated machine, the ports connected to lately

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Canvas layer for a job running on the machine: the pen-down part of the job the machine has
 // executed (by the runner's executed-line count, which follows the machine's status reports) is
 // drawn over the drawing in the "done" colour, and the machine's reported pen position is marked.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The run panel: start, hold, continue and stop the planned job on the machine, a progress bar
 // with the executed lines and the time left, what happened when a run ended, and the offer to
 // resume an interrupted run (also after a restart: the progress file beside the job).

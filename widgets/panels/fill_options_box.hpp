@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // How filled shapes are drawn when a drawing is imported: outline (default), hatch (spacing,
 // angle, crosshatch, outline kept or not) or none; "Apply" imports the current file again with
 // the new choice (for this session). The geometry is core/planning/hatch.hpp. "Draw dashed

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The warnings of the last import (dropped images, unsupported features, path data errors, ...),
 // one per line as the importer words them ("line 12: <path id="p3"> ..."), under a translated
 // heading; and the point-budget question asked before a huge drawing enters the document.

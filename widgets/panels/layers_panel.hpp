@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The layers of the drawing: visibility (check box), plotting order (up/down) and the tool
 // settings of the selected layer (draw speed, power, pause for a pen change) and its fill (outline,
 // hatch with spacing, angle and crosshatch, or none). Every change is an undoable document edit;

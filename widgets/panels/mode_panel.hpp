@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Working-mode selector (Auto, ++, +-, -+, --) and the workspace overlay switches. The mode is
 // document state (an undoable edit); the overlay switches are view state held by the
 // WorkspaceLayer.

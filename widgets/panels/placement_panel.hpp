@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The placement by numbers: centre X/Y (mm, machine frame), rotation (deg), scale (%), the
 // drawing's width and height in mm (editable; the aspect is kept unless unlocked), "Fit to
 // workspace" (fills the largest singularity-free rectangle) and "Actual size" (back to 100 %).

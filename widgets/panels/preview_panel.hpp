@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The job preview: planning status, estimated time, lengths and segments, the colour and travel
 // switches with the speed legend, a scrubber over the drawing order, and the pre-flight problems
 // (a click centres the canvas on the problem and marks it).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The machine profile editor: geometry, joint limits, motors, tool, motion and safety margins,
 // connection and home pose, presets, import and export of profile JSON (atomic save). Every
 // change is validated at once with core validate(); the messages appear next to their fields.

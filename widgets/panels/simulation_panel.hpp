@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Simulation controls: play/pause, step back/forward, speed x0.5..x50, a timeline to scrub, and
 // live readouts of the motor angles, transmission angles and singularity margin at the pose.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The one door a feature of the studio installs itself through: its panels (docks), its menu
 // entries, its canvas layers and status widgets. The composition root (app/studio/MainWindow)
 // builds one StudioShell and hands it to each feature's install function (the machine panels,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `fivebar calibrate scan`: the calibration pattern's marks found in a scanned sheet (PNG/JPEG at
 // a known dpi) and numbered by matching the pattern. The paper frame of the result: mm from the
 // image's lower left corner, x right, y up (the sheet may lie turned or mirrored in it).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The image half of the scan: dark connected components of a greyscale image (run-length
 // labelling, so an A4 page at 600 dpi needs memory for its ink only), and the marks among them:
 // a ring of the pattern's size with a small dot at its centre. Pixel frame: x right, y down,

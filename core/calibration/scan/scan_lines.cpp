@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Accuracy lines in a scan: contract in scan_lines.hpp, method in docs/calibration.md.
 #include "core/calibration/scan/scan_lines.hpp"
 

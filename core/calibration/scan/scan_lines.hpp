@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hoang's accuracy lines (accuracy_pattern.hpp) measured in a scanned sheet (PNG/JPEG at a known
 // dpi), as the marks are by scan.hpp: each line's ends and centre line found in the image with
 // Qt's QImage, then its length and straightness by accuracyFigures. Paper frame of the result: mm
