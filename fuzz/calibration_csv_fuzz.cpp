@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The calibration's files: MARKS.csv, MEASURED.csv, the measurement files of either form
 // (marks or ruler distances) and the mark poses. The first byte chooses the reader, so that the
 // fuzzer learns each format's header. Asserts: an error names the file and a line ("FILE:N:");

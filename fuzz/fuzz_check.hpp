@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What every harness asserts beyond "no crash": a property of the parser's answer that could
 // fail. FUZZ_CHECK prints the broken property and aborts, which libFuzzer (and the replay
 // driver) report as a finding with the input that caused it (docs/reliability.md).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The G-code reader used by `fivebar stream`, `send` and resume (parseJob, strokesOf,
 // lastPenDownPoint, planResume) and the file check every job passes before its first byte
 // (checkFile), on the maker-plotter preset. Asserts: line numbers increase; a line over GRBL's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a board sends: every received line through the response parser (parseLine, which also
 // parses status reports), and the status body alone. Asserts: the raw text is kept; a status
 // line parses as a status exactly when its body does; codes and overrides are what GRBL can send.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The progress file a resume reads (JOB.gcode.progress). Asserts: a refusal says why, naming the
 // file; an accepted record survives a round trip.
 #include <cstdint>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SVG path data ("d"): parsing into absolute commands, arcs as cubics, and the split that keeps
 // Qt SVG under its 32,767-element limit. Asserts: the parse starts with a moveto or says where
 // it stopped; each split part is itself valid path data within the element budget, and

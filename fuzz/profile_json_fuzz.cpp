@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Machine profile JSON (`--machine FILE`, the studio's profile files, the profile inside a
 // project). Asserts: a refusal has issues naming a field or the file; an accepted profile passes
 // validation and survives a round trip (written, read again: the same JSON).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Project files (.fivebar: versioned JSON with the drawing's SVG, placement, layers, mode,
 // tolerance and profile). Asserts as for profiles: refusals name a field or the file; an
 // accepted project survives a round trip.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The harnesses' main outside libFuzzer (the default gcc build, registered with ctest): runs
 // LLVMFuzzerTestOneInput on every file given (directories recursively, in name order), then,
 // with --mutations N, on N seeded mutations of each (bit flips, byte insertions, deletions,

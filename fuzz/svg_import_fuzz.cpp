@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SVG import, through the worker's own pipeline in process (importSvgData: the direct reader or
 // the sanitiser + Qt SVG, then layers, extent check, page size, work frame; the worker runs the
 // same capture on its file). Asserts: a refusal names the file; an accepted drawing has finite

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Fuzzes every parser a user's file or a board's bytes reach (fuzz/, docs/reliability.md):
 # builds the fuzz preset (clang + libFuzzer, ASan + UBSan; Debian's clang and libclang-rt-14-dev,
 # installed when missing), then runs each harness for SECONDS or 10 M executions, whichever

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Soak test (issue 28): a job of >= 20,000 G-code lines streamed by `fivebar stream` to the REAL
 # GRBL 1.1h firmware (../shared/tools/grbl-sim) at a speed-up, with faults at seeded random times
 # (unplug, host kill, power cut, soft reset, error:N, a board that stops answering), each recovered

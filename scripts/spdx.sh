@@ -3,7 +3,7 @@
 # scripts/spdx.sh [--check] [SOURCE_DIR]: every project source file carries the licence's SPDX
 # line (GPL-3.0-or-later, LICENSE) as its first line, or its second after a shebang:
 #   // SPDX-License-Identifier: GPL-3.0-or-later     *.cpp *.hpp *.h
-#   # SPDX-License-Identifier: GPL-3.0-or-later      CMakeLists.txt *.cmake *.sh
+#   # SPDX-License-Identifier: GPL-3.0-or-later      CMakeLists.txt *.cmake *.sh *.py
 # Without --check it adds the line where it is missing (idempotent); with --check it lists the
 # files without it and exits 1 when there is any (ctest Package.SpdxHeaders). Test data (SVG,
 # JSON, G-code, CSV, .ts) carries no header.
@@ -12,12 +12,12 @@ check=0
 if [ "${1:-}" = --check ]; then check=1; shift; fi
 cd "${1:-$(dirname "$0")/..}"
 spdx="SPDX-License-Identifier: GPL-3.0-or-later"
-dirs=(app cmake core drivers i18n job paint resources scripts session tests translations widgets)
+dirs=(app cmake core drivers fuzz i18n job paint resources scripts session tests translations widgets)
 
 source_files() {
   echo CMakeLists.txt
   find "${dirs[@]}" -type f \( -name '*.cpp' -o -name '*.hpp' -o -name '*.h' \
-    -o -name CMakeLists.txt -o -name '*.cmake' -o -name '*.sh' \) | LC_ALL=C sort
+    -o -name CMakeLists.txt -o -name '*.cmake' -o -name '*.sh' -o -name '*.py' \) | LC_ALL=C sort
 }
 comment_for() {
   case "$1" in

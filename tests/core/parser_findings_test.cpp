@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the fuzzers found in the JSON readers (fuzz/, docs/reliability.md), each kept as an input
 // in fuzz/regressions and asserted here in words: a refusal naming the file, line and column,
 // never an exception out of the reader.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The soak test's checks, from the job's G-code and the firmware's motor step traces.
 
 Everything is compared in joint space (X/Y of the job are the motor angles in degrees; GRBL moves

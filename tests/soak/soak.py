@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Soak test (issue 28): a long job on the REAL GRBL 1.1h firmware (grbl-sim) with faults.
 
 Plans a grid of many small circles (>= --lines G-code lines) for maker-plotter,

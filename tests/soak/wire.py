@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The soak test's serial wire: a pseudo-terminal proxy between `fivebar` and grbl-sim.
 
 The host opens HOST_LINK (a symlink to a pty slave the proxy owns, like a USB serial port); the
