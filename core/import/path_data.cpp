@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "path_data.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -184,6 +185,7 @@ ParsedPath parsePathData(QStringView d) {
     const char lower = static_cast<char>(std::tolower(static_cast<unsigned char>(op)));
     double a[7];
     bool ok = true;
+    const qsizetype numbersStart = scan.pos();
     for (int i = 0; i < arity(lower) && ok; ++i)
       ok = (lower == 'a' && (i == 3 || i == 4)) ? scan.flag(a[i]) : scan.number(a[i]);
     if (!ok) {
@@ -191,7 +193,15 @@ ParsedPath parsePathData(QStringView d) {
       result.errorOffset = scan.pos();
       return result;
     }
-    result.commands.push_back(absolute(op, a, state));
+    const PathCommand command = absolute(op, a, state);
+    // Finite numbers whose absolute form overflows (a relative 1e308 after 1e308, a reflected
+    // control point): bad data from here on, as an unparsable number is.
+    if (!std::all_of(std::begin(command.v), std::end(command.v), [](double v) { return std::isfinite(v); })) {
+      result.error = true;
+      result.errorOffset = numbersStart;
+      return result;
+    }
+    result.commands.push_back(command);
     if (op == 'm') op = 'l';  // implicit repeats of a moveto are linetos
     if (op == 'M') op = 'L';
   }

@@ -113,5 +113,17 @@ TEST(PathData, AnArcWhoseCentreOverflowsIsItsChord) {
   EXPECT_EQ(out[0].v[1], 1e308);
 }
 
+// Found by fuzz/path_data_fuzz.cpp: finite numbers whose absolute form overflows (a shorthand's
+// reflected control point 2 x 1e308) gave inf and nan, which the long-path split then wrote as
+// text that is no path data. The parse stops there, as at an unparsable number.
+TEST(PathData, AnAbsoluteFormThatOverflowsIsBadData) {
+  const QString d = QStringLiteral("M1e308 0 Q 1e308 15 1e308 16 T 1e308 17");
+  const ParsedPath p = parsePathData(d);
+  EXPECT_TRUE(p.error);
+  ASSERT_EQ(p.commands.size(), 2u);
+  EXPECT_EQ(p.errorOffset, d.indexOf(u'T') + 1);
+  EXPECT_TRUE(parsePathData(u"m1e308 0 l1e308 0").error);
+}
+
 }  // namespace
 }  // namespace fivebar::svg
