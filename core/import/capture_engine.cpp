@@ -78,13 +78,20 @@ void markFill(std::vector<Polyline>& lines, FillRule rule, bool fillOnly) {
   }
 }
 
-void appendFlattenedPath(const QPainterPath& path, const QTransform& transform,
-                         double toleranceMm, std::vector<Polyline>& out) {
+bool appendFlattenedPath(const QPainterPath& path, const QTransform& transform,
+                         double toleranceMm, std::vector<Polyline>& out, std::size_t maxPoints) {
   // Points gather in a reused scratch buffer; each polyline then gets one exact allocation.
   thread_local std::vector<Vec2> scratch;
   scratch.clear();
   bool curved = false;  // the subpath so far holds a curve: its points are flattened
+  std::size_t finished = 0;  // points of the polylines already made
+  const auto room = [&]() -> std::size_t {  // points the budget leaves for the current subpath
+    if (maxPoints == 0) return 0;
+    const std::size_t used = finished + scratch.size();
+    return used < maxPoints ? maxPoints - used : std::size_t{1};
+  };
   auto finish = [&] {
+    finished += scratch.size();
     Polyline line;
     line.points.assign(scratch.begin(), scratch.end());
     line.flattened = curved;
@@ -111,12 +118,21 @@ void appendFlattenedPath(const QPainterPath& path, const QTransform& transform,
       // tolerance, so that the polyline stays within the tolerance of the true arc. The floor
       // (half the tolerance) is out of reach in practice: the error is <= 1.1e-9 x radius.
       const double arcErrorMm = arcPieceErrorBound(start, a, b, end);
-      flattenCubic(start, a, b, end, std::max(0.5 * toleranceMm, toleranceMm - arcErrorMm), scratch);
       curved = true;
+      if (!flattenCubic(start, a, b, end, std::max(0.5 * toleranceMm, toleranceMm - arcErrorMm), scratch,
+                        room())) {
+        finish();
+        return false;
+      }
       i += 2;
+    }
+    if (maxPoints > 0 && finished + scratch.size() > maxPoints) {
+      finish();
+      return false;
     }
   }
   finish();
+  return true;
 }
 
 bool CaptureEngine::Signature::operator==(const Signature& other) const {
@@ -203,7 +219,11 @@ bool CaptureEngine::admit(const Signature& signature, const Paint& paint,
 void CaptureEngine::drawPath(const QPainterPath& path) {
   if (collecting_) {
     std::vector<Polyline> rings;
-    appendFlattenedPath(path, painter()->combinedTransform(), clipTolerance(), rings);
+    // A clip path within the points budget too (its points are not drawn, but a hostile curve
+    // must not flatten into gigabytes before the budget is looked at).
+    if (!appendFlattenedPath(path, painter()->combinedTransform(), clipTolerance(), rings,
+                             settings_.maxPoints == 0 ? 0 : settings_.maxPoints + 1))
+      overBudget_ = true;
     collectClip(std::move(rings), path.fillRule() == Qt::WindingFill ? FillRule::NonZero : FillRule::EvenOdd);
     return;
   }
@@ -211,7 +231,11 @@ void CaptureEngine::drawPath(const QPainterPath& path) {
   if (cancelled() || (!paint.stroke && !paint.fill)) return flushPending();
   const QTransform t = painter()->combinedTransform();
   std::vector<Polyline> lines;
-  appendFlattenedPath(path, t, settings_.toleranceMm, lines);
+  // At most one point past the budget: record() then sees the budget passed and stops the import.
+  const std::size_t room = settings_.maxPoints == 0 ? 0
+                           : points_ < settings_.maxPoints ? settings_.maxPoints - points_ + 1
+                                                           : std::size_t{1};
+  if (!appendFlattenedPath(path, t, settings_.toleranceMm, lines, room)) overBudget_ = true;
   if (paint.stroke && !paint.fill && painter()->pen().capStyle() == Qt::FlatCap)
     dropInvisibleStrokes(lines, settings_.toleranceMm);
   Signature s;

@@ -168,7 +168,9 @@ void closeFillOutlines(std::vector<Polyline>& lines);
 void markFill(std::vector<Polyline>& lines, FillRule rule, bool fillOnly);
 
 // Flattening helpers, exposed for tests. Points are mapped by `transform` before flattening.
-void appendFlattenedPath(const QPainterPath& path, const QTransform& transform,
-                         double toleranceMm, std::vector<Polyline>& out);
+// maxPoints > 0: at most that many points in all (the rest of the path is dropped); returns false
+// when the path needed more.
+bool appendFlattenedPath(const QPainterPath& path, const QTransform& transform,
+                         double toleranceMm, std::vector<Polyline>& out, std::size_t maxPoints = 0);
 
 }  // namespace fivebar::svg

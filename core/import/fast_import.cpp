@@ -200,7 +200,11 @@ bool DirectReader::drawPath(std::string_view d, const Paint& paint) {
   if (!buildQtPath(d, path)) return false;
   if (!paint.stroke && !(paint.fill && options_.outlineFills)) return true;
   std::vector<Polyline> lines;
-  appendFlattenedPath(path, transform_, options_.toleranceMm, lines);
+  // At most one point past the budget: record() then sees the budget passed and stops reading.
+  const std::size_t room = options_.maxPoints == 0 ? 0
+                           : pointsTotal_ < options_.maxPoints ? options_.maxPoints - pointsTotal_ + 1
+                                                               : std::size_t{1};
+  if (!appendFlattenedPath(path, transform_, options_.toleranceMm, lines, room)) overBudget_ = true;
   if (paint.stroke && !paint.fill) dropInvisibleStrokes(lines, options_.toleranceMm);  // butt caps
   if (!paint.stroke) closeFillOutlines(lines);
   if (paint.fill) markFill(lines, FillRule::NonZero, !paint.stroke);

@@ -27,18 +27,21 @@ bool flatEnough(const Cubic& c, double bound2Limit) {
 
 }  // namespace
 
-void flattenCubic(const Vec2& p0, const Vec2& c1, const Vec2& c2, const Vec2& p3,
-                  double toleranceMm, std::vector<Vec2>& out) {
+bool flattenCubic(const Vec2& p0, const Vec2& c1, const Vec2& c2, const Vec2& p3,
+                  double toleranceMm, std::vector<Vec2>& out, std::size_t maxPoints) {
   // Depth-first: keep splitting the current piece, its right half waiting on an explicit stack,
   // so that pieces come out in order.
   const double limit = 16.0 * toleranceMm * toleranceMm;
   Cubic stack[kMaxDepth + 2];
   int top = 0;
   Cubic c{p0, c1, c2, p3, 0};
+  std::size_t appended = 0;
   for (;;) {
     if (c.depth >= kMaxDepth || flatEnough(c, limit)) {
+      if (maxPoints > 0 && appended == maxPoints) return false;
       out.push_back(c.p3);
-      if (top == 0) return;
+      ++appended;
+      if (top == 0) return true;
       c = stack[--top];
       continue;
     }

@@ -15,8 +15,11 @@ namespace fivebar::svg {
 //   max |B(t) - L(t)| <= 1/4 sqrt(max(ux^2, vx^2) + max(uy^2, vy^2)),
 //   u = 3 c1 - 2 p0 - p3, v = 3 c2 - p0 - 2 p3,
 // is within the tolerance (L = the chord parametrised linearly). Depth is capped at 30.
-void flattenCubic(const Vec2& p0, const Vec2& c1, const Vec2& c2, const Vec2& p3,
-                  double toleranceMm, std::vector<Vec2>& out);
+// maxPoints > 0: appends at most that many points and returns false when the curve needed more
+// (a control point 1e13 mm away needs ~1e7 points: the caller's points budget stops it there,
+// not after gigabytes). Returns true when the whole curve was appended.
+bool flattenCubic(const Vec2& p0, const Vec2& c1, const Vec2& c2, const Vec2& p3,
+                  double toleranceMm, std::vector<Vec2>& out, std::size_t maxPoints = 0);
 
 // Bound (same unit as the points) of the distance between a cubic and the elliptical arc it
 // stands for, when it is one piece of our arc conversion (path_data.hpp appendArcAsCubics: any

@@ -66,5 +66,19 @@ TEST(Flatten, TransformedEllipseStaysWithinToleranceWithVerticesOnTheCurve) {
   }
 }
 
+// The points cap: a curve that needs more stops there (returns false), one that fits is whole.
+TEST(Flatten, MaxPointsStopsACurveThatNeedsMore) {
+  std::vector<Vec2> out;
+  const Vec2 p0(0, 0), c1(10, 10), c2(1e13, 20), p3(100, 100);
+  EXPECT_FALSE(flattenCubic(p0, c1, c2, p3, 0.1, out, 1000));
+  EXPECT_EQ(out.size(), 1000u);
+  std::vector<Vec2> whole;
+  EXPECT_TRUE(flattenCubic(Vec2(0, 0), Vec2(1, 1), Vec2(2, 1), Vec2(3, 0), 0.01, whole, 1000));
+  std::vector<Vec2> unlimited;
+  EXPECT_TRUE(flattenCubic(Vec2(0, 0), Vec2(1, 1), Vec2(2, 1), Vec2(3, 0), 0.01, unlimited));
+  EXPECT_EQ(whole.size(), unlimited.size());
+  EXPECT_EQ(whole.back(), Vec2(3, 0));
+}
+
 }  // namespace
 }  // namespace fivebar::svg

@@ -2,6 +2,8 @@
 // In-process import of small hand-written documents: units, frame, tolerance, structure.
 #include <gtest/gtest.h>
 
+#include <chrono>
+
 #include <atomic>
 #include <cmath>
 #include <numbers>
@@ -162,6 +164,25 @@ TEST(ImportHostile, ThePointsBudgetStopsTheImportEarly) {
     o.maxPoints = 900;  // 800 points + the rectangle's 4
     EXPECT_TRUE(importText(page(many + extra), o).ok());
     o.maxPoints = 500;
+  }
+}
+
+// Found by fuzz/svg_import_fuzz.cpp (fuzz/regressions/svg_import): one cubic whose control point
+// lies 1e13 units away needs ~1e7 points within the tolerance; the curve was flattened whole
+// before the budget was looked at (seconds, and gigabytes for a larger number). The budget now
+// stops the curve itself, in the direct reader, the general path and a clip path alike.
+TEST(ImportHostile, TheBudgetStopsInsideOneHugeCurve) {
+  const std::string curve = "<path d=\"M0 0 C 10 10, 98264869374483 20, 100 100\" stroke=\"#000\"/>";
+  const std::string clipped = "<clipPath id=\"c\"><path d=\"M0 0 C 10 10, 98264869374483 20, 100 100\"/></clipPath>"
+                              "<path d=\"M0 0 L50 50\" stroke=\"#000\" clip-path=\"url(#c)\"/>";
+  ImportOptions o;
+  o.maxPoints = 10'000;
+  for (const std::string& body : {curve, clipped, curve + "<g opacity=\"0.5\">" + curve + "</g>"}) {
+    const auto started = std::chrono::steady_clock::now();
+    const ImportResult stopped = importText(page(body), o);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    EXPECT_EQ(stopped.status, ImportStatus::TooManyPoints) << body << ": " << stopped.message;
+    EXPECT_LT(seconds, 1.0) << body;
   }
 }
 
