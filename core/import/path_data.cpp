@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <string>
 #include <numbers>
 
 namespace fivebar::svg {
@@ -31,36 +32,47 @@ class Scanner {
     return c.isDigit() || c == u'-' || c == u'+' || c == u'.';
   }
 
+  // An SVG number: sign, digits, fraction, exponent. Any length: the text is copied whole
+  // (a 64-character buffer once overflowed, and cut a longer number in two).
   bool number(double& out) {
     skipSeparators();
-    char buffer[64];
-    int n = 0;
+    const auto digit = [&](qsizetype i) { return i < d_.size() && d_[i] >= u'0' && d_[i] <= u'9'; };
     qsizetype p = pos_;
-    auto take = [&](auto pred) {
-      while (p < d_.size() && n < 63 && pred(d_[p])) buffer[n++] = static_cast<char>(d_[p++].unicode());
-    };
-    if (p < d_.size() && (d_[p] == u'+' || d_[p] == u'-')) buffer[n++] = static_cast<char>(d_[p++].unicode());
-    const int digitsStart = n;
-    take([](QChar c) { return c.isDigit(); });
-    if (p < d_.size() && d_[p] == u'.') {
-      buffer[n++] = '.';
+    qsizetype from = p;  // the copied text starts here (after a '+', which from_chars refuses)
+    if (p < d_.size() && (d_[p] == u'+' || d_[p] == u'-')) {
+      if (d_[p] == u'+') ++from;
       ++p;
-      take([](QChar c) { return c.isDigit(); });
     }
-    if (n == digitsStart || (n == digitsStart + 1 && buffer[digitsStart] == '.')) return false;
+    qsizetype digits = 0;
+    for (; digit(p); ++p) ++digits;
+    if (p < d_.size() && d_[p] == u'.') {
+      ++p;
+      for (; digit(p); ++p) ++digits;
+    }
+    if (digits == 0) return false;
     if (p < d_.size() && (d_[p] == u'e' || d_[p] == u'E')) {
       qsizetype q = p + 1;
       if (q < d_.size() && (d_[q] == u'+' || d_[q] == u'-')) ++q;
-      if (q < d_.size() && d_[q].isDigit()) {
-        buffer[n++] = 'e';
-        ++p;
-        if (d_[p] == u'+' || d_[p] == u'-') buffer[n++] = static_cast<char>(d_[p++].unicode());
-        take([](QChar c) { return c.isDigit(); });
+      if (digit(q)) {
+        for (p = q; digit(p); ++p) {
+        }
       }
     }
-    const char* begin = buffer[0] == '+' ? buffer + 1 : buffer;
-    const auto [end, ec] = std::from_chars(begin, buffer + n, out);
-    if (ec != std::errc() || !std::isfinite(out)) return false;
+    const qsizetype length = p - from;
+    char small[64];
+    std::string large;
+    char* text = small;
+    if (length > qsizetype(sizeof small)) {
+      large.resize(static_cast<std::size_t>(length));
+      text = large.data();
+    }
+    for (qsizetype i = 0; i < length; ++i) {
+      const char16_t c = d_[from + i].unicode();
+      text[i] = c == u'E' ? 'e' : static_cast<char>(c);
+    }
+    // An exponent sign after the 'e' is kept; a '+' there is read by from_chars.
+    const auto [end, ec] = std::from_chars(text, text + length, out);
+    if (ec != std::errc() || end != text + length || !std::isfinite(out)) return false;
     pos_ = p;
     return true;
   }

@@ -125,5 +125,23 @@ TEST(PathData, AnAbsoluteFormThatOverflowsIsBadData) {
   EXPECT_TRUE(parsePathData(u"m1e308 0 l1e308 0").error);
 }
 
+// Found by fuzz/path_data_fuzz.cpp (fuzz/regressions/path_data/long-number.txt): a number of more
+// than 63 characters with an exponent wrote past the scanner's 64-character buffer, and a long
+// number was cut in two (its 64th digit on read as the next number).
+TEST(PathData, ANumberOfAnyLengthIsOneNumber) {
+  const std::string digits(120, '9');
+  const QString d = QString::fromStdString("M0.5" + digits + "E-1 2 L3 4");
+  const ParsedPath p = parsePathData(d);
+  ASSERT_FALSE(p.error) << p.errorOffset;
+  ASSERT_EQ(p.commands.size(), 2u);
+  EXPECT_DOUBLE_EQ(p.commands[0].v[0], 0.06);
+  EXPECT_DOUBLE_EQ(p.commands[0].v[1], 2.0);
+  const QString exponent = QString::fromStdString("M1" + std::string(70, '0') + "e-70 " + "+1.5e+1L0 0");
+  const ParsedPath q = parsePathData(exponent);
+  ASSERT_FALSE(q.error);
+  EXPECT_DOUBLE_EQ(q.commands[0].v[0], 1.0);
+  EXPECT_DOUBLE_EQ(q.commands[0].v[1], 15.0);
+}
+
 }  // namespace
 }  // namespace fivebar::svg
