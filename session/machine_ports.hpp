@@ -43,7 +43,7 @@ class RecoveryPort {
   virtual void dismissProblem() = 0;
 };
 
-// Host-planned moves: jogs, go-to, go to home pose, pen up / down; every move through the one
+// Host-planned moves: jogs, go-to, go to home pose, frame, pen up / down; every move through the one
 // motion check (MachineSession::boardChecked, sendJog).
 class JogPort {
  public:
@@ -53,6 +53,10 @@ class JogPort {
   virtual jog::JogPlan boardChecked(jog::JogPlan plan, bool clip) const = 0;
   virtual bool sendJog(const jog::JogPlan& plan) = 0;
   virtual bool goToHomePose(QString* why = nullptr) = 0;
+  // The planned job's outline traced pen up (session/frame.hpp); canFrame: connected, the pose
+  // known, the machine idle and a job planned.
+  virtual bool canFrame() const = 0;
+  virtual bool frameJob(QString* why = nullptr) = 0;
   virtual bool penUp() = 0;
   virtual bool penDown() = 0;
 };

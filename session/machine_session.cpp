@@ -41,6 +41,7 @@ MachineSession::MachineSession(const StudioInputs& inputs, QObject* parent)
   connect(connectTimer_, &QTimer::timeout, this, &MachineSession::onConnectTimeout);
   // Another profile expects other settings: compare again.
   connect(&inputs_, &StudioInputs::profileChanged, this, &MachineSession::boardSettingsChanged);
+  connect(&inputs_, &StudioInputs::plannedJobChanged, this, &MachineSession::plannedJobChanged);
 }
 
 MachineSession::~MachineSession() {

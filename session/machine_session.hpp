@@ -164,6 +164,10 @@ class MachineSession : public QObject,
   // A checked pen-up move to the profile's home pose (the reference must be set); false with
   // *why when it cannot be planned or sent.
   bool goToHomePose(QString* why = nullptr) override;
+  // The planned job's outline, traced pen up by checked moves (session/frame.hpp): canJog and a
+  // planned job (StudioInputs::plannedJob). false with *why when it cannot be planned or sent.
+  bool canFrame() const override;
+  bool frameJob(QString* why = nullptr) override;
   void softReset() override;
   void feedHold();
   void cycleStart();
@@ -187,6 +191,7 @@ class MachineSession : public QObject,
   void penStateChanged();
   void boardSettingsChanged();  // read (or failed); see settingDifferences()
   void poseKnownChanged();      // see poseKnown()
+  void plannedJobChanged();     // the studio's planned job (see canFrame())
 
  private:
   bool openLink(std::unique_ptr<Transport> transport, QString* error);

@@ -3,6 +3,7 @@
 // jogs and go-to moves, board settings, recovery (unlock, home, reference, reset), feed hold,
 // cycle start and the pen. Every move passes the motion check (drivers/check/motion_check) first.
 #include "session/machine_session.hpp"
+#include "session/frame.hpp"
 
 
 #include "core/kinematics/units.hpp"
@@ -283,6 +284,29 @@ bool MachineSession::goToHomePose(QString* why) {
     if (why) *why = tr("The move was not sent (see the console).");
     return false;
   }
+  return true;
+}
+
+bool MachineSession::canFrame() const { return canJog() && inputs_.plannedJob() != nullptr; }
+
+bool MachineSession::frameJob(QString* why) {
+  const auto from = jogStart();
+  const PlannedJob* job = inputs_.plannedJob();
+  if (!canJog() || !from || job == nullptr) {
+    if (why) *why = job == nullptr ? tr("No job is planned: open a drawing and let it plan first.") : moveRefusal();
+    return false;
+  }
+  const jog::JogPlan plan = planJobFrame(*this, inputs_.profile(), *from, *job);
+  if (!plan.ok()) {
+    if (why) *why = tr("No checked frame of the job: %1").arg(studioText(plan.reason));
+    return false;
+  }
+  if (!sendJog(plan)) {
+    if (why) *why = tr("The frame was not sent (see the console).");
+    return false;
+  }
+  emit consoleLine(tr("Frame: the job's outline, %1 mm, pen up").arg(QString::number(plan.lengthMm, 'f', 0)),
+                   ConsoleKind::Info);
   return true;
 }
 

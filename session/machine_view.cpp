@@ -12,6 +12,7 @@ MachineView::MachineView(const MachineSession& session, QObject* parent) : QObje
   connect(&session_, &MachineSession::jobActiveChanged, this, &MachineView::jobActiveChanged);
   connect(&session_, &MachineSession::penStateChanged, this, &MachineView::penStateChanged);
   connect(&session_, &MachineSession::poseKnownChanged, this, &MachineView::poseKnownChanged);
+  connect(&session_, &MachineSession::plannedJobChanged, this, &MachineView::plannedJobChanged);
   connect(&session_, &MachineSession::boardSettingsChanged, this, &MachineView::boardSettingsChanged);
 }
 

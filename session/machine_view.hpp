@@ -31,6 +31,7 @@ class MachineView : public QObject {
   bool poseKnown() const { return session_.poseKnown(); }
   QString poseDoubtText() const { return session_.poseDoubtText(); }
   bool jobActive() const { return session_.jobActive(); }
+  bool canFrame() const { return session_.canFrame(); }
   const MachineProblem& problem() const { return session_.problem(); }
   const MachineProfile& profile() const { return session_.profile(); }
   bool boardSettingsKnown() const { return session_.boardSettingsKnown(); }
@@ -46,6 +47,7 @@ class MachineView : public QObject {
   void penStateChanged();
   void boardSettingsChanged();
   void poseKnownChanged();
+  void plannedJobChanged();
 
  private:
   const MachineSession& session_;

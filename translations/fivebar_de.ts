@@ -1482,6 +1482,18 @@ Planen und Zeichnen können sehr lange dauern. Trotzdem ganz importieren?</trans
 <context>
     <name>fivebar::widgets::JogPanel</name>
     <message>
+        <source>Frame the job</source>
+        <translation>Auftrag umfahren</translation>
+    </message>
+    <message>
+        <source>Trace the outline of the planned job with the pen up (a laser at low power), along checked moves, to see where the drawing lands on the paper</source>
+        <translation>Den Umriss des geplanten Auftrags mit angehobenem Stift (ein Laser mit geringer Leistung) auf geprüften Bewegungen abfahren, um zu sehen, wo die Zeichnung auf dem Papier landet</translation>
+    </message>
+    <message>
+        <source>Tracing the job's outline with the pen up.</source>
+        <translation>Der Umriss des Auftrags wird mit angehobenem Stift abgefahren.</translation>
+    </message>
+    <message>
         <source>Jog the pen %1 mm in X, %2 mm in Y per step; hold for a continuous jog</source>
         <translation>Stift pro Schritt um %1 mm in X und %2 mm in Y verfahren; gedrückt halten für fortlaufendes Verfahren</translation>
     </message>
@@ -1910,6 +1922,22 @@ Bestätigen Sie nur, wenn die Arme jetzt genau in dieser Stellung stehen. Stehen
 </context>
 <context>
     <name>fivebar::session::MachineSession</name>
+    <message>
+        <source>No job is planned: open a drawing and let it plan first.</source>
+        <translation>Kein Auftrag geplant: Öffnen Sie zuerst eine Zeichnung und lassen Sie sie planen.</translation>
+    </message>
+    <message>
+        <source>No checked frame of the job: %1</source>
+        <translation>Kein geprüfter Umriss des Auftrags: %1</translation>
+    </message>
+    <message>
+        <source>The frame was not sent (see the console).</source>
+        <translation>Der Umriss wurde nicht gesendet (siehe Konsole).</translation>
+    </message>
+    <message>
+        <source>Frame: the job's outline, %1 mm, pen up</source>
+        <translation>Umriss: der Umriss des Auftrags, %1 mm, Stift oben</translation>
+    </message>
     <message>
         <source>Cannot open %1.</source>
         <translation>%1 kann nicht geöffnet werden.</translation>
@@ -4790,6 +4818,60 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
     <message>
         <source>No permission to use %1: add your user to the group that owns it (usually dialout: sudo adduser $USER dialout), then log out and in again.</source>
         <translation>Keine Berechtigung für %1: Fügen Sie Ihren Benutzer der Gruppe hinzu, der der Anschluss gehört (meist dialout: sudo adduser $USER dialout), und melden Sie sich danach ab und wieder an.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::RecoveryBar</name>
+    <message>
+        <source>Reset</source>
+        <translation>Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Soft reset (Ctrl-X): stops everything; the machine keeps its position unless it was moving.</source>
+        <translation>Soft-Reset (Strg-X): hält alles an; die Maschine behält ihre Position, sofern sie sich nicht bewegt hat.</translation>
+    </message>
+    <message>
+        <source>Unlock ($X)</source>
+        <translation>Entsperren ($X)</translation>
+    </message>
+    <message>
+        <source>Leave the alarm state without homing. Only when you know the machine stands where the studio shows it.</source>
+        <translation>Den Alarmzustand ohne Referenzfahrt verlassen. Nur wenn Sie wissen, dass die Maschine dort steht, wo das Studio sie zeigt.</translation>
+    </message>
+    <message>
+        <source>Alarm %1</source>
+        <translation>Alarm %1</translation>
+    </message>
+    <message>
+        <source>Home ($H)</source>
+        <translation>Referenzfahrt ($H)</translation>
+    </message>
+    <message>
+        <source>Set reference pose</source>
+        <translation>Referenzpose setzen</translation>
+    </message>
+    <message>
+        <source>Run the homing cycle; the machine moves to its switches.</source>
+        <translation>Referenzfahrt ausführen; die Maschine fährt an ihre Endschalter.</translation>
+    </message>
+    <message>
+        <source>Declare that the machine now stands at the profile's home pose (G10 L20).</source>
+        <translation>Festlegen, dass die Maschine jetzt in der Ausgangspose des Profils steht (G10 L20).</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::AlarmStrip</name>
+    <message>
+        <source>Alarm %1: the machine stopped.</source>
+        <translation>Alarm %1: Die Maschine hat angehalten.</translation>
+    </message>
+    <message>
+        <source>Alarm: the machine is locked.</source>
+        <translation>Alarm: Die Maschine ist gesperrt.</translation>
+    </message>
+    <message>
+        <source>Reset, Unlock and Set reference pose are in the status bar and the Machine panel.</source>
+        <translation>Zurücksetzen, Entsperren und Referenzpose setzen finden Sie in der Statusleiste und im Maschinen-Bereich.</translation>
     </message>
 </context>
 </TS>

@@ -1482,6 +1482,18 @@ Planificarlo y plotearlo puede tardar mucho. ¿Importarlo entero de todos modos?
 <context>
     <name>fivebar::widgets::JogPanel</name>
     <message>
+        <source>Frame the job</source>
+        <translation>Recorrer el contorno del trabajo</translation>
+    </message>
+    <message>
+        <source>Trace the outline of the planned job with the pen up (a laser at low power), along checked moves, to see where the drawing lands on the paper</source>
+        <translation>Recorrer el contorno del trabajo planificado con el bolígrafo levantado (un láser a baja potencia), con movimientos comprobados, para ver dónde queda el dibujo en el papel</translation>
+    </message>
+    <message>
+        <source>Tracing the job's outline with the pen up.</source>
+        <translation>Recorriendo el contorno del trabajo con el bolígrafo levantado.</translation>
+    </message>
+    <message>
         <source>Jog the pen %1 mm in X, %2 mm in Y per step; hold for a continuous jog</source>
         <translation>Mover la pluma %1 mm en X y %2 mm en Y por paso; mantén pulsado para un movimiento continuo</translation>
     </message>
@@ -1910,6 +1922,22 @@ Confirme solo si los brazos están ahora exactamente en esa pose. Si están en o
 </context>
 <context>
     <name>fivebar::session::MachineSession</name>
+    <message>
+        <source>No job is planned: open a drawing and let it plan first.</source>
+        <translation>No hay ningún trabajo planificado: abre primero un dibujo y deja que se planifique.</translation>
+    </message>
+    <message>
+        <source>No checked frame of the job: %1</source>
+        <translation>No hay un contorno comprobado del trabajo: %1</translation>
+    </message>
+    <message>
+        <source>The frame was not sent (see the console).</source>
+        <translation>El contorno no se ha enviado (mira la consola).</translation>
+    </message>
+    <message>
+        <source>Frame: the job's outline, %1 mm, pen up</source>
+        <translation>Contorno: el contorno del trabajo, %1 mm, bolígrafo levantado</translation>
+    </message>
     <message>
         <source>Cannot open %1.</source>
         <translation>No se puede abrir %1.</translation>
@@ -4790,6 +4818,60 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     <message>
         <source>No permission to use %1: add your user to the group that owns it (usually dialout: sudo adduser $USER dialout), then log out and in again.</source>
         <translation>Sin permiso para usar %1: añada su usuario al grupo propietario (normalmente dialout: sudo adduser $USER dialout) y luego cierre la sesión y vuelva a entrar.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::RecoveryBar</name>
+    <message>
+        <source>Reset</source>
+        <translation>Reiniciar</translation>
+    </message>
+    <message>
+        <source>Soft reset (Ctrl-X): stops everything; the machine keeps its position unless it was moving.</source>
+        <translation>Reinicio suave (Ctrl-X): detiene todo; la máquina conserva su posición salvo que se estuviera moviendo.</translation>
+    </message>
+    <message>
+        <source>Unlock ($X)</source>
+        <translation>Desbloquear ($X)</translation>
+    </message>
+    <message>
+        <source>Leave the alarm state without homing. Only when you know the machine stands where the studio shows it.</source>
+        <translation>Salir del estado de alarma sin buscar el origen. Solo si sabes que la máquina está donde la muestra el estudio.</translation>
+    </message>
+    <message>
+        <source>Alarm %1</source>
+        <translation>Alarma %1</translation>
+    </message>
+    <message>
+        <source>Home ($H)</source>
+        <translation>Origen ($H)</translation>
+    </message>
+    <message>
+        <source>Set reference pose</source>
+        <translation>Fijar pose de referencia</translation>
+    </message>
+    <message>
+        <source>Run the homing cycle; the machine moves to its switches.</source>
+        <translation>Ejecutar la búsqueda de origen; la máquina se mueve hasta sus finales de carrera.</translation>
+    </message>
+    <message>
+        <source>Declare that the machine now stands at the profile's home pose (G10 L20).</source>
+        <translation>Declarar que la máquina está ahora en la pose de origen del perfil (G10 L20).</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::AlarmStrip</name>
+    <message>
+        <source>Alarm %1: the machine stopped.</source>
+        <translation>Alarma %1: la máquina se ha detenido.</translation>
+    </message>
+    <message>
+        <source>Alarm: the machine is locked.</source>
+        <translation>Alarma: la máquina está bloqueada.</translation>
+    </message>
+    <message>
+        <source>Reset, Unlock and Set reference pose are in the status bar and the Machine panel.</source>
+        <translation>Reiniciar, Desbloquear y Fijar pose de referencia están en la barra de estado y en el panel Máquina.</translation>
     </message>
 </context>
 </TS>

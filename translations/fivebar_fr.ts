@@ -1482,6 +1482,18 @@ La planification et le traçage peuvent être très longs. L'importer quand mêm
 <context>
     <name>fivebar::widgets::JogPanel</name>
     <message>
+        <source>Frame the job</source>
+        <translation>Cadrer le travail</translation>
+    </message>
+    <message>
+        <source>Trace the outline of the planned job with the pen up (a laser at low power), along checked moves, to see where the drawing lands on the paper</source>
+        <translation>Parcourir le contour du travail planifié stylo levé (un laser à faible puissance), par des mouvements vérifiés, pour voir où le dessin tombe sur le papier</translation>
+    </message>
+    <message>
+        <source>Tracing the job's outline with the pen up.</source>
+        <translation>Parcours du contour du travail, stylo levé.</translation>
+    </message>
+    <message>
         <source>Jog the pen %1 mm in X, %2 mm in Y per step; hold for a continuous jog</source>
         <translation>Déplacer le stylo de %1 mm en X et %2 mm en Y par pas ; maintenir pour un déplacement continu</translation>
     </message>
@@ -1910,6 +1922,22 @@ Confirmez seulement si les bras sont exactement dans cette pose. S'ils sont aill
 </context>
 <context>
     <name>fivebar::session::MachineSession</name>
+    <message>
+        <source>No job is planned: open a drawing and let it plan first.</source>
+        <translation>Aucun travail n'est planifié : ouvrez d'abord un dessin et laissez-le se planifier.</translation>
+    </message>
+    <message>
+        <source>No checked frame of the job: %1</source>
+        <translation>Aucun cadrage vérifié du travail : %1</translation>
+    </message>
+    <message>
+        <source>The frame was not sent (see the console).</source>
+        <translation>Le cadrage n'a pas été envoyé (voir la console).</translation>
+    </message>
+    <message>
+        <source>Frame: the job's outline, %1 mm, pen up</source>
+        <translation>Cadrage : le contour du travail, %1 mm, stylo levé</translation>
+    </message>
     <message>
         <source>Cannot open %1.</source>
         <translation>Impossible d'ouvrir %1.</translation>
@@ -4790,6 +4818,60 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     <message>
         <source>No permission to use %1: add your user to the group that owns it (usually dialout: sudo adduser $USER dialout), then log out and in again.</source>
         <translation>Pas d'autorisation pour utiliser %1 : ajoutez votre utilisateur au groupe qui le possède (en général dialout : sudo adduser $USER dialout), puis déconnectez-vous et reconnectez-vous.</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::RecoveryBar</name>
+    <message>
+        <source>Reset</source>
+        <translation>Réinitialiser</translation>
+    </message>
+    <message>
+        <source>Soft reset (Ctrl-X): stops everything; the machine keeps its position unless it was moving.</source>
+        <translation>Réinitialisation logicielle (Ctrl-X) : arrête tout ; la machine garde sa position sauf si elle bougeait.</translation>
+    </message>
+    <message>
+        <source>Unlock ($X)</source>
+        <translation>Déverrouiller ($X)</translation>
+    </message>
+    <message>
+        <source>Leave the alarm state without homing. Only when you know the machine stands where the studio shows it.</source>
+        <translation>Quitter l'état d'alarme sans prise d'origine. Seulement si vous savez que la machine est là où le studio l'affiche.</translation>
+    </message>
+    <message>
+        <source>Alarm %1</source>
+        <translation>Alarme %1</translation>
+    </message>
+    <message>
+        <source>Home ($H)</source>
+        <translation>Origine ($H)</translation>
+    </message>
+    <message>
+        <source>Set reference pose</source>
+        <translation>Définir la pose de référence</translation>
+    </message>
+    <message>
+        <source>Run the homing cycle; the machine moves to its switches.</source>
+        <translation>Lancer la prise d'origine ; la machine va jusqu'à ses capteurs.</translation>
+    </message>
+    <message>
+        <source>Declare that the machine now stands at the profile's home pose (G10 L20).</source>
+        <translation>Déclarer que la machine est maintenant dans la pose d'origine du profil (G10 L20).</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::AlarmStrip</name>
+    <message>
+        <source>Alarm %1: the machine stopped.</source>
+        <translation>Alarme %1 : la machine s'est arrêtée.</translation>
+    </message>
+    <message>
+        <source>Alarm: the machine is locked.</source>
+        <translation>Alarme : la machine est verrouillée.</translation>
+    </message>
+    <message>
+        <source>Reset, Unlock and Set reference pose are in the status bar and the Machine panel.</source>
+        <translation>Réinitialiser, Déverrouiller et Définir la pose de référence se trouvent dans la barre d'état et le panneau Machine.</translation>
     </message>
 </context>
 </TS>

@@ -19,6 +19,7 @@
 #include "drivers/transport/serial_transport.hpp"
 #include "machine_arg.hpp"
 #include "machine_cli.hpp"
+#include "board_procedure.hpp"
 
 namespace fivebar::cli {
 namespace {
@@ -68,113 +69,6 @@ bool confirmed(const char* question) {
 bool atHome(const MachineProfile& p, const motion::BoardPose& pose, double tolDeg) {
   return std::abs(pose.workDeg[0] - degFromRad(p.homeAngles.theta1)) <= tolDeg &&
          std::abs(pose.workDeg[1] - degFromRad(p.homeAngles.theta2)) <= tolDeg;
-}
-
-// One session with the board: read the pose, maybe send lines (each answered before the next),
-// wait for rest, read the pose again. The command's logic decides in the callbacks.
-class Procedure : public grbl::ProtocolListener {
- public:
-  // decide(pose): lines to send (empty: done) or nullopt after reporting a refusal.
-  using Decide =
-      std::function<std::optional<std::vector<std::string>>(const motion::BoardPose&, MachineLink&)>;
-  using Verify = std::function<int(const motion::BoardPose&)>;  // exit code
-  Procedure(MachineLink& link, std::string command, double timeoutS, Decide decide, Verify verify)
-      : link_(link), command_(std::move(command)), timeoutS_(timeoutS), sync_(link.protocol(), timeoutS),
-        decide_(std::move(decide)), verify_(std::move(verify)) {
-    link_.protocol().addListener(this);
-  }
-  ~Procedure() override { link_.protocol().removeListener(this); }
-
-  bool step(double nowS) {
-    if (done_) return true;
-    if (phase_ == Phase::Sending) {
-      if (nowS > deadlineS_) return fail("no answer within " + std::to_string(int(timeoutS_)) + " s");
-      if (pending_ != 0) return false;
-      if (next_ < lines_.size()) {
-        const auto r = link_.protocol().enqueue(lines_[next_++]);
-        if (!r.ok()) return fail("'" + lines_[next_ - 1] + "': " + grbl::describe(r.status));
-        pending_ = r.id;
-        return false;
-      }
-      phase_ = Phase::Verify;
-      sync_.restart();
-    }
-    const auto st = sync_.step(nowS);
-    if (st == grbl::PoseSync::State::Failed) return fail("cannot read the machine's pose: " + sync_.problem());
-    if (st == grbl::PoseSync::State::Waiting) return false;
-    const auto pose = motion::boardPoseOf(link_.protocol());
-    if (!pose) return false;
-    if (phase_ == Phase::Verify) return finish(verify_(*pose));
-    if (link_.protocol().state() == grbl::MachineState::Alarm && !allowAlarm)
-      return fail("the machine is in alarm: check it, then unlock with 'fivebar send --port " +
-                  link_.transport().name().toStdString() + " $X' and run this again");
-    const auto lines = decide_(*pose, link_);
-    if (!lines) return finish(1);
-    lines_ = *lines;
-    phase_ = Phase::Sending;
-    deadlineS_ = nowS + timeoutS_;
-    return false;
-  }
-  int exitCode() const { return exitCode_; }
-  bool allowAlarm = false;
-
-  void onAck(const grbl::Ack& a) override {
-    if (a.id != pending_) return;
-    pending_ = 0;
-    if (!a.ok()) fail("'" + a.line + "' was refused: " + grbl::describeError(a.errorCode));
-  }
-  void onAlarm(int code, const std::vector<std::uint64_t>&) override {
-    if (phase_ == Phase::Sending) fail(grbl::describeAlarm(code));
-  }
-  void onDisconnected(const std::string& reason) override { fail("connection lost: " + reason); }
-
- private:
-  enum class Phase { Read, Sending, Verify };
-  bool fail(const std::string& why) {
-    if (!done_) std::cerr << "fivebar " << command_ << ": " << why << "\n";
-    return finish(1);
-  }
-  bool finish(int code) {
-    if (!done_) exitCode_ = code;
-    done_ = true;
-    return true;
-  }
-
-  MachineLink& link_;
-  std::string command_;
-  double timeoutS_;
-  grbl::PoseSync sync_;
-  Decide decide_;
-  Verify verify_;
-  Phase phase_ = Phase::Read;
-  std::vector<std::string> lines_;
-  std::size_t next_ = 0;
-  std::uint64_t pending_ = 0;
-  double deadlineS_ = 0.0;
-  bool done_ = false;
-  int exitCode_ = 1;
-};
-
-int runProcedure(const Options& o, const std::string& command, double timeoutS, Procedure::Decide decide,
-                 Procedure::Verify verify, bool allowAlarm = false) {
-  QtApp qt;
-  const std::unique_ptr<Transport> transport = portTransport(o);
-  Transport& port = *transport;
-  MachineLink link(port, 0.0);
-  QString error;
-  if (!port.open(&error)) {
-    std::cerr << "fivebar " << command << ": " << error.toStdString() << "\n";
-    return 1;
-  }
-  Procedure proc(link, command, timeoutS, std::move(decide), std::move(verify));
-  proc.allowAlarm = allowAlarm;
-  QObject::connect(&link, &MachineLink::ticked, [&](double now) {
-    if (proc.step(now)) qt.app.quit();
-  });
-  link.start();
-  qt.app.exec();
-  port.close();
-  return proc.exitCode();
 }
 
 }  // namespace

@@ -23,6 +23,7 @@ int runSend(const Args& args);           // cmd_send.cpp (Qt builds only)
 int runSetup(const Args& args);          // cmd_machine.cpp (Qt builds only)
 int runReference(const Args& args);      // cmd_reference.cpp (Qt builds only)
 int runHome(const Args& args);           // cmd_reference.cpp (Qt builds only)
+int runFrame(const Args& args);          // cmd_frame.cpp (Qt builds only)
 int runCalibrate(const Args& args);      // cmd_calibrate.cpp (dispatches to the subcommands)
 int runCalibrateFit(const Args& args);   // cmd_calibrate_fit.cpp
 int runCalibratePattern(const Args& args);  // cmd_calibrate_pattern.cpp

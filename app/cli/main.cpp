@@ -34,6 +34,7 @@ constexpr Command kCommands[] = {
     {"send", "send one-off lines or settings to a GRBL board", fivebar::cli::runSend},
     {"reference", "declare the machine's current pose its home pose (G10 L20)", fivebar::cli::runReference},
     {"home", "home the machine ($H, or a checked move to the home pose)", fivebar::cli::runHome},
+    {"frame", "trace a job's outline pen up (checked moves) to see where it lands", fivebar::cli::runFrame},
     {"setup", "compare a GRBL board's settings with a profile; --write applies them", fivebar::cli::runSetup},
 #endif
 };

@@ -26,6 +26,13 @@ std::string jogLine(const JointAngles& q, double feedDegPerMin) {
   return "$J=G90X" + deg3(q.theta1) + "Y" + deg3(q.theta2) + "F" + f;
 }
 
+// M4 at kFrameLaserPowerShare of the drawing power (at least S1, so that the spot shows).
+std::string frameLaserOn(const ToolSettings& tool) {
+  char s[32];
+  std::snprintf(s, sizeof s, "M4S%.0f", std::max(1.0, std::round(tool.laserPowerS * kFrameLaserPowerShare)));
+  return s;
+}
+
 // Joint feed (deg/min) that moves the pen `lengthMm` in lengthMm / speed seconds.
 double jointFeed(const JointAngles& a, const JointAngles& b, double lengthMm, double speedMmPerS) {
   const double jointDeg = degFromRad(std::hypot(b.theta1 - a.theta1, b.theta2 - a.theta2));
@@ -263,6 +270,7 @@ JogPlan planFrame(const MachineProfile& p, const JointAngles& current, const str
     return plan;
   }
   plan = travel;
+  if (p.tool.kind == ToolKind::Laser) plan.lines.push_back(frameLaserOn(p.tool));
   JointAngles q = kinematicFromCommanded(p.calibration, travel.targets.back());  // walkLine: kinematic
   for (size_t i = 1; i <= corners.size(); ++i) {
     const Vec2 a = corners[i - 1], b = corners[i % corners.size()];
@@ -278,6 +286,7 @@ JogPlan planFrame(const MachineProfile& p, const JointAngles& current, const str
     plan.lengthMm += edge.lengthMm;
     q = kinematicFromCommanded(p.calibration, edge.targets.back());
   }
+  if (p.tool.kind == ToolKind::Laser) plan.lines.push_back("M5");
   return plan;
 }
 

@@ -68,8 +68,11 @@ std::string homeCommand(const MachineProfile& profile);
 std::string referencePoseCommand(const MachineProfile& profile);
 
 enum class FrameShape { ConvexHull, BoundingBox };
-// The job's outline traced pen-up, starting with a safe travel from `current` to its first
-// corner and ending back there.
+// A laser traces the frame at this share of the profile's laserPowerS (M4: GRBL's laser mode
+// scales it with the speed), so that the spot is seen and nothing is burnt.
+inline constexpr double kFrameLaserPowerShare = 0.01;
+// The job's outline traced pen-up (a laser lit at kFrameLaserPowerShare along the outline only),
+// starting with a safe travel from `current` to its first corner and ending back there.
 JogPlan planFrame(const MachineProfile& profile, const JointAngles& current,
                   const stream::GcodeJob& gcodeJob, const stream::JobRules& rules, FrameShape shape,
                   double speedMmPerS);

@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "cli_support.hpp"
+#include "core/kinematics/kinematics.hpp"
 #include "core/kinematics/units.hpp"
 #include "core/machine/profile.hpp"
 
@@ -168,6 +169,59 @@ TEST_F(MachineCli, HomeRefusesAnUnreferencedBoardWhosePoseIsUnsafe) {
     EXPECT_NE(home.err.find("fivebar"), std::string::npos) << home.err;
   }
   EXPECT_NE(run({"home", "--help"}).out.find("checked"), std::string::npos);
+}
+
+// fivebar frame: the job's outline traced pen up by checked moves from the board's known pose,
+// ending at its first corner (the hull point with the lowest x); refused while the pose is unknown.
+TEST_F(MachineCli, FrameTracesTheJobsOutlinePenUpFromAKnownPose) {
+  const fs::path drawn = dir_ / "drawn.csv";
+  ASSERT_TRUE(startSim({"--set-up", "--drawn", drawn.string()}));
+  const double h1 = degFromRad(profile_.homeAngles.theta1), h2 = degFromRad(profile_.homeAngles.theta2);
+  const std::array<std::array<double, 2>, 3> cornersDeg{{{h1 + 2, h2}, {h1 + 6, h2 + 1}, {h1 + 4, h2 + 5}}};
+  std::string text = "; profile: maker-plotter\nG21 G90\n";
+  char line[96];
+  std::snprintf(line, sizeof line, "G0X%.3fY%.3f\nM3S1000\nG4P0.15\n", cornersDeg[0][0], cornersDeg[0][1]);
+  text += line;
+  for (int i : {1, 2, 0}) {
+    std::snprintf(line, sizeof line, "G1X%.3fY%.3fF600\n", cornersDeg[i][0], cornersDeg[i][1]);
+    text += line;
+  }
+  text += "M5\n";
+  const std::string job = writeJob("triangle.gcode", text);
+  const CliResult unknown = run({"frame", job, "--port", pty_, "--machine", "maker-plotter"});
+  EXPECT_EQ(unknown.exitCode, 1);
+  EXPECT_NE(unknown.err.find("position is not known"), std::string::npos) << unknown.err;
+  EXPECT_NE(status().find("MPos:0.000,0.000,0.000"), std::string::npos) << "nothing moved";
+  ASSERT_EQ(run({"reference", "--port", pty_, "--machine", "maker-plotter", "--yes"}).exitCode, 0);
+  const CliResult framed = run({"frame", job, "--port", pty_, "--machine", "maker-plotter"});
+  ASSERT_EQ(framed.exitCode, 0) << framed.err;
+  EXPECT_NE(framed.out.find("pen up"), std::string::npos) << framed.out;
+  EXPECT_NE(framed.out.find("framed"), std::string::npos) << framed.out;
+  // The first corner: the lowest x of the three (machine frame).
+  std::size_t first = 0;
+  double lowestX = 1e9;
+  for (std::size_t i = 0; i < cornersDeg.size(); ++i) {
+    const FkResult fk = forward(profile_.geometry, {radFromDeg(cornersDeg[i][0]), radFromDeg(cornersDeg[i][1])},
+                                profile_.assembly);
+    ASSERT_TRUE(fk.ok());
+    if (fk.p.x() < lowestX) { lowestX = fk.p.x(); first = i; }
+  }
+  EXPECT_NEAR(mpos()[0], cornersDeg[first][0] - h1, 2 * step());
+  EXPECT_NEAR(mpos()[1], cornersDeg[first][1] - h2, 2 * step());
+  // A drawing is planned as fivebar plan plans it, with its placement options.
+  const fs::path svg = dir_ / "box.svg";
+  std::ofstream(svg) << "<svg xmlns='http://www.w3.org/2000/svg' width='20mm' height='10mm' viewBox='0 0 20 10'>"
+                        "<rect x='0' y='0' width='20' height='10' fill='none' stroke='black'/></svg>\n";
+  const CliResult box = run({"frame", svg.string(), "--port", pty_, "--machine", "maker-plotter", "--at", "0,170",
+                             "--shape", "box"});
+  EXPECT_EQ(box.exitCode, 0) << box.err;
+  EXPECT_NE(box.out.find("(20.0 x 10.0 mm"), std::string::npos) << box.out;
+  EXPECT_EQ(run({"frame", job, "--port", pty_, "--machine", "maker-plotter", "--at", "0,170"}).exitCode, 2);
+  EXPECT_NE(run({"frame", "--help"}).out.find("pen UP"), std::string::npos);
+  // Pen up throughout: the simulated pen drew nothing.
+  stopSim();
+  const std::string drawnText = slurp(drawn);
+  EXPECT_EQ(drawnText.find('\n'), drawnText.size() - 1) << "only the header: " << drawnText;
 }
 
 TEST_F(MachineCli, StreamRefusesUnsafeJobsBeforeTheFirstByte) {

@@ -110,6 +110,34 @@ TEST(Frame, TracesTheHullOfTheStrokesWithCheckedMoves) {
   }
 }
 
+// A pen stays up all along the frame; a laser is lit at a low power along the outline only
+// (M4 after the travel, M5 at the end), never at the job's drawing power.
+TEST(Frame, PenStaysUpAndALaserTracesAtLowPower) {
+  MachineProfile p = testProfile();
+  auto rng = fivebar::test::rng();
+  const Strokes strokes = randomStrokes(p, rng, 3, 6, 20.0);
+  for (const ToolKind kind : {ToolKind::PenServo, ToolKind::Laser}) {
+    p.tool.kind = kind;
+    p.tool.laserPowerS = 800.0;
+    const stream::JobRules rules = stream::rulesFor(p);
+    const stream::GcodeJob gj = stream::parseJob(jobText(p, strokes, 3000.0), rules);
+    const jog::JogPlan plan = jog::planFrame(p, p.homeAngles, gj, rules, jog::FrameShape::ConvexHull, 40.0);
+    ASSERT_EQ(plan.status, jog::JogStatus::Ok) << plan.reason;
+    std::vector<std::string> toolLines;
+    for (const std::string& l : plan.lines)
+      if (l.rfind("M", 0) == 0) toolLines.push_back(l);
+    if (kind == ToolKind::PenServo) {
+      EXPECT_EQ(toolLines, std::vector<std::string>{"M5"});  // penUpS 0: M5, then only moves
+    } else {
+      ASSERT_EQ(toolLines.size(), 3u);
+      EXPECT_EQ(toolLines[0], "M5");  // the travel
+      EXPECT_EQ(toolLines[1], "M4S8");  // 1 % of S800
+      EXPECT_EQ(toolLines[2], "M5");
+      EXPECT_EQ(plan.lines.back(), "M5");
+    }
+  }
+}
+
 TEST(Frame, ConvexHullOfASquareWithInnerPoints) {
   const auto hull = jog::convexHull({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, 0.5}, {0.2, 0.7}});
   EXPECT_EQ(hull.size(), 4u);

@@ -6,6 +6,8 @@
 //   machine-start-refused.png ... and Start refuses, saying why and what to do
 //   machine-run.png      the demo job running, the executed part coloured on the canvas
 //   machine-goto.png     a go-to previewed on the canvas, waiting for confirmation
+//   machine-frame.png    Frame: the planned job's outline traced pen up (jog panel), and the
+//                        recovery bar (Reset, Unlock, Set reference pose) in the status bar
 //   machine-alarm.png    an alarm banner with its way out, and the profile editor's inline message
 //   machine-quit-while-running.png  quitting while a job runs asks first
 //   machine-reference-question.png  "Set reference pose" asks first
@@ -154,6 +156,19 @@ int main(int argc, char** argv) {
   if (const auto pen = session.penMm()) jog->goToTool().pick(QPointF(pen->x() - 45.0, pen->y() - 60.0));
   if (!grab(window, outDir + QStringLiteral("/machine-goto.png"))) status = 1;
   jog->goToButton()->setChecked(false);
+  waitUntil([&] { return session.state() == grbl::MachineState::Idle && session.jogSettled(); }, 10000);
+
+  // 2b. Frame: the demo job's outline traced pen up, the recovery bar in the status bar.
+  waitUntil([&] { return jog->frameButton()->isEnabled(); }, 10000);
+  jog->frameButton()->click();
+  // Grabbed once the pen is on the outline (the demo's circle), past the travel to its corner.
+  const Vec2 centre(window.document().placement().centerMm.x(), window.document().placement().centerMm.y());
+  waitUntil([&] {
+    const auto pen = session.penMm();
+    return session.state() == grbl::MachineState::Run && pen && (*pen - centre).norm() > 30.0;
+  }, 10000);
+  if (!grab(window, outDir + QStringLiteral("/machine-frame.png"), 60)) status = 1;
+  waitUntil([&] { return session.state() == grbl::MachineState::Idle && session.jogSettled(); }, 30000);
 
   // 3. An alarm (a hard limit tripped on the first line) and a bad profile value.
   session.disconnectMachine();

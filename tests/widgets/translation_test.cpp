@@ -59,6 +59,8 @@
 #include "widgets/canvas/job_layer.hpp"
 #include "session/run_controller.hpp"
 #include "widgets/machine/run_panel.hpp"
+#include "widgets/machine/alarm_strip.hpp"
+#include "widgets/machine/recovery_bar.hpp"
 #include "drivers/check/motion_check.hpp"
 #include "session/board_preflight.hpp"
 #include "widgets/panels/simulation_panel.hpp"
@@ -76,7 +78,8 @@ std::set<QString> runtimeContexts() {
         &ConsolePanel::staticMetaObject, &JobLayer::staticMetaObject,
         &ImportController::staticMetaObject, &fivebar::session::JogController::staticMetaObject,
         &GoToTool::staticMetaObject, &JogPanel::staticMetaObject, &LayersPanel::staticMetaObject,
-        &MachineBanner::staticMetaObject, &MachinePanel::staticMetaObject, &PortBox::staticMetaObject,
+        &MachineBanner::staticMetaObject, &MachinePanel::staticMetaObject, &RecoveryBar::staticMetaObject,
+        &AlarmStrip::staticMetaObject, &PortBox::staticMetaObject,
         &MachineLayer::staticMetaObject,
         &fivebar::session::MachineSession::staticMetaObject, &MachineSettingsDialog::staticMetaObject,
         &MachinePanels::staticMetaObject,

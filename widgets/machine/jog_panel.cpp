@@ -63,6 +63,7 @@ JogPanel::JogPanel(session::MachineView& view, session::JogPort& jog, session::R
   layout->addLayout(grid);
   layout->addLayout(motorRow);
   layout->addLayout(toolRow);
+  layout->addWidget(frame_);
   layout->addStretch(1);
 
   connectControls();
@@ -134,7 +135,7 @@ QHBoxLayout* JogPanel::makeStepRow() {
   return stepRow;
 }
 
-// Home, Go to home pose, Pen up, Pen down.
+// Home, Go to home pose, Pen up, Pen down; the Frame button under them.
 QHBoxLayout* JogPanel::makeToolRow() {
   home_ = new QPushButton(this);
   goHome_ = new QPushButton(tr("Go to home pose"), this);
@@ -145,6 +146,10 @@ QHBoxLayout* JogPanel::makeToolRow() {
   penUp_->setToolTip(tr("Lift the pen (Page Up on the canvas)"));
   penDown_ = new QPushButton(tr("Pen down"), this);
   penDown_->setToolTip(tr("Lower the pen (Page Down on the canvas)"));
+  frame_ = new QPushButton(tr("Frame the job"), this);
+  frame_->setObjectName(QStringLiteral("frameButton"));
+  frame_->setToolTip(tr("Trace the outline of the planned job with the pen up (a laser at low "
+                        "power), along checked moves, to see where the drawing lands on the paper"));
   auto* toolRow = new QHBoxLayout;
   toolRow->addWidget(home_);
   toolRow->addWidget(goHome_);
@@ -179,6 +184,10 @@ void JogPanel::connectControls() {
     QString why;
     if (!jog_.goToHomePose(&why)) message_->setText(why);
   });
+  connect(frame_, &QPushButton::clicked, this, [this] {
+    QString why;
+    message_->setText(jog_.frameJob(&why) ? tr("Tracing the job's outline with the pen up.") : why);
+  });
   connect(penUp_, &QPushButton::clicked, this, [this] { jog_.penUp(); });
   connect(penDown_, &QPushButton::clicked, this, [this] { jog_.penDown(); });
   connect(goToButton_, &QPushButton::toggled, this, &JogPanel::setGoToActive);
@@ -193,6 +202,8 @@ void JogPanel::connectControls() {
   connect(&view_, &session::MachineView::connectionChanged, this, &JogPanel::refreshEnabled);
   connect(&view_, &session::MachineView::statusUpdated, this, &JogPanel::refreshEnabled);
   connect(&view_, &session::MachineView::jobActiveChanged, this, &JogPanel::refreshEnabled);
+  connect(&view_, &session::MachineView::poseKnownChanged, this, &JogPanel::refreshEnabled);
+  connect(&view_, &session::MachineView::plannedJobChanged, this, &JogPanel::refreshEnabled);
   refreshEnabled();
 }
 
@@ -294,6 +305,7 @@ void JogPanel::refreshEnabled() {
   const bool usable = view_.isConnected() && !view_.jobActive() &&
                       view_.state() != grbl::MachineState::Alarm;
   for (QWidget* w : moveWidgets_) w->setEnabled(usable);
+  frame_->setEnabled(usable && view_.canFrame());
   const bool homing = view_.profile().hasHomingSwitches;
   home_->setText(homing ? tr("Home ($H)") : tr("Set reference pose"));
   home_->setToolTip(homing ? tr("Run the homing cycle")

@@ -3,7 +3,8 @@
 // (0.1, 1, 10 mm or degrees), a tap jogs one step and holding jogs continuously until release;
 // keyboard jogging on the canvas (arrow keys; Page Up / Page Down lift and lower the pen; Enter
 // confirms a go-to, Escape cancels it); go-to by clicking the canvas with the path previewed;
-// home ($H) or "set reference pose"; pen up and down. All moves are checked (drivers/jog).
+// home ($H) or "set reference pose"; pen up and down; Frame: the planned job's outline traced
+// pen up, so the maker sees where the drawing lands. All moves are checked (drivers/jog).
 #pragma once
 
 #include <QWidget>
@@ -48,6 +49,8 @@ class JogPanel : public QWidget {
   QPushButton* goToButton() const { return goToButton_; }
   QPushButton* homeButton() const { return home_; }
   QPushButton* goHomeButton() const { return goHome_; }
+  // Enabled while connected with a known pose, idle and a job planned (MachineView::canFrame).
+  QPushButton* frameButton() const { return frame_; }
   QPushButton* confirmButton() const { return confirm_; }
   QLabel* messageLabel() const { return message_; }
 
@@ -80,6 +83,7 @@ class JogPanel : public QWidget {
   QDoubleSpinBox* speed_ = nullptr;
   QPushButton* home_ = nullptr;
   QPushButton* goHome_ = nullptr;
+  QPushButton* frame_ = nullptr;
   bool keysEverywhere_ = false;
   QPushButton* penUp_ = nullptr;
   QPushButton* penDown_ = nullptr;

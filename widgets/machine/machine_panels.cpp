@@ -8,6 +8,7 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QStandardPaths>
+#include <QStatusBar>
 
 #include "widgets/canvas/canvas_view.hpp"
 #include "widgets/machine/console_panel.hpp"
@@ -15,6 +16,7 @@
 #include "widgets/canvas/machine_layer.hpp"
 #include "widgets/machine/machine_panel.hpp"
 #include "widgets/machine/machine_settings_dialog.hpp"
+#include "widgets/machine/recovery_bar.hpp"
 #include "widgets/document/studio_document.hpp"
 #include "widgets/panels/profile_editor.hpp"
 #include "widgets/machine/run_layer.hpp"
@@ -56,6 +58,8 @@ void MachinePanels::install(const StudioShell& shell) {
   shell.addPanel(jog_, tr("Jog"), QStringLiteral("dockJog"), Qt::RightDockWidgetArea, shell.machineMenu);
   shell.addPanel(console_, tr("Console"), QStringLiteral("dockConsole"), Qt::BottomDockWidgetArea, shell.machineMenu);
   shell.addPanel(profile_, tr("Machine profile"), QStringLiteral("dockProfile"), Qt::LeftDockWidgetArea, shell.machineMenu);
+  recovery_ = new RecoveryBar(view, machine_.recovery(), window_);
+  if (shell.statusBar != nullptr) shell.statusBar->addPermanentWidget(recovery_);
   machinePanel_->setOpenSettings([this] { openSettingsDialog(); });
   runPanel_->setOpenSettings([this] { openSettingsDialog(); });
   settingsAction_ = new QAction(tr("Machine &settings..."), this);

@@ -2,7 +2,8 @@
 // MachinePanels: the widgets of the machine side, built over a session::MachineSide (the session,
 // run and jog controllers, app/studio composes both): the panels handed to the window's docks
 // (machine, run, jog, console, profile editor), the canvas layer of the executed job, the canvas
-// linkage following the machine's reported pose, the machine settings dialog and the quit
+// linkage following the machine's reported pose, the recovery bar in the status bar (Reset,
+// Unlock, Set reference pose while connected), the machine settings dialog and the quit
 // prompt while a job runs. It owns no machine state.
 #pragma once
 
@@ -24,6 +25,7 @@ class MachineLayer;
 class MachinePanel;
 class MachineSettingsDialog;
 class ProfileEditor;
+class RecoveryBar;
 class RunLayer;
 class RunPanel;
 class StudioDocument;
@@ -43,6 +45,8 @@ class MachinePanels : public QObject {
   MachinePanel* machinePanel() const { return machinePanel_; }
   ConsolePanel* consolePanel() const { return console_; }
   ProfileEditor* profileEditor() const { return profile_; }
+  // Reset, Unlock, Set reference pose: in the window's status bar while connected.
+  RecoveryBar* recoveryBar() const { return recovery_; }
   // "Machine settings...": opens the dialog comparing the board's $$ with the profile (created
   // by install and put in the Machine menu).
   QAction* settingsAction() const { return settingsAction_; }
@@ -64,6 +68,7 @@ class MachinePanels : public QObject {
   RunPanel* runPanel_ = nullptr;
   ConsolePanel* console_ = nullptr;
   ProfileEditor* profile_ = nullptr;
+  RecoveryBar* recovery_ = nullptr;
   QAction* settingsAction_ = nullptr;
   MachineSettingsDialog* settingsDialog_ = nullptr;
 };

@@ -4,6 +4,7 @@
 #include <QMessageBox>
 
 #include "widgets/document/job_pipeline.hpp"
+#include "widgets/machine/alarm_strip.hpp"
 #include "session/settings_advice.hpp"
 
 #include <QCoreApplication>
@@ -89,6 +90,8 @@ RunPanel::RunPanel(session::RunController& run, session::MachineView& view,
 
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(8, 8, 8, 8);
+  alarm_ = new AlarmStrip(view_, this);  // first: an alarm is the first thing to see
+  layout->addWidget(alarm_);
   layout->addLayout(buttons);
   layout->addLayout(stateRow);
   layout->addWidget(progress_);

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The run panel: start, hold, continue and stop the planned job on the machine, a progress bar
 // with the executed lines and the time left, what happened when a run ended, and the offer to
-// resume an interrupted run (also after a restart: the progress file beside the job).
+// resume an interrupted run (also after a restart: the progress file beside the job); an alarm
+// strip on top while the machine is in alarm.
 #pragma once
 
 #include <QWidget>
@@ -17,6 +18,8 @@ class QProgressBar;
 class QPushButton;
 
 namespace fivebar::widgets {
+
+class AlarmStrip;
 
 class RunPanel : public QWidget {
   Q_OBJECT
@@ -36,6 +39,8 @@ class RunPanel : public QWidget {
   QLabel* etaLabel() const { return eta_; }
   QLabel* stateLabel() const { return state_; }
   QLabel* resumeLabel() const { return resumeInfo_; }
+  // Shown while the machine is in alarm (widgets/machine/alarm_strip.hpp).
+  AlarmStrip* alarmStrip() const { return alarm_; }
   // What "Write the profile's settings..." in the settings question opens.
   void setOpenSettings(std::function<void()> open) { openSettings_ = std::move(open); }
 
@@ -63,6 +68,7 @@ class RunPanel : public QWidget {
   QLabel* state_ = nullptr;
   QLabel* eta_ = nullptr;
   QLabel* message_ = nullptr;
+  AlarmStrip* alarm_ = nullptr;
   std::function<void()> openSettings_;
 };
 
