@@ -145,7 +145,7 @@ void JobRunner::onAck(const grbl::Ack& ack) {
   if (unlockId_ && ack.id == *unlockId_) {
     unlockId_.reset();
     phase_ = StopPhase::None;
-    if (!ack.ok()) problem_ += " Unlock ($X) failed: " + grbl::describeError(ack.errorCode);
+    if (!ack.ok()) problem_ += " Unlock ('$X') failed: " + grbl::describeError(ack.errorCode);
     setState(RunState::Stopped);
     return;
   }

@@ -159,8 +159,8 @@ void StreamSession::onTick(double nowS) {
     const std::string machine = options_.machineName.empty() ? "PROFILE" : options_.machineName;
     if (link_.protocol().state() == grbl::MachineState::Alarm) {
       refuse(StreamStop::Kind::Alarm,
-             "the machine is in alarm: check it, then unlock with 'fivebar send --port " + port +
-                 " $X' (or home with 'fivebar home') and stream again");
+             "the machine is in alarm: check it, then unlock with \"fivebar send --port " + port +
+                 " '$X'\" (or home with 'fivebar home') and stream again");
       return;
     }
     if (options_.checked && !link_.poseTrust().known()) {
