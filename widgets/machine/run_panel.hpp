@@ -1,5 +1,6 @@
-// The run panel: start, hold, continue and stop the planned job on the machine, a progress bar
-// with the executed lines and the time left, what happened when a run ended, and the offer to
+// The run panel: start, hold, continue and stop the planned job on the machine, feed and rapid
+// overrides (override_controls.hpp), a progress bar with the executed lines and the time left
+// (under the reported overrides), what happened when a run ended, and the offer to
 // resume an interrupted run (also after a restart: the progress file beside the job).
 #pragma once
 
@@ -16,6 +17,8 @@ class QProgressBar;
 class QPushButton;
 
 namespace fivebar::widgets {
+
+class OverrideControls;
 
 class RunPanel : public QWidget {
   Q_OBJECT
@@ -35,6 +38,7 @@ class RunPanel : public QWidget {
   QLabel* etaLabel() const { return eta_; }
   QLabel* stateLabel() const { return state_; }
   QLabel* resumeLabel() const { return resumeInfo_; }
+  OverrideControls* overrideControls() const { return overrides_; }
   // What "Write the profile's settings..." in the settings question opens.
   void setOpenSettings(std::function<void()> open) { openSettings_ = std::move(open); }
 
@@ -62,6 +66,7 @@ class RunPanel : public QWidget {
   QLabel* state_ = nullptr;
   QLabel* eta_ = nullptr;
   QLabel* message_ = nullptr;
+  OverrideControls* overrides_ = nullptr;
   std::function<void()> openSettings_;
 };
 
