@@ -171,6 +171,12 @@ class MachineSession : public QObject,
   void softReset() override;
   void feedHold();
   void cycleStart();
+  // A feed or rapid override (GRBL real-time byte 0x90-0x97, never counted, accepted in any
+  // state). The board caps the overridden rate at $110/$111, so it stays within the motors'
+  // limits (drivers/protocol/overrides.hpp).
+  void sendOverride(grbl::OverrideCommand command);
+  // Feed and rapid override as the board last reported them (Ov:); nullopt while not known.
+  std::optional<grbl::MotionOverrides> reportedOverrides() const;
   bool penUp() override;
   bool penDown() override;
   void dismissProblem() override;

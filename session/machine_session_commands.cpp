@@ -328,6 +328,22 @@ void MachineSession::feedHold() {
   emit consoleLine(tr("[feed hold]"), ConsoleKind::Sent);
 }
 
+void MachineSession::sendOverride(grbl::OverrideCommand command) {
+  if (!link_) return;
+  link_->protocol().sendRealtime(grbl::overrideByte(command));
+  static const char* const kWords[] = {
+      QT_TR_NOOP("[feed override 100 %]"), QT_TR_NOOP("[feed override +10 %]"),
+      QT_TR_NOOP("[feed override -10 %]"), QT_TR_NOOP("[feed override +1 %]"),
+      QT_TR_NOOP("[feed override -1 %]"),  QT_TR_NOOP("[rapid override 100 %]"),
+      QT_TR_NOOP("[rapid override 50 %]"), QT_TR_NOOP("[rapid override 25 %]")};
+  emit consoleLine(tr(kWords[int(command)]), ConsoleKind::Sent);
+}
+
+std::optional<grbl::MotionOverrides> MachineSession::reportedOverrides() const {
+  if (!link_) return std::nullopt;
+  return link_->protocol().reportedOverrides();
+}
+
 void MachineSession::cycleStart() {
   if (!link_) return;
   link_->protocol().sendRealtime(grbl::realtime::kCycleStart);

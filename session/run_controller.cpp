@@ -60,7 +60,6 @@ RunController::RunController(const StudioInputs& inputs, MachineSession& session
 void RunController::clearPreviousRun() {
   if (running() || !job_) return;
   job_.reset();
-  timeline_ = {};
   snapshot_ = {};
   lastState_ = stream::RunState::Ready;
   lastMessage_.clear();
@@ -269,10 +268,9 @@ bool RunController::launch(bool resume, std::shared_ptr<const std::string> gcode
     return false;
   }
   job_ = std::make_shared<const stream::GcodeJob>(stream_->job());
-  timeline_ = stream::timelineOf(*job_, inputs_.profile());
   snapshot_ = {};
   snapshot_.totalLines = job_->lines.size();
-  snapshot_.etaS = timeline_.totalS();
+  if (stream_->runner()) snapshot_.etaS = stream_->runner()->snapshot().etaS;
   finished_ = false;
   lastMessage_ = resume ? tr("Resuming \"%1\"…").arg(drawingName()) : tr("Running \"%1\"…").arg(drawingName());
   session_.setJobActive(true);
@@ -299,11 +297,15 @@ void RunController::stop() {
   refresh();
 }
 
+void RunController::sendOverride(grbl::OverrideCommand command) {
+  if (running()) session_.sendOverride(command);
+}
+
 void RunController::refresh() {
   if (!stream_ || !stream_->runner()) return;
+  // The ETA in it is the drivers' (JobRunner: the plan's time line of the last executed line,
+  // under the reported overrides; unchanged while held), the same as `fivebar stream` prints.
   snapshot_ = stream_->runner()->snapshot();
-  // The time left by the plan's time line of the last executed line (unchanged while held).
-  snapshot_.etaS = timeline_.lineEndS.empty() ? -1.0 : timeline_.remainingS(snapshot_.lastCompleted);
   const stream::RunState s = stream_->runner()->state();
   const bool changed = s != lastState_;
   lastState_ = s;

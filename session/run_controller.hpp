@@ -66,8 +66,12 @@ class RunController : public QObject {
   // The executed share as one counter: "line N of M" from the executed job lines.
   QString progressText() const;
   // Seconds of machine time left by the planned time line (core's GRBL model) of the last
-  // executed line; < 0 while unknown. Does not change while the machine holds.
+  // executed line, under the feed and rapid override the board reports (the job planned again
+  // at them: stream::JobTimeline::overridden); < 0 while unknown. Does not change while the
+  // machine holds.
   double etaS() const { return snapshot_.etaS; }
+  // Feed and rapid override as the board reports them (Ov:); nullopt while not known.
+  std::optional<grbl::MotionOverrides> overrides() const { return session_.reportedOverrides(); }
 
  public slots:
   bool start(QString* error = nullptr);
@@ -75,6 +79,8 @@ class RunController : public QObject {
   void hold();
   void continueRun();
   void stop();
+  // A feed or rapid override during the run (the session's; GRBL caps the rate at $110/$111).
+  void sendOverride(grbl::OverrideCommand command);
 
  signals:
   void runChanged();        // state, availability of start / resume
@@ -98,7 +104,6 @@ class RunController : public QObject {
   QString jobDir_;
   std::unique_ptr<StreamSession> stream_;
   std::shared_ptr<const stream::GcodeJob> job_;
-  stream::JobTimeline timeline_;
   stream::RunSnapshot snapshot_;
   stream::RunState lastState_ = stream::RunState::Ready;
   bool finished_ = true;

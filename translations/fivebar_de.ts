@@ -2126,6 +2126,38 @@ Bestätigen Sie nur, wenn die Arme jetzt genau in dieser Stellung stehen. Stehen
         <source>Jog refused: %1</source>
         <translation>Verfahren abgelehnt: %1</translation>
     </message>
+    <message>
+        <source>[feed override 100 %]</source>
+        <translation>[Vorschub-Override 100 %]</translation>
+    </message>
+    <message>
+        <source>[feed override +10 %]</source>
+        <translation>[Vorschub-Override +10 %]</translation>
+    </message>
+    <message>
+        <source>[feed override -10 %]</source>
+        <translation>[Vorschub-Override -10 %]</translation>
+    </message>
+    <message>
+        <source>[feed override +1 %]</source>
+        <translation>[Vorschub-Override +1 %]</translation>
+    </message>
+    <message>
+        <source>[feed override -1 %]</source>
+        <translation>[Vorschub-Override -1 %]</translation>
+    </message>
+    <message>
+        <source>[rapid override 100 %]</source>
+        <translation>[Eilgang-Override 100 %]</translation>
+    </message>
+    <message>
+        <source>[rapid override 50 %]</source>
+        <translation>[Eilgang-Override 50 %]</translation>
+    </message>
+    <message>
+        <source>[rapid override 25 %]</source>
+        <translation>[Eilgang-Override 25 %]</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachineSettingsDialog</name>
@@ -2955,6 +2987,97 @@ Anhalten, stoppen und beenden: Die Maschine hält sauber an und der Fortschritt 
     </message>
 </context>
 <context>
+    <name>fivebar::widgets::OverrideControls</name>
+    <message>
+        <source>Overrides</source>
+        <translation>Overrides</translation>
+    </message>
+    <message>
+        <source>The machine scales the job's feed (10 to 200 %) and its rapid moves (25, 50 or 100 %) at once. It never exceeds its maximum rates ($110, $111): a higher feed override stops speeding up where the motors' limit is.</source>
+        <translation>Die Maschine skaliert den Vorschub des Auftrags (10 bis 200 %) und seine Eilgänge (25, 50 oder 100 %) sofort. Sie überschreitet nie ihre Höchstgeschwindigkeiten ($110, $111): Ein höherer Vorschub-Override beschleunigt nur bis zur Grenze der Motoren.</translation>
+    </message>
+    <message>
+        <source>Feed override: pen-down and other G1 moves</source>
+        <translation>Vorschub-Override: Bewegungen mit abgesenktem Stift und andere G1-Bewegungen</translation>
+    </message>
+    <message>
+        <source>Rapid override: G0 travel moves</source>
+        <translation>Eilgang-Override: G0-Verfahrbewegungen</translation>
+    </message>
+    <message>
+        <source>Feed</source>
+        <translation>Vorschub</translation>
+    </message>
+    <message>
+        <source>−10 %</source>
+        <translation>−10 %</translation>
+    </message>
+    <message>
+        <source>Alt+Down</source>
+        <translation>Alt+Down</translation>
+    </message>
+    <message>
+        <source>−1 %</source>
+        <translation>−1 %</translation>
+    </message>
+    <message>
+        <source>Alt+Left</source>
+        <translation>Alt+Left</translation>
+    </message>
+    <message>
+        <source>100 %</source>
+        <translation>100 %</translation>
+    </message>
+    <message>
+        <source>Alt+0</source>
+        <translation>Alt+0</translation>
+    </message>
+    <message>
+        <source>+1 %</source>
+        <translation>+1 %</translation>
+    </message>
+    <message>
+        <source>Alt+Right</source>
+        <translation>Alt+Right</translation>
+    </message>
+    <message>
+        <source>+10 %</source>
+        <translation>+10 %</translation>
+    </message>
+    <message>
+        <source>Alt+Up</source>
+        <translation>Alt+Up</translation>
+    </message>
+    <message>
+        <source>Rapid</source>
+        <translation>Eilgang</translation>
+    </message>
+    <message>
+        <source>25 %</source>
+        <translation>25 %</translation>
+    </message>
+    <message>
+        <source>Alt+4</source>
+        <translation>Alt+4</translation>
+    </message>
+    <message>
+        <source>50 %</source>
+        <translation>50 %</translation>
+    </message>
+    <message>
+        <source>Alt+2</source>
+        <translation>Alt+2</translation>
+    </message>
+    <message>
+        <source>Alt+1</source>
+        <translation>Alt+1</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+</context>
+<context>
     <name>fivebar::widgets::RunPanel</name>
     <message>
         <source>Ready</source>
@@ -3095,6 +3218,10 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
     <message>
         <source>%1 left (on hold)</source>
         <translation>noch %1 (angehalten)</translation>
+    </message>
+    <message>
+        <source>Machine time left by the plan, planned again at the feed and rapid override the machine reports</source>
+        <translation>Verbleibende Maschinenzeit laut Plan, neu geplant mit dem Vorschub- und Eilgang-Override, den die Maschine meldet</translation>
     </message>
 </context>
 <context>

@@ -2126,6 +2126,38 @@ Confirme solo si los brazos están ahora exactamente en esa pose. Si están en o
         <source>Jog refused: %1</source>
         <translation>Movimiento rechazado: %1</translation>
     </message>
+    <message>
+        <source>[feed override 100 %]</source>
+        <translation>[ajuste de avance 100 %]</translation>
+    </message>
+    <message>
+        <source>[feed override +10 %]</source>
+        <translation>[ajuste de avance +10 %]</translation>
+    </message>
+    <message>
+        <source>[feed override -10 %]</source>
+        <translation>[ajuste de avance -10 %]</translation>
+    </message>
+    <message>
+        <source>[feed override +1 %]</source>
+        <translation>[ajuste de avance +1 %]</translation>
+    </message>
+    <message>
+        <source>[feed override -1 %]</source>
+        <translation>[ajuste de avance -1 %]</translation>
+    </message>
+    <message>
+        <source>[rapid override 100 %]</source>
+        <translation>[ajuste de rápidos 100 %]</translation>
+    </message>
+    <message>
+        <source>[rapid override 50 %]</source>
+        <translation>[ajuste de rápidos 50 %]</translation>
+    </message>
+    <message>
+        <source>[rapid override 25 %]</source>
+        <translation>[ajuste de rápidos 25 %]</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachineSettingsDialog</name>
@@ -2955,6 +2987,97 @@ Pausar, detener y salir: la máquina se detiene limpiamente y el progreso se gua
     </message>
 </context>
 <context>
+    <name>fivebar::widgets::OverrideControls</name>
+    <message>
+        <source>Overrides</source>
+        <translation>Ajustes</translation>
+    </message>
+    <message>
+        <source>The machine scales the job's feed (10 to 200 %) and its rapid moves (25, 50 or 100 %) at once. It never exceeds its maximum rates ($110, $111): a higher feed override stops speeding up where the motors' limit is.</source>
+        <translation>La máquina ajusta al instante el avance del trabajo (10 a 200 %) y sus movimientos rápidos (25, 50 o 100 %). Nunca supera sus velocidades máximas ($110, $111): un ajuste de avance mayor deja de acelerar donde está el límite de los motores.</translation>
+    </message>
+    <message>
+        <source>Feed override: pen-down and other G1 moves</source>
+        <translation>Ajuste de avance: movimientos con el bolígrafo bajado y otros movimientos G1</translation>
+    </message>
+    <message>
+        <source>Rapid override: G0 travel moves</source>
+        <translation>Ajuste de rápidos: desplazamientos G0</translation>
+    </message>
+    <message>
+        <source>Feed</source>
+        <translation>Avance</translation>
+    </message>
+    <message>
+        <source>−10 %</source>
+        <translation>−10 %</translation>
+    </message>
+    <message>
+        <source>Alt+Down</source>
+        <translation>Alt+Down</translation>
+    </message>
+    <message>
+        <source>−1 %</source>
+        <translation>−1 %</translation>
+    </message>
+    <message>
+        <source>Alt+Left</source>
+        <translation>Alt+Left</translation>
+    </message>
+    <message>
+        <source>100 %</source>
+        <translation>100 %</translation>
+    </message>
+    <message>
+        <source>Alt+0</source>
+        <translation>Alt+0</translation>
+    </message>
+    <message>
+        <source>+1 %</source>
+        <translation>+1 %</translation>
+    </message>
+    <message>
+        <source>Alt+Right</source>
+        <translation>Alt+Right</translation>
+    </message>
+    <message>
+        <source>+10 %</source>
+        <translation>+10 %</translation>
+    </message>
+    <message>
+        <source>Alt+Up</source>
+        <translation>Alt+Up</translation>
+    </message>
+    <message>
+        <source>Rapid</source>
+        <translation>Rápido</translation>
+    </message>
+    <message>
+        <source>25 %</source>
+        <translation>25 %</translation>
+    </message>
+    <message>
+        <source>Alt+4</source>
+        <translation>Alt+4</translation>
+    </message>
+    <message>
+        <source>50 %</source>
+        <translation>50 %</translation>
+    </message>
+    <message>
+        <source>Alt+2</source>
+        <translation>Alt+2</translation>
+    </message>
+    <message>
+        <source>Alt+1</source>
+        <translation>Alt+1</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+</context>
+<context>
     <name>fivebar::widgets::RunPanel</name>
     <message>
         <source>Ready</source>
@@ -3095,6 +3218,10 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     <message>
         <source>%1 left (on hold)</source>
         <translation>quedan %1 (en pausa)</translation>
+    </message>
+    <message>
+        <source>Machine time left by the plan, planned again at the feed and rapid override the machine reports</source>
+        <translation>Tiempo de máquina restante según el plan, replanificado con los ajustes de avance y de rápidos que informa la máquina</translation>
     </message>
 </context>
 <context>

@@ -2126,6 +2126,38 @@ Confirmez seulement si les bras sont exactement dans cette pose. S'ils sont aill
         <source>Jog refused: %1</source>
         <translation>Déplacement refusé : %1</translation>
     </message>
+    <message>
+        <source>[feed override 100 %]</source>
+        <translation>[correcteur d'avance 100 %]</translation>
+    </message>
+    <message>
+        <source>[feed override +10 %]</source>
+        <translation>[correcteur d'avance +10 %]</translation>
+    </message>
+    <message>
+        <source>[feed override -10 %]</source>
+        <translation>[correcteur d'avance -10 %]</translation>
+    </message>
+    <message>
+        <source>[feed override +1 %]</source>
+        <translation>[correcteur d'avance +1 %]</translation>
+    </message>
+    <message>
+        <source>[feed override -1 %]</source>
+        <translation>[correcteur d'avance -1 %]</translation>
+    </message>
+    <message>
+        <source>[rapid override 100 %]</source>
+        <translation>[correcteur de rapide 100 %]</translation>
+    </message>
+    <message>
+        <source>[rapid override 50 %]</source>
+        <translation>[correcteur de rapide 50 %]</translation>
+    </message>
+    <message>
+        <source>[rapid override 25 %]</source>
+        <translation>[correcteur de rapide 25 %]</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachineSettingsDialog</name>
@@ -2955,6 +2987,97 @@ Pause, arrêter et quitter : la machine s'arrête proprement et la progression e
     </message>
 </context>
 <context>
+    <name>fivebar::widgets::OverrideControls</name>
+    <message>
+        <source>Overrides</source>
+        <translation>Correcteurs</translation>
+    </message>
+    <message>
+        <source>The machine scales the job's feed (10 to 200 %) and its rapid moves (25, 50 or 100 %) at once. It never exceeds its maximum rates ($110, $111): a higher feed override stops speeding up where the motors' limit is.</source>
+        <translation>La machine ajuste aussitôt l'avance du travail (10 à 200 %) et ses déplacements rapides (25, 50 ou 100 %). Elle ne dépasse jamais ses vitesses maximales ($110, $111) : au-delà de la limite des moteurs, un correcteur d'avance plus élevé n'accélère plus.</translation>
+    </message>
+    <message>
+        <source>Feed override: pen-down and other G1 moves</source>
+        <translation>Correcteur d'avance : déplacements stylo baissé et autres mouvements G1</translation>
+    </message>
+    <message>
+        <source>Rapid override: G0 travel moves</source>
+        <translation>Correcteur de rapide : déplacements G0</translation>
+    </message>
+    <message>
+        <source>Feed</source>
+        <translation>Avance</translation>
+    </message>
+    <message>
+        <source>−10 %</source>
+        <translation>−10 %</translation>
+    </message>
+    <message>
+        <source>Alt+Down</source>
+        <translation>Alt+Down</translation>
+    </message>
+    <message>
+        <source>−1 %</source>
+        <translation>−1 %</translation>
+    </message>
+    <message>
+        <source>Alt+Left</source>
+        <translation>Alt+Left</translation>
+    </message>
+    <message>
+        <source>100 %</source>
+        <translation>100 %</translation>
+    </message>
+    <message>
+        <source>Alt+0</source>
+        <translation>Alt+0</translation>
+    </message>
+    <message>
+        <source>+1 %</source>
+        <translation>+1 %</translation>
+    </message>
+    <message>
+        <source>Alt+Right</source>
+        <translation>Alt+Right</translation>
+    </message>
+    <message>
+        <source>+10 %</source>
+        <translation>+10 %</translation>
+    </message>
+    <message>
+        <source>Alt+Up</source>
+        <translation>Alt+Up</translation>
+    </message>
+    <message>
+        <source>Rapid</source>
+        <translation>Rapide</translation>
+    </message>
+    <message>
+        <source>25 %</source>
+        <translation>25 %</translation>
+    </message>
+    <message>
+        <source>Alt+4</source>
+        <translation>Alt+4</translation>
+    </message>
+    <message>
+        <source>50 %</source>
+        <translation>50 %</translation>
+    </message>
+    <message>
+        <source>Alt+2</source>
+        <translation>Alt+2</translation>
+    </message>
+    <message>
+        <source>Alt+1</source>
+        <translation>Alt+1</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+</context>
+<context>
     <name>fivebar::widgets::RunPanel</name>
     <message>
         <source>Ready</source>
@@ -3095,6 +3218,10 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     <message>
         <source>%1 left (on hold)</source>
         <translation>%1 restant (en pause)</translation>
+    </message>
+    <message>
+        <source>Machine time left by the plan, planned again at the feed and rapid override the machine reports</source>
+        <translation>Temps machine restant selon le plan, replanifié avec les correcteurs d'avance et de rapide que la machine signale</translation>
     </message>
 </context>
 <context>

@@ -39,8 +39,8 @@ bool Procedure::step(double nowS) {
   if (!pose) return false;
   if (phase_ == Phase::Verify) return finish(verify_(*pose));
   if (link_.protocol().state() == grbl::MachineState::Alarm && !allowAlarm)
-    return fail("the machine is in alarm: check it, then unlock with 'fivebar send --port " +
-                link_.transport().name().toStdString() + " $X' and run this again");
+    return fail("the machine is in alarm: check it, then unlock with \"fivebar send --port " +
+                link_.transport().name().toStdString() + " '$X'\" and run this again");
   const auto lines = decide_(*pose, link_);
   if (!lines) return finish(1);
   lines_ = *lines;

@@ -26,7 +26,7 @@ const CodeInfo* findError(int code);
 const CodeInfo* findAlarm(int code);
 
 // "error:9 (G-code lock): G-code commands are locked out while in alarm or jog state. Unlock
-// with $X or home with $H first." Unknown codes still give a readable sentence.
+// with '$X' or home with '$H' first." Unknown codes still give a readable sentence.
 std::string describeError(int code);
 std::string describeAlarm(int code);
 

@@ -151,6 +151,7 @@ void GrblProtocol::handleLine(std::string_view raw) {
       activeSystem_ = "G54";
       params_.erase("G92");
       wco_.reset();
+      overrides_.reset();  // a reset puts them back to 100 %: known again from the next Ov:
       version_ = p.text;
       for (auto* l : listeners_) l->onReset(version_, lost, dropped);
       return;
@@ -181,6 +182,7 @@ void GrblProtocol::handleStatus(const StatusReport& r) {
   statusOutstanding_ = false;
   ++statusReports_;
   if (r.wco) wco_ = r.wco;
+  if (r.overrides) overrides_ = MotionOverrides{(*r.overrides)[0], (*r.overrides)[1]};
   lastStatus_ = r;
   for (auto* l : listeners_) l->onStatus(r);
 }
@@ -213,6 +215,7 @@ void GrblProtocol::disconnected(const std::string& reason) {
   resetCounters(nullptr, nullptr);
   settings_.clear();
   queue_.clear();
+  overrides_.reset();
   statusOutstanding_ = false;
   for (auto* l : listeners_) l->onDisconnected(reason);
 }

@@ -25,6 +25,7 @@
 
 #include "core/kinematics/kinematics.hpp"
 #include "grbl_parser.hpp"
+#include "overrides.hpp"
 
 namespace fivebar::grbl {
 
@@ -133,6 +134,10 @@ class GrblProtocol {
   std::optional<JointAngles> motorAngles() const;
   // Work position (X, Y deg, Z mm), under the same rule as motorAngles().
   std::optional<Axes> workPositionDeg() const;
+  // Feed and rapid override as the board last reported them (an Ov: field; most reports have
+  // none, so this keeps the last one); nullopt before the first and after a reset or a
+  // disconnect until the next.
+  const std::optional<MotionOverrides>& reportedOverrides() const { return overrides_; }
   // The work coordinate offset, from a WCO: report or from `$#` (G54..G59 active + G92, TLO).
   const std::optional<Axes>& workOffset() const { return wco_; }
   // Sends "$#" (the board's coordinate parameters: G54..G59, G28, G30, G92, TLO); its answer
@@ -177,6 +182,7 @@ class GrblProtocol {
   bool statusOutstanding_ = false;
   StatusReport lastStatus_;
   std::optional<Axes> wco_;
+  std::optional<MotionOverrides> overrides_;
   std::map<std::string, Axes> params_;
   std::map<int, double> settings_;
   std::string activeSystem_ = "G54";

@@ -133,6 +133,7 @@ SimMachine::LineResult SimMachine::executeGcode(const std::string& line, bool jo
       }
     }
     if (programEnd) {  // gcode.c: M2/M30 reset G1 G17 G90 G94 G54 M5 M9, then [MSG:Pgm End]
+      setOverrides({});  // RESTORE_OVERRIDES_AFTER_PROGRAM_END (also in check mode)
       motionMode_ = 1;
       absolute_ = true;
       coordSelect_ = 0;
@@ -263,6 +264,23 @@ bool SimMachine::arc(const gcode::Words& w, bool clockwise) {
   }
   arcSegments_.push_back(target);
   return true;
+}
+
+// protocol.c "Execute overrides": the flags gathered since the last check, once; a change puts
+// Ov: in the next report and re-plans the queued blocks. A status request in the same chunk was
+// served first, as protocol_exec_rt_system serves EXEC_STATUS_REPORT before the overrides.
+void SimMachine::applyOverrides() {
+  if (overrideFlags_.empty()) return;
+  const grbl::MotionOverrides next = overrideFlags_.applyTo(overrides_);
+  overrideFlags_.clear();
+  if (next == overrides_) return;
+  setOverrides(next);
+  ovrCounter_ = 0;
+}
+
+void SimMachine::setOverrides(const grbl::MotionOverrides& overrides) {
+  overrides_ = overrides;
+  planner_.setOverrides(overrides.feedPct, overrides.rapidPct);
 }
 
 }  // namespace fivebar::sim

@@ -116,7 +116,9 @@ std::string SimMachine::takeOutput() {
 void SimMachine::receive(std::string_view bytes) {
   if (linkDropped_ || resetLeftS_ > 0.0) return;  // a resetting board drops what arrives
   for (char c : bytes) {
-    if (grbl::realtime::isRealtime(c)) {
+    if (const auto command = grbl::overrideCommandOf(c)) {
+      overrideFlags_.add(*command);  // executed at the real-time check after this chunk
+    } else if (grbl::realtime::isRealtime(c)) {
       realtimeByte(c);
     } else if (rx_.size() < kRxCapacity) {
       rx_.push_back(c);
@@ -124,6 +126,7 @@ void SimMachine::receive(std::string_view bytes) {
       ++rxOverflow_;  // the firmware drops bytes that do not fit
     }
   }
+  applyOverrides();
   serviceLines();
 }
 
@@ -158,7 +161,8 @@ void SimMachine::realtimeByte(char c) {
   } else if (c == rt::kJogCancel) {
     if (state_ == MachineState::Jog) jogCancel_ = true;
   }
-  // Overrides (0x90-0x9D) are accepted and have no effect on the simulated timing.
+  // Feed and rapid overrides (0x90-0x97): receive() and applyOverrides(). Spindle overrides
+  // (0x99-0x9D) and the coolant toggles are accepted and change nothing here.
 }
 
 void SimMachine::setPen(bool down) {
@@ -203,6 +207,7 @@ void SimMachine::softReset() {
   holding_ = jogCancel_ = criticalAlarm_ = softLimitStop_ = false;
   dwellLeftS_ = 0.0;
   dwellStarted_ = false;
+  overrideFlags_.clear();
   // gc_init: G0 G54 G17 G21 G90 G94 M5 M9, G92 cleared.
   absolute_ = true;
   motionMode_ = 0;
@@ -227,6 +232,7 @@ void SimMachine::finishReset() {
   homingOkOwed_ = false;
   updateWco();
   wcoCounter_ = ovrCounter_ = 0;  // main.c clears sys: WCO on the first report
+  setOverrides({});               // and the overrides are 100 % again
   out_ += std::string("\r\n") + kBanner + "\r\n";
   if (resetAlarm_) {
     state_ = MachineState::Alarm;
@@ -319,6 +325,7 @@ SimMachine::LineResult SimMachine::executeLine(const std::string& line) {
 }
 
 void SimMachine::advance(double machineDtS) {
+  clockS_ += machineDtS;
   if (resetLeftS_ > 0.0) {
     resetLeftS_ -= machineDtS;
     if (resetLeftS_ <= 0.0) finishReset();
@@ -421,7 +428,7 @@ void SimMachine::reportStatus() {
     --ovrCounter_;
   } else {
     ovrCounter_ = busy ? 19 : 9;
-    s += "|Ov:100,100,100";
+    s += "|Ov:" + std::to_string(overrides_.feedPct) + "," + std::to_string(overrides_.rapidPct) + ",100";
     // spindle_get_state: on while its PWM runs (S > 0), S clockwise (M3), C counter-clockwise
     // (M4); F flood coolant (M8). No Ln: (USE_LINE_NUMBERS is off in the stock config.h).
     const bool spindleRuns = spindleOn_ && spindleS_ > 0.0;

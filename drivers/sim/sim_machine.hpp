@@ -10,7 +10,8 @@
 // or the profile's settings when the board was set up), $20=1 refused without $22=1, soft limits
 // -$13x..0 in machine coordinates, the 79-character line buffer without spaces, G0/G1/G4,
 // G2/G3 arcs, G10 L2/L20, G28/G30 (.1), G53, G54-G59, G90/G91, G92 (.1), M0/M2/M30/M3/M4/M5,
-// M2 with [MSG:Pgm End]; a 15-block planner with trapezoidal timing (sim_planner.hpp); ALARM:3
+// M2 with [MSG:Pgm End]; feed (10..200 %) and rapid (100/50/25 %) overrides as protocol.c and
+// planner.c apply them (drivers/protocol/overrides.hpp), reported in Ov:; a 15-block planner with trapezoidal timing (sim_planner.hpp); ALARM:3
 // at once on a reset during motion and the banner 0.6 s later; injected faults. It records the
 // pen-down joint-space path. Units: X, Y degrees (theta1, theta2), Z mm.
 #pragma once
@@ -26,6 +27,7 @@
 #include "core/machine/profile.hpp"
 #include "drivers/protocol/gcode_words.hpp"
 #include "drivers/protocol/grbl_parser.hpp"
+#include "drivers/protocol/overrides.hpp"
 #include "pen_trace.hpp"
 #include "sim_planner.hpp"
 
@@ -87,6 +89,8 @@ class SimMachine {
   std::size_t plannerBlocks() const { return planner_.size(); }
   bool linkDropped() const { return linkDropped_; }
   bool penDown() const { return penDown_; }
+  const grbl::MotionOverrides& overrides() const { return overrides_; }
+  double clockS() const { return clockS_; }  // machine time advanced since power-up (s)
   // What the pen of the true machine really drew: polylines in the machine (base) frame, mm.
   const std::vector<std::vector<Vec2>>& drawnTrace() const { return trace_.polylines(); }
   // The motors drive another true machine from now on (SimConfig::trueMachine; nullopt: the
@@ -111,6 +115,8 @@ class SimMachine {
   void updateWco();
   bool syncReady() const { return planner_.empty(); }
   void realtimeByte(char c);
+  void applyOverrides();
+  void setOverrides(const grbl::MotionOverrides& overrides);
   void softReset();
   void raiseAlarm(int code, bool critical);
   void softLimitViolated();  // limits.c limits_soft_check, for a target beyond the travel
@@ -164,6 +170,8 @@ class SimMachine {
   bool homing_ = false, homingFails_ = false, homingSucceeded_ = false, homingOkOwed_ = false;
   double homingPauseS_ = 0.0;
   int wcoCounter_ = 0, ovrCounter_ = 0;
+  grbl::MotionOverrides overrides_;  // feed, rapid (%)
+  grbl::OverrideFlags overrideFlags_;  // received, not yet executed
   bool statusRequested_ = false;
   int motionMode_ = 0;  // G0..G3
   std::deque<Axes3> arcSegments_;
@@ -176,6 +184,7 @@ class SimMachine {
   bool penDown_ = false;
   Axes3 wco_{};
   long linesReceived_ = 0;
+  double clockS_ = 0.0;
   long rxOverflow_ = 0;
   long starvations_ = 0;
   bool faultFired_ = false;

@@ -29,7 +29,8 @@ Axes3 Planner::quantize(const Axes3& target) const {
   return q;
 }
 
-bool Planner::add(const Axes3& rawTarget, double feedPerS, bool rapid, bool penDown, bool jog) {
+bool Planner::add(const Axes3& rawTarget, double feedPerS, bool rapid, bool penDown, bool jog,
+                  bool systemMotion) {
   Block b;
   b.start = plannedEnd();
   b.target = quantize(rawTarget);
@@ -37,29 +38,58 @@ bool Planner::add(const Axes3& rawTarget, double feedPerS, bool rapid, bool penD
   for (size_t i = 0; i < 3; ++i) len2 += (b.target[i] - b.start[i]) * (b.target[i] - b.start[i]);
   b.length = std::sqrt(len2);
   if (b.length < 0.5 / limits_.stepsPerUnit[0]) return false;
-  double rate = rapid ? std::numeric_limits<double>::infinity() : feedPerS;
+  double rapidRate = std::numeric_limits<double>::infinity();
   double accel = std::numeric_limits<double>::infinity();
   for (size_t i = 0; i < 3; ++i) {
     b.unit[i] = (b.target[i] - b.start[i]) / b.length;
     const double u = std::abs(b.unit[i]);
     if (u < 1e-12) continue;
-    rate = std::min(rate, limits_.maxRatePerS[i] / u);
+    rapidRate = std::min(rapidRate, limits_.maxRatePerS[i] / u);
     accel = std::min(accel, limits_.accelPerS2[i] / u);
   }
-  b.nominalSpeed = rate;
+  b.rapidRate = rapidRate;
+  b.programmedRate = rapid ? rapidRate : feedPerS;
+  b.rapid = rapid;
+  b.noFeedOverride = jog || systemMotion;
+  b.nominalSpeed = nominalSpeedOf(b);
   b.accel = accel;
   b.penDown = penDown;
   b.jog = jog;
   if (blocks_.empty()) {
     b.maxEntrySpeed = 0.0;  // starting from rest (the current speed is 0 with no blocks)
+    b.maxJunctionSpeed = 0.0;
     remaining_ = b.length;
   } else {
     const Block& prev = blocks_.back();
-    b.maxEntrySpeed = std::min({junctionSpeed(prev.unit, b.unit, accel, limits_.junctionDeviation),
-                                b.nominalSpeed, prev.nominalSpeed});
+    b.maxJunctionSpeed = junctionSpeed(prev.unit, b.unit, accel, limits_.junctionDeviation);
+    b.maxEntrySpeed = std::min({b.maxJunctionSpeed, b.nominalSpeed, prev.nominalSpeed});
   }
   blocks_.push_back(b);
   return true;
+}
+
+// planner.c plan_compute_profile_nominal_speed.
+double Planner::nominalSpeedOf(const Block& b) const {
+  constexpr double kMinimumRatePerS = 1.0 / 60.0;  // MINIMUM_FEED_RATE: 1 unit/min
+  double v = b.programmedRate;
+  if (b.rapid) {
+    v *= 0.01 * rapidOverridePct_;
+  } else {
+    if (!b.noFeedOverride) v *= 0.01 * feedOverridePct_;
+    v = std::min(v, b.rapidRate);
+  }
+  return std::max(v, kMinimumRatePerS);
+}
+
+void Planner::setOverrides(int feedPct, int rapidPct) {
+  feedOverridePct_ = feedPct;
+  rapidOverridePct_ = rapidPct;
+  for (size_t i = 0; i < blocks_.size(); ++i) {
+    Block& b = blocks_[i];
+    b.nominalSpeed = nominalSpeedOf(b);
+    if (i > 0)  // the front block runs from the current speed
+      b.maxEntrySpeed = std::min({b.maxJunctionSpeed, b.nominalSpeed, blocks_[i - 1].nominalSpeed});
+  }
 }
 
 // Backward pass over the queue: the highest speed the front block may have at its end so that
@@ -87,8 +117,9 @@ void Planner::step(double& timeLeftS, bool holding, const std::function<void(con
   const double h = std::min(timeLeftS, kStepS);
   const double vExit = exitSpeedOfCurrent();
   const double brake = std::sqrt(vExit * vExit + 2.0 * b.accel * remaining_);
-  double v = holding ? std::max(0.0, speed_ - b.accel * h)
-                     : std::min({speed_ + b.accel * h, b.nominalSpeed, brake});
+  double v = holding                  ? std::max(0.0, speed_ - b.accel * h)
+             : speed_ > b.nominalSpeed ? std::min(std::max(b.nominalSpeed, speed_ - b.accel * h), brake)
+                                       : std::min({speed_ + b.accel * h, b.nominalSpeed, brake});
   if (!holding) v = std::max(v, 0.5 * b.accel * h);  // never stall just before a block end
   const double ds = 0.5 * (speed_ + v) * h;
   speed_ = v;

@@ -25,7 +25,12 @@ struct Block {
   Axes3 target{};
   Axes3 unit{};            // direction, unit length
   double length = 0.0;     // board units
-  double nominalSpeed = 0.0;  // units/s
+  double nominalSpeed = 0.0;  // units/s, with the overrides (planner.c nominal speed)
+  double programmedRate = 0.0;  // units/s: the F word, or the rapid rate for G0
+  double rapidRate = 0.0;       // units/s: the highest speed $110-$112 allow along the block
+  double maxJunctionSpeed = 0.0;  // units/s: the junction-deviation limit with the previous block
+  bool rapid = false;             // G0: scaled by the rapid override
+  bool noFeedOverride = false;    // jogs and homing: not scaled by the feed override
   double accel = 0.0;         // units/s^2 along the block
   double maxEntrySpeed = 0.0; // junction limit with the previous block
   bool penDown = false;
@@ -51,8 +56,16 @@ class Planner {
   Axes3 quantize(const Axes3& target) const;
   // Appends a move from the end of the queue to `target` (quantised). rapid: at the axes' max
   // rates; otherwise at feedPerS, limited by them. Returns false for a zero-step move, which
-  // the firmware drops without a block.
-  bool add(const Axes3& target, double feedPerS, bool rapid, bool penDown, bool jog);
+  // the firmware drops without a block. Jogs and system motion (homing) ignore the feed
+  // override.
+  bool add(const Axes3& target, double feedPerS, bool rapid, bool penDown, bool jog,
+           bool systemMotion = false);
+  // GRBL 1.1h's feed and rapid override (percent): every queued block's nominal speed is
+  // recomputed (planner.c plan_update_velocity_profile_parameters: programmed rate x feed
+  // override, capped at the block's rapid rate; G0 at rapid rate x rapid override), and a block
+  // under way faster than its new nominal speed decelerates to it at its acceleration (stepper.c
+  // RAMP_DECEL_OVERRIDE). Later blocks are planned with these values.
+  void setOverrides(int feedPct, int rapidPct);
 
   // Advances machine time by dtS. holding: decelerate to rest and stay there. instant: every
   // block completes at once (a simulator that acknowledges at once). done(block) is called for
@@ -69,6 +82,7 @@ class Planner {
 
  private:
   double exitSpeedOfCurrent() const;
+  double nominalSpeedOf(const Block& b) const;
   void step(double& timeLeftS, bool holding, const std::function<void(const Block&)>& done);
   void finishCurrent(const std::function<void(const Block&)>& done);
 
@@ -77,6 +91,8 @@ class Planner {
   Axes3 position_{};
   double speed_ = 0.0;
   double remaining_ = 0.0;  // distance left in the front block
+  int feedOverridePct_ = 100;
+  int rapidOverridePct_ = 100;
 };
 
 }  // namespace fivebar::sim

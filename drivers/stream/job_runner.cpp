@@ -51,7 +51,6 @@ void JobRunner::start(std::size_t fromIndex, std::vector<std::string> preamble, 
   preamble_ = std::move(preamble);
   fromIndex_ = std::min(fromIndex, job_.lines.size());
   if (fromIndex_ > 0) lastCompleted_ = lastAcked_ = fromIndex_ - 1;
-  completedAtStart_ = fromIndex_;
   maxDwellS_ = 0.0;
   const auto dwellOf = [](const std::string& t) {
     if (t.find("G4") == std::string::npos) return 0.0;
@@ -99,7 +98,7 @@ void JobRunner::forgetInFlight() {
   // A reset or an alarm flushed the planner: acknowledged motions not known executed by now
   // never will be.
   pendingMotions_.clear();
-  ackedBlocks_ = completedBlocks_;
+  ackedBlocks_ = etaBlocks_ = completedBlocks_;
   inFlight_.clear();
   nextSeq_ = sequenceLength();  // nothing more of this run is sent
 }
@@ -146,7 +145,7 @@ void JobRunner::onAck(const grbl::Ack& ack) {
   if (unlockId_ && ack.id == *unlockId_) {
     unlockId_.reset();
     phase_ = StopPhase::None;
-    if (!ack.ok()) problem_ += " Unlock ($X) failed: " + grbl::describeError(ack.errorCode);
+    if (!ack.ok()) problem_ += " Unlock ('$X') failed: " + grbl::describeError(ack.errorCode);
     setState(RunState::Stopped);
     return;
   }
@@ -183,6 +182,10 @@ void JobRunner::onStatus(const grbl::StatusReport& r) {
   // keeps the resume point safe (never beyond what was drawn).
   int queued = r.plannerBlocksFree ? std::max(0, grbl::kPlannerBlocks - *r.plannerBlocksFree)
                                    : grbl::kPlannerBlocks;
+  // For the ETA, the best estimate: the blocks out of the planner have run but for the last
+  // ~10 ms segments of up to 5 of them.
+  const std::uint64_t outOfPlanner = ackedBlocks_ > std::uint64_t(queued) ? ackedBlocks_ - std::uint64_t(queued) : 0;
+  if (r.plannerBlocksFree) etaBlocks_ = std::max(etaBlocks_, outOfPlanner);
   if (r.state != MachineState::Idle) queued += grbl::kSegmentBufferBlocks;
   if (r.plannerBlocksFree || r.state != MachineState::Idle)
     markCompleted(ackedBlocks_ > std::uint64_t(queued) ? ackedBlocks_ - std::uint64_t(queued) : 0);
@@ -329,10 +332,29 @@ RunSnapshot JobRunner::snapshot() const {
   if (lastCompleted_) s.lastPenDownPoint = lastPenDownPoint(job_, *lastCompleted_);
   s.linesAcked = lastAcked_ ? *lastAcked_ + 1 : 0;
   s.linesCompleted = lastCompleted_ ? *lastCompleted_ + 1 : 0;
-  const double elapsed = nowS_ - startS_;
-  const std::size_t doneThisRun = s.linesCompleted > completedAtStart_ ? s.linesCompleted - completedAtStart_ : 0;
-  if (doneThisRun > 0 && elapsed > 0.0)
-    s.etaS = elapsed * double(s.totalLines - s.linesCompleted) / double(doneThisRun);
+  // The plan's time line, not a line-count extrapolation (which jumped 20 -> 81 -> 18 s on an
+  // 11 s job: lines take very different times).
+  if (timeline_.lineEndS.size() == job_.lines.size() && !job_.lines.empty()) {
+    // From the last line executed by the best estimate, not by the resume point's lower bound:
+    // the up to 5 blocks it keeps back for the stepper's segment buffer have run but for their
+    // last ~10 ms segments.
+    std::optional<std::size_t> executed = lastCompleted_;
+    for (const auto& [seq, blocks] : pendingMotions_) {
+      if (blocks > etaBlocks_) break;
+      if (const auto i = jobIndexAt(seq)) executed = std::max(executed.value_or(0), *i);
+    }
+    // Under the overrides the board reports: the job planned again at them, once per change.
+    const grbl::MotionOverrides ov = protocol_.reportedOverrides().value_or(grbl::MotionOverrides{});
+    if (ov == grbl::MotionOverrides{}) {
+      s.etaS = timeline_.remainingS(executed);
+    } else {
+      if (!overriddenFor_ || !(*overriddenFor_ == ov)) {
+        overridden_ = timeline_.overridden(ov);
+        overriddenFor_ = ov;
+      }
+      s.etaS = overridden_.remainingS(executed);
+    }
+  }
   return s;
 }
 

@@ -3,7 +3,7 @@
 // machine: progress by acknowledged line and by executed line (acknowledged motions minus the
 // planner blocks still queued, from the Bf field of status reports, or without Bf: minus the
 // planner's 15 blocks; while moving minus 5 more still in the stepper's segment buffer; all
-// executed once the board is Idle), ETA, a stall watchdog, hold (!) and resume
+// executed once the board is Idle), the ETA from the job's time line, a stall watchdog, hold (!) and resume
 // (~), the stop sequence (hold, wait for Hold:0, soft reset, wait for the banner, re-sync with a
 // status report, $X when the board is in alarm), and pausing with a plain explanation when an
 // error, an alarm, an unexpected reset or a disconnect happens. Pure logic: time comes in by
@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "gcode_job.hpp"
+#include "job_timeline.hpp"
 #include "drivers/protocol/grbl_protocol.hpp"
 
 namespace fivebar::stream {
@@ -42,7 +43,9 @@ struct RunSnapshot {
   std::optional<std::size_t> lastPenDownPoint;
   std::size_t linesAcked = 0;      // count, this run and before
   std::size_t linesCompleted = 0;  // count
-  double etaS = -1.0;              // < 0 unknown
+  // Machine time left (s): JobTimeline::remainingS of the last executed line, of the job planned
+  // at the overrides the board reports (JobTimeline::overridden); < 0 unknown (no time line).
+  double etaS = -1.0;
 };
 
 class JobRunner : public grbl::ProtocolListener {
@@ -60,6 +63,12 @@ class JobRunner : public grbl::ProtocolListener {
   JobRunner(const JobRunner&) = delete;
   JobRunner& operator=(const JobRunner&) = delete;
 
+  // The job's planned time line (timelineOf(job, profile)), from which snapshot() takes the ETA;
+  // without one the ETA is unknown.
+  void setTimeline(JobTimeline timeline) {
+    timeline_ = std::move(timeline);
+    overriddenFor_.reset();
+  }
   // Streams preamble, then job lines from `fromIndex` on.
   void start(std::size_t fromIndex, std::vector<std::string> preamble, double nowS);
   void hold();
@@ -101,6 +110,10 @@ class JobRunner : public grbl::ProtocolListener {
 
   grbl::GrblProtocol& protocol_;
   const GcodeJob& job_;
+  JobTimeline timeline_;
+  // Scratch of snapshot(): the time line at the overrides last reported (recomputed on a change).
+  mutable JobTimeline overridden_;
+  mutable std::optional<grbl::MotionOverrides> overriddenFor_;
   std::vector<std::string> preamble_;
   std::size_t fromIndex_ = 0;
   std::size_t nextSeq_ = 0;
@@ -108,6 +121,7 @@ class JobRunner : public grbl::ProtocolListener {
   std::deque<std::pair<std::size_t, std::uint64_t>> pendingMotions_;  // seq, cumulative blocks
   std::uint64_t ackedBlocks_ = 0;
   std::uint64_t completedBlocks_ = 0;
+  std::uint64_t etaBlocks_ = 0;  // blocks out of the planner by the last Bf: (the ETA's count)
   std::optional<std::size_t> lastAcked_;
   std::optional<std::size_t> lastCompleted_;
   std::optional<std::size_t> errorIndex_;  // first job line answered with error:N
@@ -120,7 +134,6 @@ class JobRunner : public grbl::ProtocolListener {
   double nowS_ = 0.0;
   double startS_ = 0.0;
   double deadlineS_ = 0.0;
-  std::size_t completedAtStart_ = 0;
   double lastAckS_ = 0.0;
   double maxDwellS_ = 0.0;  // longest G4 of the run: an Idle board answers it only when done
   double lastStatusS_ = 0.0;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "stream_session.hpp"
 
+#include "drivers/stream/job_timeline.hpp"
+
 #include <QFile>
 #include <algorithm>
 #include <cmath>
@@ -102,6 +104,9 @@ bool StreamSession::begin(std::string* error) {
     }
   }
   runner_ = std::make_unique<stream::JobRunner>(link_.protocol(), job_);
+  // The ETA (CLI progress lines, the studio's Run panel): the profile's GRBL time model of the
+  // job, under the overrides the board reports. Unknown without a profile.
+  if (options_.profile) runner_->setTimeline(stream::timelineOf(job_, *options_.profile));
   runner_->changed = [this] { onRunnerChanged(); };
   phase_ = Phase::Sync;
   poseSync_ = std::make_unique<grbl::PoseSync>(link_.protocol(), options_.syncTimeoutS);
@@ -160,8 +165,8 @@ void StreamSession::onTick(double nowS) {
     const std::string machine = options_.machineName.empty() ? "PROFILE" : options_.machineName;
     if (link_.protocol().state() == grbl::MachineState::Alarm) {
       refuse(StreamStop::Kind::Alarm,
-             "the machine is in alarm: check it, then unlock with 'fivebar send --port " + port +
-                 " $X' (or home with 'fivebar home') and stream again");
+             "the machine is in alarm: check it, then unlock with \"fivebar send --port " + port +
+                 " '$X'\" (or home with 'fivebar home') and stream again");
       return;
     }
     if (options_.checked && !link_.poseTrust().known()) {
@@ -208,9 +213,15 @@ void StreamSession::onTick(double nowS) {
     char buf[200];
     // The machine state shows an M0 pause or a hold from the board's own button (Hold: send ~).
     const std::string machine(grbl::toString(link_.protocol().state()));
+    // The ETA is the plan's time line under the board's overrides (JobRunner), shown with them
+    // when they are not 100 % (set from the board's own buttons or another sender).
+    std::string eta = s.etaS >= 0 ? ", ETA " + std::to_string(long(std::lround(s.etaS))) + " s" : "";
+    const auto ov = link_.protocol().reportedOverrides();
+    if (ov && !(*ov == grbl::MotionOverrides{}))
+      eta += " (feed " + std::to_string(ov->feedPct) + " %, rapid " + std::to_string(ov->rapidPct) + " %)";
     std::snprintf(buf, sizeof buf, "%s (machine %s): %zu/%zu lines acknowledged, %zu executed%s",
                   stream::toString(runner_->state()), machine.c_str(), s.linesAcked, s.totalLines, s.linesCompleted,
-                  s.etaS >= 0 ? (", ETA " + std::to_string(long(std::lround(s.etaS))) + " s").c_str() : "");
+                  eta.c_str());
     emit progress(QString::fromUtf8(buf));
     nextReportS_ = nowS + options_.reportEveryS;
   }

@@ -151,5 +151,18 @@ TEST(GrblParser, NumbersGrblNeverSendsAreNotAStatus) {
   EXPECT_EQ((*ok->overrides)[1], 25);
 }
 
+// Advice the CLI prints: a $X or $H in it is quoted, so pasting it into a shell sends "$X", not
+// the empty expansion of the shell variable X.
+TEST(GrblCodes, DollarCommandsInTheAdviceAreQuotedForTheShell) {
+  for (auto table : {errorCodes(), alarmCodes()})
+    for (const CodeInfo& c : table)
+      for (std::string_view text : {c.meaning, c.action})
+        for (std::size_t at = text.find('$'); at != std::string_view::npos; at = text.find('$', at + 1)) {
+          if (at + 1 < text.size() && (text[at + 1] == 'X' || text[at + 1] == 'H')) {
+            EXPECT_TRUE(at > 0 && text[at - 1] == '\'' && text.substr(at + 2, 1) == "'") << text;
+          }
+        }
+}
+
 }  // namespace
 }  // namespace fivebar::grbl

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "drivers/stream/job_runner.hpp"
+#include "drivers/stream/job_timeline.hpp"
 #include "drivers/check/machine_setup.hpp"
 #include "drivers/stream/job_progress.hpp"
 #include "sim_harness.hpp"
@@ -36,6 +37,7 @@ TEST(StockBoardProgress, ExecutedLinesEtaAndResumePointWithoutBf) {
   link.protocol.enqueue("$10=1");  // the firmware's default: MPos, no Bf:
   ASSERT_TRUE(link.runUntil([&] { return link.protocol.idleLink(); }, 1.0));
   stream::JobRunner r(link.protocol, f.job);
+  r.setTimeline(stream::timelineOf(f.job, f.p));
   r.start(0, {}, link.nowS);
   bool sawProgressWhileRunning = false, sawEta = false, sawBf = false;
   const double tol = 1.01 / f.p.motors.stepsPerDeg1;

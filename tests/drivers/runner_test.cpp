@@ -64,6 +64,8 @@ TEST(JobRunner, ExecutedProgressTrailsAcknowledgedProgress) {
   RunnerFixture f;
   SimLink link(f.p);
   stream::JobRunner r(link.protocol, f.job);
+  EXPECT_LT(r.snapshot().etaS, 0.0) << "no time line: the ETA is unknown";
+  r.setTimeline(stream::timelineOf(f.job, f.p));
   r.start(0, {}, 0.0);
   bool sawGap = false;
   link.runUntil([&] {

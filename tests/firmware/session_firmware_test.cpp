@@ -17,6 +17,7 @@
 #include "core/kinematics/units.hpp"
 #include "core/planning/planner.hpp"
 #include "firmware_support.hpp"
+#include "job_inputs.hpp"
 #include "session/machine_side.hpp"
 #include "tests/widgets/event_wait.hpp"
 
@@ -25,38 +26,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::waitUntil;
-
-// A planned job the inputs can swap (the drawing moved), as the studio's preview does.
-class JobInputs : public session::StudioInputs {
- public:
-  explicit JobInputs(MachineProfile profile) : profile_(std::move(profile)) {}
-  const MachineProfile& profile() const override { return profile_; }
-  QString drawingFileName() const override { return QStringLiteral("square.svg"); }
-  const PlannedJob* plannedJob() const override { return job_ ? &*job_ : nullptr; }
-  void plan(const Vec2& atMm) {
-    Layer l;
-    l.id = l.name = "ink";
-    for (int k = 0; k < 3; ++k) {
-      const double h = 12.0 - 3.0 * k;
-      l.paths.push_back({{{-h, -h}, {h, -h}, {h, h}, {-h, h}, {-h, -h}}, true});
-    }
-    Drawing d;
-    d.widthMm = d.heightMm = 24.0;
-    d.layers.push_back(l);
-    PlanOptions o;
-    o.atMm = atMm;
-    o.toleranceMm = 0.05;
-    const PlanResult r = planJob(d, profile_, o);
-    ASSERT_TRUE(r.ok()) << r.message;
-    job_ = r.job;
-    emit plannedJobChanged();
-    emit jobChanged();
-  }
-
- private:
-  MachineProfile profile_;
-  std::optional<PlannedJob> job_;
-};
+using test::JobInputs;
 
 enum class Backend { Firmware, OurSimulator };
 

@@ -10,6 +10,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QTemporaryDir>
+#include <QToolButton>
 #include <cmath>
 
 #include "core/kinematics/units.hpp"
@@ -20,6 +21,7 @@
 #include "widgets/document/preview_controller.hpp"
 #include "session/run_controller.hpp"
 #include "widgets/machine/run_layer.hpp"
+#include "widgets/machine/override_controls.hpp"
 #include "widgets/machine/run_panel.hpp"
 
 namespace fivebar {
@@ -254,6 +256,40 @@ TEST(RunPanel, EtaFollowsThePlanAndStandsStillOnHold) {
   ASSERT_TRUE(waitUntil([&] { return rig.run.etaS() < held; }, 20000));
   rig.run.stop();
   ASSERT_TRUE(waitUntil([&] { return !rig.run.running(); }, 20000));
+}
+
+// The override buttons send GRBL's real-time bytes through the session; the panel shows what
+// the board reports, and the ETA follows it.
+TEST(RunPanel, OverridesShowTheReportedValuesAndTheEtaFollowsThem) {
+  RunRig rig;
+  ASSERT_TRUE(rig.planned()) << rig.preview.result().message.toStdString();
+  ASSERT_TRUE(rig.connect(2.0));
+  ASSERT_TRUE(rig.waitIdle());
+  widgets::RunPanel panel(rig.run, rig.view, rig.session);
+  widgets::OverrideControls* ov = panel.overrideControls();
+  QAbstractButton* minus10 = ov->button(grbl::OverrideCommand::FeedMinus10);
+  EXPECT_FALSE(minus10->isEnabled()) << "only during a run";
+  ASSERT_TRUE(rig.run.start());
+  ASSERT_TRUE(waitUntil([&] { return rig.run.snapshot().lastCompleted && *rig.run.snapshot().lastCompleted > 10; }, 30000));
+  EXPECT_TRUE(minus10->isEnabled());
+  EXPECT_FALSE(minus10->shortcut().isEmpty());
+  const double before = rig.run.etaS();
+  for (int i = 0; i < 5; ++i) {
+    minus10->click();
+    waitUntil([] { return false; }, 30);
+  }
+  ov->button(grbl::OverrideCommand::RapidQuarter)->click();
+  ASSERT_TRUE(waitUntil([&] { return rig.session.reportedOverrides() == grbl::MotionOverrides{50, 25}; }, 5000));
+  waitUntil([] { return false; }, 2 * session::RunController::kRefreshMs);
+  EXPECT_EQ(ov->feedLabel()->text(), QStringLiteral("50 %"));
+  EXPECT_EQ(ov->rapidLabel()->text(), QStringLiteral("25 %"));
+  EXPECT_GT(rig.run.etaS(), 1.3 * before) << "the time left grows with a slower feed";
+  ov->button(grbl::OverrideCommand::FeedReset)->click();
+  ov->button(grbl::OverrideCommand::RapidFull)->click();
+  ASSERT_TRUE(waitUntil([&] { return rig.session.reportedOverrides() == grbl::MotionOverrides{100, 100}; }, 5000));
+  rig.run.stop();
+  ASSERT_TRUE(waitUntil([&] { return !rig.run.running(); }, 20000));
+  EXPECT_FALSE(minus10->isEnabled());
 }
 
 TEST(RunPanel, AlarmThenUnlockThenResumeFinishesAndNewJobsClearTheOldOverlay) {

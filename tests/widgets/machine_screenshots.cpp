@@ -5,6 +5,7 @@
 //   machine-pose-unknown.png  a board fresh from power-up: position unknown, no linkage drawn
 //   machine-start-refused.png ... and Start refuses, saying why and what to do
 //   machine-run.png      the demo job running, the executed part coloured on the canvas
+//   run-overrides.png    the Run panel during the run: feed 120 %, rapid 50 % as the board reports
 //   machine-goto.png     a go-to previewed on the canvas, waiting for confirmation
 //   machine-frame.png    Frame: the planned job's outline traced pen up (jog panel), and the
 //                        recovery bar (Reset, Unlock, Set reference pose) in the status bar
@@ -17,8 +18,10 @@
 #include <QApplication>
 #include <QMessageBox>
 #include <QTimer>
+#include <QToolButton>
 #include "drivers/stream/job_progress.hpp"
 #include "widgets/machine/machine_dialogs.hpp"
+#include "widgets/machine/override_controls.hpp"
 #include "widgets/machine/run_panel.hpp"
 #include <QPushButton>
 #include <QDir>
@@ -124,6 +127,22 @@ int main(int argc, char** argv) {
     return s.totalLines > 0 && s.linesCompleted * 100 >= s.totalLines * 45;
   }, 120000);
   if (!grab(window, outDir + QStringLiteral("/machine-run.png"))) status = 1;
+  // 1a. Overrides during the run: two clicks on +10 % and one on rapid 50 %; the panel shows
+  // what the board reports.
+  {
+    widgets::OverrideControls* ov = panels.runPanel()->overrideControls();
+    for (int i = 0; i < 2; ++i) {
+      ov->button(grbl::OverrideCommand::FeedPlus10)->click();
+      settle(60);
+    }
+    ov->button(grbl::OverrideCommand::RapidHalf)->click();
+    waitUntil([&] { return session.reportedOverrides() == grbl::MotionOverrides{120, 50}; }, 5000);
+    QDockWidget* dock = window.dock(QStringLiteral("dockRun"));
+    if (dock != nullptr) window.resizeDocks({dock}, {460}, Qt::Horizontal);
+    if (dock == nullptr || !grab(*dock, outDir + QStringLiteral("/run-overrides.png"), 600)) status = 1;
+    ov->button(grbl::OverrideCommand::FeedReset)->click();
+    ov->button(grbl::OverrideCommand::RapidFull)->click();
+  }
   // 1b. Quitting while it runs asks first ("Keep running" is the default; the grab rejects it).
   grabNextBox(QStringLiteral("quitWhileRunning"), outDir + QStringLiteral("/machine-quit-while-running.png"));
   window.close();

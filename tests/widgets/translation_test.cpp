@@ -58,6 +58,7 @@
 #include "app/studio/file_actions.hpp"
 #include "widgets/canvas/job_layer.hpp"
 #include "session/run_controller.hpp"
+#include "widgets/machine/override_controls.hpp"
 #include "widgets/machine/run_panel.hpp"
 #include "widgets/machine/alarm_strip.hpp"
 #include "widgets/machine/recovery_bar.hpp"
@@ -86,7 +87,7 @@ std::set<QString> runtimeContexts() {
         &ModePanel::staticMetaObject, &PlacementPanel::staticMetaObject,
         &PreviewPanel::staticMetaObject, &SpeedLegend::staticMetaObject,
         &ProfileEditor::staticMetaObject, &fivebar::session::RunController::staticMetaObject,
-        &RunPanel::staticMetaObject, &SimulationPanel::staticMetaObject,
+        &RunPanel::staticMetaObject, &OverrideControls::staticMetaObject, &SimulationPanel::staticMetaObject,
         &StudioDocument::staticMetaObject, &FillOptionsBox::staticMetaObject,
         &ImportWarningsPanel::staticMetaObject, &DesignDialog::staticMetaObject,
         &ParetoPlot::staticMetaObject, &fivebar::studio::LanguageMenu::staticMetaObject,

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/machine/run_panel.hpp"
 
+#include "widgets/machine/override_controls.hpp"
+
 #include <QMessageBox>
 
 #include "widgets/document/job_pipeline.hpp"
@@ -71,9 +73,12 @@ RunPanel::RunPanel(session::RunController& run, session::MachineView& view,
   bold.setBold(true);
   state_->setFont(bold);
   eta_ = new QLabel(this);
+  eta_->setToolTip(tr("Machine time left by the plan, planned again at the feed and rapid override "
+                      "the machine reports"));
   message_ = new QLabel(this);
   message_->setWordWrap(true);
   message_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  overrides_ = new OverrideControls(run_, this);
 
   auto* buttons = new QGridLayout;
   buttons->addWidget(start_, 0, 0);
@@ -95,6 +100,7 @@ RunPanel::RunPanel(session::RunController& run, session::MachineView& view,
   layout->addLayout(buttons);
   layout->addLayout(stateRow);
   layout->addWidget(progress_);
+  layout->addWidget(overrides_);
   layout->addWidget(message_);
   layout->addLayout(resumeRow);
   layout->addStretch(1);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The run panel: start, hold, continue and stop the planned job on the machine, a progress bar
-// with the executed lines and the time left, what happened when a run ended, and the offer to
+// The run panel: start, hold, continue and stop the planned job on the machine, feed and rapid
+// overrides (override_controls.hpp), a progress bar with the executed lines and the time left
+// (under the reported overrides), what happened when a run ended, and the offer to
 // resume an interrupted run (also after a restart: the progress file beside the job); an alarm
 // strip on top while the machine is in alarm.
 #pragma once
@@ -20,6 +21,7 @@ class QPushButton;
 namespace fivebar::widgets {
 
 class AlarmStrip;
+class OverrideControls;
 
 class RunPanel : public QWidget {
   Q_OBJECT
@@ -41,6 +43,7 @@ class RunPanel : public QWidget {
   QLabel* resumeLabel() const { return resumeInfo_; }
   // Shown while the machine is in alarm (widgets/machine/alarm_strip.hpp).
   AlarmStrip* alarmStrip() const { return alarm_; }
+  OverrideControls* overrideControls() const { return overrides_; }
   // What "Write the profile's settings..." in the settings question opens.
   void setOpenSettings(std::function<void()> open) { openSettings_ = std::move(open); }
 
@@ -69,6 +72,7 @@ class RunPanel : public QWidget {
   QLabel* eta_ = nullptr;
   QLabel* message_ = nullptr;
   AlarmStrip* alarm_ = nullptr;
+  OverrideControls* overrides_ = nullptr;
   std::function<void()> openSettings_;
 };
 
