@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The frame planned. Contract: frame.hpp.
 #include "session/frame.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Frame button as the session plans it: the job's outline (jog::planFrame: convex hull of
 // its pen-down points) traced pen up (a laser at low power) along checked joint-space moves from
 // where a new jog starts, read from the very G-code Start would stream, then cut by the board's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The board procedure. Contract: board_procedure.hpp.
 #include "board_procedure.hpp"
 

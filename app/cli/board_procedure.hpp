@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A short session with a GRBL board for the machine commands that move or declare (reference,
 // home, frame): read the board's pose (status report at rest, $# for the work offset, $$ when
 // its settings are wanted), let the command decide what to send, send it line by line (each

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fivebar frame: the job's outline traced pen up (a laser at low power) on the machine, by the
 // jog planner's checked joint-space moves (drivers/jog/jog.hpp planFrame), every line through
 // the one motion check from the board's real pose, so that the maker sees where the drawing

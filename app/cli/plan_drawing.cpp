@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The steps of `fivebar plan`, shared with `fivebar frame`. Contract: plan_drawing.hpp.
 #include "plan_drawing.hpp"
 

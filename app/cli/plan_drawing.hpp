@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The steps of `fivebar plan` on a drawing (SVG) or a project (.fivebar), shared by `plan` and
 // `frame` (a drawing framed is planned exactly as plan plans it): the placement options (--mode,
 // --at, --scale, --rotate, --fit, --tolerance, --no-optimise), the import options

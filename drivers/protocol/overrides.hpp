@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // GRBL 1.1h feed and rapid overrides: the real-time bytes (0x90-0x97) and what the firmware does
 // with them (protocol.c protocol_exec_rt_system, "Execute overrides"). Pure values, no I/O.
 //  - feed override: 100 % at reset, +-10 % (0x91 / 0x92), +-1 % (0x93 / 0x94), reset to 100 %

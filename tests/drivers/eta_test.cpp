@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The run ETA (JobRunner::snapshot().etaS: the job's time line, JobTimeline::remainingS, under
 // the reported overrides), the one `fivebar stream` prints and the studio's Run panel shows:
 // monotone while the job runs at the modelled rate, close to the machine time really left, and

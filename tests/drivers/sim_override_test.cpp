@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The simulated machine's feed and rapid overrides, as GRBL 1.1h applies them (protocol.c,
 // planner.c, report.c; drivers/protocol/overrides.hpp): the reported Ov: values, the limits, and
 // the timing of overridden moves (capped at $110/$111).

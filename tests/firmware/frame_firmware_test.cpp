@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `fivebar frame` on the REAL GRBL 1.1h firmware (../shared/tools/grbl-sim, every motor step each
 // millisecond, issue 26): a planned 80 x 60 mm rectangle with a circle inside, framed after
 // `fivebar setup --write` and `fivebar reference`. From the firmware's step trace: the spindle

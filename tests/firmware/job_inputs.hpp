@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studio's inputs for the session firmware tests: the maker plotter and a planned job of
 // three nested squares (24, 18, 12 mm) that the test can move, as the studio's preview does.
 #pragma once

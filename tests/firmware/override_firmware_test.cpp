@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Feed and rapid overrides sent by the studio's session (RunController::sendOverride, the Run
 // panel's buttons) to the REAL GRBL 1.1h firmware (../shared/tools/grbl-sim) and to our
 // simulated machine, which must answer alike (issue 26):

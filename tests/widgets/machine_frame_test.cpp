@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Frame (issue 26): the jog panel's Frame button traces the planned job's outline pen up on the
 // simulated machine, enabled only when connected with a known pose and a planned job; the
 // recovery bar (Reset, Unlock, Set reference pose) is there whenever a machine is connected,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The alarm strip: a red line saying that the machine is in alarm, what happened (the drivers'
 // code table) and where the way out is (Reset, Unlock, Set reference pose in the status bar and
 // the Machine panel's banner); shown only while the session reports an alarm. For panels that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Run panel's overrides: feed (-10, -1, 100 %, +1, +10 %) and rapid (25, 50, 100 %) during a
 // run, with keyboard shortcuts, and the values the board reports (its Ov: field), never the ones
 // last clicked. GRBL applies them at once to the moves queued on the board and caps every rate

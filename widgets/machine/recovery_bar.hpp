@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The recovery bar: Reset, Unlock ($X) and Set reference pose (Home ($H) on a machine with
 // homing switches) with the machine's state, always at hand while a machine is connected
 // (MachinePanels puts it in the window's status bar), whichever panel is in front. Hidden while
