@@ -118,7 +118,21 @@ void ObjectReader::finish() {
   for (const std::string& k : known_) expected += (expected.empty() ? "" : ", ") + k;
   for (auto it = object_.begin(); it != object_.end(); ++it) {
     if (known_.count(it.key())) continue;
-    const std::string path = pathOf(it.key().c_str());
+    // The key as written, an empty one as "" and control bytes as \xNN (found by
+    // fuzz/profile_json_fuzz.cpp: a key "" or "\u0000..." gave a message that began with nothing).
+    std::string key;
+    for (const char c : it.key()) {
+      if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+        static const char kHex[] = "0123456789abcdef";
+        key += "\\x";
+        key += kHex[(static_cast<unsigned char>(c) >> 4) & 0xf];
+        key += kHex[static_cast<unsigned char>(c) & 0xf];
+      } else {
+        key += c;
+      }
+    }
+    if (key.empty()) key = "\"\"";
+    const std::string path = path_.empty() ? key : path_ + "." + key;
     issues_.push_back({path, FB_TR("Profile", "%1 is not a known field (expected one of: %2)").arg(path).arg(expected)});
   }
 }

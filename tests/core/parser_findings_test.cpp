@@ -48,5 +48,23 @@ TEST(ParserFindings, AnIntegerBeyondEveryRangeIsOutOfRange) {
   EXPECT_TRUE(named);
 }
 
+// An empty key ("": 1) was reported as " is not a known field": a message that names nothing.
+TEST(ParserFindings, AnEmptyKeyIsNamedAsSuch) {
+  std::string json = toJson(*preset("maker-plotter"));
+  json.insert(json.find('{') + 1, "\"\": 1, ");
+  const ProfileLoad load = profileFromJson(json, "empty.json");
+  ASSERT_FALSE(load.profile.has_value());
+  ASSERT_FALSE(load.issues.empty());
+  EXPECT_EQ(load.issues.front().field, "\"\"");
+  EXPECT_EQ(load.issues.front().message.text().rfind("\"\" is not a known field", 0), 0u)
+      << load.issues.front().message.text();
+  // A key that starts with a NUL byte (JSON "\u0000mode") is shown with the byte escaped.
+  std::string nul = toJson(*preset("maker-plotter"));
+  nul.insert(nul.find('{') + 1, "\"\\u0000mode\": 1, ");
+  const ProfileLoad withNul = profileFromJson(nul, "nul.json");
+  ASSERT_FALSE(withNul.issues.empty());
+  EXPECT_EQ(withNul.issues.front().field, "\\x00mode");
+}
+
 }  // namespace
 }  // namespace fivebar
