@@ -2206,6 +2206,18 @@ Bestätigen Sie nur, wenn die Arme jetzt genau in dieser Stellung stehen. Stehen
         <source>yes</source>
         <translation>ja</translation>
     </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Bedeutung</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>(not a GRBL 1.1h setting)</source>
+        <translation>(keine Einstellung von GRBL 1.1h)</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachinePanels</name>
@@ -4790,6 +4802,145 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
     <message>
         <source>No permission to use %1: add your user to the group that owns it (usually dialout: sudo adduser $USER dialout), then log out and in again.</source>
         <translation>Keine Berechtigung für %1: Fügen Sie Ihren Benutzer der Gruppe hinzu, der der Anschluss gehört (meist dialout: sudo adduser $USER dialout), und melden Sie sich danach ab und wieder an.</translation>
+    </message>
+</context>
+<context>
+    <name>GrblSetting</name>
+    <message>
+        <source>Step pulse time</source>
+        <translation>Schrittimpulsdauer</translation>
+    </message>
+    <message>
+        <source>Step idle delay (255: motors always on)</source>
+        <translation>Verzögerung bis Motoren stromlos (255: immer an)</translation>
+    </message>
+    <message>
+        <source>Step pulse invert (bit mask)</source>
+        <translation>Schrittimpuls invertieren (Bitmaske)</translation>
+    </message>
+    <message>
+        <source>Direction invert (bit mask)</source>
+        <translation>Richtung invertieren (Bitmaske)</translation>
+    </message>
+    <message>
+        <source>Invert step enable pin (on/off)</source>
+        <translation>Enable-Pin invertieren (ein/aus)</translation>
+    </message>
+    <message>
+        <source>Invert limit pins (on/off)</source>
+        <translation>Endschalter-Pins invertieren (ein/aus)</translation>
+    </message>
+    <message>
+        <source>Invert probe pin (on/off)</source>
+        <translation>Tastereingang invertieren (ein/aus)</translation>
+    </message>
+    <message>
+        <source>Status report options (bit mask)</source>
+        <translation>Optionen des Statusberichts (Bitmaske)</translation>
+    </message>
+    <message>
+        <source>Junction deviation</source>
+        <translation>Übergangsabweichung (Junction Deviation)</translation>
+    </message>
+    <message>
+        <source>Arc tolerance</source>
+        <translation>Bogentoleranz</translation>
+    </message>
+    <message>
+        <source>Report in inches (on/off)</source>
+        <translation>Werte in Zoll melden (ein/aus)</translation>
+    </message>
+    <message>
+        <source>Soft limits (on/off)</source>
+        <translation>Software-Endlagen (ein/aus)</translation>
+    </message>
+    <message>
+        <source>Hard limits (on/off)</source>
+        <translation>Hardware-Endschalter (ein/aus)</translation>
+    </message>
+    <message>
+        <source>Homing cycle (on/off)</source>
+        <translation>Referenzfahrt (ein/aus)</translation>
+    </message>
+    <message>
+        <source>Homing direction invert (bit mask)</source>
+        <translation>Richtung der Referenzfahrt invertieren (Bitmaske)</translation>
+    </message>
+    <message>
+        <source>Homing locate feed rate</source>
+        <translation>Referenzfahrt: Vorschub beim Feinsuchen</translation>
+    </message>
+    <message>
+        <source>Homing search seek rate</source>
+        <translation>Referenzfahrt: Suchgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Homing switch debounce delay</source>
+        <translation>Referenzschalter: Entprellzeit</translation>
+    </message>
+    <message>
+        <source>Homing switch pull-off distance</source>
+        <translation>Referenzschalter: Freifahrweg</translation>
+    </message>
+    <message>
+        <source>Maximum spindle speed (largest S value)</source>
+        <translation>Maximale Spindeldrehzahl (größter S-Wert)</translation>
+    </message>
+    <message>
+        <source>Minimum spindle speed (smallest S value)</source>
+        <translation>Minimale Spindeldrehzahl (kleinster S-Wert)</translation>
+    </message>
+    <message>
+        <source>Laser mode (on/off)</source>
+        <translation>Lasermodus (ein/aus)</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) steps per degree</source>
+        <translation>Motor 1 (X): Schritte pro Grad</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) steps per degree</source>
+        <translation>Motor 2 (Y): Schritte pro Grad</translation>
+    </message>
+    <message>
+        <source>Z steps per mm</source>
+        <translation>Z: Schritte pro mm</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) maximum rate</source>
+        <translation>Motor 1 (X): Höchstgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) maximum rate</source>
+        <translation>Motor 2 (Y): Höchstgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Z maximum rate</source>
+        <translation>Z: Höchstgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) acceleration</source>
+        <translation>Motor 1 (X): Beschleunigung</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) acceleration</source>
+        <translation>Motor 2 (Y): Beschleunigung</translation>
+    </message>
+    <message>
+        <source>Z acceleration</source>
+        <translation>Z: Beschleunigung</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) maximum travel</source>
+        <translation>Motor 1 (X): maximaler Verfahrweg</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) maximum travel</source>
+        <translation>Motor 2 (Y): maximaler Verfahrweg</translation>
+    </message>
+    <message>
+        <source>Z maximum travel</source>
+        <translation>Z: maximaler Verfahrweg</translation>
     </message>
 </context>
 </TS>

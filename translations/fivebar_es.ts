@@ -2206,6 +2206,18 @@ Confirme solo si los brazos están ahora exactamente en esa pose. Si están en o
         <source>yes</source>
         <translation>sí</translation>
     </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Significado</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unidad</translation>
+    </message>
+    <message>
+        <source>(not a GRBL 1.1h setting)</source>
+        <translation>(no es un ajuste de GRBL 1.1h)</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachinePanels</name>
@@ -4790,6 +4802,145 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     <message>
         <source>No permission to use %1: add your user to the group that owns it (usually dialout: sudo adduser $USER dialout), then log out and in again.</source>
         <translation>Sin permiso para usar %1: añada su usuario al grupo propietario (normalmente dialout: sudo adduser $USER dialout) y luego cierre la sesión y vuelva a entrar.</translation>
+    </message>
+</context>
+<context>
+    <name>GrblSetting</name>
+    <message>
+        <source>Step pulse time</source>
+        <translation>Duración del pulso de paso</translation>
+    </message>
+    <message>
+        <source>Step idle delay (255: motors always on)</source>
+        <translation>Retardo de reposo de los motores (255: siempre activos)</translation>
+    </message>
+    <message>
+        <source>Step pulse invert (bit mask)</source>
+        <translation>Invertir pulsos de paso (máscara de bits)</translation>
+    </message>
+    <message>
+        <source>Direction invert (bit mask)</source>
+        <translation>Invertir dirección (máscara de bits)</translation>
+    </message>
+    <message>
+        <source>Invert step enable pin (on/off)</source>
+        <translation>Invertir pin de habilitación (sí/no)</translation>
+    </message>
+    <message>
+        <source>Invert limit pins (on/off)</source>
+        <translation>Invertir pines de final de carrera (sí/no)</translation>
+    </message>
+    <message>
+        <source>Invert probe pin (on/off)</source>
+        <translation>Invertir pin de sonda (sí/no)</translation>
+    </message>
+    <message>
+        <source>Status report options (bit mask)</source>
+        <translation>Opciones del informe de estado (máscara de bits)</translation>
+    </message>
+    <message>
+        <source>Junction deviation</source>
+        <translation>Desviación de unión</translation>
+    </message>
+    <message>
+        <source>Arc tolerance</source>
+        <translation>Tolerancia de arcos</translation>
+    </message>
+    <message>
+        <source>Report in inches (on/off)</source>
+        <translation>Informar en pulgadas (sí/no)</translation>
+    </message>
+    <message>
+        <source>Soft limits (on/off)</source>
+        <translation>Límites por software (sí/no)</translation>
+    </message>
+    <message>
+        <source>Hard limits (on/off)</source>
+        <translation>Límites por hardware (sí/no)</translation>
+    </message>
+    <message>
+        <source>Homing cycle (on/off)</source>
+        <translation>Ciclo de referencia (sí/no)</translation>
+    </message>
+    <message>
+        <source>Homing direction invert (bit mask)</source>
+        <translation>Invertir dirección de referencia (máscara de bits)</translation>
+    </message>
+    <message>
+        <source>Homing locate feed rate</source>
+        <translation>Referencia: velocidad de localización</translation>
+    </message>
+    <message>
+        <source>Homing search seek rate</source>
+        <translation>Referencia: velocidad de búsqueda</translation>
+    </message>
+    <message>
+        <source>Homing switch debounce delay</source>
+        <translation>Referencia: tiempo antirrebote del interruptor</translation>
+    </message>
+    <message>
+        <source>Homing switch pull-off distance</source>
+        <translation>Referencia: distancia de retirada</translation>
+    </message>
+    <message>
+        <source>Maximum spindle speed (largest S value)</source>
+        <translation>Velocidad máxima del husillo (mayor valor S)</translation>
+    </message>
+    <message>
+        <source>Minimum spindle speed (smallest S value)</source>
+        <translation>Velocidad mínima del husillo (menor valor S)</translation>
+    </message>
+    <message>
+        <source>Laser mode (on/off)</source>
+        <translation>Modo láser (sí/no)</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) steps per degree</source>
+        <translation>Motor 1 (X): pasos por grado</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) steps per degree</source>
+        <translation>Motor 2 (Y): pasos por grado</translation>
+    </message>
+    <message>
+        <source>Z steps per mm</source>
+        <translation>Z: pasos por mm</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) maximum rate</source>
+        <translation>Motor 1 (X): velocidad máxima</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) maximum rate</source>
+        <translation>Motor 2 (Y): velocidad máxima</translation>
+    </message>
+    <message>
+        <source>Z maximum rate</source>
+        <translation>Z: velocidad máxima</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) acceleration</source>
+        <translation>Motor 1 (X): aceleración</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) acceleration</source>
+        <translation>Motor 2 (Y): aceleración</translation>
+    </message>
+    <message>
+        <source>Z acceleration</source>
+        <translation>Z: aceleración</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) maximum travel</source>
+        <translation>Motor 1 (X): recorrido máximo</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) maximum travel</source>
+        <translation>Motor 2 (Y): recorrido máximo</translation>
+    </message>
+    <message>
+        <source>Z maximum travel</source>
+        <translation>Z: recorrido máximo</translation>
     </message>
 </context>
 </TS>

@@ -2206,6 +2206,18 @@ Confirmez seulement si les bras sont exactement dans cette pose. S'ils sont aill
         <source>yes</source>
         <translation>oui</translation>
     </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Signification</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unité</translation>
+    </message>
+    <message>
+        <source>(not a GRBL 1.1h setting)</source>
+        <translation>(pas un réglage de GRBL 1.1h)</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachinePanels</name>
@@ -4790,6 +4802,145 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     <message>
         <source>No permission to use %1: add your user to the group that owns it (usually dialout: sudo adduser $USER dialout), then log out and in again.</source>
         <translation>Pas d'autorisation pour utiliser %1 : ajoutez votre utilisateur au groupe qui le possède (en général dialout : sudo adduser $USER dialout), puis déconnectez-vous et reconnectez-vous.</translation>
+    </message>
+</context>
+<context>
+    <name>GrblSetting</name>
+    <message>
+        <source>Step pulse time</source>
+        <translation>Durée d’impulsion de pas</translation>
+    </message>
+    <message>
+        <source>Step idle delay (255: motors always on)</source>
+        <translation>Délai avant repos des moteurs (255 : toujours alimentés)</translation>
+    </message>
+    <message>
+        <source>Step pulse invert (bit mask)</source>
+        <translation>Inversion des impulsions de pas (masque de bits)</translation>
+    </message>
+    <message>
+        <source>Direction invert (bit mask)</source>
+        <translation>Inversion de direction (masque de bits)</translation>
+    </message>
+    <message>
+        <source>Invert step enable pin (on/off)</source>
+        <translation>Inverser la broche d’activation (oui/non)</translation>
+    </message>
+    <message>
+        <source>Invert limit pins (on/off)</source>
+        <translation>Inverser les broches de fin de course (oui/non)</translation>
+    </message>
+    <message>
+        <source>Invert probe pin (on/off)</source>
+        <translation>Inverser la broche de palpeur (oui/non)</translation>
+    </message>
+    <message>
+        <source>Status report options (bit mask)</source>
+        <translation>Options du rapport d’état (masque de bits)</translation>
+    </message>
+    <message>
+        <source>Junction deviation</source>
+        <translation>Déviation de jonction</translation>
+    </message>
+    <message>
+        <source>Arc tolerance</source>
+        <translation>Tolérance des arcs</translation>
+    </message>
+    <message>
+        <source>Report in inches (on/off)</source>
+        <translation>Rapport en pouces (oui/non)</translation>
+    </message>
+    <message>
+        <source>Soft limits (on/off)</source>
+        <translation>Limites logicielles (oui/non)</translation>
+    </message>
+    <message>
+        <source>Hard limits (on/off)</source>
+        <translation>Limites matérielles (oui/non)</translation>
+    </message>
+    <message>
+        <source>Homing cycle (on/off)</source>
+        <translation>Cycle de prise d’origine (oui/non)</translation>
+    </message>
+    <message>
+        <source>Homing direction invert (bit mask)</source>
+        <translation>Inversion du sens de prise d’origine (masque de bits)</translation>
+    </message>
+    <message>
+        <source>Homing locate feed rate</source>
+        <translation>Prise d’origine : vitesse de localisation</translation>
+    </message>
+    <message>
+        <source>Homing search seek rate</source>
+        <translation>Prise d’origine : vitesse de recherche</translation>
+    </message>
+    <message>
+        <source>Homing switch debounce delay</source>
+        <translation>Prise d’origine : anti-rebond des contacts</translation>
+    </message>
+    <message>
+        <source>Homing switch pull-off distance</source>
+        <translation>Prise d’origine : distance de dégagement</translation>
+    </message>
+    <message>
+        <source>Maximum spindle speed (largest S value)</source>
+        <translation>Vitesse de broche maximale (plus grande valeur S)</translation>
+    </message>
+    <message>
+        <source>Minimum spindle speed (smallest S value)</source>
+        <translation>Vitesse de broche minimale (plus petite valeur S)</translation>
+    </message>
+    <message>
+        <source>Laser mode (on/off)</source>
+        <translation>Mode laser (oui/non)</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) steps per degree</source>
+        <translation>Moteur 1 (X) : pas par degré</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) steps per degree</source>
+        <translation>Moteur 2 (Y) : pas par degré</translation>
+    </message>
+    <message>
+        <source>Z steps per mm</source>
+        <translation>Z : pas par mm</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) maximum rate</source>
+        <translation>Moteur 1 (X) : vitesse maximale</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) maximum rate</source>
+        <translation>Moteur 2 (Y) : vitesse maximale</translation>
+    </message>
+    <message>
+        <source>Z maximum rate</source>
+        <translation>Z : vitesse maximale</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) acceleration</source>
+        <translation>Moteur 1 (X) : accélération</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) acceleration</source>
+        <translation>Moteur 2 (Y) : accélération</translation>
+    </message>
+    <message>
+        <source>Z acceleration</source>
+        <translation>Z : accélération</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) maximum travel</source>
+        <translation>Moteur 1 (X) : course maximale</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) maximum travel</source>
+        <translation>Moteur 2 (Y) : course maximale</translation>
+    </message>
+    <message>
+        <source>Z maximum travel</source>
+        <translation>Z : course maximale</translation>
     </message>
 </context>
 </TS>

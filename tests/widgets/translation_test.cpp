@@ -101,7 +101,7 @@ std::set<QString> runtimeContexts() {
   for (const char* c : {"QObject", "main", "DocumentCommands", "JobPipeline", "MapPainter",
                         "WorkspaceLegend", "ImportWarningsPanel", "DesignPainter", "ImportWarning",
                         "fivebar::widgets::MachineDialogs", "fivebar::session::SettingsAdvice",
-                        "CalibrationWizard", "ProfileField",
+                        "CalibrationWizard", "ProfileField", "GrblSetting",
                         // the core's messages (core/support/message.hpp, widgets::translated)
                         "Placement", "Planner", "Preflight", "Safety", "Profile", "CalibrationFit",
                         "CalibrationPattern", "CalibrationScan", "CalibrationFile", "Design", "ImportError",
