@@ -4943,4 +4943,23 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
         <translation>Z: maximaler Verfahrweg</translation>
     </message>
 </context>
+<context>
+    <name>fivebar::widgets::calibration::RunProgressBox</name>
+    <message>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <source>Stop cleanly: feed hold, then reset with the position kept and the pen up</source>
+        <translation>Sauber anhalten: Vorschub anhalten, dann Reset mit gehaltener Position und angehobenem Stift</translation>
+    </message>
+    <message>
+        <source>%1 % (%2)</source>
+        <translation>%1 % (%2)</translation>
+    </message>
+    <message>
+        <source>%1 left</source>
+        <translation>noch %1</translation>
+    </message>
+</context>
 </TS>

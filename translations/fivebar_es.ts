@@ -4943,4 +4943,23 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
         <translation>Z: recorrido máximo</translation>
     </message>
 </context>
+<context>
+    <name>fivebar::widgets::calibration::RunProgressBox</name>
+    <message>
+        <source>Stop</source>
+        <translation>Detener</translation>
+    </message>
+    <message>
+        <source>Stop cleanly: feed hold, then reset with the position kept and the pen up</source>
+        <translation>Detener limpiamente: pausa del avance, luego reinicio conservando la posición y con la pluma levantada</translation>
+    </message>
+    <message>
+        <source>%1 % (%2)</source>
+        <translation>%1 % (%2)</translation>
+    </message>
+    <message>
+        <source>%1 left</source>
+        <translation>quedan %1</translation>
+    </message>
+</context>
 </TS>

@@ -4943,4 +4943,23 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
         <translation>Z : course maximale</translation>
     </message>
 </context>
+<context>
+    <name>fivebar::widgets::calibration::RunProgressBox</name>
+    <message>
+        <source>Stop</source>
+        <translation>Arrêter</translation>
+    </message>
+    <message>
+        <source>Stop cleanly: feed hold, then reset with the position kept and the pen up</source>
+        <translation>Arrêter proprement : arrêt de l’avance, puis réinitialisation en gardant la position, stylo levé</translation>
+    </message>
+    <message>
+        <source>%1 % (%2)</source>
+        <translation>%1 % (%2)</translation>
+    </message>
+    <message>
+        <source>%1 left</source>
+        <translation>%1 restant</translation>
+    </message>
+</context>
 </TS>

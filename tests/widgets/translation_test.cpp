@@ -25,6 +25,7 @@
 #include "app/studio/language_menu.hpp"
 #include "widgets/canvas/machine_layer.hpp"
 #include "widgets/calibration/distances_box.hpp"
+#include "widgets/calibration/run_progress_box.hpp"
 #include "widgets/calibration/sheet_layer.hpp"
 #include "widgets/calibration/sim_trace_layer.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
@@ -96,7 +97,7 @@ std::set<QString> runtimeContexts() {
         &calibration::DistancesBox::staticMetaObject, &calibration::SimTraceLayer::staticMetaObject,
         &calibration::SimulatedMachineDialog::staticMetaObject, &calibration::SimulatedTruth::staticMetaObject,
         &calibration::SimulatedTruthBadge::staticMetaObject, &calibration::TrueMachineForm::staticMetaObject,
-        &fivebar::session::BoardPreflight::staticMetaObject})
+        &fivebar::session::BoardPreflight::staticMetaObject, &calibration::RunProgressBox::staticMetaObject})
     names.insert(QString::fromLatin1(m->className()));
   for (const char* c : {"QObject", "main", "DocumentCommands", "JobPipeline", "MapPainter",
                         "WorkspaceLegend", "ImportWarningsPanel", "DesignPainter", "ImportWarning",
