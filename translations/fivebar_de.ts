@@ -4962,4 +4962,27 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
         <translation>noch %1</translation>
     </message>
 </context>
+<context>
+    <name>fivebar::studio::HelpMenu</name>
+    <message>
+        <source>&amp;First job guide</source>
+        <translation>&amp;Erster Auftrag: Anleitung</translation>
+    </message>
+    <message>
+        <source>Connect, load a drawing, place it, preview and run: step by step</source>
+        <translation>Verbinden, Zeichnung laden, platzieren, Vorschau ansehen und starten: Schritt für Schritt</translation>
+    </message>
+    <message>
+        <source>&amp;Documentation</source>
+        <translation>&amp;Dokumentation</translation>
+    </message>
+    <message>
+        <source>Documentation</source>
+        <translation>Dokumentation</translation>
+    </message>
+    <message>
+        <source>The documentation file %1 is not installed. It is also on the project's pages, in the docs folder.</source>
+        <translation>Die Dokumentationsdatei %1 ist nicht installiert. Sie steht auch auf den Seiten des Projekts, im Ordner docs.</translation>
+    </message>
+</context>
 </TS>

@@ -4962,4 +4962,27 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
         <translation>quedan %1</translation>
     </message>
 </context>
+<context>
+    <name>fivebar::studio::HelpMenu</name>
+    <message>
+        <source>&amp;First job guide</source>
+        <translation>Guía del &amp;primer trabajo</translation>
+    </message>
+    <message>
+        <source>Connect, load a drawing, place it, preview and run: step by step</source>
+        <translation>Conectar, cargar un dibujo, colocarlo, previsualizarlo y ejecutarlo: paso a paso</translation>
+    </message>
+    <message>
+        <source>&amp;Documentation</source>
+        <translation>&amp;Documentación</translation>
+    </message>
+    <message>
+        <source>Documentation</source>
+        <translation>Documentación</translation>
+    </message>
+    <message>
+        <source>The documentation file %1 is not installed. It is also on the project's pages, in the docs folder.</source>
+        <translation>El archivo de documentación %1 no está instalado. También está en las páginas del proyecto, en la carpeta docs.</translation>
+    </message>
+</context>
 </TS>

@@ -4962,4 +4962,27 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
         <translation>%1 restant</translation>
     </message>
 </context>
+<context>
+    <name>fivebar::studio::HelpMenu</name>
+    <message>
+        <source>&amp;First job guide</source>
+        <translation>Guide du &amp;premier travail</translation>
+    </message>
+    <message>
+        <source>Connect, load a drawing, place it, preview and run: step by step</source>
+        <translation>Connecter, charger un dessin, le placer, le prévisualiser et le lancer : pas à pas</translation>
+    </message>
+    <message>
+        <source>&amp;Documentation</source>
+        <translation>&amp;Documentation</translation>
+    </message>
+    <message>
+        <source>Documentation</source>
+        <translation>Documentation</translation>
+    </message>
+    <message>
+        <source>The documentation file %1 is not installed. It is also on the project's pages, in the docs folder.</source>
+        <translation>Le fichier de documentation %1 n’est pas installé. Il se trouve aussi sur les pages du projet, dans le dossier docs.</translation>
+    </message>
+</context>
 </TS>

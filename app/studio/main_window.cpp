@@ -18,6 +18,7 @@
 #include <QUndoStack>
 
 #include "app/studio/file_actions.hpp"
+#include "app/studio/help_menu.hpp"
 #include "app/studio/language_menu.hpp"
 #include "core/workspace/view_box.hpp"
 #include "widgets/calibration/calibration_install.hpp"
@@ -301,6 +302,7 @@ void MainWindow::createMenus() {
                           "planning, GRBL output.</p>")
                            .arg(QApplication::applicationVersion()));
   });
+  help_ = new HelpMenu(help, this);
 
   QToolBar* bar = addToolBar(tr("Main"));
   bar->setObjectName(QStringLiteral("toolbarMain"));

@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <set>
 
+#include "app/studio/help_menu.hpp"
 #include "app/studio/language_menu.hpp"
 #include "widgets/canvas/machine_layer.hpp"
 #include "widgets/calibration/distances_box.hpp"
@@ -97,7 +98,8 @@ std::set<QString> runtimeContexts() {
         &calibration::DistancesBox::staticMetaObject, &calibration::SimTraceLayer::staticMetaObject,
         &calibration::SimulatedMachineDialog::staticMetaObject, &calibration::SimulatedTruth::staticMetaObject,
         &calibration::SimulatedTruthBadge::staticMetaObject, &calibration::TrueMachineForm::staticMetaObject,
-        &fivebar::session::BoardPreflight::staticMetaObject, &calibration::RunProgressBox::staticMetaObject})
+        &fivebar::session::BoardPreflight::staticMetaObject, &calibration::RunProgressBox::staticMetaObject,
+        &fivebar::studio::HelpMenu::staticMetaObject})
     names.insert(QString::fromLatin1(m->className()));
   for (const char* c : {"QObject", "main", "DocumentCommands", "JobPipeline", "MapPainter",
                         "WorkspaceLegend", "ImportWarningsPanel", "DesignPainter", "ImportWarning",
