@@ -1569,6 +1569,10 @@ Planen und Zeichnen können sehr lange dauern. Trotzdem ganz importieren?</trans
         <source>Move the pen up to the profile's home pose by a checked move (the reference must be set)</source>
         <translation>Mit angehobenem Stift in einer geprüften Bewegung zur Grundstellung des Profils fahren (die Referenz muss gesetzt sein)</translation>
     </message>
+    <message>
+        <source>Speed</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::LayersPanel</name>

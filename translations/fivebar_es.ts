@@ -1569,6 +1569,10 @@ Planificarlo y plotearlo puede tardar mucho. ¿Importarlo entero de todos modos?
         <source>Move the pen up to the profile's home pose by a checked move (the reference must be set)</source>
         <translation>Ir con la pluma levantada a la posición de inicio del perfil mediante un movimiento comprobado (la referencia debe estar fijada)</translation>
     </message>
+    <message>
+        <source>Speed</source>
+        <translation>Velocidad</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::LayersPanel</name>

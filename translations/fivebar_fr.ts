@@ -1569,6 +1569,10 @@ La planification et le traçage peuvent être très longs. L'importer quand mêm
         <source>Move the pen up to the profile's home pose by a checked move (the reference must be set)</source>
         <translation>Amener le stylo relevé à la position d'origine du profil par un déplacement vérifié (la référence doit être définie)</translation>
     </message>
+    <message>
+        <source>Speed</source>
+        <translation>Vitesse</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::LayersPanel</name>

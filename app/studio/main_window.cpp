@@ -54,7 +54,7 @@ namespace {
 const char* const kGeometryKey = "window/geometry";
 const char* const kStateKey = "window/state";
 constexpr int kStateVersion = 1;
-constexpr int kBottomDockHeightPx = 130;
+constexpr int kBottomDockHeightPx = 160;
 constexpr int kSideDockWidthPx = 340;
 }  // namespace
 
@@ -205,6 +205,9 @@ StudioShell MainWindow::makeShell() {
 }
 
 void MainWindow::createDocks() {
+  // The side docks take the full height; the bottom dock (the console) spans the canvas only.
+  setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
+  setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
   auto* mode = addDock(new ModePanel(*doc_, *workspaceLayer_, *preview_, this),
                        tr("Workspace"), QStringLiteral("dockWorkspace"), Qt::LeftDockWidgetArea);
   placementPanel_ = new PlacementPanel(*doc_, this);
@@ -219,7 +222,7 @@ void MainWindow::createDocks() {
   auto* sim = addDock(new SimulationPanel(*simulation_, *doc_, this), tr("Simulation"),
                       QStringLiteral("dockSimulation"), Qt::RightDockWidgetArea);
   tabifyDockWidget(placement, layers);
-  resizeDocks({mode, placement, preview, sim}, {330, 420, 430, 330}, Qt::Vertical);
+  resizeDocks({mode, placement, preview, sim}, {330, 420, 500, 340}, Qt::Vertical);
   leftTabs_ = layers;
   rightTabs_ = sim;
   // Fills of the next import (widgets/panels/fill_options_box.hpp) next to the layers; the import

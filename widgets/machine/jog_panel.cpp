@@ -58,6 +58,12 @@ JogPanel::JogPanel(session::MachineView& view, session::JogPort& jog, session::R
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(8, 8, 8, 8);
   layout->addLayout(stepRow);
+  // The speed on a row of its own: beside the steps it is cut off in a side dock's width.
+  auto* speedRow = new QHBoxLayout;
+  speedRow->addWidget(new QLabel(tr("Speed"), this));
+  speedRow->addWidget(speed_);
+  speedRow->addStretch(1);
+  layout->addLayout(speedRow);
   layout->addWidget(confirmRow_);
   layout->addWidget(message_);
   layout->addLayout(grid);
@@ -130,7 +136,6 @@ QHBoxLayout* JogPanel::makeStepRow() {
   speed_->setSuffix(tr(" mm/s"));
   speed_->setValue(kDefaultSpeedMmPerS);
   speed_->setToolTip(tr("Speed of XY jogs"));
-  stepRow->addWidget(speed_);
   return stepRow;
 }
 
@@ -145,11 +150,16 @@ QHBoxLayout* JogPanel::makeToolRow() {
   penUp_->setToolTip(tr("Lift the pen (Page Up on the canvas)"));
   penDown_ = new QPushButton(tr("Pen down"), this);
   penDown_->setToolTip(tr("Lower the pen (Page Down on the canvas)"));
+  // Two columns of two: four buttons in one row do not fit a side dock in German or French.
   auto* toolRow = new QHBoxLayout;
-  toolRow->addWidget(home_);
-  toolRow->addWidget(goHome_);
-  toolRow->addWidget(penUp_);
-  toolRow->addWidget(penDown_);
+  auto* poses = new QVBoxLayout;
+  poses->addWidget(home_);
+  poses->addWidget(goHome_);
+  auto* pen = new QVBoxLayout;
+  pen->addWidget(penUp_);
+  pen->addWidget(penDown_);
+  toolRow->addLayout(poses);
+  toolRow->addLayout(pen);
   return toolRow;
 }
 

@@ -99,7 +99,7 @@ PreviewPanel::PreviewPanel(PreviewController& preview, JobLayer& layer, QWidget*
   problems_ = new QListWidget(this);
   problems_->setObjectName(QStringLiteral("previewProblems"));
   problems_->setWordWrap(true);
-  problems_->setMinimumHeight(160);  // room to read a problem and what to do about it
+  problems_->setMinimumHeight(110);  // room to read a problem and what to do about it
   layout->addWidget(problems_, 1);
 
   bySpeed_->setChecked(layer_.colourBySpeed());
