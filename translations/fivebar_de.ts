@@ -108,6 +108,14 @@
         <source>Change machine profile</source>
         <translation>Maschinenprofil ändern</translation>
     </message>
+    <message>
+        <source>Rotate drawing</source>
+        <translation>Zeichnung drehen</translation>
+    </message>
+    <message>
+        <source>Resize drawing</source>
+        <translation>Zeichnungsgröße ändern</translation>
+    </message>
 </context>
 <context>
     <name>ImportError</name>
@@ -1370,9 +1378,12 @@
         <source>Connect the machine first: its position is not known.</source>
         <translation>Verbinden Sie zuerst die Maschine: ihre Position ist nicht bekannt.</translation>
     </message>
-    <message>
-        <source>Go to %1, %2 mm? The dashed path is the pen's travel (%3 checked moves).</source>
-        <translation>Nach %1, %2 mm fahren? Der gestrichelte Weg ist die Fahrt des Stifts (%3 geprüfte Bewegungen).</translation>
+    <message numerus="yes">
+        <source>Go to %1, %2 mm? The dashed path is the pen's travel (%n checked move(s)).</source>
+        <translation>
+            <numerusform>Nach %1, %2 mm fahren? Der gestrichelte Weg ist die Fahrt des Stifts (%n geprüfte Bewegung).</numerusform>
+            <numerusform>Nach %1, %2 mm fahren? Der gestrichelte Weg ist die Fahrt des Stifts (%n geprüfte Bewegungen).</numerusform>
+        </translation>
     </message>
     <message>
         <source>Cannot go there: %1</source>
@@ -1942,9 +1953,12 @@ Bestätigen Sie nur, wenn die Arme jetzt genau in dieser Stellung stehen. Stehen
         <source>Jog refused: the machine is not idle, not connected or a job is running.</source>
         <translation>Verfahren abgelehnt: Die Maschine ist nicht bereit, nicht verbunden, oder ein Auftrag läuft.</translation>
     </message>
-    <message>
-        <source>%1 (jog in %2 checked moves)</source>
-        <translation>%1 (Verfahren in %2 geprüften Bewegungen)</translation>
+    <message numerus="yes">
+        <source>%1 (jog in %n checked move(s))</source>
+        <translation>
+            <numerusform>%1 (Verfahren in %n geprüften Bewegung)</numerusform>
+            <numerusform>%1 (Verfahren in %n geprüften Bewegungen)</numerusform>
+        </translation>
     </message>
     <message>
         <source>[soft reset]</source>
@@ -2268,6 +2282,22 @@ Anhalten, stoppen und beenden: Die Maschine hält sauber an und der Fortschritt 
     <message>
         <source>Keep running</source>
         <translation>Weiterlaufen lassen</translation>
+    </message>
+    <message>
+        <source>The job has ended</source>
+        <translation>Der Auftrag ist beendet</translation>
+    </message>
+    <message>
+        <source>The job &quot;%1&quot; has ended. Quit FiveBar Studio?</source>
+        <translation>Der Auftrag „%1“ ist beendet. FiveBar Studio beenden?</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Beenden</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
     </message>
 </context>
 <context>

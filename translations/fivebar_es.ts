@@ -108,6 +108,14 @@
         <source>Change machine profile</source>
         <translation>Cambiar perfil de máquina</translation>
     </message>
+    <message>
+        <source>Rotate drawing</source>
+        <translation>Girar el dibujo</translation>
+    </message>
+    <message>
+        <source>Resize drawing</source>
+        <translation>Cambiar el tamaño del dibujo</translation>
+    </message>
 </context>
 <context>
     <name>ImportError</name>
@@ -1370,9 +1378,12 @@
         <source>Connect the machine first: its position is not known.</source>
         <translation>Conecta primero la máquina: su posición es desconocida.</translation>
     </message>
-    <message>
-        <source>Go to %1, %2 mm? The dashed path is the pen's travel (%3 checked moves).</source>
-        <translation>¿Ir a %1, %2 mm? El trazo discontinuo es el recorrido de la pluma (%3 movimientos comprobados).</translation>
+    <message numerus="yes">
+        <source>Go to %1, %2 mm? The dashed path is the pen's travel (%n checked move(s)).</source>
+        <translation>
+            <numerusform>¿Ir a %1, %2 mm? El trazo discontinuo es el recorrido de la pluma (%n movimiento comprobado).</numerusform>
+            <numerusform>¿Ir a %1, %2 mm? El trazo discontinuo es el recorrido de la pluma (%n movimientos comprobados).</numerusform>
+        </translation>
     </message>
     <message>
         <source>Cannot go there: %1</source>
@@ -1942,9 +1953,12 @@ Confirme solo si los brazos están ahora exactamente en esa pose. Si están en o
         <source>Jog refused: the machine is not idle, not connected or a job is running.</source>
         <translation>Movimiento rechazado: la máquina no está en reposo, no está conectada o hay un trabajo en curso.</translation>
     </message>
-    <message>
-        <source>%1 (jog in %2 checked moves)</source>
-        <translation>%1 (movimiento en %2 pasos comprobados)</translation>
+    <message numerus="yes">
+        <source>%1 (jog in %n checked move(s))</source>
+        <translation>
+            <numerusform>%1 (movimiento en %n paso comprobado)</numerusform>
+            <numerusform>%1 (movimiento en %n pasos comprobados)</numerusform>
+        </translation>
     </message>
     <message>
         <source>[soft reset]</source>
@@ -2268,6 +2282,22 @@ Pausar, detener y salir: la máquina se detiene limpiamente y el progreso se gua
     <message>
         <source>Keep running</source>
         <translation>Seguir ejecutando</translation>
+    </message>
+    <message>
+        <source>The job has ended</source>
+        <translation>El trabajo ha terminado</translation>
+    </message>
+    <message>
+        <source>The job &quot;%1&quot; has ended. Quit FiveBar Studio?</source>
+        <translation>El trabajo «%1» ha terminado. ¿Salir de FiveBar Studio?</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Salir</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
     </message>
 </context>
 <context>

@@ -108,6 +108,14 @@
         <source>Change machine profile</source>
         <translation>Changer le profil de machine</translation>
     </message>
+    <message>
+        <source>Rotate drawing</source>
+        <translation>Faire pivoter le dessin</translation>
+    </message>
+    <message>
+        <source>Resize drawing</source>
+        <translation>Redimensionner le dessin</translation>
+    </message>
 </context>
 <context>
     <name>ImportError</name>
@@ -1370,9 +1378,12 @@
         <source>Connect the machine first: its position is not known.</source>
         <translation>Connectez d'abord la machine : sa position est inconnue.</translation>
     </message>
-    <message>
-        <source>Go to %1, %2 mm? The dashed path is the pen's travel (%3 checked moves).</source>
-        <translation>Aller à %1, %2 mm ? Le tracé en pointillés est le trajet du stylo (%3 mouvements vérifiés).</translation>
+    <message numerus="yes">
+        <source>Go to %1, %2 mm? The dashed path is the pen's travel (%n checked move(s)).</source>
+        <translation>
+            <numerusform>Aller à %1, %2 mm ? Le tracé en pointillés est le trajet du stylo (%n mouvement vérifié).</numerusform>
+            <numerusform>Aller à %1, %2 mm ? Le tracé en pointillés est le trajet du stylo (%n mouvements vérifiés).</numerusform>
+        </translation>
     </message>
     <message>
         <source>Cannot go there: %1</source>
@@ -1942,9 +1953,12 @@ Confirmez seulement si les bras sont exactement dans cette pose. S'ils sont aill
         <source>Jog refused: the machine is not idle, not connected or a job is running.</source>
         <translation>Déplacement refusé : la machine n'est pas au repos, pas connectée, ou une tâche est en cours.</translation>
     </message>
-    <message>
-        <source>%1 (jog in %2 checked moves)</source>
-        <translation>%1 (déplacement en %2 mouvements vérifiés)</translation>
+    <message numerus="yes">
+        <source>%1 (jog in %n checked move(s))</source>
+        <translation>
+            <numerusform>%1 (déplacement en %n mouvement vérifié)</numerusform>
+            <numerusform>%1 (déplacement en %n mouvements vérifiés)</numerusform>
+        </translation>
     </message>
     <message>
         <source>[soft reset]</source>
@@ -2268,6 +2282,22 @@ Pause, arrêter et quitter : la machine s'arrête proprement et la progression e
     <message>
         <source>Keep running</source>
         <translation>Continuer</translation>
+    </message>
+    <message>
+        <source>The job has ended</source>
+        <translation>La tâche est terminée</translation>
+    </message>
+    <message>
+        <source>The job &quot;%1&quot; has ended. Quit FiveBar Studio?</source>
+        <translation>La tâche « %1 » est terminée. Quitter FiveBar Studio ?</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Quitter</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
     </message>
 </context>
 <context>

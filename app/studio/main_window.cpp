@@ -266,8 +266,14 @@ void MainWindow::createMenus() {
   QMenu* edit = editMenu_ = menuBar()->addMenu(tr("&Edit"));
   QAction* undo = doc_->undoStack()->createUndoAction(this, tr("&Undo"));
   undo->setShortcut(QKeySequence::Undo);
+  undo->setObjectName(QStringLiteral("actionUndo"));
   QAction* redo = doc_->undoStack()->createRedoAction(this, tr("&Redo"));
-  redo->setShortcut(QKeySequence::Redo);
+  // Both usual redo keys on every platform (the platform's own first, for the menu's label).
+  QList<QKeySequence> redoKeys = QKeySequence::keyBindings(QKeySequence::Redo);
+  for (const QKeySequence& k : {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)})
+    if (!redoKeys.contains(k)) redoKeys << k;
+  redo->setShortcuts(redoKeys);
+  redo->setObjectName(QStringLiteral("actionRedo"));
   edit->addAction(undo);
   edit->addAction(redo);
   edit->addSeparator();

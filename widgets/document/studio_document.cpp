@@ -57,6 +57,9 @@ WorkingMode StudioDocument::effectiveMode() const {
 void StudioDocument::replaceDrawing(Drawing drawing, const QString& fileName,
                                     const Placement& placement, const job::DrawingSource& source) {
   undo_.push(new ReplaceDrawingCommand(*this, std::move(drawing), fileName, placement, source));
+  // Opening a drawing is not a change to save: the file is on disk as it was read. The state
+  // after the import counts as clean (undoing the import is a change, as any undo is).
+  undo_.setClean();
 }
 
 void StudioDocument::setPlacement(const Placement& placement, int gestureId) {

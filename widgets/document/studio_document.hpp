@@ -58,6 +58,7 @@ class StudioDocument : public QObject {
   // Replaces the drawing (an import) and places it; the document becomes a new untitled project
   // (projectPath() empty: Save asks for a name), undone it is the project it was. By value: an
   // import moves its drawing in (hundreds of thousands of paths are not copied on the UI thread).
+  // The imported state counts as unmodified (isModified() false until the next edit).
   void replaceDrawing(Drawing drawing, const QString& fileName, const Placement& placement,
                       const job::DrawingSource& source = {});
   // Sets the placement. Calls with the same non-zero `gestureId` merge into one undo step (a

@@ -196,6 +196,7 @@ void JogPanel::connectControls() {
   connect(cancel_, &QPushButton::clicked, &goTo_, &GoToTool::cancel);
   connect(&goTo_, &GoToTool::picked, this, &JogPanel::onPicked);
   connect(&goTo_, &GoToTool::cleared, confirmRow_, &QWidget::hide);
+  connect(&goTo_, &GoToTool::moveSent, goToButton_, [this] { goToButton_->setChecked(false); });
   connect(&goTo_, &GoToTool::repaintNeeded, this, [this] {
     if (canvas_) canvas_->update();
   });
