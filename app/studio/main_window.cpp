@@ -222,7 +222,7 @@ void MainWindow::createDocks() {
   auto* sim = addDock(new SimulationPanel(*simulation_, *doc_, this), tr("Simulation"),
                       QStringLiteral("dockSimulation"), Qt::RightDockWidgetArea);
   tabifyDockWidget(placement, layers);
-  resizeDocks({mode, placement, preview, sim}, {330, 420, 500, 340}, Qt::Vertical);
+  resizeDocks({mode, placement, preview, sim}, {330, 420, 515, 325}, Qt::Vertical);
   leftTabs_ = layers;
   rightTabs_ = sim;
   // Fills of the next import (widgets/panels/fill_options_box.hpp) next to the layers; the import
