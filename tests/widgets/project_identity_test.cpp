@@ -149,7 +149,8 @@ TEST(ProjectIdentity, UnsavedProjectChangesAreAskedAboutBeforeAnSvgReplacesThem)
   ASSERT_TRUE(openThroughFileMenu(w, files.otherSvg));
   EXPECT_EQ(w.windowTitle(), titleOfUntitled(files.otherSvg));
   EXPECT_TRUE(slurp(files.project) == files.projectBytes);
-  // The untitled project's own question names the drawing it was made from.
+  // The untitled project's own question (once it is edited) names the drawing it was made from.
+  w.document().setLayerVisible(0, false);
   answer = QMessageBox::Cancel;
   EXPECT_FALSE(openThroughFileMenu(w, files.project));
   EXPECT_TRUE(question.contains(QStringLiteral("other.svg"))) << question.toStdString();
