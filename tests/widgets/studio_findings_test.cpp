@@ -8,9 +8,11 @@
 #include <QAction>
 #include <QFile>
 #include <QFileInfo>
+#include <QImage>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPainter>
 #include <QTranslator>
 #include <QUndoStack>
 
@@ -21,6 +23,9 @@
 #include "session/machine_session.hpp"
 #include "tests/widgets/event_wait.hpp"
 #include "widgets/document/import_controller.hpp"
+#include "paint/studio_palette.hpp"
+#include "paint/view_transform.hpp"
+#include "widgets/canvas/path_scene.hpp"
 #include "widgets/document/job_pipeline.hpp"
 #include "widgets/document/preview_controller.hpp"
 #include "widgets/document/studio_document.hpp"
@@ -131,6 +136,42 @@ TEST(StudioFindings, EnglishSaysOneCheckedMoveNotOneCheckedMoves) {
   EXPECT_EQ(widgets::MachineSettingsDialog::tr("%n setting(s) differ from the profile.", nullptr, 1),
             QStringLiteral("1 setting differs from the profile."));
   QCoreApplication::removeTranslator(&plurals);
+}
+
+// Only the offending path turns red on the canvas, not its whole layer.
+TEST(StudioFindings, OnlyTheOffendingPathIsRed) {
+  Layer layer;
+  layer.id = layer.name = "ink";
+  layer.paths.push_back({{Vec2(-5.0, 0.0), Vec2(5.0, 0.0)}});      // reachable
+  layer.paths.push_back({{Vec2(-5.0, 20.0), Vec2(5.0, 20.0)}});    // reachable
+  layer.paths.push_back({{Vec2(-5.0, 300.0), Vec2(5.0, 300.0)}});  // far out of reach
+  auto drawing = std::make_shared<Drawing>();
+  drawing->layers.push_back(layer);
+  widgets::PipelineInput input;
+  input.drawing = drawing;
+  input.placement.centerMm = Vec2(0.0, 250.0);  // the paths at y = 100, 120 and 400 mm
+  input.profile = *preset("maker-plotter");
+  input.modeSelection = WorkingMode::PlusPlus;
+  const widgets::PreviewResult r = widgets::runPipeline(input);
+  ASSERT_EQ(r.status, widgets::PreviewStatus::Infeasible) << r.message.toStdString();
+  for (const widgets::PreviewProblem& p : r.problems) EXPECT_EQ(p.pathIndex, 2) << p.text.toStdString();
+  ASSERT_TRUE(r.drawingScene);
+  const paint::ViewTransform view(QPointF(0.0, 250.0), 1.0, QSizeF(400.0, 400.0));
+  QImage image(400, 400, QImage::Format_ARGB32_Premultiplied);
+  image.fill(Qt::transparent);
+  {
+    QPainter painter(&image);
+    r.drawingScene->paint(painter, view, widgets::ScenePaintOptions{});
+  }
+  const QRgb red = paint::palette::problem().rgb();
+  const auto colourAt = [&](double yMm) {  // the path's middle pixel
+    const QPointF px = view.widgetFromMachine(QPointF(0.0, yMm));
+    return image.pixelColor(px.toPoint()).rgb();
+  };
+  EXPECT_EQ(colourAt(400.0), red);
+  EXPECT_NE(colourAt(100.0), red);
+  EXPECT_NE(colourAt(120.0), red);
+  EXPECT_NE(qAlpha(colourAt(100.0)), 0) << "the reachable path is drawn";
 }
 
 TEST(StudioFindings, HelpMenuOpensTheDocumentationAndTheFirstJobGuide) {
