@@ -236,9 +236,8 @@ bool MachineSession::sendJog(const jog::JogPlan& plan) {
   for (const std::string& line : plan.lines) motion::applyLine(line, motion::interpretLine(line, modal), modal);
   consoleAbsolute_ = modal.absolute;
   if (!logEach)
-    emit consoleLine(tr("%1 (jog in %2 checked moves)")
-                         .arg(QString::fromStdString(plan.lines.back()))
-                         .arg(plan.lines.size()),
+    emit consoleLine(tr("%1 (jog in %n checked move(s))", nullptr, int(plan.lines.size()))
+                         .arg(QString::fromStdString(plan.lines.back())),
                      ConsoleKind::Sent);
   return true;
 }

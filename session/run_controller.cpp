@@ -4,6 +4,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QLocale>
 #include <QSaveFile>
 #include <QStandardPaths>
 
@@ -13,6 +14,9 @@
 
 namespace fivebar::session {
 namespace {
+
+// A count of lines as the user reads it: 12,345 (12.345 in German).
+QString count(std::uint64_t n) { return QLocale().toString(qulonglong(n)); }
 
 QString defaultJobDirectory() {
   const QString base = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
@@ -74,7 +78,7 @@ QString RunController::resumeOffer() const {
   if (!saved) return {};
   // The saved line is a file line; count it in job lines, like the progress counter.
   // One count everywhere: the executed job lines, as the progress bar and the stop say it.
-  const QString where = tr("line %1 of %2").arg(saved->linesDone).arg(saved->totalLines);
+  const QString where = tr("line %1 of %2").arg(count(saved->linesDone), count(saved->totalLines));
   QString offer = tr("The run of \"%1\" was interrupted after %2: %3")
                       .arg(drawingName(), where, guiMessage(QString::fromStdString(saved->reason)));
   if (inputs_.plannedJob() != nullptr && !planMatchesSaved())
@@ -107,7 +111,7 @@ bool RunController::planMatchesSaved() const {
 
 QString RunController::progressText() const {
   const std::size_t done = snapshot_.lastCompleted ? *snapshot_.lastCompleted + 1 : 0;
-  return tr("line %1 of %2").arg(done).arg(snapshot_.totalLines);
+  return tr("line %1 of %2").arg(count(done), count(snapshot_.totalLines));
 }
 
 // The alarm's explanation is the banner's (shown there once): the run panel says what to do.
@@ -144,13 +148,13 @@ QString RunController::stopMessage(bool ok, const QString& message) const {
     case StreamStop::Kind::Interrupted:
       if (stop.linesDone == 0 && !stop.progressSaved) return tr("Stopped before the first move: nothing was sent.");
       return (stop.penLifted ? tr("Stopped after line %1 of %2; the pen is up and the machine at rest.")
-                             : tr("Stopped after line %1 of %2; the pen could not be lifted.")).arg(stop.linesDone).arg(stop.totalLines) +
+                             : tr("Stopped after line %1 of %2; the pen could not be lifted.")).arg(count(stop.linesDone), count(stop.totalLines)) +
              QLatin1Char(' ') + tr("The progress is saved: press Resume to continue.");
     case StreamStop::Kind::RunProblem:
       if (session_.problem().kind == MachineProblem::Kind::Alarm) return alarmMessage();
       return tr("Stopped after line %1 of %2: %3 The progress is saved: press Resume to continue.")
-          .arg(stop.linesDone)
-          .arg(stop.totalLines)
+          .arg(count(stop.linesDone))
+          .arg(count(stop.totalLines))
           .arg(QString::fromStdString(stop.problem));
     default: return guiMessage(message);
   }

@@ -108,6 +108,14 @@
         <source>Change machine profile</source>
         <translation>Maschinenprofil ändern</translation>
     </message>
+    <message>
+        <source>Rotate drawing</source>
+        <translation>Zeichnung drehen</translation>
+    </message>
+    <message>
+        <source>Resize drawing</source>
+        <translation>Zeichnungsgröße ändern</translation>
+    </message>
 </context>
 <context>
     <name>ImportError</name>
@@ -1370,9 +1378,12 @@
         <source>Connect the machine first: its position is not known.</source>
         <translation>Verbinden Sie zuerst die Maschine: ihre Position ist nicht bekannt.</translation>
     </message>
-    <message>
-        <source>Go to %1, %2 mm? The dashed path is the pen's travel (%3 checked moves).</source>
-        <translation>Nach %1, %2 mm fahren? Der gestrichelte Weg ist die Fahrt des Stifts (%3 geprüfte Bewegungen).</translation>
+    <message numerus="yes">
+        <source>Go to %1, %2 mm? The dashed path is the pen's travel (%n checked move(s)).</source>
+        <translation>
+            <numerusform>Nach %1, %2 mm fahren? Der gestrichelte Weg ist die Fahrt des Stifts (%n geprüfte Bewegung).</numerusform>
+            <numerusform>Nach %1, %2 mm fahren? Der gestrichelte Weg ist die Fahrt des Stifts (%n geprüfte Bewegungen).</numerusform>
+        </translation>
     </message>
     <message>
         <source>Cannot go there: %1</source>
@@ -1580,6 +1591,10 @@ Planen und Zeichnen können sehr lange dauern. Trotzdem ganz importieren?</trans
     <message>
         <source>Move the pen up to the profile's home pose by a checked move (the reference must be set)</source>
         <translation>Mit angehobenem Stift in einer geprüften Bewegung zur Grundstellung des Profils fahren (die Referenz muss gesetzt sein)</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Geschwindigkeit</translation>
     </message>
 </context>
 <context>
@@ -1966,9 +1981,12 @@ Bestätigen Sie nur, wenn die Arme jetzt genau in dieser Stellung stehen. Stehen
         <source>Jog refused: the machine is not idle, not connected or a job is running.</source>
         <translation>Verfahren abgelehnt: Die Maschine ist nicht bereit, nicht verbunden, oder ein Auftrag läuft.</translation>
     </message>
-    <message>
-        <source>%1 (jog in %2 checked moves)</source>
-        <translation>%1 (Verfahren in %2 geprüften Bewegungen)</translation>
+    <message numerus="yes">
+        <source>%1 (jog in %n checked move(s))</source>
+        <translation>
+            <numerusform>%1 (Verfahren in %n geprüften Bewegung)</numerusform>
+            <numerusform>%1 (Verfahren in %n geprüften Bewegungen)</numerusform>
+        </translation>
     </message>
     <message>
         <source>[soft reset]</source>
@@ -2266,6 +2284,18 @@ Bestätigen Sie nur, wenn die Arme jetzt genau in dieser Stellung stehen. Stehen
         <source>yes</source>
         <translation>ja</translation>
     </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Bedeutung</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>(not a GRBL 1.1h setting)</source>
+        <translation>(keine Einstellung von GRBL 1.1h)</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachinePanels</name>
@@ -2312,6 +2342,22 @@ Anhalten, stoppen und beenden: Die Maschine hält sauber an und der Fortschritt 
     <message>
         <source>Keep running</source>
         <translation>Weiterlaufen lassen</translation>
+    </message>
+    <message>
+        <source>The job has ended</source>
+        <translation>Der Auftrag ist beendet</translation>
+    </message>
+    <message>
+        <source>The job &quot;%1&quot; has ended. Quit FiveBar Studio?</source>
+        <translation>Der Auftrag „%1“ ist beendet. FiveBar Studio beenden?</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Beenden</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
     </message>
 </context>
 <context>
@@ -4999,6 +5045,184 @@ Start zeichnet „%2“ von vorn und verwirft diesen gespeicherten Fortschritt. 
     <message>
         <source>Reset, Unlock and Set reference pose are in the status bar and the Machine panel.</source>
         <translation>Zurücksetzen, Entsperren und Referenzpose setzen finden Sie in der Statusleiste und im Maschinen-Bereich.</translation>
+    <name>GrblSetting</name>
+    <message>
+        <source>Step pulse time</source>
+        <translation>Schrittimpulsdauer</translation>
+    </message>
+    <message>
+        <source>Step idle delay (255: motors always on)</source>
+        <translation>Verzögerung bis Motoren stromlos (255: immer an)</translation>
+    </message>
+    <message>
+        <source>Step pulse invert (bit mask)</source>
+        <translation>Schrittimpuls invertieren (Bitmaske)</translation>
+    </message>
+    <message>
+        <source>Direction invert (bit mask)</source>
+        <translation>Richtung invertieren (Bitmaske)</translation>
+    </message>
+    <message>
+        <source>Invert step enable pin (on/off)</source>
+        <translation>Enable-Pin invertieren (ein/aus)</translation>
+    </message>
+    <message>
+        <source>Invert limit pins (on/off)</source>
+        <translation>Endschalter-Pins invertieren (ein/aus)</translation>
+    </message>
+    <message>
+        <source>Invert probe pin (on/off)</source>
+        <translation>Tastereingang invertieren (ein/aus)</translation>
+    </message>
+    <message>
+        <source>Status report options (bit mask)</source>
+        <translation>Optionen des Statusberichts (Bitmaske)</translation>
+    </message>
+    <message>
+        <source>Junction deviation</source>
+        <translation>Übergangsabweichung (Junction Deviation)</translation>
+    </message>
+    <message>
+        <source>Arc tolerance</source>
+        <translation>Bogentoleranz</translation>
+    </message>
+    <message>
+        <source>Report in inches (on/off)</source>
+        <translation>Werte in Zoll melden (ein/aus)</translation>
+    </message>
+    <message>
+        <source>Soft limits (on/off)</source>
+        <translation>Software-Endlagen (ein/aus)</translation>
+    </message>
+    <message>
+        <source>Hard limits (on/off)</source>
+        <translation>Hardware-Endschalter (ein/aus)</translation>
+    </message>
+    <message>
+        <source>Homing cycle (on/off)</source>
+        <translation>Referenzfahrt (ein/aus)</translation>
+    </message>
+    <message>
+        <source>Homing direction invert (bit mask)</source>
+        <translation>Richtung der Referenzfahrt invertieren (Bitmaske)</translation>
+    </message>
+    <message>
+        <source>Homing locate feed rate</source>
+        <translation>Referenzfahrt: Vorschub beim Feinsuchen</translation>
+    </message>
+    <message>
+        <source>Homing search seek rate</source>
+        <translation>Referenzfahrt: Suchgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Homing switch debounce delay</source>
+        <translation>Referenzschalter: Entprellzeit</translation>
+    </message>
+    <message>
+        <source>Homing switch pull-off distance</source>
+        <translation>Referenzschalter: Freifahrweg</translation>
+    </message>
+    <message>
+        <source>Maximum spindle speed (largest S value)</source>
+        <translation>Maximale Spindeldrehzahl (größter S-Wert)</translation>
+    </message>
+    <message>
+        <source>Minimum spindle speed (smallest S value)</source>
+        <translation>Minimale Spindeldrehzahl (kleinster S-Wert)</translation>
+    </message>
+    <message>
+        <source>Laser mode (on/off)</source>
+        <translation>Lasermodus (ein/aus)</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) steps per degree</source>
+        <translation>Motor 1 (X): Schritte pro Grad</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) steps per degree</source>
+        <translation>Motor 2 (Y): Schritte pro Grad</translation>
+    </message>
+    <message>
+        <source>Z steps per mm</source>
+        <translation>Z: Schritte pro mm</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) maximum rate</source>
+        <translation>Motor 1 (X): Höchstgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) maximum rate</source>
+        <translation>Motor 2 (Y): Höchstgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Z maximum rate</source>
+        <translation>Z: Höchstgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) acceleration</source>
+        <translation>Motor 1 (X): Beschleunigung</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) acceleration</source>
+        <translation>Motor 2 (Y): Beschleunigung</translation>
+    </message>
+    <message>
+        <source>Z acceleration</source>
+        <translation>Z: Beschleunigung</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) maximum travel</source>
+        <translation>Motor 1 (X): maximaler Verfahrweg</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) maximum travel</source>
+        <translation>Motor 2 (Y): maximaler Verfahrweg</translation>
+    </message>
+    <message>
+        <source>Z maximum travel</source>
+        <translation>Z: maximaler Verfahrweg</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::RunProgressBox</name>
+    <message>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <source>Stop cleanly: feed hold, then reset with the position kept and the pen up</source>
+        <translation>Sauber anhalten: Vorschub anhalten, dann Reset mit gehaltener Position und angehobenem Stift</translation>
+    </message>
+    <message>
+        <source>%1 % (%2)</source>
+        <translation>%1 % (%2)</translation>
+    </message>
+    <message>
+        <source>%1 left</source>
+        <translation>noch %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::studio::HelpMenu</name>
+    <message>
+        <source>&amp;First job guide</source>
+        <translation>&amp;Erster Auftrag: Anleitung</translation>
+    </message>
+    <message>
+        <source>Connect, load a drawing, place it, preview and run: step by step</source>
+        <translation>Verbinden, Zeichnung laden, platzieren, Vorschau ansehen und starten: Schritt für Schritt</translation>
+    </message>
+    <message>
+        <source>&amp;Documentation</source>
+        <translation>&amp;Dokumentation</translation>
+    </message>
+    <message>
+        <source>Documentation</source>
+        <translation>Dokumentation</translation>
+    </message>
+    <message>
+        <source>The documentation file %1 is not installed. It is also on the project's pages, in the docs folder.</source>
+        <translation>Die Dokumentationsdatei %1 ist nicht installiert. Sie steht auch auf den Seiten des Projekts, im Ordner docs.</translation>
     </message>
 </context>
 </TS>

@@ -108,6 +108,14 @@
         <source>Change machine profile</source>
         <translation>Cambiar perfil de máquina</translation>
     </message>
+    <message>
+        <source>Rotate drawing</source>
+        <translation>Girar el dibujo</translation>
+    </message>
+    <message>
+        <source>Resize drawing</source>
+        <translation>Cambiar el tamaño del dibujo</translation>
+    </message>
 </context>
 <context>
     <name>ImportError</name>
@@ -1370,9 +1378,12 @@
         <source>Connect the machine first: its position is not known.</source>
         <translation>Conecta primero la máquina: su posición es desconocida.</translation>
     </message>
-    <message>
-        <source>Go to %1, %2 mm? The dashed path is the pen's travel (%3 checked moves).</source>
-        <translation>¿Ir a %1, %2 mm? El trazo discontinuo es el recorrido de la pluma (%3 movimientos comprobados).</translation>
+    <message numerus="yes">
+        <source>Go to %1, %2 mm? The dashed path is the pen's travel (%n checked move(s)).</source>
+        <translation>
+            <numerusform>¿Ir a %1, %2 mm? El trazo discontinuo es el recorrido de la pluma (%n movimiento comprobado).</numerusform>
+            <numerusform>¿Ir a %1, %2 mm? El trazo discontinuo es el recorrido de la pluma (%n movimientos comprobados).</numerusform>
+        </translation>
     </message>
     <message>
         <source>Cannot go there: %1</source>
@@ -1580,6 +1591,10 @@ Planificarlo y plotearlo puede tardar mucho. ¿Importarlo entero de todos modos?
     <message>
         <source>Move the pen up to the profile's home pose by a checked move (the reference must be set)</source>
         <translation>Ir con la pluma levantada a la posición de inicio del perfil mediante un movimiento comprobado (la referencia debe estar fijada)</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Velocidad</translation>
     </message>
 </context>
 <context>
@@ -1966,9 +1981,12 @@ Confirme solo si los brazos están ahora exactamente en esa pose. Si están en o
         <source>Jog refused: the machine is not idle, not connected or a job is running.</source>
         <translation>Movimiento rechazado: la máquina no está en reposo, no está conectada o hay un trabajo en curso.</translation>
     </message>
-    <message>
-        <source>%1 (jog in %2 checked moves)</source>
-        <translation>%1 (movimiento en %2 pasos comprobados)</translation>
+    <message numerus="yes">
+        <source>%1 (jog in %n checked move(s))</source>
+        <translation>
+            <numerusform>%1 (movimiento en %n paso comprobado)</numerusform>
+            <numerusform>%1 (movimiento en %n pasos comprobados)</numerusform>
+        </translation>
     </message>
     <message>
         <source>[soft reset]</source>
@@ -2266,6 +2284,18 @@ Confirme solo si los brazos están ahora exactamente en esa pose. Si están en o
         <source>yes</source>
         <translation>sí</translation>
     </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Significado</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unidad</translation>
+    </message>
+    <message>
+        <source>(not a GRBL 1.1h setting)</source>
+        <translation>(no es un ajuste de GRBL 1.1h)</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachinePanels</name>
@@ -2312,6 +2342,22 @@ Pausar, detener y salir: la máquina se detiene limpiamente y el progreso se gua
     <message>
         <source>Keep running</source>
         <translation>Seguir ejecutando</translation>
+    </message>
+    <message>
+        <source>The job has ended</source>
+        <translation>El trabajo ha terminado</translation>
+    </message>
+    <message>
+        <source>The job &quot;%1&quot; has ended. Quit FiveBar Studio?</source>
+        <translation>El trabajo «%1» ha terminado. ¿Salir de FiveBar Studio?</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Salir</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
     </message>
 </context>
 <context>
@@ -4948,6 +4994,7 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     </message>
 </context>
 <context>
+<<<<<<< HEAD
     <name>fivebar::widgets::RecoveryBar</name>
     <message>
         <source>Reset</source>
@@ -4999,6 +5046,186 @@ Iniciar dibuja "%2" desde el principio y descarta este progreso guardado. Reanud
     <message>
         <source>Reset, Unlock and Set reference pose are in the status bar and the Machine panel.</source>
         <translation>Reiniciar, Desbloquear y Fijar pose de referencia están en la barra de estado y en el panel Máquina.</translation>
+=======
+    <name>GrblSetting</name>
+    <message>
+        <source>Step pulse time</source>
+        <translation>Duración del pulso de paso</translation>
+    </message>
+    <message>
+        <source>Step idle delay (255: motors always on)</source>
+        <translation>Retardo de reposo de los motores (255: siempre activos)</translation>
+    </message>
+    <message>
+        <source>Step pulse invert (bit mask)</source>
+        <translation>Invertir pulsos de paso (máscara de bits)</translation>
+    </message>
+    <message>
+        <source>Direction invert (bit mask)</source>
+        <translation>Invertir dirección (máscara de bits)</translation>
+    </message>
+    <message>
+        <source>Invert step enable pin (on/off)</source>
+        <translation>Invertir pin de habilitación (sí/no)</translation>
+    </message>
+    <message>
+        <source>Invert limit pins (on/off)</source>
+        <translation>Invertir pines de final de carrera (sí/no)</translation>
+    </message>
+    <message>
+        <source>Invert probe pin (on/off)</source>
+        <translation>Invertir pin de sonda (sí/no)</translation>
+    </message>
+    <message>
+        <source>Status report options (bit mask)</source>
+        <translation>Opciones del informe de estado (máscara de bits)</translation>
+    </message>
+    <message>
+        <source>Junction deviation</source>
+        <translation>Desviación de unión</translation>
+    </message>
+    <message>
+        <source>Arc tolerance</source>
+        <translation>Tolerancia de arcos</translation>
+    </message>
+    <message>
+        <source>Report in inches (on/off)</source>
+        <translation>Informar en pulgadas (sí/no)</translation>
+    </message>
+    <message>
+        <source>Soft limits (on/off)</source>
+        <translation>Límites por software (sí/no)</translation>
+    </message>
+    <message>
+        <source>Hard limits (on/off)</source>
+        <translation>Límites por hardware (sí/no)</translation>
+    </message>
+    <message>
+        <source>Homing cycle (on/off)</source>
+        <translation>Ciclo de referencia (sí/no)</translation>
+    </message>
+    <message>
+        <source>Homing direction invert (bit mask)</source>
+        <translation>Invertir dirección de referencia (máscara de bits)</translation>
+    </message>
+    <message>
+        <source>Homing locate feed rate</source>
+        <translation>Referencia: velocidad de localización</translation>
+    </message>
+    <message>
+        <source>Homing search seek rate</source>
+        <translation>Referencia: velocidad de búsqueda</translation>
+    </message>
+    <message>
+        <source>Homing switch debounce delay</source>
+        <translation>Referencia: tiempo antirrebote del interruptor</translation>
+    </message>
+    <message>
+        <source>Homing switch pull-off distance</source>
+        <translation>Referencia: distancia de retirada</translation>
+    </message>
+    <message>
+        <source>Maximum spindle speed (largest S value)</source>
+        <translation>Velocidad máxima del husillo (mayor valor S)</translation>
+    </message>
+    <message>
+        <source>Minimum spindle speed (smallest S value)</source>
+        <translation>Velocidad mínima del husillo (menor valor S)</translation>
+    </message>
+    <message>
+        <source>Laser mode (on/off)</source>
+        <translation>Modo láser (sí/no)</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) steps per degree</source>
+        <translation>Motor 1 (X): pasos por grado</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) steps per degree</source>
+        <translation>Motor 2 (Y): pasos por grado</translation>
+    </message>
+    <message>
+        <source>Z steps per mm</source>
+        <translation>Z: pasos por mm</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) maximum rate</source>
+        <translation>Motor 1 (X): velocidad máxima</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) maximum rate</source>
+        <translation>Motor 2 (Y): velocidad máxima</translation>
+    </message>
+    <message>
+        <source>Z maximum rate</source>
+        <translation>Z: velocidad máxima</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) acceleration</source>
+        <translation>Motor 1 (X): aceleración</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) acceleration</source>
+        <translation>Motor 2 (Y): aceleración</translation>
+    </message>
+    <message>
+        <source>Z acceleration</source>
+        <translation>Z: aceleración</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) maximum travel</source>
+        <translation>Motor 1 (X): recorrido máximo</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) maximum travel</source>
+        <translation>Motor 2 (Y): recorrido máximo</translation>
+    </message>
+    <message>
+        <source>Z maximum travel</source>
+        <translation>Z: recorrido máximo</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::RunProgressBox</name>
+    <message>
+        <source>Stop</source>
+        <translation>Detener</translation>
+    </message>
+    <message>
+        <source>Stop cleanly: feed hold, then reset with the position kept and the pen up</source>
+        <translation>Detener limpiamente: pausa del avance, luego reinicio conservando la posición y con la pluma levantada</translation>
+    </message>
+    <message>
+        <source>%1 % (%2)</source>
+        <translation>%1 % (%2)</translation>
+    </message>
+    <message>
+        <source>%1 left</source>
+        <translation>quedan %1</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::studio::HelpMenu</name>
+    <message>
+        <source>&amp;First job guide</source>
+        <translation>Guía del &amp;primer trabajo</translation>
+    </message>
+    <message>
+        <source>Connect, load a drawing, place it, preview and run: step by step</source>
+        <translation>Conectar, cargar un dibujo, colocarlo, previsualizarlo y ejecutarlo: paso a paso</translation>
+    </message>
+    <message>
+        <source>&amp;Documentation</source>
+        <translation>&amp;Documentación</translation>
+    </message>
+    <message>
+        <source>Documentation</source>
+        <translation>Documentación</translation>
+    </message>
+    <message>
+        <source>The documentation file %1 is not installed. It is also on the project's pages, in the docs folder.</source>
+        <translation>El archivo de documentación %1 no está instalado. También está en las páginas del proyecto, en la carpeta docs.</translation>
+>>>>>>> fit
     </message>
 </context>
 </TS>

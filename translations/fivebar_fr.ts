@@ -108,6 +108,14 @@
         <source>Change machine profile</source>
         <translation>Changer le profil de machine</translation>
     </message>
+    <message>
+        <source>Rotate drawing</source>
+        <translation>Faire pivoter le dessin</translation>
+    </message>
+    <message>
+        <source>Resize drawing</source>
+        <translation>Redimensionner le dessin</translation>
+    </message>
 </context>
 <context>
     <name>ImportError</name>
@@ -1370,9 +1378,12 @@
         <source>Connect the machine first: its position is not known.</source>
         <translation>Connectez d'abord la machine : sa position est inconnue.</translation>
     </message>
-    <message>
-        <source>Go to %1, %2 mm? The dashed path is the pen's travel (%3 checked moves).</source>
-        <translation>Aller à %1, %2 mm ? Le tracé en pointillés est le trajet du stylo (%3 mouvements vérifiés).</translation>
+    <message numerus="yes">
+        <source>Go to %1, %2 mm? The dashed path is the pen's travel (%n checked move(s)).</source>
+        <translation>
+            <numerusform>Aller à %1, %2 mm ? Le tracé en pointillés est le trajet du stylo (%n mouvement vérifié).</numerusform>
+            <numerusform>Aller à %1, %2 mm ? Le tracé en pointillés est le trajet du stylo (%n mouvements vérifiés).</numerusform>
+        </translation>
     </message>
     <message>
         <source>Cannot go there: %1</source>
@@ -1580,6 +1591,10 @@ La planification et le traçage peuvent être très longs. L'importer quand mêm
     <message>
         <source>Move the pen up to the profile's home pose by a checked move (the reference must be set)</source>
         <translation>Amener le stylo relevé à la position d'origine du profil par un déplacement vérifié (la référence doit être définie)</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Vitesse</translation>
     </message>
 </context>
 <context>
@@ -1966,9 +1981,12 @@ Confirmez seulement si les bras sont exactement dans cette pose. S'ils sont aill
         <source>Jog refused: the machine is not idle, not connected or a job is running.</source>
         <translation>Déplacement refusé : la machine n'est pas au repos, pas connectée, ou une tâche est en cours.</translation>
     </message>
-    <message>
-        <source>%1 (jog in %2 checked moves)</source>
-        <translation>%1 (déplacement en %2 mouvements vérifiés)</translation>
+    <message numerus="yes">
+        <source>%1 (jog in %n checked move(s))</source>
+        <translation>
+            <numerusform>%1 (déplacement en %n mouvement vérifié)</numerusform>
+            <numerusform>%1 (déplacement en %n mouvements vérifiés)</numerusform>
+        </translation>
     </message>
     <message>
         <source>[soft reset]</source>
@@ -2266,6 +2284,18 @@ Confirmez seulement si les bras sont exactement dans cette pose. S'ils sont aill
         <source>yes</source>
         <translation>oui</translation>
     </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Signification</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unité</translation>
+    </message>
+    <message>
+        <source>(not a GRBL 1.1h setting)</source>
+        <translation>(pas un réglage de GRBL 1.1h)</translation>
+    </message>
 </context>
 <context>
     <name>fivebar::widgets::MachinePanels</name>
@@ -2312,6 +2342,22 @@ Pause, arrêter et quitter : la machine s'arrête proprement et la progression e
     <message>
         <source>Keep running</source>
         <translation>Continuer</translation>
+    </message>
+    <message>
+        <source>The job has ended</source>
+        <translation>La tâche est terminée</translation>
+    </message>
+    <message>
+        <source>The job &quot;%1&quot; has ended. Quit FiveBar Studio?</source>
+        <translation>La tâche « %1 » est terminée. Quitter FiveBar Studio ?</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Quitter</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
     </message>
 </context>
 <context>
@@ -4948,6 +4994,7 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     </message>
 </context>
 <context>
+<<<<<<< HEAD
     <name>fivebar::widgets::RecoveryBar</name>
     <message>
         <source>Reset</source>
@@ -4999,6 +5046,186 @@ Démarrer trace « %2 » depuis le début et abandonne cette progression enregis
     <message>
         <source>Reset, Unlock and Set reference pose are in the status bar and the Machine panel.</source>
         <translation>Réinitialiser, Déverrouiller et Définir la pose de référence se trouvent dans la barre d'état et le panneau Machine.</translation>
+=======
+    <name>GrblSetting</name>
+    <message>
+        <source>Step pulse time</source>
+        <translation>Durée d’impulsion de pas</translation>
+    </message>
+    <message>
+        <source>Step idle delay (255: motors always on)</source>
+        <translation>Délai avant repos des moteurs (255 : toujours alimentés)</translation>
+    </message>
+    <message>
+        <source>Step pulse invert (bit mask)</source>
+        <translation>Inversion des impulsions de pas (masque de bits)</translation>
+    </message>
+    <message>
+        <source>Direction invert (bit mask)</source>
+        <translation>Inversion de direction (masque de bits)</translation>
+    </message>
+    <message>
+        <source>Invert step enable pin (on/off)</source>
+        <translation>Inverser la broche d’activation (oui/non)</translation>
+    </message>
+    <message>
+        <source>Invert limit pins (on/off)</source>
+        <translation>Inverser les broches de fin de course (oui/non)</translation>
+    </message>
+    <message>
+        <source>Invert probe pin (on/off)</source>
+        <translation>Inverser la broche de palpeur (oui/non)</translation>
+    </message>
+    <message>
+        <source>Status report options (bit mask)</source>
+        <translation>Options du rapport d’état (masque de bits)</translation>
+    </message>
+    <message>
+        <source>Junction deviation</source>
+        <translation>Déviation de jonction</translation>
+    </message>
+    <message>
+        <source>Arc tolerance</source>
+        <translation>Tolérance des arcs</translation>
+    </message>
+    <message>
+        <source>Report in inches (on/off)</source>
+        <translation>Rapport en pouces (oui/non)</translation>
+    </message>
+    <message>
+        <source>Soft limits (on/off)</source>
+        <translation>Limites logicielles (oui/non)</translation>
+    </message>
+    <message>
+        <source>Hard limits (on/off)</source>
+        <translation>Limites matérielles (oui/non)</translation>
+    </message>
+    <message>
+        <source>Homing cycle (on/off)</source>
+        <translation>Cycle de prise d’origine (oui/non)</translation>
+    </message>
+    <message>
+        <source>Homing direction invert (bit mask)</source>
+        <translation>Inversion du sens de prise d’origine (masque de bits)</translation>
+    </message>
+    <message>
+        <source>Homing locate feed rate</source>
+        <translation>Prise d’origine : vitesse de localisation</translation>
+    </message>
+    <message>
+        <source>Homing search seek rate</source>
+        <translation>Prise d’origine : vitesse de recherche</translation>
+    </message>
+    <message>
+        <source>Homing switch debounce delay</source>
+        <translation>Prise d’origine : anti-rebond des contacts</translation>
+    </message>
+    <message>
+        <source>Homing switch pull-off distance</source>
+        <translation>Prise d’origine : distance de dégagement</translation>
+    </message>
+    <message>
+        <source>Maximum spindle speed (largest S value)</source>
+        <translation>Vitesse de broche maximale (plus grande valeur S)</translation>
+    </message>
+    <message>
+        <source>Minimum spindle speed (smallest S value)</source>
+        <translation>Vitesse de broche minimale (plus petite valeur S)</translation>
+    </message>
+    <message>
+        <source>Laser mode (on/off)</source>
+        <translation>Mode laser (oui/non)</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) steps per degree</source>
+        <translation>Moteur 1 (X) : pas par degré</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) steps per degree</source>
+        <translation>Moteur 2 (Y) : pas par degré</translation>
+    </message>
+    <message>
+        <source>Z steps per mm</source>
+        <translation>Z : pas par mm</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) maximum rate</source>
+        <translation>Moteur 1 (X) : vitesse maximale</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) maximum rate</source>
+        <translation>Moteur 2 (Y) : vitesse maximale</translation>
+    </message>
+    <message>
+        <source>Z maximum rate</source>
+        <translation>Z : vitesse maximale</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) acceleration</source>
+        <translation>Moteur 1 (X) : accélération</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) acceleration</source>
+        <translation>Moteur 2 (Y) : accélération</translation>
+    </message>
+    <message>
+        <source>Z acceleration</source>
+        <translation>Z : accélération</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) maximum travel</source>
+        <translation>Moteur 1 (X) : course maximale</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) maximum travel</source>
+        <translation>Moteur 2 (Y) : course maximale</translation>
+    </message>
+    <message>
+        <source>Z maximum travel</source>
+        <translation>Z : course maximale</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::widgets::calibration::RunProgressBox</name>
+    <message>
+        <source>Stop</source>
+        <translation>Arrêter</translation>
+    </message>
+    <message>
+        <source>Stop cleanly: feed hold, then reset with the position kept and the pen up</source>
+        <translation>Arrêter proprement : arrêt de l’avance, puis réinitialisation en gardant la position, stylo levé</translation>
+    </message>
+    <message>
+        <source>%1 % (%2)</source>
+        <translation>%1 % (%2)</translation>
+    </message>
+    <message>
+        <source>%1 left</source>
+        <translation>%1 restant</translation>
+    </message>
+</context>
+<context>
+    <name>fivebar::studio::HelpMenu</name>
+    <message>
+        <source>&amp;First job guide</source>
+        <translation>Guide du &amp;premier travail</translation>
+    </message>
+    <message>
+        <source>Connect, load a drawing, place it, preview and run: step by step</source>
+        <translation>Connecter, charger un dessin, le placer, le prévisualiser et le lancer : pas à pas</translation>
+    </message>
+    <message>
+        <source>&amp;Documentation</source>
+        <translation>&amp;Documentation</translation>
+    </message>
+    <message>
+        <source>Documentation</source>
+        <translation>Documentation</translation>
+    </message>
+    <message>
+        <source>The documentation file %1 is not installed. It is also on the project's pages, in the docs folder.</source>
+        <translation>Le fichier de documentation %1 n’est pas installé. Il se trouve aussi sur les pages du projet, dans le dossier docs.</translation>
+>>>>>>> fit
     </message>
 </context>
 </TS>

@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "core/output/grbl_setting_table.hpp"
 #include "drivers/protocol/grbl_codes.hpp"
 #include "drivers/protocol/machine_link.hpp"
 #include "drivers/check/machine_setup.hpp"
@@ -141,16 +142,20 @@ int runStream(const Args& args) {
 
 namespace {
 
+// One row per setting the profile expects: the board's value, the profile's, the unit and what
+// the setting means (core/output/grbl_setting_table.hpp; X and Y are the motor angles).
 void printComparison(const setup::Settings& board, const setup::Settings& wanted,
                      const std::vector<setup::SettingDiff>& diffs) {
-  std::printf("%-8s %14s %14s\n", "setting", "board", "profile");
+  std::printf("%-8s %14s %14s  %-10s %s\n", "setting", "board", "profile", "unit", "meaning");
   for (const auto& [id, w] : wanted) {
     const auto b = board.find(id);
     const bool differs =
         std::any_of(diffs.begin(), diffs.end(), [id = id](const auto& d) { return d.id == id; });
     char boardText[32] = "-";
     if (b != board.end()) std::snprintf(boardText, sizeof boardText, "%.4f", b->second);
-    std::printf("$%-7d %14s %14.4f%s\n", id, boardText, w, differs ? "  differs" : "");
+    const GrblSettingInfo* info = grblSettingInfo(id);
+    std::printf("$%-7d %14s %14.4f  %-10s %s%s\n", id, boardText, w, info ? info->unit : "",
+                info ? info->meaning : "", differs ? "  (differs)" : "");
   }
   std::printf("%zu setting(s) differ\n", diffs.size());
 }

@@ -56,7 +56,12 @@ bool installTranslations(const QLocale& locale) {
                QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
     QCoreApplication::installTranslator(qt);
   }
-  if (locale.language() == QLocale::English || locale.language() == QLocale::C) return true;
+  if (locale.language() == QLocale::English || locale.language() == QLocale::C) {
+    // English needs only the plural forms of the "%n ...(s)" texts.
+    auto* plurals = new QTranslator(QCoreApplication::instance());
+    if (plurals->load(QStringLiteral("plurals_en"), translationsDir())) QCoreApplication::installTranslator(plurals);
+    return true;
+  }
   auto* own = new QTranslator(QCoreApplication::instance());
   if (!own->load(locale, QStringLiteral("fivebar"), QStringLiteral("_"), translationsDir())) return false;
   QCoreApplication::installTranslator(own);

@@ -18,6 +18,7 @@
 #include <QUndoStack>
 
 #include "app/studio/file_actions.hpp"
+#include "app/studio/help_menu.hpp"
 #include "app/studio/language_menu.hpp"
 #include "core/workspace/view_box.hpp"
 #include "widgets/calibration/calibration_install.hpp"
@@ -53,7 +54,7 @@ namespace {
 const char* const kGeometryKey = "window/geometry";
 const char* const kStateKey = "window/state";
 constexpr int kStateVersion = 1;
-constexpr int kBottomDockHeightPx = 130;
+constexpr int kBottomDockHeightPx = 160;
 constexpr int kSideDockWidthPx = 340;
 }  // namespace
 
@@ -204,6 +205,9 @@ StudioShell MainWindow::makeShell() {
 }
 
 void MainWindow::createDocks() {
+  // The side docks take the full height; the bottom dock (the console) spans the canvas only.
+  setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
+  setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
   auto* mode = addDock(new ModePanel(*doc_, *workspaceLayer_, *preview_, this),
                        tr("Workspace"), QStringLiteral("dockWorkspace"), Qt::LeftDockWidgetArea);
   placementPanel_ = new PlacementPanel(*doc_, this);
@@ -218,7 +222,7 @@ void MainWindow::createDocks() {
   auto* sim = addDock(new SimulationPanel(*simulation_, *doc_, this), tr("Simulation"),
                       QStringLiteral("dockSimulation"), Qt::RightDockWidgetArea);
   tabifyDockWidget(placement, layers);
-  resizeDocks({mode, placement, preview, sim}, {330, 420, 430, 330}, Qt::Vertical);
+  resizeDocks({mode, placement, preview, sim}, {330, 420, 515, 325}, Qt::Vertical);
   leftTabs_ = layers;
   rightTabs_ = sim;
   // Fills of the next import (widgets/panels/fill_options_box.hpp) next to the layers; the import
@@ -262,8 +266,14 @@ void MainWindow::createMenus() {
   QMenu* edit = editMenu_ = menuBar()->addMenu(tr("&Edit"));
   QAction* undo = doc_->undoStack()->createUndoAction(this, tr("&Undo"));
   undo->setShortcut(QKeySequence::Undo);
+  undo->setObjectName(QStringLiteral("actionUndo"));
   QAction* redo = doc_->undoStack()->createRedoAction(this, tr("&Redo"));
-  redo->setShortcut(QKeySequence::Redo);
+  // Both usual redo keys on every platform (the platform's own first, for the menu's label).
+  QList<QKeySequence> redoKeys = QKeySequence::keyBindings(QKeySequence::Redo);
+  for (const QKeySequence& k : {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)})
+    if (!redoKeys.contains(k)) redoKeys << k;
+  redo->setShortcuts(redoKeys);
+  redo->setObjectName(QStringLiteral("actionRedo"));
   edit->addAction(undo);
   edit->addAction(redo);
   edit->addSeparator();
@@ -301,6 +311,7 @@ void MainWindow::createMenus() {
                           "planning, GRBL output.</p>")
                            .arg(QApplication::applicationVersion()));
   });
+  help_ = new HelpMenu(help, this);
 
   QToolBar* bar = addToolBar(tr("Main"));
   bar->setObjectName(QStringLiteral("toolbarMain"));

@@ -52,6 +52,7 @@ class SimulatedTruth;
 namespace fivebar::studio {
 
 class FileActions;
+class HelpMenu;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -69,6 +70,7 @@ class MainWindow : public QMainWindow {
   widgets::JobLayer& jobLayer() { return *jobLayer_; }
   widgets::WorkspaceLayer& workspaceLayer() { return *workspaceLayer_; }
   FileActions& files() { return *files_; }
+  HelpMenu& help() { return *help_; }  // Help > Documentation, First job guide
   // The machine side: session, run and jog controllers (Qt Core), and their panels.
   session::MachineSide& machine() { return *machine_; }
   widgets::MachinePanels& machinePanels() { return *machinePanels_; }
@@ -119,6 +121,7 @@ class MainWindow : public QMainWindow {
   widgets::MachineLayer* machineLayer_ = nullptr;
   widgets::PlacementTool* placementTool_ = nullptr;
   FileActions* files_ = nullptr;
+  HelpMenu* help_ = nullptr;
   widgets::PlacementPanel* placementPanel_ = nullptr;
   widgets::PreviewPanel* previewPanel_ = nullptr;
   widgets::FillOptionsBox* fillOptions_ = nullptr;

@@ -359,8 +359,17 @@ CalibrationFit fitDistances(const MachineProfile& nominal, std::span<const MarkP
   return run(nominal, m, o);
 }
 
+std::string calibratedProfileName(const std::string& nominalName, const std::string& dateIso) {
+  static const std::string kMark = " (calibrated";
+  std::string base = nominalName;
+  if (const auto at = base.rfind(kMark); at != std::string::npos && !base.empty() && base.back() == ')')
+    base.erase(at);  // calibrated again: one mark, the newest date
+  return base + kMark + (dateIso.empty() ? std::string() : " " + dateIso.substr(0, 10)) + ")";  // the day of an ISO time
+}
+
 MachineProfile calibratedProfile(const MachineProfile& nominal, const CalibrationFit& fit, const std::string& dateIso) {
   MachineProfile p = nominal;
+  p.name = calibratedProfileName(nominal.name, dateIso);
   p.geometry = fit.parameters.geometry;
   MachineCalibration c = nominal.calibration.value_or(MachineCalibration{});
   c.version = MachineCalibration::kSchemaVersion;

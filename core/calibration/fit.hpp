@@ -99,8 +99,12 @@ CalibrationFit fitMarks(const MachineProfile& nominal, std::span<const MarkMeasu
 CalibrationFit fitDistances(const MachineProfile& nominal, std::span<const MarkPose> marks,
                             std::span<const DistanceMeasurement> distances, const FitOptions& options = {});
 
+// "maker-plotter (calibrated 2026-12-04)": the nominal name with one calibration mark (a profile
+// calibrated again keeps one mark, with the new date; `dateIso` "" gives "(calibrated)").
+std::string calibratedProfileName(const std::string& nominalName, const std::string& dateIso);
 // `nominal` with the fitted geometry and a calibration section (zero offsets, pen offset, fit
-// statistics, `dateIso`). Backlash already in `nominal`'s calibration is kept.
+// statistics, `dateIso`). Backlash already in `nominal`'s calibration is kept. Its name is its
+// own, not the preset's: calibratedProfileName(nominal.name, dateIso).
 MachineProfile calibratedProfile(const MachineProfile& nominal, const CalibrationFit& fit,
                                  const std::string& dateIso);
 

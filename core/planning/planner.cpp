@@ -7,6 +7,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "core/kinematics/kinematics.hpp"
 #include "core/planning/feasibility.hpp"
 #include "core/planning/optimise.hpp"
 #include "core/support/parallel.hpp"
@@ -57,8 +58,36 @@ Message layerName(const Drawing& d, int layerIndex) {
 
 // What to change (codes with their numbers; the front ends word them): the shrink factor, the
 // suggested centre, the feasible modes, fitting.
-std::vector<PlanFix> fixesOf(const Candidate& c, const std::vector<Candidate>& all, bool fitted) {
+// The working mode of the profile's home pose (where every job starts and ends); nullopt when
+// the home angles do not close the linkage.
+std::optional<WorkingMode> homeModeOf(const MachineProfile& profile) {
+  const JointAngles q = kinematicFromCommanded(profile.calibration, profile.homeAngles);
+  const FkResult fk = forward(profile.geometry, q, profile.assembly);
+  if (!fk.ok()) return std::nullopt;
+  return workingModeOf(profile.geometry, makePose(profile.geometry, q, fk.p));
+}
+
+std::vector<PlanFix> fixesOf(const Candidate& c, const std::vector<Candidate>& all, bool fitted,
+                             const MachineProfile& profile) {
   std::vector<PlanFix> fixes;
+  // A mode other than the home pose's: the travels from and to home change the working mode,
+  // which passes a leg through full stretch or fold wherever the drawing is, and points the
+  // mode reaches only in the other assembly mode (the "--" mode of a "+" machine) stay so
+  // wherever the drawing goes. Moving, shrinking or fitting cannot help those; the home pose's
+  // mode (or another mode that plans) does.
+  const std::optional<WorkingMode> home = homeModeOf(profile);
+  const bool placementCannotHelp =
+      !c.report.problems.empty() &&
+      std::all_of(c.report.problems.begin(), c.report.problems.end(), [](const PreflightProblem& p) {
+        return p.kind == MoveKind::Travel || (p.kind == MoveKind::Point && p.status == MoveStatus::AssemblyChange);
+      });
+  if (home && *home != c.mode && placementCannotHelp) {
+    fixes.push_back({FixKind::UseMode, 1.0, Vec2::Zero(), *home});
+    for (const Candidate& other : all)
+      if (other.report.feasible && other.mode != c.mode && other.mode != *home)
+        fixes.push_back({FixKind::UseMode, 1.0, Vec2::Zero(), other.mode});
+    return fixes;
+  }
   if (c.report.shrinkFactor)
     fixes.push_back({FixKind::Shrink, c.placement.scale * *c.report.shrinkFactor});
   if (c.report.suggestedAnchorMm && !fitted)
@@ -71,14 +100,14 @@ std::vector<PlanFix> fixesOf(const Candidate& c, const std::vector<Candidate>& a
 }
 
 void reportInfeasible(const Drawing& d, const std::vector<Candidate>& cands, bool fitted,
-                      PlanResult& out) {
+                      const MachineProfile& profile, PlanResult& out) {
   // The candidate with the fewest problems explains best what to change.
   const auto best = std::min_element(cands.begin(), cands.end(), [](const auto& a, const auto& b) {
     return a.report.problemCount < b.report.problemCount;
   });
   out.report.mode = best->mode;
   out.report.minSingularityMarginDeg = degFromRad(best->report.minTypeIIMarginRad);
-  const std::vector<PlanFix> fixes = fixesOf(*best, cands, fitted);
+  const std::vector<PlanFix> fixes = fixesOf(*best, cands, fitted, profile);
   for (const PreflightProblem& pr : best->report.problems) {
     Message path = pr.strokeIndex < 0 ? FB_TR("Planner", "travel back to the start pose")
                                       : FB_TR("Planner", "%1 path %2")
@@ -258,7 +287,7 @@ PlanResult planJob(const Drawing& drawing, const MachineProfile& profile,
     firstFailure->placementNote = out.placementNote;
     return std::move(*firstFailure);
   }
-  reportInfeasible(drawing, cands, !fixed, out);
+  reportInfeasible(drawing, cands, !fixed, profile, out);
   return out;
 }
 

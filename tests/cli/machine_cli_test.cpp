@@ -255,6 +255,23 @@ TEST_F(MachineCli, StreamApproachesTheJobsStartFromTheRealPose) {
   EXPECT_NEAR(mpos()[1], 2.0, step());
 }
 
+// `fivebar setup` shows each setting with its unit and meaning (GRBL 1.1h; X and Y are the
+// motor angles, in degrees).
+TEST_F(MachineCli, SetupNamesEachSettingWithItsUnitAndMeaning) {
+  ASSERT_TRUE(startSim({"--set-up", "--referenced"}));
+  const CliResult r = run({"setup", "--port", pty_, "--machine", "maker-plotter"});
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  const auto row = [&](const std::string& id) {
+    const std::size_t at = r.out.find("\n" + id + " ");
+    return at == std::string::npos ? std::string() : r.out.substr(at + 1, r.out.find('\n', at + 1) - at - 1);
+  };
+  EXPECT_NE(r.out.find("unit"), std::string::npos) << r.out;
+  EXPECT_NE(row("$100").find("steps/deg  Motor 1 (X) steps per degree"), std::string::npos) << r.out;
+  EXPECT_NE(row("$111").find("deg/min    Motor 2 (Y) maximum rate"), std::string::npos) << r.out;
+  EXPECT_NE(row("$120").find("deg/s^2    Motor 1 (X) acceleration"), std::string::npos) << r.out;
+  EXPECT_NE(row("$20").find("Soft limits (on/off)"), std::string::npos) << r.out;
+}
+
 // With the board's soft limits on, send and stream refuse a target outside its travel (machine
 // coordinates) before a byte is sent; unchecked, the same line raises ALARM:2 on the board.
 TEST_F(MachineCli, SendAndStreamRefuseTargetsOutsideTheBoardsSoftLimits) {

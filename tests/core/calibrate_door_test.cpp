@@ -38,6 +38,19 @@ TEST(CalibrateDoor, MarksGiveTheProfileTheStepsByHandGive) {
   EXPECT_TRUE(validate(*out.profile).empty());
 }
 
+// A calibrated profile is this machine's, not the preset's: it gets its own name (with the
+// calibration's day), and calibrating it again keeps one mark with the new day.
+TEST(CalibrateDoor, ACalibratedProfileGetsItsOwnName) {
+  const CalibrationInput in = marksInput();
+  const CalibrationOutcome out = calibrate(in);
+  ASSERT_TRUE(out.ok()) << out.error;
+  EXPECT_EQ(out.profile->name, "maker-plotter (calibrated 2026-12-04)");
+  EXPECT_NE(out.profile->name, in.nominal.name);
+  EXPECT_EQ(calibratedProfileName(out.profile->name, "2027-01-05T10:00:00Z"), "maker-plotter (calibrated 2027-01-05)");
+  EXPECT_EQ(calibratedProfileName("my plotter", ""), "my plotter (calibrated)");
+  EXPECT_EQ(calibratedProfileName("my plotter (calibrated)", "2027-01-05"), "my plotter (calibrated 2027-01-05)");
+}
+
 TEST(CalibrateDoor, BacklashRowsNotMeasuredRefuseOnlyWhenRequired) {
   CalibrationInput in = marksInput();
   const PatternResult pattern = makeCalibrationPattern(in.nominal, PatternOptions{});

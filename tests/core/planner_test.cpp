@@ -337,6 +337,33 @@ TEST_F(PlannerTest, InfeasibleJobNamesThePathAndTheReason) {
   EXPECT_NE(r.report.problems.front().why.text().find("out of reach"), std::string::npos);
 }
 
+// In a working mode other than the home pose's, every travel from and to home must change the
+// mode (a leg through full stretch or fold): the advice is the home pose's mode, not moving,
+// shrinking or fitting the drawing, which cannot help.
+TEST_F(PlannerTest, TravelsFromHomeInAnotherModeAdviseTheHomePosesMode) {
+  Drawing d;
+  d.layers.resize(1);
+  d.layers[0].name = "ink";
+  d.layers[0].paths.push_back({{{-5, 0}, {5, 0}, {5, 8}}, false});
+  for (WorkingMode mode : {WorkingMode::MinusMinus, WorkingMode::MinusPlus, WorkingMode::PlusMinus}) {
+    PlanOptions o = atOptions();
+    o.mode = mode;
+    const PlanResult r = planJob(d, p, o);
+    ASSERT_EQ(r.status, PlanStatus::Infeasible) << toString(mode);
+    ASSERT_FALSE(r.report.problems.empty());
+    for (const PlanProblem& problem : r.report.problems) {
+      ASSERT_FALSE(problem.fixes.empty()) << toString(mode);
+      EXPECT_EQ(problem.fixes.front().kind, FixKind::UseMode) << toString(mode) << ": " << problem.why;
+      EXPECT_EQ(problem.fixes.front().mode, WorkingMode::PlusPlus) << toString(mode);
+      for (const PlanFix& f : problem.fixes) EXPECT_NE(f.kind, FixKind::FitToWorkspace) << toString(mode);
+    }
+  }
+  // The home pose's own mode plans it.
+  PlanOptions o = atOptions();
+  o.mode = WorkingMode::PlusPlus;
+  EXPECT_EQ(planJob(d, p, o).status, PlanStatus::Ok);
+}
+
 TEST_F(PlannerTest, EmptyDrawingAndBadToleranceAreRefusedWithAReason) {
   Drawing empty;
   empty.source = "blank.svg";

@@ -50,6 +50,7 @@ for f in usr/bin/fivebar usr/bin/fivebar-studio usr/bin/fivebar-sim \
          usr/share/icons/hicolor/scalable/apps/fivebar-studio.svg \
          usr/share/man/man1/fivebar.1.gz usr/share/man/man1/fivebar-studio.1.gz usr/share/man/man1/fivebar-sim.1.gz \
          usr/share/doc/fivebar-studio/copyright usr/share/doc/fivebar-studio/changelog.gz \
+         usr/share/doc/fivebar-studio/docs/first-job.md usr/share/doc/fivebar-studio/docs/studio.md \
          usr/share/fivebar-studio/demo/fivebar-demo.svg; do
   [ -s "$root/$f" ] || fail "missing $f"
 done

@@ -12,6 +12,7 @@
 #include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -21,6 +22,7 @@
 #include "test_support.hpp"
 #include "tests/scan/synthetic_scan.hpp"
 #include "widgets/calibration/calibration_wizard.hpp"
+#include "widgets/calibration/run_progress_box.hpp"
 #include "widgets/calibration/simulated_machine.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
 
@@ -104,6 +106,35 @@ TEST(CalibrationWizard, WalksThroughOnTheSimulatedMachineAndTheFitReducesTheErro
   rig.doc.undoStack()->undo();
   EXPECT_EQ(rig.doc.profile().geometry, before.geometry);
   EXPECT_FALSE(rig.doc.profile().calibration.has_value());
+}
+
+// The drawing step shows the pattern's run as the Run panel shows a job: a progress bar with
+// "line N of M", the time left, and Stop, which stops the run cleanly.
+TEST(CalibrationWizard, DrawingStepShowsProgressTimeLeftAndStop) {
+  WizardRig rig;
+  CalibrationWizard& w = rig.wizard;
+  ASSERT_TRUE(rig.connect(1.0));  // real time: the pattern takes minutes
+  ASSERT_TRUE(rig.waitIdle());
+  w.next();
+  ASSERT_EQ(w.currentId(), CalibrationWizard::kDrawPage);
+  auto* draw = w.drawPage();
+  widgets::calibration::RunProgressBox* progress = draw->progress();
+  ASSERT_NE(progress, nullptr);
+  EXPECT_FALSE(progress->isVisibleTo(draw)) << "nothing to show before the pattern is sent";
+  draw->sendButton()->click();
+  ASSERT_TRUE(waitUntil([&] { return w.patternRun() && w.patternRun()->snapshot().linesCompleted > 5; }, 20000))
+      << draw->status()->text().toStdString();
+  ASSERT_TRUE(waitUntil([&] { return progress->bar()->value() > 0; }, 5000));
+  EXPECT_TRUE(progress->isVisibleTo(draw));
+  EXPECT_TRUE(progress->bar()->text().contains(QStringLiteral("line "))) << progress->bar()->text().toStdString();
+  EXPECT_TRUE(progress->timeLeft()->text().endsWith(QStringLiteral(" left"))) << progress->timeLeft()->text().toStdString();
+  ASSERT_TRUE(progress->stopButton()->isEnabled());
+  progress->stopButton()->click();
+  ASSERT_TRUE(waitUntil([&] { return !w.patternRun()->running(); }, 20000));
+  EXPECT_EQ(w.patternRun()->state(), stream::RunState::Stopped);
+  EXPECT_FALSE(progress->stopButton()->isEnabled());
+  EXPECT_TRUE(progress->timeLeft()->text().isEmpty());
+  EXPECT_TRUE(draw->sendButton()->isEnabled()) << "the pattern can be drawn again";
 }
 
 TEST(CalibrationWizard, NamesBadTableInput) {

@@ -98,6 +98,28 @@ TEST(JogPanel, GoToPreviewsThenMovesOnConfirm) {
   EXPECT_NEAR((*rig.session.penMm() - target).norm(), 0.0, 0.2);
 }
 
+// One click, one move: once the confirmed go-to is sent, the tool disarms (the Go to button
+// unchecks and the canvas gets its previous tool back), so the next click does not plan another.
+TEST(JogPanel, GoToDisarmsAfterItsMove) {
+  MachineRig rig;
+  ASSERT_TRUE(rig.connect(8.0));
+  ASSERT_TRUE(rig.waitIdle());
+  widgets::CanvasView canvas;
+  widgets::JogPanel panel(rig.view, rig.session, rig.session, rig.jog);
+  panel.attachCanvas(&canvas);
+  panel.goToButton()->click();
+  ASSERT_TRUE(panel.goToButton()->isChecked());
+  EXPECT_EQ(canvas.tool(), &panel.goToTool());
+  const Vec2 target = *rig.session.penMm() + Vec2(10.0, 5.0);
+  panel.goToTool().pick(QPointF(target.x(), target.y()));
+  ASSERT_TRUE(panel.confirmButton()->isEnabled());
+  panel.confirmButton()->click();
+  EXPECT_FALSE(panel.goToButton()->isChecked());
+  EXPECT_NE(canvas.tool(), &panel.goToTool());
+  ASSERT_TRUE(rig.waitIdle());
+  EXPECT_NEAR((*rig.session.penMm() - target).norm(), 0.0, 0.2);
+}
+
 }  // namespace
 }  // namespace fivebar
 

@@ -72,9 +72,13 @@ TEST(MachineSettingsDialog, FindsChangedSettingsAndWritesThemBackAfterABackup) {
   EXPECT_EQ(found, expected);
   const int row = rowOf(*dialog.table(), 100);
   ASSERT_GE(row, 0);
-  EXPECT_EQ(dialog.table()->item(row, 1)->text(), QStringLiteral("12.5"));
-  EXPECT_FALSE(dialog.table()->item(row, 3)->text().isEmpty());  // marked as differing
-  EXPECT_TRUE(dialog.table()->item(rowOf(*dialog.table(), 101), 3)->text().isEmpty());
+  EXPECT_EQ(dialog.table()->item(row, 2)->text(), QStringLiteral("12.5"));
+  EXPECT_FALSE(dialog.table()->item(row, 5)->text().isEmpty());  // marked as differing
+  EXPECT_TRUE(dialog.table()->item(rowOf(*dialog.table(), 101), 5)->text().isEmpty());
+  // Each setting says what it is and its unit: X and Y are the motor angles, in degrees.
+  EXPECT_EQ(dialog.table()->item(row, 1)->text(), QStringLiteral("Motor 1 (X) steps per degree"));
+  EXPECT_EQ(dialog.table()->item(row, 4)->text(), QStringLiteral("steps/deg"));
+  EXPECT_EQ(dialog.table()->item(rowOf(*dialog.table(), 120), 4)->text(), QStringLiteral("deg/s^2"));
   EXPECT_TRUE(dialog.writeButton()->isEnabled());
 
   ASSERT_TRUE(dialog.writeDifferences());

@@ -13,6 +13,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QLocale>
 #include <QMenu>
 #include <QProcess>
 #include <QRegularExpression>
@@ -279,6 +280,10 @@ TEST(ProjectFlow, UnsavedChangesAskBeforeClosing) {
   QTemporaryDir dir;
   studio::MainWindow w(makerPlotter());
   ASSERT_TRUE(openAndPlan(w, writeA5(dir)));
+  EXPECT_FALSE(w.document().isModified());  // only opened: nothing to save yet
+  Placement moved = w.document().placement();
+  moved.centerMm.x() += 2.0;
+  w.document().setPlacement(moved);  // an edit
   int asked = 0;
   QMessageBox::StandardButton answer = QMessageBox::Cancel;
   w.files().setAsk([&](const QString&) {
@@ -374,7 +379,7 @@ TEST(ProjectFlow, RunAsksBeforeAJobOverEightHoursOrTwoMillionMoves) {
   EXPECT_TRUE(longJobQuestion(job).contains(QStringLiteral("8.5 hours"))) << longJobQuestion(job).toStdString();
   job.summary.estimatedTimeS = 60.0;
   job.summary.segments = 2500000;
-  EXPECT_TRUE(longJobQuestion(job).contains(QStringLiteral("2500000"))) << longJobQuestion(job).toStdString();
+  EXPECT_TRUE(longJobQuestion(job).contains(QLocale().toString(2500000))) << longJobQuestion(job).toStdString();
 }
 
 }  // namespace

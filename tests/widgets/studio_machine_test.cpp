@@ -6,6 +6,7 @@
 #include <pty.h>
 #include <unistd.h>
 
+#include <QAbstractButton>
 #include <QApplication>
 #include <QFile>
 #include <QMessageBox>
@@ -91,6 +92,46 @@ TEST(StudioMachine, QuitWhileRunningAsksAndStopsOnlyWhenTold) {
   EXPECT_FALSE(studio.window.isVisible());
   EXPECT_FALSE(run.running());
   EXPECT_TRUE(run.savedProgress().has_value()) << "the stopped run can be resumed later";
+}
+
+// The quit question follows the job: when the job ends while it is open, it no longer says a
+// job is running, and Quit quits without a stop.
+TEST(StudioMachine, TheQuitQuestionUpdatesWhenTheJobEnds) {
+  StudioWithMachine studio(1.0);
+  ASSERT_TRUE(studio.ready());
+  session::RunController& run = studio.window.machine().run();
+  ASSERT_TRUE(run.start());
+  ASSERT_TRUE(waitUntil([&] { return run.snapshot().linesCompleted > 0; }, 20000));
+  QString before, after, title, quitText;
+  bool stopped = false;
+  int polls = 0;
+  QTimer probe;
+  QObject::connect(&probe, &QTimer::timeout, [&] {
+    auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+    if (box == nullptr || box->objectName() != QLatin1String("quitWhileRunning")) return;
+    if (!stopped) {
+      before = box->text();
+      stopped = true;
+      run.stop();  // the job ends while the question is open
+      return;
+    }
+    // Until the job has ended and the question has had its chance to say so (20 s at most).
+    if ((run.running() || !box->text().contains(QStringLiteral("has ended"))) && ++polls < 1000) return;
+    after = box->text();
+    title = box->windowTitle();
+    auto* quit = box->findChild<QAbstractButton*>(QStringLiteral("stopAndQuit"));
+    quitText = quit->text();
+    probe.stop();
+    quit->click();
+  });
+  probe.start(20);
+  EXPECT_TRUE(studio.window.close());
+  EXPECT_TRUE(before.contains(QStringLiteral("is drawing"))) << before.toStdString();
+  EXPECT_FALSE(after.contains(QStringLiteral("is drawing"))) << after.toStdString();
+  EXPECT_TRUE(after.contains(QStringLiteral("has ended"))) << after.toStdString();
+  EXPECT_NE(title, QStringLiteral("A job is running"));
+  EXPECT_EQ(quitText, QStringLiteral("Quit"));
+  EXPECT_FALSE(run.running());
 }
 
 TEST(StudioMachine, QuitWithoutAJobRunningDoesNotAsk) {

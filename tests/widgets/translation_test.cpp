@@ -22,9 +22,11 @@
 #include <algorithm>
 #include <set>
 
+#include "app/studio/help_menu.hpp"
 #include "app/studio/language_menu.hpp"
 #include "widgets/canvas/machine_layer.hpp"
 #include "widgets/calibration/distances_box.hpp"
+#include "widgets/calibration/run_progress_box.hpp"
 #include "widgets/calibration/sheet_layer.hpp"
 #include "widgets/calibration/sim_trace_layer.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
@@ -100,12 +102,13 @@ std::set<QString> runtimeContexts() {
         &calibration::DistancesBox::staticMetaObject, &calibration::SimTraceLayer::staticMetaObject,
         &calibration::SimulatedMachineDialog::staticMetaObject, &calibration::SimulatedTruth::staticMetaObject,
         &calibration::SimulatedTruthBadge::staticMetaObject, &calibration::TrueMachineForm::staticMetaObject,
-        &fivebar::session::BoardPreflight::staticMetaObject})
+        &fivebar::session::BoardPreflight::staticMetaObject, &calibration::RunProgressBox::staticMetaObject,
+        &fivebar::studio::HelpMenu::staticMetaObject})
     names.insert(QString::fromLatin1(m->className()));
   for (const char* c : {"QObject", "main", "DocumentCommands", "JobPipeline", "MapPainter",
                         "WorkspaceLegend", "ImportWarningsPanel", "DesignPainter", "ImportWarning",
                         "fivebar::widgets::MachineDialogs", "fivebar::session::SettingsAdvice",
-                        "CalibrationWizard", "ProfileField",
+                        "CalibrationWizard", "ProfileField", "GrblSetting",
                         // the core's messages (core/support/message.hpp, widgets::translated)
                         "Placement", "Planner", "Preflight", "Safety", "Profile", "CalibrationFit",
                         "CalibrationPattern", "CalibrationScan", "CalibrationFile", "Design", "ImportError",

@@ -18,6 +18,7 @@
 #include "core/calibration/rigid_fit.hpp"
 #include "core/output/gcode.hpp"
 #include "core/kinematics/units.hpp"
+#include "widgets/calibration/run_progress_box.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
 #include "i18n/translated.hpp"
 #include "session/machine_session.hpp"
@@ -282,20 +283,23 @@ VerifyPage::VerifyPage(CalibrationWizard& wizard) : w_(wizard) {
   left->addLayout(buttons);
   status_ = explanation(QString());
   left->addWidget(status_);
+  auto* progress = new RunProgressBox;
+  left->addWidget(progress);
   figures_ = explanation(QString());
   left->addWidget(figures_);
   left->addStretch(1);
   preview_ = new CalibrationPreview;
   layout->addLayout(left, 2);
   layout->addWidget(preview_, 3);
-  connect(send_, &QPushButton::clicked, this, [this] {
+  connect(send_, &QPushButton::clicked, this, [this, progress] {
     if (!w_.session()) return;
     QString error;
     const auto done = [this](bool ok, const QString& message) {
       status_->setText(ok ? tr("The verification pattern is drawn.") : message);
     };
-    status_->setText(w_.runPattern(job_, w_.document().profile(), QStringLiteral("verification"), done, &error)
-                         ? tr("Drawing the verification pattern...") : error);
+    const bool started = w_.runPattern(job_, w_.document().profile(), QStringLiteral("verification"), done, &error);
+    status_->setText(started ? tr("Drawing the verification pattern...") : error);
+    if (started) progress->watch(w_.patternRun());
   });
   connect(exportButton, &QPushButton::clicked, this, [this] {
     const QString path = QFileDialog::getSaveFileName(this, tr("Export the verification G-code"),

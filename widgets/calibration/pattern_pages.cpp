@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The first two steps of the calibration wizard: choose the pattern, draw it.
+#include <QLocale>
 #include <QCheckBox>
 #include <QDir>
 #include <QDoubleSpinBox>
@@ -17,6 +18,7 @@
 
 #include "core/calibration/marks_csv.hpp"
 #include "core/kinematics/units.hpp"
+#include "widgets/calibration/run_progress_box.hpp"
 #include "widgets/calibration/wizard_pages.hpp"
 #include "session/machine_session.hpp"
 
@@ -146,6 +148,8 @@ DrawPage::DrawPage(CalibrationWizard& wizard) : w_(wizard) {
   left->addLayout(buttons);
   status_ = explanation(QString());
   left->addWidget(status_);
+  progress_ = new RunProgressBox;
+  left->addWidget(progress_);
 
   auto* box = new QGroupBox(tr("No hardware? Simulate an imperfect machine"));
   auto* boxLayout = new QVBoxLayout(box);
@@ -179,8 +183,9 @@ DrawPage::DrawPage(CalibrationWizard& wizard) : w_(wizard) {
       send_->setEnabled(true);
     };
     if (w_.runPattern(w_.job, w_.nominal, QStringLiteral("pattern"), done, &error)) {
-      status_->setText(tr("Drawing the pattern (%1 lines of G-code)...").arg(std::count(w_.gcode.begin(), w_.gcode.end(), '\n')));
+      status_->setText(tr("Drawing the pattern (%1 lines of G-code)...").arg(QLocale().toString(qlonglong(std::count(w_.gcode.begin(), w_.gcode.end(), '\n')))));
       send_->setEnabled(false);
+      progress_->watch(w_.patternRun());
     } else {
       status_->setText(error);
     }

@@ -23,6 +23,7 @@ class QTabWidget;
 namespace fivebar::widgets::calibration {
 
 class DistancesBox;
+class RunProgressBox;
 
 // A label with word wrap for the explanations.
 QLabel* explanation(const QString& text, QWidget* parent = nullptr);
@@ -65,6 +66,8 @@ class DrawPage : public QWizardPage {
   QDoubleSpinBox* trueField(int index) const;
   QPushButton* sendButton() const { return send_; }
   QLabel* status() const { return status_; }
+  // The pattern's run while it is drawn: progress, time left, Stop (as the Run panel shows a job).
+  RunProgressBox* progress() const { return progress_; }
   CalibrationPreview* preview() const { return preview_; }
   bool exportGcode(const QString& path, QString* error) const;
 
@@ -77,6 +80,7 @@ class DrawPage : public QWizardPage {
   bool formFilled_ = false;
   QPushButton* send_ = nullptr;
   QLabel* status_ = nullptr;
+  RunProgressBox* progress_ = nullptr;
   CalibrationPreview* preview_ = nullptr;
 };
 

@@ -37,8 +37,20 @@ void ReplaceDrawingCommand::redo() {
   doc_.applyProjectPath(projectAfter_);
 }
 
+namespace {
+// The Edit menu's name of a placement change: what changed, when only one thing did.
+QString placementEditText(const Placement& before, const Placement& after) {
+  const bool moved = before.centerMm != after.centerMm;
+  const bool rotated = before.rotationRad != after.rotationRad;
+  const bool sized = before.scale != after.scale || before.stretchY != after.stretchY;
+  if (rotated && !moved && !sized) return trCmd(QT_TRANSLATE_NOOP("DocumentCommands", "Rotate drawing"));
+  if (sized && !rotated) return trCmd(QT_TRANSLATE_NOOP("DocumentCommands", "Resize drawing"));
+  return trCmd(QT_TRANSLATE_NOOP("DocumentCommands", "Move drawing"));
+}
+}  // namespace
+
 SetPlacementCommand::SetPlacementCommand(StudioDocument& doc, Placement after, int gestureId)
-    : QUndoCommand(trCmd(QT_TRANSLATE_NOOP("DocumentCommands", "Move drawing"))),
+    : QUndoCommand(placementEditText(doc.placement(), after)),
       doc_(doc),
       before_(doc.placement()),
       after_(after),

@@ -28,7 +28,7 @@ QString longJobQuestion(const PlannedJob& job) {
                                   "This job is long: about %1 hours and %2 pen-down moves. The "
                                   "machine will be busy all that time. Start it anyway?"))
       .arg(QLocale().toString(s.estimatedTimeS / 3600.0, 'f', 1))
-      .arg(s.segments);
+      .arg(QLocale().toString(qlonglong(s.segments)));
 }
 
 PlanOptions studioPlanOptions(const Placement& placement, ModeSelection mode, double toleranceMm) {

@@ -10,7 +10,8 @@ namespace fivebar::widgets {
 
 StudioDocument::StudioDocument(MachineProfile profile, QObject* parent)
     : QObject(parent), profile_(std::move(profile)) {
-  connect(&undo_, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
+  connect(&undo_, &QUndoStack::cleanChanged, this, [this] { updateModified(); });
+  connect(&undo_, &QUndoStack::indexChanged, this, [this] { updateModified(); });
 }
 
 void StudioDocument::loadProject(Drawing drawing, const job::DrawingSource& source,
@@ -40,6 +41,9 @@ std::shared_ptr<const Drawing> StudioDocument::drawingSnapshot() const { return 
 
 void StudioDocument::markSaved(const QString& path) {
   undo_.setClean();
+  importedIndex_ = -1;
+  importCommand_ = nullptr;
+  updateModified();
   applyProjectPath(path);
 }
 
@@ -57,6 +61,24 @@ WorkingMode StudioDocument::effectiveMode() const {
 void StudioDocument::replaceDrawing(Drawing drawing, const QString& fileName,
                                     const Placement& placement, const job::DrawingSource& source) {
   undo_.push(new ReplaceDrawingCommand(*this, std::move(drawing), fileName, placement, source));
+  // Opening a drawing is not a change to save: the file is on disk as it was read. The state
+  // right after the import counts as unmodified too (the clean state, the saved one, stays
+  // where it was: undoing the import gives the project back unmodified).
+  importedIndex_ = undo_.index();
+  importCommand_ = undo_.command(importedIndex_ - 1);
+  updateModified();
+}
+
+bool StudioDocument::isModified() const {
+  if (undo_.isClean()) return false;
+  return !(undo_.index() == importedIndex_ && undo_.command(importedIndex_ - 1) == importCommand_);
+}
+
+void StudioDocument::updateModified() {
+  const bool modified = isModified();
+  if (modified == lastModified_) return;
+  lastModified_ = modified;
+  emit modifiedChanged(modified);
 }
 
 void StudioDocument::setPlacement(const Placement& placement, int gestureId) {

@@ -58,6 +58,7 @@ class StudioDocument : public QObject {
   // Replaces the drawing (an import) and places it; the document becomes a new untitled project
   // (projectPath() empty: Save asks for a name), undone it is the project it was. By value: an
   // import moves its drawing in (hundreds of thousands of paths are not copied on the UI thread).
+  // The imported state counts as unmodified (isModified() false until the next edit).
   void replaceDrawing(Drawing drawing, const QString& fileName, const Placement& placement,
                       const job::DrawingSource& source = {});
   // Sets the placement. Calls with the same non-zero `gestureId` merge into one undo step (a
@@ -92,8 +93,9 @@ class StudioDocument : public QObject {
   QString projectPath() const { return projectPath_; }
   // Marks the current state as saved to `path`.
   void markSaved(const QString& path);
-  // Something changed since the last save (or since the document was opened empty).
-  bool isModified() const { return !undo_.isClean(); }
+  // Something changed since the last save (or since the document was opened empty), other than
+  // opening a drawing: the state right after an import is unmodified until the next edit.
+  bool isModified() const;
 
   // --- raw setters used only by the undo commands ---
   void applyDrawing(std::shared_ptr<const Drawing> drawing, const QString& fileName, const job::DrawingSource& source);
@@ -119,6 +121,10 @@ class StudioDocument : public QObject {
   void jobInputsChanged();
 
  private:
+  void updateModified();  // emits modifiedChanged when isModified() changed
+  int importedIndex_ = -1;  // the undo index right after the last import (-1: none since the save)
+  const QUndoCommand* importCommand_ = nullptr;  // that import's command
+  bool lastModified_ = false;
   // Immutable and shared: with the planner (drawingSnapshot), the undo stack and the import that
   // made it, so that a drawing of hundreds of thousands of paths is never copied to be shared.
   // An edit of its layers replaces it with an edited copy.

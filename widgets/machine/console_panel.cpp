@@ -26,16 +26,30 @@ QColor colourOf(session::ConsoleKind kind) {
   return Qt::black;
 }
 
+// The log asks for four lines only: the dock gives it the rest. (A plain text edit asks for
+// 192 px, and the docks' scroll area gives a panel with wrapping labels its asked-for height, so
+// a refusal shown under the log would push the input line out of the dock.)
+class ConsoleLog : public QPlainTextEdit {
+ public:
+  using QPlainTextEdit::QPlainTextEdit;
+  QSize sizeHint() const override {
+    return {QPlainTextEdit::sizeHint().width(), 4 * fontMetrics().lineSpacing() + 2 * frameWidth()};
+  }
+};
+
 }  // namespace
 
 ConsolePanel::ConsolePanel(session::ConsolePort& port, QWidget* parent)
     : QWidget(parent), port_(port) {
   setObjectName(QStringLiteral("consolePanel"));
-  log_ = new QPlainTextEdit(this);
+  log_ = new ConsoleLog(this);
   log_->setReadOnly(true);
   log_->setMaximumBlockCount(kMaxLogLines);
   log_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
   log_->setPlaceholderText(tr("Lines sent to and received from the machine appear here."));
+  // The log gives way (down to two lines) so that a refusal shown under it never pushes the
+  // input line out of the dock.
+  log_->setMinimumHeight(2 * log_->fontMetrics().lineSpacing() + 2 * log_->frameWidth());
   input_ = new QLineEdit(this);
   input_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
   // X and Y are motor angles: no example move, since what is safe depends on the machine.

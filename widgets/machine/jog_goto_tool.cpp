@@ -28,10 +28,10 @@ void GoToTool::pick(QPointF machineMm) {
   pending_ = session::planGoTo(jog_, view_.profile(), *start, Vec2(machineMm.x(), machineMm.y()));
   pendingPathMm_ = session::goToPenPathMm(view_.profile(), *start, *pending_);
   if (pending_->ok()) {
-    emit picked(true, tr("Go to %1, %2 mm? The dashed path is the pen's travel (%3 checked moves).")
+    emit picked(true, tr("Go to %1, %2 mm? The dashed path is the pen's travel (%n checked move(s)).", nullptr,
+                         int(pending_->targets.size()))
                           .arg(QLocale().toString(machineMm.x(), 'f', 1))
-                          .arg(QLocale().toString(machineMm.y(), 'f', 1))
-                          .arg(pending_->targets.size()));
+                          .arg(QLocale().toString(machineMm.y(), 'f', 1)));
   } else {
     emit picked(false, tr("Cannot go there: %1").arg(session::MachineSession::studioText(pending_->reason)));
   }
@@ -41,7 +41,10 @@ void GoToTool::pick(QPointF machineMm) {
 bool GoToTool::confirm() {
   if (!pending_ || !pending_->ok()) return false;
   const bool sent = jog_.sendJog(*pending_);
-  if (sent) cancel();
+  if (sent) {
+    cancel();
+    emit moveSent();  // one click, one move: the tool disarms (the jog panel unchecks Go to)
+  }
   return sent;
 }
 

@@ -41,6 +41,8 @@ class GoToTool : public QObject, public CanvasTool {
   // A target was picked: ok when the move can be confirmed; text says where / why not.
   void picked(bool ok, const QString& text);
   void cleared();
+  // The confirmed move was sent: the go-to is done (the tool is disarmed by its owner).
+  void moveSent();
   void repaintNeeded();
 
  private:

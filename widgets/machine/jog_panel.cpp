@@ -58,6 +58,12 @@ JogPanel::JogPanel(session::MachineView& view, session::JogPort& jog, session::R
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(8, 8, 8, 8);
   layout->addLayout(stepRow);
+  // The speed on a row of its own: beside the steps it is cut off in a side dock's width.
+  auto* speedRow = new QHBoxLayout;
+  speedRow->addWidget(new QLabel(tr("Speed"), this));
+  speedRow->addWidget(speed_);
+  speedRow->addStretch(1);
+  layout->addLayout(speedRow);
   layout->addWidget(confirmRow_);
   layout->addWidget(message_);
   layout->addLayout(grid);
@@ -131,7 +137,6 @@ QHBoxLayout* JogPanel::makeStepRow() {
   speed_->setSuffix(tr(" mm/s"));
   speed_->setValue(kDefaultSpeedMmPerS);
   speed_->setToolTip(tr("Speed of XY jogs"));
-  stepRow->addWidget(speed_);
   return stepRow;
 }
 
@@ -150,11 +155,16 @@ QHBoxLayout* JogPanel::makeToolRow() {
   frame_->setObjectName(QStringLiteral("frameButton"));
   frame_->setToolTip(tr("Trace the outline of the planned job with the pen up (a laser at low "
                         "power), along checked moves, to see where the drawing lands on the paper"));
+  // Two columns of two: four buttons in one row do not fit a side dock in German or French.
   auto* toolRow = new QHBoxLayout;
-  toolRow->addWidget(home_);
-  toolRow->addWidget(goHome_);
-  toolRow->addWidget(penUp_);
-  toolRow->addWidget(penDown_);
+  auto* poses = new QVBoxLayout;
+  poses->addWidget(home_);
+  poses->addWidget(goHome_);
+  auto* pen = new QVBoxLayout;
+  pen->addWidget(penUp_);
+  pen->addWidget(penDown_);
+  toolRow->addLayout(poses);
+  toolRow->addLayout(pen);
   return toolRow;
 }
 
@@ -195,6 +205,7 @@ void JogPanel::connectControls() {
   connect(cancel_, &QPushButton::clicked, &goTo_, &GoToTool::cancel);
   connect(&goTo_, &GoToTool::picked, this, &JogPanel::onPicked);
   connect(&goTo_, &GoToTool::cleared, confirmRow_, &QWidget::hide);
+  connect(&goTo_, &GoToTool::moveSent, goToButton_, [this] { goToButton_->setChecked(false); });
   connect(&goTo_, &GoToTool::repaintNeeded, this, [this] {
     if (canvas_) canvas_->update();
   });

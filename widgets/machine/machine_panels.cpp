@@ -97,9 +97,19 @@ bool MachinePanels::confirmClose() {
   QPushButton* keep = box.addButton(tr("Keep running"), QMessageBox::RejectRole);
   keep->setObjectName(QStringLiteral("keepRunning"));
   box.setDefaultButton(keep);
+  // The job may end while the question is open: the question then says so.
+  const QMetaObject::Connection ended = connect(&machine_.run(), &session::RunController::runChanged, &box, [&] {
+    if (machine_.run().running()) return;
+    box.setIcon(QMessageBox::Question);
+    box.setWindowTitle(tr("The job has ended"));
+    box.setText(tr("The job \"%1\" has ended. Quit FiveBar Studio?").arg(machine_.run().drawingName()));
+    stop->setText(tr("Quit"));
+    keep->setText(tr("Cancel"));
+  });
   box.exec();
+  disconnect(ended);
   if (box.clickedButton() != stop) return false;
-  machine_.stopRunForQuit();
+  if (machine_.run().running()) machine_.stopRunForQuit();
   return true;
 }
 

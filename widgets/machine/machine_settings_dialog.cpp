@@ -2,6 +2,7 @@
 #include "widgets/machine/machine_settings_dialog.hpp"
 
 #include <QColor>
+#include <QCoreApplication>
 #include <QDateTime>
 #include <QDialogButtonBox>
 #include <QDir>
@@ -16,11 +17,15 @@
 #include <cstdio>
 #include <set>
 
+#include "core/output/grbl_setting_table.hpp"
 #include "session/machine_ports.hpp"
 #include "session/machine_view.hpp"
 
 namespace fivebar::widgets {
 namespace {
+
+constexpr int kColumns = 6;        // setting, meaning, board, profile, unit, differs
+constexpr int kMeaningColumn = 1;
 
 QString valueText(double v) {
   char buf[32];
@@ -41,9 +46,12 @@ MachineSettingsDialog::MachineSettingsDialog(session::MachineView& view, session
                            this);
   intro->setWordWrap(true);
   layout->addWidget(intro);
-  table_ = new QTableWidget(0, 4, this);
-  table_->setHorizontalHeaderLabels({tr("Setting"), tr("Board"), tr("Profile"), tr("Differs")});
-  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+  // Each setting with its meaning and unit (core/output/grbl_setting_table.hpp: X and Y are
+  // the motor angles, in degrees).
+  table_ = new QTableWidget(0, kColumns, this);
+  table_->setHorizontalHeaderLabels({tr("Setting"), tr("Meaning"), tr("Board"), tr("Profile"), tr("Unit"), tr("Differs")});
+  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  table_->horizontalHeader()->setSectionResizeMode(kMeaningColumn, QHeaderView::Stretch);
   table_->verticalHeader()->setVisible(false);
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   layout->addWidget(table_, 1);
@@ -70,7 +78,7 @@ MachineSettingsDialog::MachineSettingsDialog(session::MachineView& view, session
   wanted_ = setup::expectedSettings(view_.profile());
   fillTable();
   onSyncChanged();
-  resize(560, 520);
+  resize(720, 560);
 }
 
 MachineSettingsDialog::~MachineSettingsDialog() = default;
@@ -196,11 +204,15 @@ void MachineSettingsDialog::fillTable() {
   for (int id : ids) {
     const auto b = board.find(id);
     const auto w = wanted_.find(id);
-    const QString cells[4] = {
-        QStringLiteral("$%1").arg(id), b == board.end() ? QStringLiteral("-") : valueText(b->second),
+    const GrblSettingInfo* info = grblSettingInfo(id);
+    const QString cells[kColumns] = {
+        QStringLiteral("$%1").arg(id),
+        info ? QCoreApplication::translate("GrblSetting", info->meaning) : tr("(not a GRBL 1.1h setting)"),
+        b == board.end() ? QStringLiteral("-") : valueText(b->second),
         w == wanted_.end() ? QStringLiteral("-") : valueText(w->second),
+        info ? QString::fromUtf8(info->unit) : QString(),
         differing.count(id) ? tr("yes") : QString()};
-    for (int c = 0; c < 4; ++c) {
+    for (int c = 0; c < kColumns; ++c) {
       auto* item = new QTableWidgetItem(cells[c]);
       if (differing.count(id)) item->setForeground(QColor(0xdc, 0x26, 0x26));
       table_->setItem(row, c, item);

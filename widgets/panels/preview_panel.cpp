@@ -99,7 +99,7 @@ PreviewPanel::PreviewPanel(PreviewController& preview, JobLayer& layer, QWidget*
   problems_ = new QListWidget(this);
   problems_->setObjectName(QStringLiteral("previewProblems"));
   problems_->setWordWrap(true);
-  problems_->setMinimumHeight(160);  // room to read a problem and what to do about it
+  problems_->setMinimumHeight(110);  // room to read a problem and what to do about it
   layout->addWidget(problems_, 1);
 
   bySpeed_->setChecked(layer_.colourBySpeed());
@@ -109,7 +109,7 @@ PreviewPanel::PreviewPanel(PreviewController& preview, JobLayer& layer, QWidget*
   connect(travel_, &QCheckBox::toggled, &layer_, &JobLayer::setShowTravel);
   connect(scrubber_, &QSlider::valueChanged, this, [this](int v) {
     preview_.setScrubLimit(v >= scrubber_->maximum() ? -1 : v);
-    scrubLabel_->setText(tr("Moves shown: %1 of %2").arg(v).arg(scrubber_->maximum()));
+    scrubLabel_->setText(tr("Moves shown: %1 of %2").arg(QLocale().toString(v), QLocale().toString(scrubber_->maximum())));
   });
   connect(problems_, &QListWidget::currentRowChanged, this, [this](int row) {
     const auto& problems = preview_.result().problems;
@@ -154,7 +154,7 @@ void PreviewPanel::showResult() {
                         .arg(mode, formatJobTime(r.trajectory->durationS()))
                         .arg(QLocale().toString(s.penDownMm, 'f', 0))
                         .arg(QLocale().toString(s.travelMm, 'f', 0))
-                        .arg(s.segments)
+                        .arg(QLocale().toString(qlonglong(s.segments)))
                         .arg(QLocale().toString(r.report.maxDeviationMm, 'f', 3))
                         .arg(QLocale().toString(degFromRad(s.minTypeIIMarginRad), 'f', 1))
                         .arg(speedShare(s)));
