@@ -64,6 +64,17 @@ void SpeedLegend::paintEvent(QPaintEvent*) {
   p.drawText(text, Qt::AlignRight | Qt::AlignTop, tr("%1 mm/s").arg(QLocale().toString(maxSpeed_, 'f', 0)));
 }
 
+namespace {
+// The problems list asks for its minimum height only: the dock gives it the rest. (A list asks
+// for 192 px, and the docks' scroll area gives a panel with wrapping labels its asked-for
+// height, so the dock would scroll and cut the list off at the default window size.)
+class ProblemList : public QListWidget {
+ public:
+  using QListWidget::QListWidget;
+  QSize sizeHint() const override { return {QListWidget::sizeHint().width(), minimumHeight()}; }
+};
+}  // namespace
+
 PreviewPanel::PreviewPanel(PreviewController& preview, JobLayer& layer, QWidget* parent)
     : QWidget(parent), preview_(preview), layer_(layer) {
   auto* layout = new QVBoxLayout(this);
@@ -96,7 +107,7 @@ PreviewPanel::PreviewPanel(PreviewController& preview, JobLayer& layer, QWidget*
   layout->addWidget(order);
 
   layout->addWidget(new QLabel(tr("Pre-flight problems (click to show):"), this));
-  problems_ = new QListWidget(this);
+  problems_ = new ProblemList(this);
   problems_->setObjectName(QStringLiteral("previewProblems"));
   problems_->setWordWrap(true);
   problems_->setMinimumHeight(110);  // room to read a problem and what to do about it
