@@ -56,9 +56,11 @@ JogPanel::JogPanel(session::MachineView& view, session::JogPort& jog, session::R
 
   // The go-to question and the messages come first, where they are seen without scrolling.
   auto* layout = new QVBoxLayout(this);
-  layout->setContentsMargins(8, 8, 8, 8);
+  layout->setContentsMargins(8, 6, 8, 6);
   layout->addLayout(stepRow);
-  // The speed on a row of its own: beside the steps it is cut off in a side dock's width.
+  // Rows close together: with the Frame button the panel is otherwise taller than its dock. The
+  // speed on a row of its own: beside the steps it is cut off in a side dock's width.
+  layout->setSpacing(2);
   auto* speedRow = new QHBoxLayout;
   speedRow->addWidget(new QLabel(tr("Speed"), this));
   speedRow->addWidget(speed_);

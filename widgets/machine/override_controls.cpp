@@ -23,16 +23,16 @@ OverrideControls::OverrideControls(session::RunController& run, QWidget* parent)
   const QString rapidTip = tr("Rapid override: G0 travel moves");
   auto* grid = new QGridLayout;
   grid->setHorizontalSpacing(4);
-  grid->addWidget(new QLabel(tr("Feed"), box), 0, 0);
-  grid->addWidget(addButton(OverrideCommand::FeedMinus10, tr("−10 %"), tr("Alt+Down"), feedTip), 0, 1);
-  grid->addWidget(addButton(OverrideCommand::FeedMinus1, tr("−1 %"), tr("Alt+Left"), feedTip), 0, 2);
-  grid->addWidget(addButton(OverrideCommand::FeedReset, tr("100 %"), tr("Alt+0"), feedTip), 0, 3);
-  grid->addWidget(addButton(OverrideCommand::FeedPlus1, tr("+1 %"), tr("Alt+Right"), feedTip), 0, 4);
-  grid->addWidget(addButton(OverrideCommand::FeedPlus10, tr("+10 %"), tr("Alt+Up"), feedTip), 0, 5);
-  grid->addWidget(new QLabel(tr("Rapid"), box), 1, 0);
-  grid->addWidget(addButton(OverrideCommand::RapidQuarter, tr("25 %"), tr("Alt+4"), rapidTip), 1, 1);
-  grid->addWidget(addButton(OverrideCommand::RapidHalf, tr("50 %"), tr("Alt+2"), rapidTip), 1, 2);
-  grid->addWidget(addButton(OverrideCommand::RapidFull, tr("100 %"), tr("Alt+1"), rapidTip), 1, 3);
+  auto* feedName = new QLabel(tr("Feed"), box);
+  grid->addWidget(addButton(OverrideCommand::FeedMinus10, tr("−10 %"), tr("Alt+Down"), feedTip), 1, 0);
+  grid->addWidget(addButton(OverrideCommand::FeedMinus1, tr("−1 %"), tr("Alt+Left"), feedTip), 1, 1);
+  grid->addWidget(addButton(OverrideCommand::FeedReset, tr("100 %"), tr("Alt+0"), feedTip), 1, 2);
+  grid->addWidget(addButton(OverrideCommand::FeedPlus1, tr("+1 %"), tr("Alt+Right"), feedTip), 1, 3);
+  grid->addWidget(addButton(OverrideCommand::FeedPlus10, tr("+10 %"), tr("Alt+Up"), feedTip), 1, 4);
+  auto* rapidName = new QLabel(tr("Rapid"), box);
+  grid->addWidget(addButton(OverrideCommand::RapidQuarter, tr("25 %"), tr("Alt+4"), rapidTip), 3, 0);
+  grid->addWidget(addButton(OverrideCommand::RapidHalf, tr("50 %"), tr("Alt+2"), rapidTip), 3, 1);
+  grid->addWidget(addButton(OverrideCommand::RapidFull, tr("100 %"), tr("Alt+1"), rapidTip), 3, 2);
   feed_ = new QLabel(box);
   feed_->setObjectName(QStringLiteral("feedOverride"));
   rapid_ = new QLabel(box);
@@ -42,9 +42,18 @@ OverrideControls::OverrideControls(session::RunController& run, QWidget* parent)
   feed_->setFont(bold);
   rapid_->setFont(bold);
   feed_->setMinimumWidth(feed_->fontMetrics().horizontalAdvance(QStringLiteral("200 %")));
-  grid->addWidget(feed_, 0, 6, Qt::AlignRight);
-  grid->addWidget(rapid_, 1, 6, Qt::AlignRight);
-  grid->setColumnStretch(6, 1);
+  // Each name with its reported value on a row of its own above its buttons: beside them the
+  // Run panel was wider than its dock (tests/widgets/window_fit_test.cpp).
+  const auto named = [](QLabel* name, QLabel* value) {
+    auto* row = new QHBoxLayout;
+    row->addWidget(name);
+    row->addWidget(value);
+    row->addStretch(1);
+    return row;
+  };
+  grid->addLayout(named(feedName, feed_), 0, 0, 1, 5);
+  grid->addLayout(named(rapidName, rapid_), 2, 0, 1, 5);
+  grid->setColumnStretch(5, 1);
   box->setLayout(grid);
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
