@@ -46,6 +46,7 @@ OverrideControls::OverrideControls(session::RunController& run, QWidget* parent)
   // Run panel was wider than its dock (tests/widgets/window_fit_test.cpp).
   const auto named = [](QLabel* name, QLabel* value) {
     auto* row = new QHBoxLayout;
+    row->setSpacing(6);
     row->addWidget(name);
     row->addWidget(value);
     row->addStretch(1);
